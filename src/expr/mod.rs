@@ -1,0 +1,641 @@
+//! Exact expressions: the only module that sees symbolica.
+//!
+//! Every quantity of rigid-body kinematics and dynamics is a polynomial in cos qᵢ, sin qᵢ (angle
+//! coordinates), qᵢ (length coordinates), q̇ᵢ, q̈ᵢ and the parameters, with rational
+//! coefficients. [`Expr`] stores exactly that, as a symbolica `MultivariatePolynomial` over ℚ
+//! whose variables are fixed once per mechanism by a [`Registry`], and keeps it in the
+//! **canonical form** of DESIGN.md: expanded, with every sin²qᵢ replaced by 1 − cos²qᵢ. Two
+//! expressions are equal as functions iff their canonical forms are identical, so the zero
+//! test is exact and costs nothing.
+
+mod parse;
+mod print;
+
+pub use print::{Presentation, PresentationGroup};
+
+use crate::spec::wire::CoordinateKind;
+use std::collections::HashMap;
+use std::fmt;
+use std::ops::{Add, Mul, Neg, Sub};
+use std::sync::Arc;
+use symbolica::atom::{Atom, Symbol};
+use symbolica::domains::rational::{Q, Rational, RationalField};
+use symbolica::poly::PolyVariable;
+use symbolica::poly::polynomial::MultivariatePolynomial;
+
+type Poly = MultivariatePolynomial<RationalField, u8>;
+
+/// Typed index of a time coordinate in a [`Registry`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct CoordId(pub(crate) usize);
+
+impl CoordId {
+    /// Index in declaration order.
+    pub fn index(self) -> usize {
+        self.0
+    }
+}
+
+/// Errors of the expression layer: parsing and unsupported forms.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ExprError {
+    /// The text is not an expression of the spec syntax.
+    #[error("cannot parse `{input}`: {reason}")]
+    Parse {
+        /// The text given.
+        input: String,
+        /// Why.
+        reason: String,
+    },
+    /// A name that is neither a parameter nor a coordinate.
+    #[error("unknown name `{name}` in `{input}` (declare it as a parameter or a coordinate)")]
+    UnknownName {
+        /// The name.
+        name: String,
+        /// The text given.
+        input: String,
+    },
+    /// Valid syntax, outside what the exact engine handles.
+    #[error("`{input}`: {reason}")]
+    Unsupported {
+        /// The text given.
+        input: String,
+        /// Why.
+        reason: String,
+    },
+    /// A registry declaration problem.
+    #[error("{0}")]
+    Declaration(String),
+}
+
+/// How a coordinate enters expressions.
+#[derive(Debug, Clone)]
+pub struct CoordInfo {
+    /// Name as declared (`theta1`).
+    pub name: String,
+    /// Angle or length.
+    pub kind: CoordinateKind,
+    /// Variable index of q (lengths).
+    value: Option<usize>,
+    /// Variable indices of cos q and sin q (angles).
+    trig: Option<(usize, usize)>,
+    /// Variable indices of q̇, q̈ and the third derivative, unless the rate is imposed.
+    rates: Option<[usize; 3]>,
+    /// Imposed constant rate q̇ (then q̈ = 0).
+    imposed_rate: Option<Poly>,
+}
+
+impl CoordInfo {
+    /// Whether the rate is imposed (q̇ given, q̈ = 0).
+    pub fn has_imposed_rate(&self) -> bool {
+        self.imposed_rate.is_some()
+    }
+}
+
+/// What a polynomial variable stands for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VarRole {
+    /// A constant parameter (index in [`Registry::parameters`]).
+    Parameter(usize),
+    /// cos q of an angle coordinate.
+    Cos(CoordId),
+    /// sin q of an angle coordinate.
+    Sin(CoordId),
+    /// q itself, for a length coordinate.
+    Value(CoordId),
+    /// q̇ (order 1), q̈ (order 2), third derivative (order 3).
+    Rate(CoordId, u8),
+}
+
+/// The variables of one mechanism: its parameters and time coordinates.
+///
+/// ```
+/// use torseur::expr::Registry;
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::new(
+///     &["m".to_string(), "L".to_string()],
+///     &[("theta".to_string(), CoordinateKind::Angle)],
+/// ).unwrap();
+/// let e = reg.parse("m*L^2*(sin(theta)^2 + cos(theta)^2)").unwrap();
+/// assert_eq!(e, reg.parse("L^2*m").unwrap());
+/// ```
+#[derive(Debug)]
+pub struct Registry {
+    vars: Arc<Vec<PolyVariable>>,
+    roles: Vec<VarRole>,
+    parameters: Vec<String>,
+    param_var: HashMap<String, usize>,
+    coords: Vec<CoordInfo>,
+    coord_by_name: HashMap<String, CoordId>,
+}
+
+/// Symbols used for the rate functions dot(q), ddot(q), dddot(q).
+fn rate_symbol(order: u8) -> Symbol {
+    match order {
+        1 => symbolica::symbol!("dot"),
+        2 => symbolica::symbol!("ddot"),
+        _ => symbolica::symbol!("dddot"),
+    }
+}
+
+/// Names reserved by the expression syntax.
+pub const RESERVED: &[&str] = &["sin", "cos", "dot", "ddot", "dddot", "pi", "t"];
+
+impl Registry {
+    /// Declares parameters and coordinates (none with an imposed rate).
+    pub fn new(
+        parameters: &[String],
+        coords: &[(String, CoordinateKind)],
+    ) -> Result<Arc<Registry>, ExprError> {
+        let with_rates: Vec<(String, CoordinateKind, Option<String>)> =
+            coords.iter().map(|(n, k)| (n.clone(), *k, None)).collect();
+        Registry::with_rates(parameters, &with_rates)
+    }
+
+    /// Declares parameters and coordinates; a coordinate may have an imposed constant rate,
+    /// an expression in the parameters (`omega`), in which case q̇ is that expression and q̈ = 0.
+    pub fn with_rates(
+        parameters: &[String],
+        coords: &[(String, CoordinateKind, Option<String>)],
+    ) -> Result<Arc<Registry>, ExprError> {
+        let mut vars: Vec<PolyVariable> = Vec::new();
+        let mut roles = Vec::new();
+        let mut seen: HashMap<String, ()> = HashMap::new();
+        let mut check = |n: &str| -> Result<(), ExprError> {
+            if RESERVED.contains(&n) {
+                return Err(ExprError::Declaration(format!(
+                    "`{n}` is reserved by the expression syntax"
+                )));
+            }
+            if seen.insert(n.to_string(), ()).is_some() {
+                return Err(ExprError::Declaration(format!("`{n}` is declared twice")));
+            }
+            Ok(())
+        };
+        let mut infos = Vec::new();
+        for (i, (name, kind, rate)) in coords.iter().enumerate() {
+            check(name)?;
+            let id = CoordId(i);
+            let q = Atom::var(symbolica::symbol!(name.as_str()));
+            let mut info = CoordInfo {
+                name: name.clone(),
+                kind: *kind,
+                value: None,
+                trig: None,
+                rates: None,
+                imposed_rate: None,
+            };
+            match kind {
+                CoordinateKind::Angle => {
+                    // sin before cos: in lex order sin² leads sin² + cos² − 1.
+                    vars.push(PolyVariable::Function(Symbol::SIN, q.clone()));
+                    roles.push(VarRole::Sin(id));
+                    vars.push(PolyVariable::Function(Symbol::COS, q.clone()));
+                    roles.push(VarRole::Cos(id));
+                    info.trig = Some((vars.len() - 1, vars.len() - 2));
+                }
+                CoordinateKind::Length => {
+                    vars.push(PolyVariable::Symbol(symbolica::symbol!(name.as_str())));
+                    roles.push(VarRole::Value(id));
+                    info.value = Some(vars.len() - 1);
+                }
+            }
+            if rate.is_none() {
+                let mut r = [0; 3];
+                for (k, slot) in r.iter_mut().enumerate() {
+                    let order = k as u8 + 1;
+                    vars.push(PolyVariable::Function(rate_symbol(order), q.clone()));
+                    roles.push(VarRole::Rate(id, order));
+                    *slot = vars.len() - 1;
+                }
+                info.rates = Some(r);
+            }
+            infos.push(info);
+        }
+        let mut param_var = HashMap::new();
+        for (i, p) in parameters.iter().enumerate() {
+            check(p)?;
+            vars.push(PolyVariable::Symbol(symbolica::symbol!(p.as_str())));
+            roles.push(VarRole::Parameter(i));
+            param_var.insert(p.clone(), vars.len() - 1);
+        }
+        let coord_by_name = infos
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (c.name.clone(), CoordId(i)))
+            .collect();
+        let mut reg = Registry {
+            vars: Arc::new(vars),
+            roles,
+            parameters: parameters.to_vec(),
+            param_var,
+            coords: infos,
+            coord_by_name,
+        };
+        // Imposed rates are expressions in the parameters: parse them with a registry that
+        // shares the same variable list.
+        if coords.iter().any(|c| c.2.is_some()) {
+            let base = Arc::new(Registry {
+                vars: reg.vars.clone(),
+                roles: reg.roles.clone(),
+                parameters: reg.parameters.clone(),
+                param_var: reg.param_var.clone(),
+                coords: reg.coords.clone(),
+                coord_by_name: reg.coord_by_name.clone(),
+            });
+            for (i, (_, _, rate)) in coords.iter().enumerate() {
+                if let Some(r) = rate {
+                    let e = base.parse(r)?;
+                    if !e.is_time_independent() {
+                        return Err(ExprError::Unsupported {
+                            input: r.clone(),
+                            reason: "an imposed rate must be a constant (parameters only)"
+                                .to_string(),
+                        });
+                    }
+                    reg.coords[i].imposed_rate = Some(e.p);
+                }
+            }
+        }
+        Ok(Arc::new(reg))
+    }
+
+    /// The parameters, in declaration order.
+    pub fn parameters(&self) -> &[String] {
+        &self.parameters
+    }
+
+    /// The coordinates, in declaration order.
+    pub fn coordinates(&self) -> &[CoordInfo] {
+        &self.coords
+    }
+
+    /// Coordinate by name.
+    pub fn coord(&self, name: &str) -> Option<CoordId> {
+        self.coord_by_name.get(name).copied()
+    }
+
+    /// Coordinate information.
+    pub fn coord_info(&self, id: CoordId) -> &CoordInfo {
+        &self.coords[id.0]
+    }
+
+    /// Number of polynomial variables.
+    pub fn nvars(&self) -> usize {
+        self.vars.len()
+    }
+
+    /// What variable `i` stands for.
+    pub fn role(&self, i: usize) -> VarRole {
+        self.roles[i]
+    }
+
+    fn poly_zero(&self) -> Poly {
+        Poly::new(&Q, None, self.vars.clone())
+    }
+
+    fn wrap(self: &Arc<Self>, p: Poly) -> Expr {
+        Expr {
+            p,
+            reg: self.clone(),
+        }
+    }
+
+    fn var(self: &Arc<Self>, i: usize) -> Expr {
+        let mut e = vec![0u8; self.vars.len()];
+        e[i] = 1;
+        let p = self.poly_zero().monomial(Rational::one(), e);
+        self.wrap(p)
+    }
+
+    /// 0.
+    pub fn zero(self: &Arc<Self>) -> Expr {
+        self.wrap(self.poly_zero())
+    }
+
+    /// 1.
+    pub fn one(self: &Arc<Self>) -> Expr {
+        self.integer(1)
+    }
+
+    /// An integer constant.
+    pub fn integer(self: &Arc<Self>, n: i64) -> Expr {
+        self.rational(n, 1)
+    }
+
+    /// The rational constant n/d (d ≠ 0).
+    pub fn rational(self: &Arc<Self>, n: i64, d: i64) -> Expr {
+        let r = Rational::new(n, d);
+        self.constant(r)
+    }
+
+    fn constant(self: &Arc<Self>, r: Rational) -> Expr {
+        let p = self.poly_zero().constant(r);
+        self.wrap(p)
+    }
+
+    /// A parameter, by name.
+    pub fn param(self: &Arc<Self>, name: &str) -> Option<Expr> {
+        self.param_var.get(name).map(|&i| self.var(i))
+    }
+
+    /// cos q (for a length coordinate, which has none, this is 1: never used so).
+    pub fn cos(self: &Arc<Self>, q: CoordId) -> Expr {
+        match self.coords[q.0].trig {
+            Some((c, _)) => self.var(c),
+            None => self.one(),
+        }
+    }
+
+    /// sin q (0 for a length coordinate).
+    pub fn sin(self: &Arc<Self>, q: CoordId) -> Expr {
+        match self.coords[q.0].trig {
+            Some((_, s)) => self.var(s),
+            None => self.zero(),
+        }
+    }
+
+    /// q for a length coordinate (None for an angle, which enters only by cos and sin).
+    pub fn value(self: &Arc<Self>, q: CoordId) -> Option<Expr> {
+        self.coords[q.0].value.map(|i| self.var(i))
+    }
+
+    /// q̇.
+    pub fn dot(self: &Arc<Self>, q: CoordId) -> Expr {
+        self.rate(q, 1)
+    }
+
+    /// q̈.
+    pub fn ddot(self: &Arc<Self>, q: CoordId) -> Expr {
+        self.rate(q, 2)
+    }
+
+    /// Derivative of order 1 to 3 of q.
+    pub fn rate(self: &Arc<Self>, q: CoordId, order: u8) -> Expr {
+        let c = &self.coords[q.0];
+        match (&c.rates, &c.imposed_rate) {
+            (Some(r), _) => self.var(r[(order.clamp(1, 3) - 1) as usize]),
+            (None, Some(w)) if order == 1 => self.wrap(w.clone()),
+            _ => self.zero(),
+        }
+    }
+
+    /// Parses an expression of the spec syntax (see DESIGN.md) into canonical form.
+    pub fn parse(self: &Arc<Self>, s: &str) -> Result<Expr, ExprError> {
+        parse::parse_scalar(self, s)
+    }
+
+    /// Parses a vector expression `d1*z0 + L1*y1`, where `basis_vector(name)` recognises the
+    /// basis vector names (returning a basis key and an axis index). Returns, per basis key,
+    /// the three components.
+    pub fn parse_vector<K: Ord + Copy>(
+        self: &Arc<Self>,
+        s: &str,
+        basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
+    ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
+        parse::parse_vector(self, s, basis_vector)
+    }
+}
+
+/// An exact scalar expression in canonical form, tied to the [`Registry`] of its mechanism.
+///
+/// Arithmetic keeps the canonical form: after every product, sin²qᵢ is replaced by
+/// 1 − cos²qᵢ. Equality is structural equality of canonical forms, hence exact.
+#[derive(Clone)]
+pub struct Expr {
+    p: Poly,
+    reg: Arc<Registry>,
+}
+
+impl fmt::Debug for Expr {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Expr({self})")
+    }
+}
+
+impl PartialEq for Expr {
+    fn eq(&self, other: &Expr) -> bool {
+        Arc::ptr_eq(&self.reg, &other.reg) && self.p == other.p
+    }
+}
+
+impl Eq for Expr {}
+
+impl Expr {
+    /// The registry this expression belongs to.
+    pub fn registry(&self) -> &Arc<Registry> {
+        &self.reg
+    }
+
+    /// 0 in the same registry.
+    pub fn zero_like(&self) -> Expr {
+        self.reg.zero()
+    }
+
+    /// Exact zero test (the canonical form is unique).
+    pub fn is_zero(&self) -> bool {
+        self.p.is_zero()
+    }
+
+    /// Number of terms of the canonical form.
+    pub fn nterms(&self) -> usize {
+        self.p.nterms()
+    }
+
+    /// Whether the expression depends on no coordinate (a constant in time).
+    pub fn is_time_independent(&self) -> bool {
+        (0..self.reg.nvars())
+            .all(|i| matches!(self.reg.roles[i], VarRole::Parameter(_)) || self.p.degree(i) == 0)
+    }
+
+    /// Whether the variable `i` occurs.
+    #[allow(dead_code)]
+    pub(crate) fn contains_var(&self, i: usize) -> bool {
+        self.p.degree(i) > 0
+    }
+
+    /// Brings a product back to canonical form: sin²q → 1 − cos²q for every angle.
+    fn reduce(mut p: Poly, reg: &Registry) -> Poly {
+        for c in &reg.coords {
+            let Some((ci, si)) = c.trig else { continue };
+            while p.degree(si) >= 2 {
+                let n = p.nvars();
+                let mut low = p.zero();
+                let mut high = p.zero();
+                for t in 0..p.nterms() {
+                    let e = p.exponents(t);
+                    if e[si] >= 2 {
+                        high.coefficients.push(p.coefficients[t].clone());
+                        high.exponents.extend_from_slice(e);
+                        let k = high.exponents.len() - n + si;
+                        high.exponents[k] -= 2;
+                    } else {
+                        low.coefficients.push(p.coefficients[t].clone());
+                        low.exponents.extend_from_slice(e);
+                    }
+                }
+                // Dividing every term by sin² keeps the lex order of the subsequence.
+                let mut cos2 = vec![0u8; n];
+                cos2[ci] = 2;
+                let minus_cos2 = high.clone().mul_monomial(&Rational::new(-1, 1), &cos2);
+                p = low + high + minus_cos2;
+            }
+        }
+        p
+    }
+
+    fn with(&self, p: Poly) -> Expr {
+        Expr {
+            p,
+            reg: self.reg.clone(),
+        }
+    }
+
+    /// self^n.
+    pub fn pow(&self, n: u32) -> Expr {
+        let mut r = self.reg.one();
+        for _ in 0..n {
+            r = &r * self;
+        }
+        r
+    }
+
+    /// Total time derivative d/dt = Σ ∂/∂qᵢ q̇ᵢ + ∂/∂q̇ᵢ q̈ᵢ + ∂/∂q̈ᵢ q⃛ᵢ, with
+    /// d(cos q)/dt = −sin q q̇ and d(sin q)/dt = cos q q̇.
+    pub fn dt(&self) -> Expr {
+        let reg = &self.reg;
+        let mut acc = self.p.zero();
+        for (i, c) in reg.coords.iter().enumerate() {
+            let q = CoordId(i);
+            let qdot = reg.rate(q, 1).p;
+            if let Some((ci, si)) = c.trig {
+                if self.p.degree(ci) > 0 {
+                    let d = self.p.derivative(ci);
+                    acc = &acc - &(&(&d * &reg.sin(q).p) * &qdot);
+                }
+                if self.p.degree(si) > 0 {
+                    let d = self.p.derivative(si);
+                    acc = &acc + &(&(&d * &reg.cos(q).p) * &qdot);
+                }
+            }
+            if let Some(vi) = c.value
+                && self.p.degree(vi) > 0
+            {
+                acc = &acc + &(&self.p.derivative(vi) * &qdot);
+            }
+            if let Some(r) = c.rates {
+                for k in 0..2 {
+                    if self.p.degree(r[k]) > 0 {
+                        let next = reg.var(r[k + 1]).p;
+                        acc = &acc + &(&self.p.derivative(r[k]) * &next);
+                    }
+                }
+            }
+        }
+        self.with(Expr::reduce(acc, reg))
+    }
+
+    /// Substitutes a variable by an expression (used by hypotheses: a product of inertia set
+    /// to zero, two moments set equal, q̈ set to zero). Stays canonical when the value has no
+    /// sine (which is the case of every hypothesis).
+    pub fn substitute(&self, var: usize, value: &Expr) -> Expr {
+        if self.p.degree(var) == 0 {
+            return self.clone();
+        }
+        let p = self.p.replace_with_poly(var, &value.p);
+        self.with(Expr::reduce(p, &self.reg))
+    }
+
+    /// Numeric value, given a value for every variable (see [`Registry::role`]).
+    pub fn eval(&self, point: &[f64]) -> f64 {
+        self.p.evaluate(|c: &Rational| c.to_f64(), point)
+    }
+
+    /// Terms of the canonical form: (numerator, denominator, exponent per variable).
+    pub(crate) fn terms(&self) -> impl Iterator<Item = (&Rational, &[u8])> {
+        (0..self.p.nterms()).map(move |t| (&self.p.coefficients[t], self.p.exponents(t)))
+    }
+
+    /// Builds an expression from terms (any order; like terms are combined).
+    pub(crate) fn from_terms(reg: &Arc<Registry>, terms: Vec<(Rational, Vec<u8>)>) -> Expr {
+        let mut p = reg.poly_zero();
+        for (c, e) in terms {
+            p = p + reg.poly_zero().monomial(c, e);
+        }
+        reg.wrap(p)
+    }
+
+    /// The symbolica expression (for the compiled evaluator and interoperability).
+    pub fn to_atom(&self) -> Atom {
+        self.p.to_expression()
+    }
+
+    /// The constant value if the expression is a rational number.
+    pub(crate) fn as_rational(&self) -> Option<Rational> {
+        if self.p.is_constant() {
+            Some(self.p.get_constant())
+        } else {
+            None
+        }
+    }
+}
+
+macro_rules! binop {
+    ($trait:ident, $method:ident, $op:tt, $reduce:expr) => {
+        impl $trait<&Expr> for &Expr {
+            type Output = Expr;
+            fn $method(self, rhs: &Expr) -> Expr {
+                debug_assert!(Arc::ptr_eq(&self.reg, &rhs.reg), "expressions of two registries");
+                let p = &self.p $op &rhs.p;
+                let p = if $reduce { Expr::reduce(p, &self.reg) } else { p };
+                self.with(p)
+            }
+        }
+        impl $trait<&Expr> for Expr {
+            type Output = Expr;
+            fn $method(self, rhs: &Expr) -> Expr {
+                (&self).$method(rhs)
+            }
+        }
+        impl $trait<Expr> for Expr {
+            type Output = Expr;
+            fn $method(self, rhs: Expr) -> Expr {
+                (&self).$method(&rhs)
+            }
+        }
+        impl $trait<Expr> for &Expr {
+            type Output = Expr;
+            fn $method(self, rhs: Expr) -> Expr {
+                self.$method(&rhs)
+            }
+        }
+    };
+}
+
+binop!(Add, add, +, false);
+binop!(Sub, sub, -, false);
+binop!(Mul, mul, *, true);
+
+impl Neg for &Expr {
+    type Output = Expr;
+    fn neg(self) -> Expr {
+        self.with(-self.p.clone())
+    }
+}
+
+impl Neg for Expr {
+    type Output = Expr;
+    fn neg(self) -> Expr {
+        -&self
+    }
+}
+
+impl fmt::Display for Expr {
+    /// Plain text in the spec syntax (parsable back), terms in a stable order.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&print::to_text(self))
+    }
+}
+
+#[cfg(test)]
+mod tests;

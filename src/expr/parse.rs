@@ -1,0 +1,359 @@
+//! User expressions (`m2*L2^2*cos(theta2)*dot(theta1)^2`, `sin(2*theta1)`) into canonical form.
+//!
+//! symbolica parses the text; the tree is then walked into the polynomial of the registry.
+//! sin and cos of a sum or of a multiple angle expand first (angle-addition formulas), so
+//! `sin(2*theta)` and `2*sin(theta)*cos(theta)` have the same canonical form.
+
+use super::{CoordId, Expr, ExprError, Registry};
+use crate::spec::wire::CoordinateKind;
+use std::sync::Arc;
+use symbolica::atom::{Atom, AtomCore, AtomView, Symbol};
+use symbolica::domains::rational::{Q, Rational, RationalField};
+use symbolica::poly::polynomial::MultivariatePolynomial;
+
+const MAX_INPUT: usize = 20_000;
+const MAX_POWER: i64 = 64;
+
+/// Only these characters can appear in an expression of the spec syntax.
+fn check_chars(s: &str) -> Result<(), String> {
+    if s.len() > MAX_INPUT {
+        return Err(format!("longer than {MAX_INPUT} characters"));
+    }
+    if s.trim().is_empty() {
+        return Err("empty expression".to_string());
+    }
+    for c in s.chars() {
+        if !(c.is_ascii_alphanumeric() || " \t\n+-*/^()._,[]".contains(c)) {
+            return Err(format!("character `{c}` is not allowed"));
+        }
+    }
+    let mut depth: i32 = 0;
+    for c in s.chars() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            _ => {}
+        }
+        if depth < 0 {
+            return Err("unbalanced parentheses".to_string());
+        }
+        if depth > 64 {
+            return Err("parentheses nested deeper than 64".to_string());
+        }
+    }
+    if depth != 0 {
+        return Err("unbalanced parentheses".to_string());
+    }
+    Ok(())
+}
+
+fn parse_atom(s: &str) -> Result<Atom, ExprError> {
+    check_chars(s).map_err(|reason| ExprError::Parse {
+        input: s.to_string(),
+        reason,
+    })?;
+    symbolica::try_parse!(s).map_err(|e| ExprError::Parse {
+        input: s.to_string(),
+        reason: e.to_string(),
+    })
+}
+
+pub(super) fn parse_scalar(reg: &Arc<Registry>, s: &str) -> Result<Expr, ExprError> {
+    let a = parse_atom(s)?;
+    Walker { reg, input: s }.scalar(a.as_view())
+}
+
+pub(super) fn parse_vector<K: Ord + Copy>(
+    reg: &Arc<Registry>,
+    s: &str,
+    basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
+) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
+    let a = parse_atom(s)?;
+    let w = Walker { reg, input: s };
+    let expanded = a.expand();
+    let mut out: Vec<(K, [Expr; 3])> = Vec::new();
+    let mut add = |k: K, axis: usize, e: Expr| {
+        if let Some(slot) = out.iter_mut().find(|(kk, _)| *kk == k) {
+            slot.1[axis] = &slot.1[axis] + &e;
+        } else {
+            let z = reg.zero();
+            let mut c = [z.clone(), z.clone(), z];
+            c[axis] = e;
+            out.push((k, c));
+        }
+    };
+    let view = expanded.as_view();
+    if let AtomView::Num(n) = view
+        && n.is_zero()
+    {
+        return Ok(out);
+    }
+    let terms: Vec<AtomView> = match view {
+        AtomView::Add(a) => a.iter().collect(),
+        other => vec![other],
+    };
+    for term in terms {
+        let factors: Vec<AtomView> = match term {
+            AtomView::Mul(m) => m.iter().collect(),
+            other => vec![other],
+        };
+        let mut found: Option<(K, usize)> = None;
+        let mut coef = reg.one();
+        for f in factors {
+            if let AtomView::Var(v) = f
+                && let Some(bv) = basis_vector(v.get_symbol().get_stripped_name())
+            {
+                if found.is_some() {
+                    return Err(w.unsupported("a term holds two basis vectors"));
+                }
+                found = Some(bv);
+                continue;
+            }
+            if let AtomView::Pow(p) = f
+                && let AtomView::Var(v) = p.get_base()
+                && basis_vector(v.get_symbol().get_stripped_name()).is_some()
+            {
+                return Err(w.unsupported("a basis vector cannot be raised to a power"));
+            }
+            coef = &coef * &w.scalar(f)?;
+        }
+        match found {
+            Some((k, axis)) => add(k, axis, coef),
+            None => {
+                return Err(w.unsupported(
+                    "every term of a vector must hold one basis vector (x0, y1, z2, …)",
+                ));
+            }
+        }
+    }
+    Ok(out)
+}
+
+struct Walker<'a> {
+    reg: &'a Arc<Registry>,
+    input: &'a str,
+}
+
+impl Walker<'_> {
+    fn unsupported(&self, reason: &str) -> ExprError {
+        ExprError::Unsupported {
+            input: self.input.to_string(),
+            reason: reason.to_string(),
+        }
+    }
+
+    fn number(&self, v: AtomView) -> Result<Rational, ExprError> {
+        let p: MultivariatePolynomial<RationalField, u8> = v
+            .try_to_polynomial(&Q, None)
+            .map_err(|_| self.unsupported("only rational numbers are allowed"))?;
+        if !p.is_constant() {
+            return Err(self.unsupported("only rational numbers are allowed"));
+        }
+        Ok(p.get_constant())
+    }
+
+    fn scalar(&self, v: AtomView) -> Result<Expr, ExprError> {
+        let reg = self.reg;
+        match v {
+            AtomView::Num(_) => Ok(reg.constant(self.number(v)?)),
+            AtomView::Var(var) => {
+                let name = var.get_symbol().get_stripped_name().to_string();
+                if let Some(p) = reg.param(&name) {
+                    return Ok(p);
+                }
+                if let Some(q) = reg.coord(&name) {
+                    return reg.value(q).ok_or_else(|| {
+                        self.unsupported(&format!(
+                            "the angle `{name}` enters only through sin({name}) and cos({name})"
+                        ))
+                    });
+                }
+                Err(ExprError::UnknownName {
+                    name,
+                    input: self.input.to_string(),
+                })
+            }
+            AtomView::Add(a) => {
+                let mut acc = reg.zero();
+                for t in a.iter() {
+                    acc = acc + &self.scalar(t)?;
+                }
+                Ok(acc)
+            }
+            AtomView::Mul(m) => {
+                let mut acc = reg.one();
+                for t in m.iter() {
+                    acc = &acc * &self.scalar(t)?;
+                }
+                Ok(acc)
+            }
+            AtomView::Pow(p) => {
+                let (base, exp) = p.get_base_exp();
+                let e = self.number(exp)?;
+                if !e.is_integer() {
+                    return Err(self.unsupported("only integer powers are allowed"));
+                }
+                let n = e.to_f64() as i64;
+                if n.abs() > MAX_POWER {
+                    return Err(self.unsupported(&format!("powers are limited to ±{MAX_POWER}")));
+                }
+                if n >= 0 {
+                    return Ok(self.scalar(base)?.pow(n as u32));
+                }
+                // A negative power is allowed of a number only: the canonical form is a
+                // polynomial.
+                let b = self.scalar(base)?;
+                match b.as_rational() {
+                    Some(r) if !r.is_zero() => Ok(reg.constant(r.inv().pow((-n) as u64))),
+                    Some(_) => Err(self.unsupported("division by zero")),
+                    None => Err(self.unsupported(
+                        "division by a parameter or a coordinate is not supported: the exact \
+                         form is a polynomial (write 1/12*m*L^2, not m*L^2/(12*k))",
+                    )),
+                }
+            }
+            AtomView::Fun(f) => {
+                let s = f.get_symbol();
+                let name = s.get_stripped_name();
+                if f.get_nargs() != 1 {
+                    return Err(self.unsupported(&format!("`{name}` takes one argument")));
+                }
+                let arg = f.get(0);
+                if s == Symbol::SIN || s == Symbol::COS {
+                    let (c, sn) = self.trig(arg)?;
+                    return Ok(if s == Symbol::SIN { sn } else { c });
+                }
+                let order = match name {
+                    "dot" => 1,
+                    "ddot" => 2,
+                    _ => {
+                        return Err(self.unsupported(&format!(
+                            "unknown function `{name}` (known: sin, cos, dot, ddot)"
+                        )));
+                    }
+                };
+                let AtomView::Var(qv) = arg else {
+                    return Err(self.unsupported(&format!("{name}() takes a coordinate name")));
+                };
+                let qsym = qv.get_symbol();
+                let qn = qsym.get_stripped_name();
+                let q = reg.coord(qn).ok_or_else(|| {
+                    self.unsupported(&format!("{name}({qn}): `{qn}` is not a coordinate"))
+                })?;
+                Ok(reg.rate(q, order))
+            }
+        }
+    }
+
+    /// (cos a, sin a) of an angle a = Σ nᵢ qᵢ + r π, by the angle-addition formulas.
+    fn trig(&self, arg: AtomView) -> Result<(Expr, Expr), ExprError> {
+        let reg = self.reg;
+        let expanded = arg.expand();
+        let terms: Vec<AtomView> = match expanded.as_view() {
+            AtomView::Add(a) => a.iter().collect(),
+            other => vec![other],
+        };
+        let (mut c, mut s) = (reg.one(), reg.zero());
+        let mut pi_multiple = Rational::zero();
+        for t in terms {
+            let (coef, q) = self.angle_term(t)?;
+            match q {
+                AngleTerm::Pi => pi_multiple = &pi_multiple + &coef,
+                AngleTerm::Coord(q) => {
+                    if !coef.is_integer() {
+                        return Err(self.unsupported(
+                            "sin and cos take integer multiples of the angle coordinates",
+                        ));
+                    }
+                    let n = coef.to_f64() as i64;
+                    if n.abs() > MAX_POWER {
+                        return Err(self.unsupported("multiple angle too large"));
+                    }
+                    let (cn, sn) = multiple_angle(reg, q, n);
+                    let nc = &(&c * &cn) - &(&s * &sn);
+                    let ns = &(&s * &cn) + &(&c * &sn);
+                    c = nc;
+                    s = ns;
+                }
+            }
+        }
+        if !pi_multiple.is_zero() {
+            // Exact values for multiples of π/2 only.
+            let twice = &pi_multiple * &Rational::new(2, 1);
+            if !twice.is_integer() {
+                return Err(self.unsupported("constant angles must be multiples of pi/2"));
+            }
+            let k = (twice.to_f64() as i64).rem_euclid(4);
+            let (pc, ps) = [(1, 0), (0, 1), (-1, 0), (0, -1)][k as usize];
+            let (pc, ps) = (reg.integer(pc), reg.integer(ps));
+            let nc = &(&c * &pc) - &(&s * &ps);
+            let ns = &(&s * &pc) + &(&c * &ps);
+            c = nc;
+            s = ns;
+        }
+        Ok((c, s))
+    }
+
+    fn angle_term(&self, t: AtomView) -> Result<(Rational, AngleTerm), ExprError> {
+        let factors: Vec<AtomView> = match t {
+            AtomView::Mul(m) => m.iter().collect(),
+            other => vec![other],
+        };
+        let mut coef = Rational::one();
+        let mut what: Option<AngleTerm> = None;
+        for f in factors {
+            match f {
+                AtomView::Num(_) => coef = &coef * &self.number(f)?,
+                AtomView::Var(v) => {
+                    let sym = v.get_symbol();
+                    let name = sym.get_stripped_name();
+                    let this = if sym == Symbol::PI || name == "pi" {
+                        AngleTerm::Pi
+                    } else {
+                        match self.reg.coord(name) {
+                            Some(q) if self.reg.coord_info(q).kind == CoordinateKind::Angle => {
+                                AngleTerm::Coord(q)
+                            }
+                            _ => {
+                                return Err(self.unsupported(&format!(
+                                    "`{name}` in sin/cos is not an angle coordinate (declare \
+                                     constant angles as angle coordinates with rate 0)"
+                                )));
+                            }
+                        }
+                    };
+                    if what.is_some() {
+                        return Err(self.unsupported("sin and cos take a linear angle"));
+                    }
+                    what = Some(this);
+                }
+                _ => return Err(self.unsupported("sin and cos take a linear angle")),
+            }
+        }
+        match what {
+            Some(w) => Ok((coef, w)),
+            None => Err(self.unsupported(
+                "a constant angle in sin/cos must be a multiple of pi/2 (declare other constant \
+                 angles as angle coordinates with rate 0)",
+            )),
+        }
+    }
+}
+
+enum AngleTerm {
+    Pi,
+    Coord(CoordId),
+}
+
+/// (cos nq, sin nq) by repeated angle addition (de Moivre), for any integer n.
+fn multiple_angle(reg: &Arc<Registry>, q: CoordId, n: i64) -> (Expr, Expr) {
+    let (c1, s1) = (reg.cos(q), reg.sin(q));
+    let (mut c, mut s) = (reg.one(), reg.zero());
+    for _ in 0..n.unsigned_abs() {
+        let nc = &(&c * &c1) - &(&s * &s1);
+        let ns = &(&s * &c1) + &(&c * &s1);
+        c = nc;
+        s = ns;
+    }
+    if n < 0 { (c, -s) } else { (c, s) }
+}

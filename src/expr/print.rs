@@ -1,0 +1,319 @@
+//! Printing: the plain-text form (parsable back) and the presentation form, collected by
+//! kinematic monomials (q̈ᵢ, q̇ᵢq̇ⱼ) with the common parameter factor of each group pulled out.
+
+use super::{CoordId, Expr, Registry, VarRole};
+use std::cmp::Reverse;
+use std::sync::Arc;
+use symbolica::domains::rational::Rational;
+
+/// A term split the way a teacher reads it.
+#[derive(Debug, Clone)]
+pub struct TermParts {
+    /// Rational coefficient.
+    pub coef: Rational,
+    /// (parameter index, exponent), in declaration order.
+    pub params: Vec<(usize, u8)>,
+    /// (coordinate, is_cos, exponent): trigonometric factors.
+    pub trig: Vec<(CoordId, bool, u8)>,
+    /// (coordinate, exponent): length coordinates.
+    pub values: Vec<(CoordId, u8)>,
+    /// (coordinate, derivative order, exponent): the kinematic monomial.
+    pub rates: Vec<(CoordId, u8, u8)>,
+}
+
+/// Splits exponents into the parts of a term.
+pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
+    let mut t = TermParts {
+        coef: coef.clone(),
+        params: vec![],
+        trig: vec![],
+        values: vec![],
+        rates: vec![],
+    };
+    for (i, &k) in e.iter().enumerate() {
+        if k == 0 {
+            continue;
+        }
+        match reg.role(i) {
+            VarRole::Parameter(p) => t.params.push((p, k)),
+            VarRole::Cos(q) => t.trig.push((q, true, k)),
+            VarRole::Sin(q) => t.trig.push((q, false, k)),
+            VarRole::Value(q) => t.values.push((q, k)),
+            VarRole::Rate(q, o) => t.rates.push((q, o, k)),
+        }
+    }
+    t.params.sort();
+    t.trig.sort_by_key(|&(q, is_cos, _)| (q, !is_cos));
+    t.rates.sort_by_key(|&(q, o, _)| (Reverse(o), q));
+    t
+}
+
+/// Ordering key of a kinematic monomial: higher derivatives first, then by coordinate.
+fn rate_key(rates: &[(CoordId, u8, u8)]) -> Vec<(Reverse<u8>, CoordId, Reverse<u8>)> {
+    rates
+        .iter()
+        .map(|&(q, o, k)| (Reverse(o), q, Reverse(k)))
+        .collect()
+}
+
+fn other_key(t: &TermParts) -> (Vec<(usize, Reverse<u8>)>, Vec<(CoordId, bool, Reverse<u8>)>) {
+    (
+        t.params.iter().map(|&(p, k)| (p, Reverse(k))).collect(),
+        t.trig
+            .iter()
+            .map(|&(q, c, k)| (q, !c, Reverse(k)))
+            .collect(),
+    )
+}
+
+/// The terms of an expression in the stable reading order.
+pub fn ordered_terms(e: &Expr) -> Vec<TermParts> {
+    let reg = e.registry();
+    let mut v: Vec<TermParts> = e.terms().map(|(c, x)| split(reg, c, x)).collect();
+    v.sort_by(|a, b| {
+        let ka = (rate_key(&a.rates), other_key(a));
+        let kb = (rate_key(&b.rates), other_key(b));
+        ka.cmp(&kb)
+    });
+    v
+}
+
+fn factors_text(reg: &Registry, t: &TermParts) -> Vec<String> {
+    let pw = |base: String, k: u8| {
+        if k == 1 { base } else { format!("{base}^{k}") }
+    };
+    let mut f = Vec::new();
+    for &(p, k) in &t.params {
+        f.push(pw(reg.parameters()[p].clone(), k));
+    }
+    for &(q, is_cos, k) in &t.trig {
+        let n = &reg.coord_info(q).name;
+        f.push(pw(
+            format!("{}({n})", if is_cos { "cos" } else { "sin" }),
+            k,
+        ));
+    }
+    for &(q, k) in &t.values {
+        f.push(pw(reg.coord_info(q).name.clone(), k));
+    }
+    for &(q, o, k) in &t.rates {
+        let n = &reg.coord_info(q).name;
+        let head = ["dot", "ddot", "dddot"][(o.clamp(1, 3) - 1) as usize];
+        f.push(pw(format!("{head}({n})"), k));
+    }
+    f
+}
+
+/// One term as text, with its sign folded into the returned flag (true = negative).
+fn term_text(reg: &Registry, t: &TermParts) -> (bool, String) {
+    let neg = t.coef.is_negative();
+    let abs = t.coef.abs();
+    let f = factors_text(reg, t);
+    let s = if f.is_empty() {
+        abs.to_string()
+    } else if abs.is_one() {
+        f.join("*")
+    } else {
+        format!("{abs}*{}", f.join("*"))
+    };
+    (neg, s)
+}
+
+fn join_signed(parts: Vec<(bool, String)>) -> String {
+    if parts.is_empty() {
+        return "0".to_string();
+    }
+    let mut out = String::new();
+    for (i, (neg, s)) in parts.into_iter().enumerate() {
+        match (i, neg) {
+            (0, true) => out.push_str(&format!("-{s}")),
+            (0, false) => out.push_str(&s),
+            (_, true) => out.push_str(&format!(" - {s}")),
+            (_, false) => out.push_str(&format!(" + {s}")),
+        }
+    }
+    out
+}
+
+/// Plain text of the canonical form.
+pub fn to_text(e: &Expr) -> String {
+    let reg = e.registry();
+    join_signed(ordered_terms(e).iter().map(|t| term_text(reg, t)).collect())
+}
+
+/// One group of the presentation form: `factor · (rest) · kinematic`.
+#[derive(Debug, Clone)]
+pub struct PresentationGroup {
+    /// Kinematic monomial: (coordinate, derivative order, exponent); empty for the part
+    /// with no rate.
+    pub kinematic: Vec<(CoordId, u8, u8)>,
+    /// Common factor of the group: a signed rational times parameters (and trigonometric
+    /// factors) shared by every term.
+    pub factor: TermParts,
+    /// What remains once the factor is pulled out (1 when the group is one term).
+    pub rest: Expr,
+}
+
+/// The presentation form of an expression: groups by kinematic monomial, in reading order.
+#[derive(Debug, Clone)]
+pub struct Presentation {
+    /// The groups, q̈ first, then products of rates, then the rest.
+    pub groups: Vec<PresentationGroup>,
+    reg: Arc<Registry>,
+}
+
+impl Expr {
+    /// The presentation form: terms collected by kinematic monomial (q̈ᵢ, q̇ᵢq̇ⱼ), each group's
+    /// common factor (sign, rational, parameters and trigonometric factors) pulled out.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into(), "L".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let e = reg.parse("m*L^2*ddot(q) + m*L^2*cos(q)*sin(q)*dot(q)^2 - m*L*sin(q)*dot(q)^2").unwrap();
+    /// assert_eq!(e.presentation().to_string(),
+    ///     "m*L^2*ddot(q) + m*L*sin(q)*(L*cos(q) - 1)*dot(q)^2");
+    /// ```
+    pub fn presentation(&self) -> Presentation {
+        let reg = self.registry().clone();
+        let terms = ordered_terms(self);
+        let mut groups: Vec<(Vec<(CoordId, u8, u8)>, Vec<TermParts>)> = Vec::new();
+        for t in terms {
+            match groups.iter_mut().find(|(k, _)| *k == t.rates) {
+                Some(g) => g.1.push(t),
+                None => groups.push((t.rates.clone(), vec![t])),
+            }
+        }
+        let groups = groups
+            .into_iter()
+            .map(|(kin, ts)| {
+                let factor = common_factor(&ts);
+                let rest_terms = ts
+                    .iter()
+                    .map(|t| {
+                        let mut e = vec![0u8; reg.nvars()];
+                        let strip = |e: &mut Vec<u8>, role: VarRole, k: u8| {
+                            for i in 0..reg.nvars() {
+                                if reg.role(i) == role {
+                                    e[i] += k;
+                                }
+                            }
+                        };
+                        for &(p, k) in &t.params {
+                            let fk = factor
+                                .params
+                                .iter()
+                                .find(|x| x.0 == p)
+                                .map(|x| x.1)
+                                .unwrap_or(0);
+                            strip(&mut e, VarRole::Parameter(p), k - fk);
+                        }
+                        for &(q, c, k) in &t.trig {
+                            let fk = factor
+                                .trig
+                                .iter()
+                                .find(|x| x.0 == q && x.1 == c)
+                                .map(|x| x.2)
+                                .unwrap_or(0);
+                            let role = if c { VarRole::Cos(q) } else { VarRole::Sin(q) };
+                            strip(&mut e, role, k - fk);
+                        }
+                        for &(q, k) in &t.values {
+                            strip(&mut e, VarRole::Value(q), k);
+                        }
+                        (&t.coef * &factor.coef.inv(), e)
+                    })
+                    .collect();
+                PresentationGroup {
+                    kinematic: kin,
+                    factor,
+                    rest: Expr::from_terms(&reg, rest_terms),
+                }
+            })
+            .collect();
+        Presentation { groups, reg }
+    }
+}
+
+/// The common factor of a group: gcd of the monomials in parameters and trigonometric
+/// factors, with the rational content and the sign of the first term.
+fn common_factor(ts: &[TermParts]) -> TermParts {
+    let first = &ts[0];
+    let mut params = first.params.clone();
+    let mut trig = first.trig.clone();
+    for t in &ts[1..] {
+        params = params
+            .into_iter()
+            .filter_map(|(p, k)| t.params.iter().find(|x| x.0 == p).map(|x| (p, k.min(x.1))))
+            .collect();
+        trig = trig
+            .into_iter()
+            .filter_map(|(q, c, k)| {
+                t.trig
+                    .iter()
+                    .find(|x| x.0 == q && x.1 == c)
+                    .map(|x| (q, c, k.min(x.2)))
+            })
+            .collect();
+    }
+    let mut coef = first.coef.abs();
+    for t in &ts[1..] {
+        coef = coef.gcd(&t.coef);
+    }
+    let coef = if first.coef.is_negative() {
+        coef.abs().neg()
+    } else {
+        coef.abs()
+    };
+    TermParts {
+        coef,
+        params,
+        trig,
+        values: vec![],
+        rates: vec![],
+    }
+}
+
+impl Presentation {
+    /// The registry of the expression.
+    pub fn registry(&self) -> &Arc<Registry> {
+        &self.reg
+    }
+}
+
+impl std::fmt::Display for Presentation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let reg = &self.reg;
+        let mut parts = Vec::new();
+        for g in &self.groups {
+            let (neg, head) = term_text(reg, &g.factor);
+            let mut factors: Vec<String> = Vec::new();
+            if !(head == "1" && g.rest.nterms() > 1) || g.rest.nterms() == 1 {
+                if head != "1" || (g.kinematic.is_empty() && g.rest.nterms() == 1) {
+                    factors.push(head);
+                }
+            }
+            if !(g.rest.nterms() == 1 && g.rest.as_rational().is_some_and(|r| r.is_one())) {
+                let r = to_text(&g.rest);
+                factors.push(if g.rest.nterms() > 1 {
+                    format!("({r})")
+                } else {
+                    r
+                });
+            }
+            let kin = TermParts {
+                coef: Rational::one(),
+                params: vec![],
+                trig: vec![],
+                values: vec![],
+                rates: g.kinematic.clone(),
+            };
+            factors.extend(factors_text(reg, &kin));
+            if factors.is_empty() {
+                factors.push("1".to_string());
+            }
+            parts.push((neg, factors.join("*")));
+        }
+        f.write_str(&join_signed(parts))
+    }
+}

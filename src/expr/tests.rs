@@ -1,0 +1,148 @@
+use super::*;
+
+fn reg() -> Arc<Registry> {
+    Registry::new(
+        &["m".into(), "L".into(), "k".into()],
+        &[
+            ("a".into(), CoordinateKind::Angle),
+            ("b".into(), CoordinateKind::Angle),
+            ("x".into(), CoordinateKind::Length),
+        ],
+    )
+    .unwrap()
+}
+
+#[test]
+fn pythagorean_identity_is_exactly_one() {
+    let r = reg();
+    let e = r.parse("sin(a)^2 + cos(a)^2").unwrap();
+    assert_eq!(e, r.one());
+    let e = r.parse("sin(a)^4 - cos(a)^4 + 2*cos(a)^2").unwrap();
+    assert_eq!(e, r.one());
+}
+
+#[test]
+fn multiple_and_sum_angles_expand() {
+    let r = reg();
+    assert_eq!(
+        r.parse("sin(2*a)").unwrap(),
+        r.parse("2*sin(a)*cos(a)").unwrap()
+    );
+    assert_eq!(
+        r.parse("cos(2*a)").unwrap(),
+        r.parse("1 - 2*sin(a)^2").unwrap()
+    );
+    assert_eq!(
+        r.parse("cos(a + b)").unwrap(),
+        r.parse("cos(a)*cos(b) - sin(a)*sin(b)").unwrap()
+    );
+    assert_eq!(
+        r.parse("sin(a - b)").unwrap(),
+        r.parse("sin(a)*cos(b) - cos(a)*sin(b)").unwrap()
+    );
+    assert_eq!(
+        r.parse("sin(3*a)").unwrap(),
+        r.parse("3*sin(a) - 4*sin(a)^3").unwrap()
+    );
+    assert_eq!(
+        r.parse("cos(a + pi/2)").unwrap(),
+        r.parse("-sin(a)").unwrap()
+    );
+    assert_eq!(r.parse("sin(-a)").unwrap(), r.parse("-sin(a)").unwrap());
+}
+
+#[test]
+fn time_derivative_follows_the_chain_rule() {
+    let r = reg();
+    let e = r.parse("cos(a)").unwrap();
+    assert_eq!(e.dt(), r.parse("-sin(a)*dot(a)").unwrap());
+    let e = r.parse("m*x^2*sin(a)*dot(b)").unwrap();
+    let expected = r
+        .parse("2*m*x*dot(x)*sin(a)*dot(b) + m*x^2*cos(a)*dot(a)*dot(b) + m*x^2*sin(a)*ddot(b)")
+        .unwrap();
+    assert_eq!(e.dt(), expected);
+    // d/dt (sin a cos a) = cos 2a · ȧ = (2cos²a − 1) ȧ, canonical.
+    assert_eq!(
+        r.parse("sin(a)*cos(a)").unwrap().dt(),
+        r.parse("(2*cos(a)^2 - 1)*dot(a)").unwrap()
+    );
+}
+
+#[test]
+fn imposed_rate_replaces_dot_and_kills_ddot() {
+    let r = Registry::with_rates(
+        &["w".into()],
+        &[("a".into(), CoordinateKind::Angle, Some("w".into()))],
+    )
+    .unwrap();
+    assert_eq!(r.parse("dot(a)").unwrap(), r.parse("w").unwrap());
+    assert!(r.parse("ddot(a)").unwrap().is_zero());
+    assert_eq!(
+        r.parse("sin(a)").unwrap().dt(),
+        r.parse("w*cos(a)").unwrap()
+    );
+}
+
+#[test]
+fn text_form_parses_back_to_itself() {
+    let r = reg();
+    let e = r
+        .parse("(m*L*cos(a) - 1/2*k*sin(b))^2*dot(a)*ddot(b) - x*dot(x)^2 + 3/4")
+        .unwrap();
+    let back = r.parse(&e.to_string()).unwrap();
+    assert_eq!(back, e);
+}
+
+#[test]
+fn evaluation_matches_floating_point_trigonometry() {
+    let r = reg();
+    let e = r.parse("m*L^2*sin(2*a)*dot(b)^2").unwrap();
+    let (a, b) = (0.7_f64, -1.1_f64);
+    let mut point = vec![0.0; r.nvars()];
+    for i in 0..r.nvars() {
+        point[i] = match r.role(i) {
+            VarRole::Parameter(0) => 2.0,
+            VarRole::Parameter(1) => 0.5,
+            VarRole::Cos(CoordId(0)) => a.cos(),
+            VarRole::Sin(CoordId(0)) => a.sin(),
+            VarRole::Rate(CoordId(1), 1) => b,
+            _ => 0.3,
+        };
+    }
+    let expected = 2.0 * 0.25 * (2.0 * a).sin() * b * b;
+    assert!((e.eval(&point) - expected).abs() < 1e-12);
+}
+
+#[test]
+fn bad_expressions_are_rejected_with_a_reason() {
+    let r = reg();
+    assert!(matches!(
+        r.parse("m*zz"),
+        Err(ExprError::UnknownName { .. })
+    ));
+    assert!(matches!(r.parse("m/k"), Err(ExprError::Unsupported { .. })));
+    assert!(matches!(r.parse("a*m"), Err(ExprError::Unsupported { .. })));
+    assert!(matches!(
+        r.parse("sin(a*b)"),
+        Err(ExprError::Unsupported { .. })
+    ));
+    assert!(matches!(
+        r.parse("sin(a + 1)"),
+        Err(ExprError::Unsupported { .. })
+    ));
+    assert!(matches!(
+        r.parse("\\input{x}"),
+        Err(ExprError::Parse { .. })
+    ));
+    assert!(matches!(r.parse("(m"), Err(ExprError::Parse { .. })));
+    assert!(matches!(r.parse(""), Err(ExprError::Parse { .. })));
+}
+
+#[test]
+fn substitution_of_a_hypothesis() {
+    let r = reg();
+    let e = r.parse("k*m + ddot(a)*L").unwrap();
+    let k = r.param_var["k"];
+    let e2 = e.substitute(k, &r.zero());
+    assert_eq!(e2, r.parse("ddot(a)*L").unwrap());
+}

@@ -1,0 +1,302 @@
+//! Quantity notation: the course's way of naming a result (`delta(O2,2/0).x2`) is its id.
+
+use std::fmt;
+
+/// A motion i/j: the solid, set or frame `moving` relative to `reference`.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Motion {
+    /// The moving solid, set or frame (`2`, `E`).
+    pub moving: String,
+    /// The reference solid or frame (`0`).
+    pub reference: String,
+}
+
+impl fmt::Display for Motion {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}/{}", self.moving, self.reference)
+    }
+}
+
+/// What is asked for, before any basis or projection. Fields are the notation's arguments:
+/// `point` a point name, `motion` a motion i/j, `solid` a solid name.
+#[allow(missing_docs)]
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum QuantityKind {
+    /// Ω(i/j)
+    Omega(Motion),
+    /// V(P, i/j)
+    Velocity { point: String, motion: Motion },
+    /// Γ(P, i/j)
+    Acceleration { point: String, motion: Motion },
+    /// I(P, S): inertia operator of solid S at P.
+    Inertia { point: String, solid: String },
+    /// Rc(S/R): kinetic resultant m V(G, S/R).
+    KineticResultant(Motion),
+    /// σ(A, S/R)
+    KineticMoment { point: String, motion: Motion },
+    /// Rd(S/R): dynamic resultant m Γ(G, S/R).
+    DynamicResultant(Motion),
+    /// δ(A, S/R)
+    DynamicMoment { point: String, motion: Motion },
+    /// {V(i/j)}_A: kinematic torsor.
+    KinematicTorsor { motion: Motion, point: String },
+    /// {C(S/R)}_A: kinetic torsor.
+    KineticTorsor { motion: Motion, point: String },
+    /// {D(S/R)}_A: dynamic torsor.
+    DynamicTorsor { motion: Motion, point: String },
+}
+
+/// A requested quantity: a kind, an optional basis to express it in, an optional projection.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Quantity {
+    /// What is asked for.
+    pub kind: QuantityKind,
+    /// `in B2`: the frame whose basis the result is written in.
+    pub basis: Option<String>,
+    /// `.x2`: scalar projection on a basis vector (frame name, axis letter).
+    pub projection: Option<(String, char)>,
+}
+
+/// Why a quantity string is not in the notation.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("quantity `{input}`: {reason}")]
+pub struct NotationError {
+    /// The string given.
+    pub input: String,
+    /// What is wrong with it.
+    pub reason: String,
+}
+
+impl Quantity {
+    /// Parses the course notation.
+    ///
+    /// ```
+    /// use torseur::quantity::{Quantity, QuantityKind};
+    /// let q = Quantity::parse("delta(O2,2/0).x2").unwrap();
+    /// assert!(matches!(q.kind, QuantityKind::DynamicMoment { .. }));
+    /// assert_eq!(q.projection, Some(("2".to_string(), 'x')));
+    /// assert_eq!(q.to_string(), "delta(O2,2/0).x2");
+    /// assert!(Quantity::parse("delta(O2;2/0)").is_err());
+    /// ```
+    pub fn parse(input: &str) -> Result<Quantity, NotationError> {
+        let err = |reason: &str| NotationError {
+            input: input.to_string(),
+            reason: reason.to_string(),
+        };
+        if input.len() > 200 {
+            return Err(err("longer than 200 characters"));
+        }
+        let s: String = input.trim().to_string();
+        // Optional " in B.." suffix.
+        let (body, basis) = match s.rsplit_once(" in ") {
+            Some((b, basis)) => {
+                let basis = basis.trim();
+                let name = basis
+                    .strip_prefix('B')
+                    .ok_or_else(|| err("the basis after `in` is written B<frame>, e.g. B2"))?;
+                check_name(name).map_err(|r| err(&r))?;
+                (b.trim().to_string(), Some(name.to_string()))
+            }
+            None => (s.clone(), None),
+        };
+        let body = body.replace(' ', "");
+        // Optional ".x2" projection (only after a closing parenthesis).
+        let (core, projection) = match body.rfind(").") {
+            Some(pos) => {
+                let v = &body[pos + 2..];
+                let mut chars = v.chars();
+                let axis = chars.next().ok_or_else(|| err("empty projection"))?;
+                if !matches!(axis, 'x' | 'y' | 'z') {
+                    return Err(err("a projection is on x<frame>, y<frame> or z<frame>"));
+                }
+                let frame: String = chars.collect();
+                check_name(&frame).map_err(|r| err(&r))?;
+                (body[..pos + 1].to_string(), Some((frame, axis)))
+            }
+            None => (body.clone(), None),
+        };
+        let kind = if let Some(rest) = core.strip_prefix('{') {
+            // {C(2/0)}_O2
+            let (inner, point) = rest
+                .split_once("}_")
+                .ok_or_else(|| err("a torsor is written {C(S/R)}_A"))?;
+            check_name(point).map_err(|r| err(&r))?;
+            let (letter, args) =
+                call(inner).ok_or_else(|| err("a torsor is written {C(S/R)}_A"))?;
+            let motion = motion(args).map_err(|r| err(&r))?;
+            let point = point.to_string();
+            match letter {
+                "V" => QuantityKind::KinematicTorsor { motion, point },
+                "C" => QuantityKind::KineticTorsor { motion, point },
+                "D" => QuantityKind::DynamicTorsor { motion, point },
+                _ => return Err(err("torsors are {V(..)}, {C(..)} and {D(..)}")),
+            }
+        } else {
+            let (name, args) = call(&core).ok_or_else(|| err("expected name(arguments)"))?;
+            let two = |args: &str| -> Result<(String, Motion), String> {
+                let (p, m) = args
+                    .split_once(',')
+                    .ok_or_else(|| "expected (point,moving/reference)".to_string())?;
+                check_name(p)?;
+                Ok((p.to_string(), motion(m)?))
+            };
+            match name {
+                "Omega" => QuantityKind::Omega(motion(args).map_err(|r| err(&r))?),
+                "Rc" => QuantityKind::KineticResultant(motion(args).map_err(|r| err(&r))?),
+                "Rd" => QuantityKind::DynamicResultant(motion(args).map_err(|r| err(&r))?),
+                "V" | "Gamma" | "sigma" | "delta" => {
+                    let (point, motion) = two(args).map_err(|r| err(&r))?;
+                    match name {
+                        "V" => QuantityKind::Velocity { point, motion },
+                        "Gamma" => QuantityKind::Acceleration { point, motion },
+                        "sigma" => QuantityKind::KineticMoment { point, motion },
+                        _ => QuantityKind::DynamicMoment { point, motion },
+                    }
+                }
+                "I" => {
+                    let (p, solid) = args
+                        .split_once(',')
+                        .ok_or_else(|| err("an inertia operator is written I(P,S)"))?;
+                    check_name(p).map_err(|r| err(&r))?;
+                    check_name(solid).map_err(|r| err(&r))?;
+                    QuantityKind::Inertia {
+                        point: p.to_string(),
+                        solid: solid.to_string(),
+                    }
+                }
+                other => {
+                    return Err(err(&format!(
+                        "unknown quantity `{other}` (known: Omega, V, Gamma, I, Rc, sigma, Rd, \
+                         delta, {{V(..)}}_A, {{C(..)}}_A, {{D(..)}}_A)"
+                    )));
+                }
+            }
+        };
+        if projection.is_some() && matches!(kind, QuantityKind::Inertia { .. }) {
+            return Err(err("an inertia operator cannot be projected"));
+        }
+        if projection.is_some() && kind.is_torsor() {
+            return Err(err("a torsor cannot be projected"));
+        }
+        if projection.is_some() && basis.is_some() {
+            return Err(err("a projection is a scalar: it takes no basis"));
+        }
+        Ok(Quantity {
+            kind,
+            basis,
+            projection,
+        })
+    }
+
+    /// The same quantity expressed in basis `b` (no projection).
+    pub fn with_basis(&self, b: &str) -> Quantity {
+        Quantity {
+            kind: self.kind.clone(),
+            basis: Some(b.to_string()),
+            projection: None,
+        }
+    }
+
+    /// Whether the value is a scalar (a projection).
+    pub fn is_scalar(&self) -> bool {
+        self.projection.is_some()
+    }
+}
+
+impl QuantityKind {
+    /// Whether this is a whole torsor.
+    pub fn is_torsor(&self) -> bool {
+        matches!(
+            self,
+            QuantityKind::KinematicTorsor { .. }
+                | QuantityKind::KineticTorsor { .. }
+                | QuantityKind::DynamicTorsor { .. }
+        )
+    }
+
+    /// The motion involved, if any.
+    pub fn motion(&self) -> Option<&Motion> {
+        use QuantityKind::*;
+        match self {
+            Omega(m) | KineticResultant(m) | DynamicResultant(m) => Some(m),
+            Velocity { motion, .. }
+            | Acceleration { motion, .. }
+            | KineticMoment { motion, .. }
+            | DynamicMoment { motion, .. }
+            | KinematicTorsor { motion, .. }
+            | KineticTorsor { motion, .. }
+            | DynamicTorsor { motion, .. } => Some(motion),
+            Inertia { .. } => None,
+        }
+    }
+}
+
+impl fmt::Display for QuantityKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use QuantityKind::*;
+        match self {
+            Omega(m) => write!(f, "Omega({m})"),
+            Velocity { point, motion } => write!(f, "V({point},{motion})"),
+            Acceleration { point, motion } => write!(f, "Gamma({point},{motion})"),
+            Inertia { point, solid } => write!(f, "I({point},{solid})"),
+            KineticResultant(m) => write!(f, "Rc({m})"),
+            KineticMoment { point, motion } => write!(f, "sigma({point},{motion})"),
+            DynamicResultant(m) => write!(f, "Rd({m})"),
+            DynamicMoment { point, motion } => write!(f, "delta({point},{motion})"),
+            KinematicTorsor { motion, point } => write!(f, "{{V({motion})}}_{point}"),
+            KineticTorsor { motion, point } => write!(f, "{{C({motion})}}_{point}"),
+            DynamicTorsor { motion, point } => write!(f, "{{D({motion})}}_{point}"),
+        }
+    }
+}
+
+impl fmt::Display for Quantity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.kind)?;
+        if let Some((frame, axis)) = &self.projection {
+            write!(f, ".{axis}{frame}")?;
+        }
+        if let Some(b) = &self.basis {
+            write!(f, " in B{b}")?;
+        }
+        Ok(())
+    }
+}
+
+/// Splits `name(args)`.
+fn call(s: &str) -> Option<(&str, &str)> {
+    let open = s.find('(')?;
+    let inner = s[open + 1..].strip_suffix(')')?;
+    if inner.contains('(') || inner.contains(')') {
+        return None;
+    }
+    Some((&s[..open], inner))
+}
+
+fn motion(s: &str) -> Result<Motion, String> {
+    let (a, b) = s
+        .split_once('/')
+        .ok_or_else(|| format!("expected a motion moving/reference, got `{s}`"))?;
+    check_name(a)?;
+    check_name(b)?;
+    Ok(Motion {
+        moving: a.to_string(),
+        reference: b.to_string(),
+    })
+}
+
+/// Names in the notation are ASCII letters, digits and `_`, starting with a letter or digit.
+pub fn check_name(s: &str) -> Result<(), String> {
+    if s.is_empty() {
+        return Err("empty name".to_string());
+    }
+    if s.len() > 32 {
+        return Err(format!("name `{}…` longer than 32 characters", &s[..32]));
+    }
+    if !s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') || s.starts_with('_') {
+        return Err(format!(
+            "name `{s}`: only ASCII letters, digits and `_` are allowed"
+        ));
+    }
+    Ok(())
+}
