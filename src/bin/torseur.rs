@@ -1,1 +1,195 @@
-fn main() {}
+//! The `torseur` command line: parse arguments, call the library, print.
+//!
+//! Exit codes: 0 success, 1 a mathematical mismatch, 2 bad input or usage.
+
+use anyhow::{Context, Result, anyhow};
+use clap::{Parser, Subcommand};
+use std::fs::File;
+use std::io::Write;
+use std::os::fd::FromRawFd;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use torseur::derivation::{Derivation, derive};
+use torseur::mechanism::Mechanism;
+use torseur::output;
+use torseur::quantity::Quantity;
+
+#[derive(Parser)]
+#[command(
+    name = "torseur",
+    version,
+    about = "Exact derivations of rigid-body dynamics in the course's torsor notation"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Closed forms of the spec's quantities (or of those given with --quantity).
+    Derive {
+        /// Problem spec (JSON).
+        spec: PathBuf,
+        /// A quantity in course notation, e.g. `delta(O2,2/0).x2`; repeatable.
+        #[arg(long = "quantity", short = 'q')]
+        quantities: Vec<String>,
+        /// Also write the full results (canonical and presentation forms, steps) as JSON.
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
+    /// Numbers: evaluates quantities at the values of a JSON file.
+    Eval {
+        /// Problem spec (JSON).
+        spec: PathBuf,
+        /// Values file: {"parameters":{..},"coordinates":{"q":[q,qdot,qddot]}}.
+        #[arg(long)]
+        at: PathBuf,
+        /// A quantity in course notation; repeatable.
+        #[arg(long = "quantity", short = 'q')]
+        quantities: Vec<String>,
+    },
+}
+
+/// A failure with its exit code.
+struct Failure {
+    code: u8,
+    error: anyhow::Error,
+}
+
+fn bad_input(e: impl Into<anyhow::Error>) -> Failure {
+    Failure {
+        code: 2,
+        error: e.into(),
+    }
+}
+
+fn main() -> ExitCode {
+    // symbolica prints its licence notice on stdout: stdout is kept for our own output, and
+    // file descriptor 1 is pointed at stderr so the notice stays visible there.
+    let out = match redirect_stdout() {
+        Ok(f) => f,
+        Err(e) => {
+            eprintln!("torseur: error: {e:#}");
+            return ExitCode::from(2);
+        }
+    };
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    match run(cli, out) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(f) => {
+            eprintln!("torseur: error: {:#}", f.error);
+            ExitCode::from(f.code)
+        }
+    }
+}
+
+fn redirect_stdout() -> Result<File> {
+    // SAFETY: dup and dup2 on the standard descriptors; the duplicate is owned by the File.
+    unsafe {
+        let saved = libc::dup(1);
+        if saved < 0 {
+            return Err(anyhow!("cannot duplicate stdout"));
+        }
+        if libc::dup2(2, 1) < 0 {
+            return Err(anyhow!("cannot redirect stdout"));
+        }
+        Ok(File::from_raw_fd(saved))
+    }
+}
+
+fn load(spec: &Path) -> Result<Mechanism, Failure> {
+    torseur::spec::load(spec).map_err(bad_input)
+}
+
+fn quantities(m: &Mechanism, given: &[String]) -> Result<Vec<Quantity>, Failure> {
+    if given.is_empty() {
+        return Ok(m.quantities.clone());
+    }
+    given
+        .iter()
+        .map(|q| Quantity::parse(q).map_err(bad_input))
+        .collect()
+}
+
+fn derive_all(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, Failure> {
+    qs.iter().map(|q| derive(m, q).map_err(bad_input)).collect()
+}
+
+/// Writes a file atomically: a temporary file in the same directory, renamed over the target.
+fn write_atomic(path: &Path, content: &[u8]) -> Result<(), Failure> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let mut tmp = tempfile::NamedTempFile::new_in(&dir)
+        .with_context(|| format!("cannot write in {}", dir.display()))
+        .map_err(bad_input)?;
+    tmp.write_all(content)
+        .and_then(|_| tmp.flush())
+        .with_context(|| format!("cannot write {}", path.display()))
+        .map_err(bad_input)?;
+    tmp.persist(path)
+        .map_err(|e| anyhow!("cannot write {}: {}", path.display(), e.error))
+        .map_err(bad_input)?;
+    Ok(())
+}
+
+fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
+    let _lock = torseur::lock::ProcessLock::acquire(|| {
+        eprintln!(
+            "torseur: waiting for another torseur run to finish (symbolica allows one at a time)"
+        )
+    })
+    .context("cannot take the torseur lock")
+    .map_err(bad_input)?;
+    let mut emit = |s: &str| -> Result<(), Failure> {
+        out.write_all(s.as_bytes())
+            .and_then(|_| out.flush())
+            .map_err(|e| bad_input(anyhow!("cannot write to stdout: {e}")))
+    };
+    match cli.command {
+        Command::Derive {
+            spec,
+            quantities: qs,
+            json,
+        } => {
+            let m = load(&spec)?;
+            let qs = quantities(&m, &qs)?;
+            let ds = derive_all(&m, &qs)?;
+            if let Some(path) = json {
+                let j = output::derive_json(&m, &ds);
+                let text = serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n";
+                write_atomic(&path, text.as_bytes())?;
+            }
+            emit(&output::derive_text(&m, &ds))
+        }
+        Command::Eval {
+            spec,
+            at,
+            quantities: qs,
+        } => {
+            let m = load(&spec)?;
+            let text = std::fs::read_to_string(&at)
+                .with_context(|| format!("cannot read {}", at.display()))
+                .map_err(bad_input)?;
+            let values = output::Values::parse(&text).map_err(bad_input)?;
+            let point = output::numeric_point(&m, &values).map_err(bad_input)?;
+            let qs = quantities(&m, &qs)?;
+            let ds = derive_all(&m, &qs)?;
+            let items: Vec<serde_json::Value> = ds
+                .iter()
+                .map(|d| output::eval_value(&m, &d.quantity.to_string(), &d.value, &point))
+                .collect();
+            let j = serde_json::json!({ "quantities": items });
+            emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))
+        }
+    }
+}

@@ -448,6 +448,19 @@ impl Expr {
             .all(|i| matches!(self.reg.roles[i], VarRole::Parameter(_)) || self.p.degree(i) == 0)
     }
 
+    /// The variable index if the expression is exactly one variable (coefficient 1).
+    pub fn single_variable(&self) -> Option<usize> {
+        if self.p.nterms() != 1 || !self.p.coefficients[0].is_one() {
+            return None;
+        }
+        let e = self.p.exponents(0);
+        let nz: Vec<usize> = (0..e.len()).filter(|&i| e[i] != 0).collect();
+        match nz.as_slice() {
+            [i] if e[*i] == 1 => Some(*i),
+            _ => None,
+        }
+    }
+
     /// Whether the variable `i` occurs.
     #[allow(dead_code)]
     pub(crate) fn contains_var(&self, i: usize) -> bool {

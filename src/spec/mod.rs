@@ -1,2 +1,77 @@
-//! Problem specs: JSON wire types and their validation into a mechanism.
+//! Problem specs: JSON wire types and their validation into a [`Mechanism`](crate::mechanism::Mechanism).
+
+mod validate;
 pub mod wire;
+
+pub use validate::{build, parse_spec};
+
+use crate::mechanism::Mechanism;
+use std::path::Path;
+
+/// Why a spec was refused. Every variant names the place in the file.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum SpecError {
+    /// The file could not be read.
+    #[error("{file}: {message}")]
+    Io {
+        /// The file.
+        file: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// Not JSON, or not the spec's shape.
+    #[error("at {path} (line {line}, column {column}): {message}")]
+    Json {
+        /// JSON path of the value (`solids[1].mass`).
+        path: String,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// Valid JSON whose content is wrong (an unknown frame, a cycle, a bad expression...).
+    #[error("at {path}: {message}")]
+    Invalid {
+        /// JSON path of the value.
+        path: String,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+/// Largest spec file accepted (a hand-written spec is a few kilobytes).
+pub const MAX_SPEC_BYTES: u64 = 4 << 20;
+
+/// Reads, parses and validates a spec file.
+///
+/// ```
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// assert_eq!(m.bodies.len(), 2);
+/// ```
+pub fn load(path: impl AsRef<Path>) -> Result<Mechanism, SpecError> {
+    let p = path.as_ref();
+    let file = p.display().to_string();
+    let io = |m: String| SpecError::Io {
+        file: file.clone(),
+        message: m,
+    };
+    let meta = std::fs::metadata(p).map_err(|e| io(e.to_string()))?;
+    if meta.len() > MAX_SPEC_BYTES {
+        return Err(io(format!("larger than {MAX_SPEC_BYTES} bytes")));
+    }
+    let bytes = std::fs::read(p).map_err(|e| io(e.to_string()))?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        io(format!(
+            "not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    from_str(&text)
+}
+
+/// Parses and validates spec text.
+pub fn from_str(text: &str) -> Result<Mechanism, SpecError> {
+    build(&parse_spec(text)?)
+}

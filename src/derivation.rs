@@ -1,0 +1,445 @@
+//! Derivations: a requested quantity becomes ordered steps, each a value and the theorem that
+//! produced it, following the course's « méthodologie de calcul ».
+
+use crate::expr::Expr;
+use crate::frame::{Axis, FrameId};
+use crate::inertia::Inertia;
+use crate::kinematics::{acceleration, omega, point_velocity, velocity};
+use crate::mechanism::{BodyId, Hypothesis, Mechanism};
+use crate::point::PointId;
+use crate::quantity::{Motion, Quantity, QuantityKind};
+use crate::torsor::{self, Torsor};
+use crate::vector::Vector;
+
+/// A quantity that refers to unknown objects.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{quantity}: {message}")]
+pub struct ResolveError {
+    /// The quantity as written.
+    pub quantity: String,
+    /// What is unknown.
+    pub message: String,
+}
+
+/// A quantity with its names resolved to ids.
+#[derive(Debug, Clone)]
+pub struct Resolved {
+    /// Point involved (if any).
+    pub point: Option<PointId>,
+    /// Frame of the moving solid or frame (for Ω, V, Γ, {V}).
+    pub moving_frame: Option<FrameId>,
+    /// Solids of the moving solid or set (for kinetic and dynamic quantities, I).
+    pub solids: Vec<BodyId>,
+    /// Reference frame.
+    pub reference: Option<FrameId>,
+    /// Basis the result is written in.
+    pub basis: FrameId,
+    /// Projection vector (basis, axis).
+    pub projection: Option<(FrameId, Axis)>,
+}
+
+/// Resolves the names of a quantity in a mechanism.
+pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
+    let err = |msg: String| ResolveError {
+        quantity: q.to_string(),
+        message: msg,
+    };
+    let frame = |n: &str| {
+        m.frame_of(n)
+            .ok_or_else(|| err(format!("unknown solid or frame `{n}`")))
+    };
+    let point = |n: &str| {
+        m.point(n)
+            .ok_or_else(|| err(format!("unknown point `{n}`")))
+    };
+    let solids = |n: &str| {
+        m.solids_of(n)
+            .ok_or_else(|| err(format!("unknown solid or set `{n}`")))
+    };
+    let mut r = Resolved {
+        point: None,
+        moving_frame: None,
+        solids: vec![],
+        reference: None,
+        basis: m.default_basis,
+        projection: None,
+    };
+    let kinetic = |mo: &Motion, r: &mut Resolved| -> Result<(), ResolveError> {
+        r.solids = solids(&mo.moving)?;
+        r.reference = Some(frame(&mo.reference)?);
+        Ok(())
+    };
+    let kinematic = |mo: &Motion, r: &mut Resolved| -> Result<(), ResolveError> {
+        r.moving_frame = Some(frame(&mo.moving)?);
+        r.reference = Some(frame(&mo.reference)?);
+        Ok(())
+    };
+    use QuantityKind::*;
+    match &q.kind {
+        Omega(mo) => kinematic(mo, &mut r)?,
+        Velocity { point: p, motion } | Acceleration { point: p, motion } => {
+            r.point = Some(point(p)?);
+            kinematic(motion, &mut r)?;
+        }
+        KinematicTorsor { motion, point: p } => {
+            r.point = Some(point(p)?);
+            kinematic(motion, &mut r)?;
+        }
+        Inertia { point: p, solid } => {
+            r.point = Some(point(p)?);
+            let b = m
+                .find_body(solid)
+                .ok_or_else(|| err(format!("unknown solid `{solid}`")))?;
+            r.solids = vec![b];
+            r.basis = torsor::inertia_basis(m, b);
+        }
+        KineticResultant(mo) | DynamicResultant(mo) => kinetic(mo, &mut r)?,
+        KineticMoment { point: p, motion }
+        | DynamicMoment { point: p, motion }
+        | KineticTorsor { motion, point: p }
+        | DynamicTorsor { motion, point: p } => {
+            r.point = Some(point(p)?);
+            kinetic(motion, &mut r)?;
+        }
+    }
+    if let Some(b) = &q.basis {
+        r.basis = m
+            .frames
+            .find(b)
+            .ok_or_else(|| err(format!("unknown basis `B{b}`")))?;
+    }
+    if let Some((f, axis)) = &q.projection {
+        let fid = m
+            .frames
+            .find(f)
+            .ok_or_else(|| err(format!("unknown basis vector `{axis}{f}`")))?;
+        r.projection = Some((
+            fid,
+            Axis::parse(&axis.to_string()).ok_or_else(|| err("bad axis".into()))?,
+        ));
+    }
+    Ok(r)
+}
+
+/// A derived value.
+#[derive(Debug, Clone)]
+pub enum Value {
+    /// A scalar (a projection).
+    Scalar(Expr),
+    /// A vector written in a basis.
+    Vector {
+        /// Basis.
+        basis: FrameId,
+        /// Components.
+        components: [Expr; 3],
+    },
+    /// An inertia operator.
+    Matrix(Inertia),
+    /// A torsor written in a basis.
+    Torsor {
+        /// Point of reduction.
+        point: PointId,
+        /// Basis.
+        basis: FrameId,
+        /// Resultant components.
+        resultant: [Expr; 3],
+        /// Moment components.
+        moment: [Expr; 3],
+    },
+}
+
+impl Value {
+    /// Maps every expression.
+    pub fn map(&self, f: &impl Fn(&Expr) -> Expr) -> Value {
+        let m3 = |c: &[Expr; 3]| [f(&c[0]), f(&c[1]), f(&c[2])];
+        match self {
+            Value::Scalar(e) => Value::Scalar(f(e)),
+            Value::Vector { basis, components } => Value::Vector {
+                basis: *basis,
+                components: m3(components),
+            },
+            Value::Matrix(i) => Value::Matrix(Inertia {
+                point: i.point,
+                basis: i.basis,
+                matrix: std::array::from_fn(|r| m3(&i.matrix[r])),
+            }),
+            Value::Torsor {
+                point,
+                basis,
+                resultant,
+                moment,
+            } => Value::Torsor {
+                point: *point,
+                basis: *basis,
+                resultant: m3(resultant),
+                moment: m3(moment),
+            },
+        }
+    }
+
+    /// The value under a hypothesis.
+    pub fn under(&self, h: &Hypothesis) -> Value {
+        self.map(&|e| h.apply(e))
+    }
+
+    /// Every expression, in a fixed order.
+    pub fn exprs(&self) -> Vec<&Expr> {
+        match self {
+            Value::Scalar(e) => vec![e],
+            Value::Vector { components, .. } => components.iter().collect(),
+            Value::Matrix(i) => i.matrix.iter().flatten().collect(),
+            Value::Torsor {
+                resultant, moment, ..
+            } => resultant.iter().chain(moment.iter()).collect(),
+        }
+    }
+
+    /// Total number of terms of the canonical forms.
+    pub fn nterms(&self) -> usize {
+        self.exprs().iter().map(|e| e.nterms()).sum()
+    }
+}
+
+/// One step of a derivation.
+#[derive(Debug, Clone)]
+pub struct Step {
+    /// What is computed, in the notation (`sigma(O2,2/0)`).
+    pub label: String,
+    /// The theorem or definition used, in the course's words.
+    pub theorem: String,
+    /// The value.
+    pub value: Value,
+}
+
+/// A derived quantity: its steps and its final value.
+#[derive(Debug, Clone)]
+pub struct Derivation {
+    /// The quantity.
+    pub quantity: Quantity,
+    /// Intermediate results, in order.
+    pub steps: Vec<Step>,
+    /// The result.
+    pub value: Value,
+}
+
+fn vec_value(m: &Mechanism, v: &Vector, b: FrameId) -> Value {
+    Value::Vector {
+        basis: b,
+        components: v.express_in(&m.frames, b),
+    }
+}
+
+/// Derives a quantity: its value written in the requested basis, and the steps that led to it.
+///
+/// ```
+/// use torseur::{derivation::derive, quantity::Quantity, spec};
+/// let m = spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let d = derive(&m, &Quantity::parse("Omega(2/0) in B1").unwrap()).unwrap();
+/// let reg = &m.reg;
+/// let expected = [reg.parse("dot(theta2)").unwrap(), reg.zero(), reg.parse("dot(theta1)").unwrap()];
+/// match d.value { torseur::derivation::Value::Vector { components, .. } => assert_eq!(components, expected), _ => unreachable!() }
+/// ```
+pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
+    let r = resolve(m, q)?;
+    let b = r.basis;
+    let mut steps = Vec::new();
+    let motion = q.kind.motion().cloned();
+    let mname = motion.as_ref().map(|x| x.to_string()).unwrap_or_default();
+    let reference = r.reference.unwrap_or(m.frames.ground());
+    let vector: Option<Vector>;
+    let mut value: Option<Value> = None;
+    use QuantityKind::*;
+    match &q.kind {
+        Omega(_) => {
+            vector = Some(omega(m, r.moving_frame.unwrap_or(reference), reference));
+        }
+        Velocity { .. } => {
+            let p = r.point.unwrap_or(m.points.origin());
+            vector = Some(velocity(
+                m,
+                p,
+                r.moving_frame.unwrap_or(reference),
+                reference,
+            ));
+        }
+        Acceleration { .. } => {
+            let p = r.point.unwrap_or(m.points.origin());
+            vector = Some(acceleration(
+                m,
+                p,
+                r.moving_frame.unwrap_or(reference),
+                reference,
+            ));
+        }
+        Inertia { .. } => {
+            let s = r.solids[0];
+            let a = r.point.unwrap_or(m.body(s).centre);
+            if let Some(ig) = torsor::inertia_at_centre(m, s) {
+                steps.push(Step {
+                    label: format!("I({},{})", m.point_name(m.body(s).centre), m.body(s).name),
+                    theorem: "opérateur d'inertie donné par l'énoncé".into(),
+                    value: Value::Matrix(ig),
+                });
+            }
+            let ia = torsor::inertia_at(m, s, a).in_basis(&m.frames, b);
+            vector = None;
+            value = Some(Value::Matrix(ia));
+        }
+        KineticResultant(_) => {
+            vector = Some(torsor::kinetic_resultant(m, &r.solids, reference));
+        }
+        DynamicResultant(_) => {
+            vector = Some(torsor::dynamic_resultant(m, &r.solids, reference));
+        }
+        KineticMoment { .. } | DynamicMoment { .. } => {
+            let a = r.point.unwrap_or(m.points.origin());
+            let dynamic = matches!(q.kind, DynamicMoment { .. });
+            let total = moment_steps(m, &r.solids, a, reference, b, dynamic, &mut steps);
+            vector = Some(total);
+        }
+        KinematicTorsor { .. } => {
+            let a = r.point.unwrap_or(m.points.origin());
+            let t = torsor::kinematic_torsor(m, r.moving_frame.unwrap_or(reference), reference, a);
+            vector = None;
+            value = Some(torsor_value(m, &t, b));
+        }
+        KineticTorsor { .. } | DynamicTorsor { .. } => {
+            let a = r.point.unwrap_or(m.points.origin());
+            let dynamic = matches!(q.kind, DynamicTorsor { .. });
+            let res = if dynamic {
+                torsor::dynamic_resultant(m, &r.solids, reference)
+            } else {
+                torsor::kinetic_resultant(m, &r.solids, reference)
+            };
+            steps.push(Step {
+                label: format!("{}({mname})", if dynamic { "Rd" } else { "Rc" }),
+                theorem: if dynamic {
+                    "R_d = m Γ(G, S/R0), sommée sur les solides".into()
+                } else {
+                    "R_c = m V(G, S/R0), sommée sur les solides".into()
+                },
+                value: vec_value(m, &res, b),
+            });
+            let mom = moment_steps(m, &r.solids, a, reference, b, dynamic, &mut steps);
+            vector = None;
+            value = Some(torsor_value(
+                m,
+                &Torsor {
+                    point: a,
+                    resultant: res,
+                    moment: mom,
+                },
+                b,
+            ));
+        }
+    }
+    let value = match (value, vector) {
+        (Some(v), _) => v,
+        (None, Some(v)) => match r.projection {
+            Some((f, axis)) => {
+                let u = Vector::along(f, axis, m.reg.one());
+                Value::Scalar(v.dot(&m.frames, &u))
+            }
+            None => vec_value(m, &v, b),
+        },
+        (None, None) => unreachable!("every quantity yields a value or a vector"),
+    };
+    Ok(Derivation {
+        quantity: q.clone(),
+        steps,
+        value,
+    })
+}
+
+fn torsor_value(m: &Mechanism, t: &Torsor, b: FrameId) -> Value {
+    Value::Torsor {
+        point: t.point,
+        basis: b,
+        resultant: t.resultant.express_in(&m.frames, b),
+        moment: t.moment.express_in(&m.frames, b),
+    }
+}
+
+/// The steps of σ(A) or δ(A) for each solid, and their sum.
+fn moment_steps(
+    m: &Mechanism,
+    solids: &[BodyId],
+    a: PointId,
+    r: FrameId,
+    b: FrameId,
+    dynamic: bool,
+    steps: &mut Vec<Step>,
+) -> Vector {
+    let rn = m.frame_name(r).to_string();
+    let an = m.point_name(a).to_string();
+    let mut total = Vector::zero();
+    for &s in solids {
+        let body = m.body(s);
+        let sn = &body.name;
+        let om = omega(m, body.frame, r);
+        let ib = torsor::inertia_basis(m, s);
+        steps.push(Step {
+            label: format!("Omega({sn}/{rn})"),
+            theorem: "composition des vecteurs rotation".into(),
+            value: vec_value(m, &om, ib),
+        });
+        let ia = torsor::inertia_at(m, s, a);
+        let huygens = a != body.centre && body.inertia.is_some();
+        steps.push(Step {
+            label: format!("I({an},{sn})"),
+            theorem: if huygens {
+                format!(
+                    "théorème de Huygens : I_{an} = I_{g} + m [{an}{g}]",
+                    g = m.point_name(body.centre)
+                )
+            } else if body.inertia.is_none() {
+                "masse ponctuelle".into()
+            } else {
+                "opérateur d'inertie en G".into()
+            },
+            value: Value::Matrix(ia),
+        });
+        let sigma = torsor::kinetic_moment_solid(m, s, a, r);
+        let fixed = crate::kinematics::velocity(m, a, body.frame, r).is_zero(&m.frames);
+        steps.push(Step {
+            label: format!("sigma({an},{sn}/{rn})"),
+            theorem: if a == body.centre {
+                "σ(G, S/R0) = I_G(S)·Ω(S/R0)".into()
+            } else if fixed {
+                "point fixe dans le mouvement : σ(A, S/R0) = I_A(S)·Ω(S/R0)".into()
+            } else {
+                "σ(A, S/R0) = I_A(S)·Ω(S/R0) + m AG ∧ V(A, S/R0)".into()
+            },
+            value: vec_value(m, &sigma, b),
+        });
+        if !dynamic {
+            total = total.add(&sigma);
+            continue;
+        }
+        let d_sigma = sigma.derivative_in(&m.frames, r);
+        steps.push(Step {
+            label: format!("d/dt sigma({an},{sn}/{rn})|{rn}"),
+            theorem: "dérivation vectorielle (formule de Bour)".into(),
+            value: vec_value(m, &d_sigma, b),
+        });
+        let v_a = point_velocity(m, a, r);
+        let mut delta = d_sigma;
+        if !v_a.is_zero(&m.frames) {
+            let mv_g = velocity(m, body.centre, body.frame, r).scale(&body.mass);
+            let extra = v_a.cross(&m.frames, &mv_g);
+            steps.push(Step {
+                label: format!("V({an}/{rn}) ^ m V({}/{rn})", m.point_name(body.centre)),
+                theorem: "terme complémentaire V(A/R0) ∧ m V(G/R0)".into(),
+                value: vec_value(m, &extra, b),
+            });
+            delta = delta.add(&extra);
+        }
+        steps.push(Step {
+            label: format!("delta({an},{sn}/{rn})"),
+            theorem: "δ(A, S/R0) = d/dt σ(A, S/R0)|R0 + V(A/R0) ∧ m V(G/R0)".into(),
+            value: vec_value(m, &delta, b),
+        });
+        total = total.add(&delta);
+    }
+    total
+}

@@ -1,0 +1,133 @@
+//! The store that owns a problem's registry, frames, points, solids, sets and hypotheses.
+
+use crate::expr::{Expr, Registry};
+use crate::frame::{FrameId, Frames};
+use crate::inertia::{Inertia, Symmetry};
+use crate::point::{PointId, Points};
+use crate::quantity::Quantity;
+use crate::spec::wire::SpecFile;
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+/// Typed index of a solid.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct BodyId(pub(crate) usize);
+
+/// A solid: mass, centre of inertia, attached frame, inertia operator.
+#[doc(alias = "solide")]
+#[derive(Debug, Clone)]
+pub struct Body {
+    /// Name: its number in the course (`1`, `2`).
+    pub name: String,
+    /// Frame attached to the solid.
+    pub frame: FrameId,
+    /// Mass.
+    pub mass: Expr,
+    /// Centre of inertia G.
+    pub centre: PointId,
+    /// Inertia operator as given (at some point, in some basis); none for a point mass.
+    pub inertia: Option<Inertia>,
+    /// Declared symmetries, in the basis of the inertia matrix.
+    pub symmetries: Vec<Symmetry>,
+}
+
+/// A hypothesis: a named set of substitutions that gives additional simplified forms.
+#[derive(Debug, Clone)]
+pub struct Hypothesis {
+    /// Short name (`Q2`).
+    pub name: String,
+    /// Statement as written in the spec.
+    pub text: Option<String>,
+    /// Variable index and the value it takes.
+    pub substitutions: Vec<(usize, Expr)>,
+    /// Human-readable list of what is set (`D2 = 0`, `ddot(theta1) = 0`).
+    pub effects: Vec<String>,
+}
+
+impl Hypothesis {
+    /// Applies the substitutions to an expression.
+    pub fn apply(&self, e: &Expr) -> Expr {
+        let mut r = e.clone();
+        for (v, val) in &self.substitutions {
+            r = r.substitute(*v, val);
+        }
+        r
+    }
+}
+
+/// A validated problem: everything the derivations need, behind typed ids.
+#[derive(Debug, Clone)]
+pub struct Mechanism {
+    /// Title.
+    pub title: String,
+    /// Statement.
+    pub description: Option<String>,
+    /// Parameters and coordinates.
+    pub reg: Arc<Registry>,
+    /// Frames (the ground is the root).
+    pub frames: Frames,
+    /// Origin point of each frame, indexed by frame.
+    pub frame_origins: Vec<PointId>,
+    /// Points (the ground origin is the root).
+    pub points: Points,
+    /// Solids.
+    pub bodies: Vec<Body>,
+    /// Named sets of solids.
+    pub sets: BTreeMap<String, Vec<BodyId>>,
+    /// Hypotheses.
+    pub hypotheses: Vec<Hypothesis>,
+    /// Basis for results that do not name one.
+    pub default_basis: FrameId,
+    /// Requested quantities.
+    pub quantities: Vec<Quantity>,
+    /// The spec it was built from (the float backend works from it).
+    pub spec: SpecFile,
+}
+
+impl Mechanism {
+    /// Solid by id.
+    pub fn body(&self, id: BodyId) -> &Body {
+        &self.bodies[id.0]
+    }
+
+    /// Solid by name.
+    pub fn find_body(&self, name: &str) -> Option<BodyId> {
+        self.bodies.iter().position(|b| b.name == name).map(BodyId)
+    }
+
+    /// Origin of a frame.
+    pub fn origin(&self, f: FrameId) -> PointId {
+        self.frame_origins[f.0]
+    }
+
+    /// The frame a motion name refers to: a solid's frame, or a frame by name.
+    pub fn frame_of(&self, name: &str) -> Option<FrameId> {
+        if let Some(b) = self.find_body(name) {
+            return Some(self.bodies[b.0].frame);
+        }
+        self.frames.find(name)
+    }
+
+    /// The solids a name refers to: one solid, or a set.
+    pub fn solids_of(&self, name: &str) -> Option<Vec<BodyId>> {
+        if let Some(b) = self.find_body(name) {
+            return Some(vec![b]);
+        }
+        self.sets.get(name).cloned()
+    }
+
+    /// Point by name.
+    pub fn point(&self, name: &str) -> Option<PointId> {
+        self.points.find(name)
+    }
+
+    /// Name of a point.
+    pub fn point_name(&self, p: PointId) -> &str {
+        &self.points.get(p).name
+    }
+
+    /// Name of a frame.
+    pub fn frame_name(&self, f: FrameId) -> &str {
+        &self.frames.get(f).name
+    }
+}

@@ -1,0 +1,517 @@
+//! The spec's expression syntax, parsed by hand and evaluated over dual numbers.
+//!
+//! This is deliberately a second implementation of the syntax (the symbolic side has its own):
+//! the float backend shares no code with the exact one. Grammar:
+//!
+//! ```text
+//! expr    := term (('+' | '-') term)*
+//! term    := unary (('*' | '/') unary)*
+//! unary   := ('-' | '+') unary | power
+//! power   := primary ('^' integer | '^' '(' integer ')')?      integer: optional sign, digits
+//! primary := number | name | sin(expr) | cos(expr) | dot(coord) | ddot(coord) | '(' expr ')'
+//! ```
+//!
+//! A name is a parameter, a time coordinate or, where vectors are allowed, a basis vector
+//! (`x1`, `y0`, `z2`) that multiplies scalars.
+
+use num_dual::DualNum;
+
+/// Numbers the evaluator runs on: `f64` or a dual number over `f64`.
+pub(crate) trait Num: DualNum<f64> + Copy {}
+impl<T: DualNum<f64> + Copy> Num for T {}
+
+/// Longest expression accepted.
+const MAX_INPUT: usize = 20_000;
+/// Deepest nesting of parentheses and signs.
+const MAX_DEPTH: usize = 128;
+/// Largest power exponent, in absolute value.
+const MAX_POWER: i32 = 64;
+
+/// A parsed expression whose names are resolved to indices of the model.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Node {
+    /// A number.
+    Num(f64),
+    /// Parameter by index.
+    Param(usize),
+    /// Value q of a time coordinate, by index.
+    Coord(usize),
+    /// q̇ (order 1) or q̈ (order 2) of a coordinate.
+    Rate(usize, u8),
+    /// Basis vector: frame index, axis 0..3.
+    Basis(usize, usize),
+    Neg(Box<Node>),
+    Add(Box<Node>, Box<Node>),
+    Sub(Box<Node>, Box<Node>),
+    Mul(Box<Node>, Box<Node>),
+    Div(Box<Node>, Box<Node>),
+    Pow(Box<Node>, i32),
+    Sin(Box<Node>),
+    Cos(Box<Node>),
+}
+
+/// What a name resolves to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Name {
+    Param(usize),
+    Coord(usize),
+    Basis(usize, usize),
+}
+
+/// Static type of an expression: the literal zero fits both a scalar and a vector.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Kind {
+    Zero,
+    Scalar,
+    Vector,
+}
+
+/// Parses `input`. `resolve` maps a name to what it means here, or explains why it cannot
+/// appear; `rates` says whether `dot(q)` and `ddot(q)` are allowed.
+pub(crate) fn parse(
+    input: &str,
+    resolve: &dyn Fn(&str) -> Result<Name, String>,
+    rates: bool,
+) -> Result<Node, String> {
+    if input.len() > MAX_INPUT {
+        return Err(format!("longer than {MAX_INPUT} characters"));
+    }
+    if input.trim().is_empty() {
+        return Err("empty expression".to_string());
+    }
+    if let Some(c) = input
+        .chars()
+        .find(|c| !(c.is_ascii_alphanumeric() || " \t\r\n+-*/^()._".contains(*c)))
+    {
+        return Err(format!("character `{c}` is not allowed"));
+    }
+    let mut p = Parser {
+        s: input.as_bytes(),
+        pos: 0,
+        depth: 0,
+        resolve,
+        rates,
+    };
+    let node = p.expr()?;
+    p.skip_ws();
+    if p.pos < p.s.len() {
+        return Err(format!(
+            "unexpected `{}` at column {}",
+            p.s[p.pos] as char,
+            p.pos + 1
+        ));
+    }
+    Ok(node)
+}
+
+struct Parser<'a> {
+    s: &'a [u8],
+    pos: usize,
+    depth: usize,
+    resolve: &'a dyn Fn(&str) -> Result<Name, String>,
+    rates: bool,
+}
+
+impl Parser<'_> {
+    fn skip_ws(&mut self) {
+        while self.pos < self.s.len() && self.s[self.pos].is_ascii_whitespace() {
+            self.pos += 1;
+        }
+    }
+
+    fn peek(&mut self) -> Option<u8> {
+        self.skip_ws();
+        self.s.get(self.pos).copied()
+    }
+
+    fn expect(&mut self, c: u8) -> Result<(), String> {
+        match self.peek() {
+            Some(x) if x == c => {
+                self.pos += 1;
+                Ok(())
+            }
+            Some(x) => Err(format!(
+                "expected `{}` at column {}, found `{}`",
+                c as char,
+                self.pos + 1,
+                x as char
+            )),
+            None => Err(format!("expected `{}` at the end", c as char)),
+        }
+    }
+
+    fn expr(&mut self) -> Result<Node, String> {
+        let mut acc = self.term()?;
+        loop {
+            match self.peek() {
+                Some(b'+') => {
+                    self.pos += 1;
+                    acc = Node::Add(Box::new(acc), Box::new(self.term()?));
+                }
+                Some(b'-') => {
+                    self.pos += 1;
+                    acc = Node::Sub(Box::new(acc), Box::new(self.term()?));
+                }
+                _ => return Ok(acc),
+            }
+        }
+    }
+
+    fn term(&mut self) -> Result<Node, String> {
+        let mut acc = self.unary()?;
+        loop {
+            match self.peek() {
+                Some(b'*') => {
+                    self.pos += 1;
+                    acc = Node::Mul(Box::new(acc), Box::new(self.unary()?));
+                }
+                Some(b'/') => {
+                    self.pos += 1;
+                    acc = Node::Div(Box::new(acc), Box::new(self.unary()?));
+                }
+                _ => return Ok(acc),
+            }
+        }
+    }
+
+    fn unary(&mut self) -> Result<Node, String> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(format!("nested deeper than {MAX_DEPTH}"));
+        }
+        let r = match self.peek() {
+            Some(b'-') => {
+                self.pos += 1;
+                self.unary().map(|n| Node::Neg(Box::new(n)))
+            }
+            Some(b'+') => {
+                self.pos += 1;
+                self.unary()
+            }
+            _ => self.power(),
+        };
+        self.depth -= 1;
+        r
+    }
+
+    fn power(&mut self) -> Result<Node, String> {
+        let base = self.primary()?;
+        if self.peek() != Some(b'^') {
+            return Ok(base);
+        }
+        self.pos += 1;
+        let paren = self.peek() == Some(b'(');
+        if paren {
+            self.pos += 1;
+        }
+        let mut sign = 1i64;
+        match self.peek() {
+            Some(b'-') => {
+                sign = -1;
+                self.pos += 1;
+            }
+            Some(b'+') => self.pos += 1,
+            _ => {}
+        }
+        self.skip_ws();
+        let start = self.pos;
+        while self.pos < self.s.len() && self.s[self.pos].is_ascii_digit() {
+            self.pos += 1;
+        }
+        let digits = std::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
+        if digits.is_empty() {
+            return Err(format!(
+                "only integer powers are allowed (column {})",
+                start + 1
+            ));
+        }
+        let n: i64 = digits
+            .parse::<i64>()
+            .ok()
+            .filter(|n| *n <= MAX_POWER as i64)
+            .ok_or_else(|| format!("powers are limited to ±{MAX_POWER}"))?;
+        if paren {
+            self.expect(b')')?;
+        }
+        if self.peek() == Some(b'^') {
+            return Err("write a^(b*c) as a single integer power: `^` cannot be chained".into());
+        }
+        Ok(Node::Pow(Box::new(base), (sign * n) as i32))
+    }
+
+    fn primary(&mut self) -> Result<Node, String> {
+        let c = self
+            .peek()
+            .ok_or_else(|| "unexpected end of the expression".to_string())?;
+        if c == b'(' {
+            self.pos += 1;
+            self.depth += 1;
+            if self.depth > MAX_DEPTH {
+                return Err(format!("nested deeper than {MAX_DEPTH}"));
+            }
+            let e = self.expr()?;
+            self.depth -= 1;
+            self.expect(b')')?;
+            return Ok(e);
+        }
+        if c.is_ascii_digit() || c == b'.' {
+            let start = self.pos;
+            while self.pos < self.s.len()
+                && (self.s[self.pos].is_ascii_digit() || self.s[self.pos] == b'.')
+            {
+                self.pos += 1;
+            }
+            let text = std::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
+            let v: f64 = text
+                .parse()
+                .map_err(|_| format!("`{text}` is not a number"))?;
+            if self.pos < self.s.len()
+                && (self.s[self.pos].is_ascii_alphabetic() || self.s[self.pos] == b'_')
+            {
+                return Err(format!(
+                    "`{text}` is followed by a name at column {}: write the product with `*`",
+                    self.pos + 1
+                ));
+            }
+            return Ok(Node::Num(v));
+        }
+        if c.is_ascii_alphabetic() || c == b'_' {
+            let start = self.pos;
+            while self.pos < self.s.len()
+                && (self.s[self.pos].is_ascii_alphanumeric() || self.s[self.pos] == b'_')
+            {
+                self.pos += 1;
+            }
+            let name = std::str::from_utf8(&self.s[start..self.pos])
+                .unwrap_or("")
+                .to_string();
+            if self.peek() == Some(b'(') {
+                return self.call(&name);
+            }
+            return Ok(match (self.resolve)(&name)? {
+                Name::Param(i) => Node::Param(i),
+                Name::Coord(i) => Node::Coord(i),
+                Name::Basis(f, a) => Node::Basis(f, a),
+            });
+        }
+        Err(format!(
+            "unexpected `{}` at column {}",
+            c as char,
+            self.pos + 1
+        ))
+    }
+
+    fn call(&mut self, name: &str) -> Result<Node, String> {
+        self.expect(b'(')?;
+        let node = match name {
+            "sin" | "cos" => {
+                self.depth += 1;
+                if self.depth > MAX_DEPTH {
+                    return Err(format!("nested deeper than {MAX_DEPTH}"));
+                }
+                let arg = Box::new(self.expr()?);
+                self.depth -= 1;
+                if name == "sin" {
+                    Node::Sin(arg)
+                } else {
+                    Node::Cos(arg)
+                }
+            }
+            "dot" | "ddot" => {
+                let order = if name == "dot" { 1 } else { 2 };
+                if !self.rates {
+                    return Err(format!(
+                        "`{name}(..)` cannot appear here: only constants and coordinates can"
+                    ));
+                }
+                let arg = match self.primary()? {
+                    Node::Coord(i) => i,
+                    _ => return Err(format!("`{name}(..)` takes a time coordinate")),
+                };
+                Node::Rate(arg, order)
+            }
+            other => {
+                return Err(format!(
+                    "unknown function `{other}` (known: sin, cos, dot, ddot)"
+                ));
+            }
+        };
+        self.expect(b')')?;
+        Ok(node)
+    }
+}
+
+/// Static type of `node`, or why a scalar and a vector are mixed wrongly.
+pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
+    use Kind::*;
+    Ok(match node {
+        Node::Num(v) => {
+            if *v == 0.0 {
+                Zero
+            } else {
+                Scalar
+            }
+        }
+        Node::Param(_) | Node::Coord(_) | Node::Rate(..) => Scalar,
+        Node::Basis(..) => Vector,
+        Node::Neg(a) => kind(a)?,
+        Node::Add(a, b) | Node::Sub(a, b) => match (kind(a)?, kind(b)?) {
+            (Zero, k) | (k, Zero) => k,
+            (Scalar, Scalar) => Scalar,
+            (Vector, Vector) => Vector,
+            _ => {
+                return Err(
+                    "a sum mixes a scalar and a vector (every term of a vector holds one \
+                     basis vector such as x1)"
+                        .into(),
+                );
+            }
+        },
+        Node::Mul(a, b) => match (kind(a)?, kind(b)?) {
+            (Vector, Vector) => return Err("a term holds two basis vectors".into()),
+            (Zero, _) | (_, Zero) => Zero,
+            (Scalar, Scalar) => Scalar,
+            _ => Vector,
+        },
+        Node::Div(a, b) => match (kind(a)?, kind(b)?) {
+            (_, Vector) => return Err("division by a vector".into()),
+            (_, Zero) => return Err("division by zero".into()),
+            (k, Scalar) => k,
+        },
+        Node::Pow(a, n) => match kind(a)? {
+            Vector => return Err("a basis vector cannot be raised to a power".into()),
+            Zero if *n <= 0 => return Err("zero raised to a non-positive power".into()),
+            k => k,
+        },
+        Node::Sin(a) | Node::Cos(a) => match kind(a)? {
+            Vector => return Err("sin and cos take a scalar".into()),
+            _ => Scalar,
+        },
+    })
+}
+
+/// Every parameter index `node` uses.
+pub(crate) fn params_in(node: &Node, out: &mut std::collections::BTreeSet<usize>) {
+    match node {
+        Node::Param(i) => {
+            out.insert(*i);
+        }
+        Node::Num(_) | Node::Coord(_) | Node::Rate(..) | Node::Basis(..) => {}
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => params_in(a, out),
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            params_in(a, out);
+            params_in(b, out)
+        }
+    }
+}
+
+/// A scalar or a vector (components in the ground basis).
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Val<T> {
+    S(T),
+    V([T; 3]),
+}
+
+/// What names evaluate to.
+pub(crate) struct Env<'a, T> {
+    /// Parameter values.
+    pub params: &'a [f64],
+    /// Coordinate values q.
+    pub coords: &'a [T],
+    /// [q̇, q̈] of each coordinate.
+    pub rates: &'a [[T; 2]],
+    /// Orientation of each frame: column k is its k-th basis vector in ground components.
+    pub frames: &'a [[[T; 3]; 3]],
+}
+
+/// Evaluates a node that passed [`kind`].
+pub(crate) fn eval<T: Num>(node: &Node, env: &Env<T>) -> Result<Val<T>, String> {
+    let missing = || "internal: a name has no value".to_string();
+    Ok(match node {
+        Node::Num(v) => Val::S(T::from(*v)),
+        Node::Param(i) => Val::S(T::from(*env.params.get(*i).ok_or_else(missing)?)),
+        Node::Coord(i) => Val::S(*env.coords.get(*i).ok_or_else(missing)?),
+        Node::Rate(i, o) => {
+            let r = env.rates.get(*i).ok_or_else(missing)?;
+            Val::S(if *o == 1 { r[0] } else { r[1] })
+        }
+        Node::Basis(f, a) => {
+            let m = env.frames.get(*f).ok_or_else(missing)?;
+            Val::V([m[0][*a], m[1][*a], m[2][*a]])
+        }
+        Node::Neg(a) => match eval(a, env)? {
+            Val::S(x) => Val::S(-x),
+            Val::V(v) => Val::V([-v[0], -v[1], -v[2]]),
+        },
+        Node::Add(a, b) | Node::Sub(a, b) => {
+            let sign = if matches!(node, Node::Sub(..)) {
+                -1.0
+            } else {
+                1.0
+            };
+            match (eval(a, env)?, eval(b, env)?) {
+                (Val::S(x), Val::S(y)) => Val::S(x + y * sign),
+                (Val::V(u), Val::V(v)) => {
+                    Val::V([u[0] + v[0] * sign, u[1] + v[1] * sign, u[2] + v[2] * sign])
+                }
+                // The scalar is the literal zero (checked by `kind`).
+                (Val::V(u), Val::S(_)) => Val::V(u),
+                (Val::S(_), Val::V(v)) => Val::V([v[0] * sign, v[1] * sign, v[2] * sign]),
+            }
+        }
+        Node::Mul(a, b) => match (eval(a, env)?, eval(b, env)?) {
+            (Val::S(x), Val::S(y)) => Val::S(x * y),
+            (Val::S(x), Val::V(v)) | (Val::V(v), Val::S(x)) => {
+                Val::V([v[0] * x, v[1] * x, v[2] * x])
+            }
+            (Val::V(_), Val::V(_)) => return Err("a term holds two basis vectors".into()),
+        },
+        Node::Div(a, b) => {
+            let d = match eval(b, env)? {
+                Val::S(d) => d,
+                Val::V(_) => return Err("division by a vector".into()),
+            };
+            if d.re() == 0.0 {
+                return Err("division by zero at these values".into());
+            }
+            match eval(a, env)? {
+                Val::S(x) => Val::S(x / d),
+                Val::V(v) => Val::V([v[0] / d, v[1] / d, v[2] / d]),
+            }
+        }
+        Node::Pow(a, n) => match eval(a, env)? {
+            Val::S(x) => {
+                if *n < 0 && x.re() == 0.0 {
+                    return Err("zero raised to a negative power at these values".into());
+                }
+                Val::S(x.powi(*n))
+            }
+            Val::V(_) => return Err("a basis vector cannot be raised to a power".into()),
+        },
+        Node::Sin(a) | Node::Cos(a) => match eval(a, env)? {
+            Val::S(x) => Val::S(if matches!(node, Node::Sin(_)) {
+                x.sin()
+            } else {
+                x.cos()
+            }),
+            Val::V(_) => return Err("sin and cos take a scalar".into()),
+        },
+    })
+}
+
+/// Evaluates a scalar node.
+pub(crate) fn eval_scalar<T: Num>(node: &Node, env: &Env<T>) -> Result<T, String> {
+    match eval(node, env)? {
+        Val::S(x) => Ok(x),
+        Val::V(_) => Err("a vector where a scalar was expected".into()),
+    }
+}
+
+/// Evaluates a vector node (the literal zero gives the zero vector).
+pub(crate) fn eval_vector<T: Num>(node: &Node, env: &Env<T>) -> Result<[T; 3], String> {
+    match eval(node, env)? {
+        Val::V(v) => Ok(v),
+        Val::S(x) if x.re() == 0.0 => Ok([T::from(0.0); 3]),
+        Val::S(_) => Err("a scalar where a vector was expected".into()),
+    }
+}

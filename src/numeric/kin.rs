@@ -1,0 +1,502 @@
+//! Motion through the frame chain with dual numbers, and the quantities as the course defines them.
+
+use super::expr::{self, Env, Node};
+use super::la::{
+    M3, V3, add, column, cross, dot, identity, mat_mul, mat_parts, mat_vec, parts, point_inertia,
+    scale, sub, transpose, zero,
+};
+use super::model::{Context, Names};
+use super::{NumValue, NumericError, NumericModel, Sample, cloud};
+use crate::quantity::{Motion, Quantity, QuantityKind};
+use num_dual::{Dual2_64, DualNum};
+
+type D2 = Dual2_64;
+
+/// Relative tolerance for an imposed rate given again in a sample.
+const RATE_TOL: f64 = 1e-9;
+
+/// A sample resolved to the model's indices.
+pub(super) struct Values {
+    pub params: Vec<f64>,
+    /// [q, q̇, q̈] per coordinate.
+    pub coords: Vec<[f64; 3]>,
+}
+
+impl Values {
+    /// An environment for constant expressions (parameters only).
+    pub fn constants(&self) -> Env<'_, f64> {
+        Env {
+            params: &self.params,
+            coords: &[],
+            rates: &[],
+            frames: &[],
+        }
+    }
+}
+
+/// Resolves a sample: every name known, every value present and finite, imposed rates kept.
+pub(super) fn values(m: &NumericModel, s: &Sample) -> Result<Values, NumericError> {
+    let bad = |msg: String| NumericError::Sample(msg);
+    for name in s.parameters.keys() {
+        if !m.param_index.contains_key(name) {
+            return Err(bad(format!("unknown parameter `{name}`")));
+        }
+    }
+    for name in s.coordinates.keys() {
+        if !m.coord_index.contains_key(name) {
+            return Err(bad(format!("unknown coordinate `{name}`")));
+        }
+    }
+    let mut params = Vec::with_capacity(m.params.len());
+    for p in &m.params {
+        let v = *s
+            .parameters
+            .get(&p.name)
+            .ok_or_else(|| bad(format!("missing parameter `{}`", p.name)))?;
+        if !v.is_finite() {
+            return Err(bad(format!("parameter `{}` is not finite", p.name)));
+        }
+        params.push(v);
+    }
+    let mut vals = Values {
+        params,
+        coords: Vec::with_capacity(m.coords.len()),
+    };
+    for c in &m.coords {
+        let v = *s
+            .coordinates
+            .get(&c.name)
+            .ok_or_else(|| bad(format!("missing coordinate `{}`", c.name)))?;
+        if v.iter().any(|x| !x.is_finite()) {
+            return Err(bad(format!("coordinate `{}` is not finite", c.name)));
+        }
+        if let Some(rate) = &c.rate {
+            let w = expr::eval_scalar(rate, &vals.constants()).map_err(|e| {
+                NumericError::Evaluation {
+                    what: format!("imposed rate of `{}`", c.name),
+                    message: e,
+                }
+            })?;
+            if (v[1] - w).abs() > RATE_TOL * w.abs().max(1.0) || v[2] != 0.0 {
+                return Err(bad(format!(
+                    "coordinate `{}` has the imposed rate `{}` = {w}, so its [q, q̇, q̈] must be \
+                     [q, {w}, 0], not {v:?}",
+                    c.name,
+                    c.rate_text.as_deref().unwrap_or("")
+                )));
+            }
+        }
+        vals.coords.push(v);
+    }
+    Ok(vals)
+}
+
+/// Every frame's orientation and every point's position at t → 0, as dual numbers in t.
+pub(super) struct State {
+    /// Per frame: column k is its k-th basis vector in ground components.
+    pub rot: Vec<M3<D2>>,
+    /// Per point: position from the ground origin, ground components.
+    pub pos: Vec<V3<D2>>,
+    /// Per frame: index of its origin point.
+    origin: Vec<usize>,
+}
+
+fn re(v: &V3<D2>) -> V3<f64> {
+    [v[0].re, v[1].re, v[2].re]
+}
+
+fn constant(v: &V3<f64>) -> V3<D2> {
+    [D2::from(v[0]), D2::from(v[1]), D2::from(v[2])]
+}
+
+impl State {
+    /// Orientation of frame `f` at t = 0.
+    pub fn rot0(&self, f: usize) -> M3<f64> {
+        mat_parts(&self.rot[f])[0]
+    }
+
+    /// Position of point `p` at t = 0.
+    pub fn pos0(&self, p: usize) -> V3<f64> {
+        re(&self.pos[p])
+    }
+
+    /// Origin of frame `f` as a function of t.
+    pub fn origin(&self, f: usize) -> V3<D2> {
+        self.pos[self.origin[f]]
+    }
+
+    /// Components in frame `f`'s basis, from its origin, of the ground-component point `p`
+    /// at t = 0.
+    pub fn local0(&self, f: usize, p: &V3<f64>) -> V3<f64> {
+        mat_vec(&transpose(&self.rot0(f)), &sub(p, &re(&self.origin(f))))
+    }
+
+    /// Path of the material point of frame `i` with local coordinates `u`, seen from frame
+    /// `j`: components in j's basis from j's origin, r(t) = R_jᵀ (O_i + R_i u − O_j).
+    pub fn track(&self, i: usize, u: &V3<f64>, j: usize) -> V3<D2> {
+        let p = add(&self.origin(i), &mat_vec(&self.rot[i], &constant(u)));
+        mat_vec(&transpose(&self.rot[j]), &sub(&p, &self.origin(j)))
+    }
+}
+
+/// Rotation matrix of an elementary rotation about `axis` of the parent by `a`: its columns are
+/// the new basis vectors in the parent's components.
+fn elementary(axis: usize, a: D2) -> M3<D2> {
+    let (s, c) = (a.sin(), a.cos());
+    let mut m = identity::<D2>();
+    let (b, d) = ((axis + 1) % 3, (axis + 2) % 3);
+    m[b][b] = c;
+    m[d][b] = s;
+    m[b][d] = -s;
+    m[d][d] = c;
+    m
+}
+
+/// Places every frame and point of the model at the sampled instant.
+pub(super) fn state(m: &NumericModel, v: &Values) -> Result<State, NumericError> {
+    let coords: Vec<D2> = v.coords.iter().map(|c| D2::new(c[0], c[1], c[2])).collect();
+    let rates: Vec<[D2; 2]> = v
+        .coords
+        .iter()
+        .map(|c| [D2::from(c[1]), D2::from(c[2])])
+        .collect();
+    let mut rot = vec![identity::<D2>(); m.frames.len()];
+    for (k, f) in m.frames.iter().enumerate().skip(1) {
+        let parent = rot[f.parent];
+        rot[k] = match &f.rotation {
+            None => parent,
+            Some((axis, sign, angle)) => {
+                let env = Env {
+                    params: &v.params,
+                    coords: &coords,
+                    rates: &rates,
+                    frames: &[],
+                };
+                let a = expr::eval_scalar(angle, &env).map_err(|e| NumericError::Evaluation {
+                    what: format!("rotation angle of frame {}", f.name),
+                    message: e,
+                })?;
+                mat_mul(&parent, &elementary(*axis, a * *sign))
+            }
+        };
+    }
+    let env = Env {
+        params: &v.params,
+        coords: &coords,
+        rates: &rates,
+        frames: &rot,
+    };
+    let mut pos = vec![[zero::<D2>(); 3]; m.points.len()];
+    for (k, p) in m.points.iter().enumerate().skip(1) {
+        let d = expr::eval_vector(&p.position, &env).map_err(|e| NumericError::Evaluation {
+            what: format!("position of point {}", p.name),
+            message: e,
+        })?;
+        pos[k] = add(&pos[p.from], &d);
+    }
+    Ok(State {
+        rot,
+        pos,
+        origin: m.frames.iter().map(|f| f.origin).collect(),
+    })
+}
+
+impl NumericModel {
+    fn frame(&self, name: &str) -> Result<usize, NumericError> {
+        self.frame_index
+            .get(name)
+            .copied()
+            .ok_or_else(|| NumericError::Unknown {
+                what: "frame".into(),
+                name: name.into(),
+            })
+    }
+
+    fn point(&self, name: &str) -> Result<usize, NumericError> {
+        self.point_index
+            .get(name)
+            .copied()
+            .ok_or_else(|| NumericError::Unknown {
+                what: "point".into(),
+                name: name.into(),
+            })
+    }
+
+    /// The frame carried by a solid, or a frame by name.
+    fn body_frame(&self, name: &str, q: &Quantity) -> Result<usize, NumericError> {
+        if let Some(s) = self.solid_index.get(name) {
+            return Ok(self.solids[*s].frame);
+        }
+        if let Some(f) = self.frame_index.get(name) {
+            return Ok(*f);
+        }
+        if self.sets.contains_key(name) {
+            return Err(NumericError::Quantity {
+                quantity: q.to_string(),
+                message: format!("`{name}` is a set: this quantity takes a solid or a frame"),
+            });
+        }
+        Err(NumericError::Unknown {
+            what: "solid or frame".into(),
+            name: name.into(),
+        })
+    }
+
+    /// The solids of a solid or set name.
+    fn solids_of(&self, name: &str) -> Result<Vec<usize>, NumericError> {
+        if let Some(s) = self.solid_index.get(name) {
+            return Ok(vec![*s]);
+        }
+        if let Some(list) = self.sets.get(name) {
+            return Ok(list.clone());
+        }
+        Err(NumericError::Unknown {
+            what: "solid or set".into(),
+            name: name.into(),
+        })
+    }
+}
+
+/// Ω(i/j) in ground components, from its definition: with R = R_jᵀ R_i the orientation of i
+/// in j, dR/dt Rᵀ is the skew matrix of Ω(i/j) in j's basis.
+fn omega(st: &State, i: usize, j: usize) -> V3<f64> {
+    let r = mat_mul(&transpose(&st.rot[j]), &st.rot[i]);
+    let [r0, dr] = mat_parts(&r);
+    let w = mat_mul(&dr, &transpose(&r0));
+    let in_j = [
+        0.5 * (w[2][1] - w[1][2]),
+        0.5 * (w[0][2] - w[2][0]),
+        0.5 * (w[1][0] - w[0][1]),
+    ];
+    mat_vec(&st.rot0(j), &in_j)
+}
+
+/// V(P, i/j) and Γ(P, i/j) in ground components: the point of i that coincides with P at
+/// t = 0, moved with i and differentiated in j.
+fn point_motion(st: &State, p: usize, i: usize, j: usize) -> [V3<f64>; 2] {
+    let u = st.local0(i, &st.pos0(p));
+    let [_, v, g] = parts(&st.track(i, &u, j));
+    let rj = st.rot0(j);
+    [mat_vec(&rj, &v), mat_vec(&rj, &g)]
+}
+
+/// Σ mₖ V, Σ mₖ APₖ ∧ V, Σ mₖ Γ, Σ mₖ APₖ ∧ Γ over the clouds of `solids`, motion relative
+/// to frame `j`, A = point `a`; ground components.
+fn kinetic(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    solids: &[usize],
+    j: usize,
+    a: usize,
+) -> Result<[V3<f64>; 4], NumericError> {
+    let a_j = st.local0(j, &st.pos0(a));
+    let mut acc = [[0.0; 3]; 4];
+    for s in solids {
+        let f = m.solids[*s].frame;
+        for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
+            let [r, v, g] = parts(&st.track(f, &u, j));
+            let ap = sub(&r, &a_j);
+            acc[0] = add(&acc[0], &scale(&v, mk));
+            acc[1] = add(&acc[1], &scale(&cross(&ap, &v), mk));
+            acc[2] = add(&acc[2], &scale(&g, mk));
+            acc[3] = add(&acc[3], &scale(&cross(&ap, &g), mk));
+        }
+    }
+    let rj = st.rot0(j);
+    Ok(acc.map(|x| mat_vec(&rj, &x)))
+}
+
+/// I(P, S) = Σ mₖ (|PPₖ|² Id − PPₖ PPₖᵀ), ground components.
+fn inertia(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    solids: &[usize],
+    p: usize,
+) -> Result<M3<f64>, NumericError> {
+    let p0 = st.pos0(p);
+    let mut acc = [[0.0; 3]; 3];
+    for s in solids {
+        let f = m.solids[*s].frame;
+        let (rf, of) = (st.rot0(f), re(&st.origin(f)));
+        for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
+            let d = sub(&add(&of, &mat_vec(&rf, &u)), &p0);
+            let pi = point_inertia(&d);
+            for r in 0..3 {
+                for c in 0..3 {
+                    acc[r][c] += mk * pi[r][c];
+                }
+            }
+        }
+    }
+    Ok(acc)
+}
+
+enum Raw {
+    Vector(V3<f64>),
+    Matrix(M3<f64>),
+    Torsor(String, V3<f64>, V3<f64>),
+}
+
+pub(super) fn evaluate(
+    m: &NumericModel,
+    q: &Quantity,
+    sample: &Sample,
+    default_basis: &str,
+) -> Result<NumValue, NumericError> {
+    let vals = values(m, sample)?;
+    let st = state(m, &vals)?;
+    let basis_name = q.basis.as_deref().unwrap_or(default_basis);
+    let b = m.frame(basis_name)?;
+    let frames = |mo: &Motion| -> Result<(usize, usize), NumericError> {
+        Ok((
+            m.body_frame(&mo.moving, q)?,
+            m.body_frame(&mo.reference, q)?,
+        ))
+    };
+    let kin = |mo: &Motion, a: usize| -> Result<[V3<f64>; 4], NumericError> {
+        let solids = m.solids_of(&mo.moving)?;
+        let j = m.body_frame(&mo.reference, q)?;
+        kinetic(m, &st, &vals, &solids, j, a)
+    };
+    use QuantityKind as K;
+    let raw = match &q.kind {
+        K::Omega(mo) => {
+            let (i, j) = frames(mo)?;
+            Raw::Vector(omega(&st, i, j))
+        }
+        K::Velocity { point, motion } | K::Acceleration { point, motion } => {
+            let (i, j) = frames(motion)?;
+            let [v, g] = point_motion(&st, m.point(point)?, i, j);
+            Raw::Vector(if matches!(q.kind, K::Velocity { .. }) {
+                v
+            } else {
+                g
+            })
+        }
+        K::Inertia { point, solid } => {
+            let solids = m.solids_of(solid)?;
+            Raw::Matrix(inertia(m, &st, &vals, &solids, m.point(point)?)?)
+        }
+        K::KineticResultant(mo) => Raw::Vector(kin(mo, 0)?[0]),
+        K::DynamicResultant(mo) => Raw::Vector(kin(mo, 0)?[2]),
+        K::KineticMoment { point, motion } => Raw::Vector(kin(motion, m.point(point)?)?[1]),
+        K::DynamicMoment { point, motion } => Raw::Vector(kin(motion, m.point(point)?)?[3]),
+        K::KinematicTorsor { motion, point } => {
+            let (i, j) = frames(motion)?;
+            let [v, _] = point_motion(&st, m.point(point)?, i, j);
+            Raw::Torsor(point.clone(), omega(&st, i, j), v)
+        }
+        K::KineticTorsor { motion, point } => {
+            let k = kin(motion, m.point(point)?)?;
+            Raw::Torsor(point.clone(), k[0], k[1])
+        }
+        K::DynamicTorsor { motion, point } => {
+            let k = kin(motion, m.point(point)?)?;
+            Raw::Torsor(point.clone(), k[2], k[3])
+        }
+    };
+    let not_finite = || NumericError::Quantity {
+        quantity: q.to_string(),
+        message: "the value is not finite at this sample".into(),
+    };
+    let rb = st.rot0(b);
+    let rbt = transpose(&rb);
+    let finite = |v: &V3<f64>| v.iter().all(|x| x.is_finite());
+    match (raw, &q.projection) {
+        (Raw::Vector(v), Some((frame, axis))) => {
+            let k = match axis {
+                'x' => 0,
+                'y' => 1,
+                'z' => 2,
+                _ => {
+                    return Err(NumericError::Quantity {
+                        quantity: q.to_string(),
+                        message: format!("`{axis}` is not an axis"),
+                    });
+                }
+            };
+            let e = column(&st.rot0(m.frame(frame)?), k);
+            let x = dot(&v, &e);
+            if !x.is_finite() {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Scalar(x))
+        }
+        (Raw::Vector(v), None) => {
+            let value = mat_vec(&rbt, &v);
+            if !finite(&value) {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Vector {
+                basis: basis_name.to_string(),
+                value,
+            })
+        }
+        (Raw::Matrix(mat), None) => {
+            let value = mat_mul(&mat_mul(&rbt, &mat), &rb);
+            if !value.iter().all(finite) {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Matrix {
+                basis: basis_name.to_string(),
+                value,
+            })
+        }
+        (Raw::Torsor(point, r, mo), None) => {
+            let (resultant, moment) = (mat_vec(&rbt, &r), mat_vec(&rbt, &mo));
+            if !finite(&resultant) || !finite(&moment) {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Torsor {
+                point,
+                basis: basis_name.to_string(),
+                resultant,
+                moment,
+            })
+        }
+        (_, Some(_)) => Err(NumericError::Quantity {
+            quantity: q.to_string(),
+            message: "only a vector can be projected".into(),
+        }),
+    }
+}
+
+pub(super) fn evaluate_expression(
+    m: &NumericModel,
+    text: &str,
+    sample: &Sample,
+) -> Result<f64, NumericError> {
+    let names = Names {
+        params: &m.param_index,
+        coords: &m.coord_index,
+        frames: &m.frame_index,
+    };
+    let node: Node = names
+        .parse(text, Context::Instant)
+        .map_err(|e| NumericError::Evaluation {
+            what: format!("expression `{text}`"),
+            message: e,
+        })?;
+    let vals = values(m, sample)?;
+    let coords: Vec<f64> = vals.coords.iter().map(|c| c[0]).collect();
+    let rates: Vec<[f64; 2]> = vals.coords.iter().map(|c| [c[1], c[2]]).collect();
+    let env = Env {
+        params: &vals.params,
+        coords: &coords,
+        rates: &rates,
+        frames: &[],
+    };
+    let x = expr::eval_scalar(&node, &env).map_err(|e| NumericError::Evaluation {
+        what: format!("expression `{text}`"),
+        message: e,
+    })?;
+    if !x.is_finite() {
+        return Err(NumericError::Evaluation {
+            what: format!("expression `{text}`"),
+            message: "the value is not finite".into(),
+        });
+    }
+    Ok(x)
+}

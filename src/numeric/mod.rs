@@ -1,0 +1,369 @@
+//! The independent float backend: mechanics recomputed numerically from the course's definitions.
+//!
+//! Nothing here shares formula code with the exact side (`expr`, `frame`, `kinematics`,
+//! `torsor`, symbolica): the spec's expressions are parsed again by a hand-written parser,
+//! frames are rotation matrices, and every time derivative is exact through second-order dual
+//! numbers in t — each coordinate is q(t) = q + q̇ t + q̈ t²/2 around t = 0, so a position's
+//! dual parts are its velocity and acceleration, never a finite difference.
+//!
+//! Each solid is realised as a cloud of point masses with the solid's mass, centre of inertia
+//! and inertia operator at G, and the kinetic and dynamic elements are the course's sums:
+//!
+//! - Rc(S/R0) = Σ mₖ V(Pₖ/R0), σ(A, S/R0) = Σ mₖ APₖ ∧ V(Pₖ/R0);
+//! - Rd(S/R0) = Σ mₖ Γ(Pₖ/R0), δ(A, S/R0) = Σ mₖ APₖ ∧ Γ(Pₖ/R0);
+//! - I(A, S) = Σ mₖ (|APₖ|² Id − APₖ APₖᵀ).
+//!
+//! ```
+//! use torseur::numeric::{NumericModel, NumValue, Sample};
+//! use torseur::quantity::Quantity;
+//! let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
+//! let spec: torseur::spec::wire::SpecFile = serde_json::from_str(&text).unwrap();
+//! let model = NumericModel::new(&spec).unwrap();
+//! let sample = model.sample(&mut rand::rng()).unwrap();
+//! let q = Quantity::parse("{D(E/0)}_O2 in B1").unwrap();
+//! assert!(matches!(model.evaluate(&q, &sample, "0").unwrap(), NumValue::Torsor { .. }));
+//! ```
+
+mod cloud;
+mod expr;
+mod kin;
+mod la;
+mod model;
+mod sample;
+#[cfg(test)]
+mod tests;
+
+use crate::quantity::Quantity;
+use crate::spec::wire::{CoordinateKind, SpecFile};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// Values of the parameters and of the time coordinates at one instant.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Sample {
+    /// Value of every parameter of the spec.
+    #[serde(default)]
+    pub parameters: BTreeMap<String, f64>,
+    /// `[q, q̇, q̈]` of every time coordinate of the spec.
+    #[serde(default)]
+    pub coordinates: BTreeMap<String, [f64; 3]>,
+}
+
+/// A numeric value of a quantity. Bases are frame names (`"2"` for B2).
+#[derive(Debug, Clone, PartialEq)]
+pub enum NumValue {
+    /// A projection such as `delta(O2,2/0).x2`.
+    Scalar(f64),
+    /// A vector: its components in the basis of frame `basis`.
+    Vector {
+        /// Frame whose basis holds the components.
+        basis: String,
+        /// Components.
+        value: [f64; 3],
+    },
+    /// An inertia operator: its matrix in the basis of frame `basis` (rows).
+    Matrix {
+        /// Frame whose basis holds the matrix.
+        basis: String,
+        /// Rows of the matrix.
+        value: [[f64; 3]; 3],
+    },
+    /// A torsor at `point`, its resultant and moment in the basis of frame `basis`.
+    Torsor {
+        /// Point of reduction.
+        point: String,
+        /// Frame whose basis holds the components.
+        basis: String,
+        /// Resultant.
+        resultant: [f64; 3],
+        /// Moment at `point`.
+        moment: [f64; 3],
+    },
+}
+
+impl NumValue {
+    /// All the numbers of the value, in a fixed order (a torsor: resultant then moment).
+    ///
+    /// ```
+    /// use torseur::numeric::NumValue;
+    /// let v = NumValue::Vector { basis: "0".into(), value: [1.0, 2.0, 3.0] };
+    /// assert_eq!(v.numbers(), vec![1.0, 2.0, 3.0]);
+    /// ```
+    pub fn numbers(&self) -> Vec<f64> {
+        match self {
+            NumValue::Scalar(x) => vec![*x],
+            NumValue::Vector { value, .. } => value.to_vec(),
+            NumValue::Matrix { value, .. } => value.iter().flatten().copied().collect(),
+            NumValue::Torsor {
+                resultant, moment, ..
+            } => resultant.iter().chain(moment).copied().collect(),
+        }
+    }
+}
+
+/// Why a numeric evaluation or a sample failed. Messages name the spec's objects.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum NumericError {
+    /// The spec cannot be realised numerically (unknown name, cycle, bad expression...).
+    #[error("spec, at {path}: {message}")]
+    Spec {
+        /// JSON path of the faulty value (`points[2].position`).
+        path: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// A name in a quantity or argument that the spec does not define.
+    #[error("unknown {what} `{name}`")]
+    Unknown {
+        /// What kind of object was expected (`point`, `frame`, `solid or set`...).
+        what: String,
+        /// The name given.
+        name: String,
+    },
+    /// The sample does not fit the spec (missing, unknown or non-finite value).
+    #[error("sample: {0}")]
+    Sample(String),
+    /// A solid whose mass or inertia no material body can have.
+    #[error("solid {solid}: {message}")]
+    NotPhysical {
+        /// Solid name.
+        solid: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// A quantity that cannot be evaluated as asked.
+    #[error("{quantity}: {message}")]
+    Quantity {
+        /// The quantity, in course notation.
+        quantity: String,
+        /// Why.
+        message: String,
+    },
+    /// An expression that fails at these values (division by zero, overflow).
+    #[error("{what}: {message}")]
+    Evaluation {
+        /// Where the expression comes from (`position of point G2`).
+        what: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// No sample can be drawn for this spec.
+    #[error("cannot draw a sample: {0}")]
+    Sampling(String),
+}
+
+/// A parameter and how it is drawn.
+#[derive(Debug, Clone)]
+struct ParamInfo {
+    name: String,
+    /// Drawn in [0.5, 2] (lengths, masses) rather than [−1, 1].
+    positive: bool,
+}
+
+/// A time coordinate.
+#[derive(Debug, Clone)]
+struct CoordInfo {
+    name: String,
+    kind: CoordinateKind,
+    /// Imposed rate (parameters only): q̇ is its value and q̈ = 0.
+    rate: Option<expr::Node>,
+    rate_text: Option<String>,
+}
+
+/// A frame: orientation from its parent, and origin point.
+#[derive(Debug, Clone)]
+struct FrameInfo {
+    name: String,
+    /// Parent index (the ground is its own parent, index 0).
+    parent: usize,
+    /// (axis 0..3, sign, angle) of the elementary rotation from the parent.
+    rotation: Option<(usize, f64, expr::Node)>,
+    /// Origin point index.
+    origin: usize,
+}
+
+/// A point placed from another one.
+#[derive(Debug, Clone)]
+struct PointInfo {
+    name: String,
+    from: usize,
+    position: expr::Node,
+}
+
+/// Inertia operator as the spec gives it.
+#[derive(Debug, Clone)]
+struct InertiaInfo {
+    point: usize,
+    basis: usize,
+    matrix: [[expr::Node; 3]; 3],
+    text: [[String; 3]; 3],
+}
+
+/// A declared symmetry: plane normal to, or revolution about, a basis vector through G.
+#[derive(Debug, Clone)]
+struct Symmetry {
+    frame: usize,
+    axis: usize,
+    revolution: bool,
+}
+
+/// A solid.
+#[derive(Debug, Clone)]
+struct SolidInfo {
+    name: String,
+    frame: usize,
+    mass: expr::Node,
+    centre: usize,
+    inertia: Option<InertiaInfo>,
+    symmetries: Vec<Symmetry>,
+}
+
+/// What a hypothesis imposes on samples.
+#[derive(Debug, Clone)]
+struct Hypothesis {
+    symmetric_solids: Vec<usize>,
+    constant_rates: Vec<usize>,
+}
+
+/// A spec made numeric: built once, then evaluated at any number of samples.
+///
+/// Frames and points are stored in tree order (each after its parent); index 0 is the ground
+/// frame and the ground origin.
+#[derive(Debug, Clone)]
+pub struct NumericModel {
+    params: Vec<ParamInfo>,
+    coords: Vec<CoordInfo>,
+    frames: Vec<FrameInfo>,
+    points: Vec<PointInfo>,
+    solids: Vec<SolidInfo>,
+    sets: BTreeMap<String, Vec<usize>>,
+    hypotheses: BTreeMap<String, Hypothesis>,
+    param_index: BTreeMap<String, usize>,
+    coord_index: BTreeMap<String, usize>,
+    frame_index: BTreeMap<String, usize>,
+    point_index: BTreeMap<String, usize>,
+    solid_index: BTreeMap<String, usize>,
+}
+
+impl NumericModel {
+    /// Builds the numeric model of a spec: resolves every name and parses every expression.
+    ///
+    /// ```
+    /// use torseur::numeric::NumericModel;
+    /// let spec: torseur::spec::wire::SpecFile = serde_json::from_str(
+    ///     r#"{"title": "t", "frames": [{"name": "1", "parent": "7"}]}"#).unwrap();
+    /// let e = NumericModel::new(&spec).unwrap_err();
+    /// assert_eq!(e.to_string(), "spec, at frames[0].parent: unknown frame `7`");
+    /// ```
+    pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
+        model::build(spec)
+    }
+
+    /// Evaluates a quantity in course notation at `sample`.
+    ///
+    /// A vector is given in the basis `q.basis`, else in `default_basis` (a frame name); a
+    /// projection `.x2` gives the scalar product with x2. Velocities and accelerations are those
+    /// of the point of the moving solid that coincides with P at the sample's instant.
+    ///
+    /// ```
+    /// use torseur::numeric::{NumericModel, NumValue, Sample};
+    /// use torseur::quantity::Quantity;
+    /// let spec: torseur::spec::wire::SpecFile = serde_json::from_str(r#"{
+    ///   "title": "arm", "parameters": [{"name": "L"}],
+    ///   "coordinates": [{"name": "t", "kind": "angle"}],
+    ///   "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}}],
+    ///   "points": [{"name": "P", "position": "L*x1"}]}"#).unwrap();
+    /// let model = NumericModel::new(&spec).unwrap();
+    /// let s = Sample {
+    ///     parameters: [("L".to_string(), 2.0)].into(),
+    ///     coordinates: [("t".to_string(), [0.3, 5.0, 0.0])].into(),
+    /// };
+    /// let v = model.evaluate(&Quantity::parse("V(P,1/0).y1").unwrap(), &s, "0").unwrap();
+    /// assert!(matches!(v, NumValue::Scalar(x) if (x - 10.0).abs() < 1e-12));
+    /// ```
+    pub fn evaluate(
+        &self,
+        q: &Quantity,
+        sample: &Sample,
+        default_basis: &str,
+    ) -> Result<NumValue, NumericError> {
+        kin::evaluate(self, q, sample, default_basis)
+    }
+
+    /// Draws a random physically valid sample, reproducible from the generator's state.
+    ///
+    /// Lengths and masses (parameters with unit m or kg, or entering a mass) are drawn in
+    /// [0.5, 2], other parameters in [−1, 1]; angles in [−π, π], rates and accelerations in
+    /// [−2, 2]. The inertia parameters of each solid are those of a random cloud of point
+    /// masses with the solid's mass, so the matrix is always a real body's.
+    ///
+    /// ```
+    /// use rand::SeedableRng;
+    /// let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
+    /// let spec = serde_json::from_str(&text).unwrap();
+    /// let model = torseur::numeric::NumericModel::new(&spec).unwrap();
+    /// let a = model.sample(&mut rand_chacha::ChaCha8Rng::seed_from_u64(1)).unwrap();
+    /// let b = model.sample(&mut rand_chacha::ChaCha8Rng::seed_from_u64(1)).unwrap();
+    /// assert_eq!(a, b);
+    /// ```
+    pub fn sample(&self, rng: &mut impl rand::Rng) -> Result<Sample, NumericError> {
+        sample::draw(self, rng, &[], &[])
+    }
+
+    /// Draws a random sample that satisfies the spec's hypothesis `name`: its symmetric solids
+    /// get clouds with the declared symmetries, its constant rates get q̈ = 0.
+    ///
+    /// ```
+    /// use rand::SeedableRng;
+    /// let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
+    /// let spec = serde_json::from_str(&text).unwrap();
+    /// let model = torseur::numeric::NumericModel::new(&spec).unwrap();
+    /// let s = model.sample_under(&mut rand_chacha::ChaCha8Rng::seed_from_u64(1), "Q2").unwrap();
+    /// assert_eq!(s.coordinates["theta1"][2], 0.0);
+    /// assert!(s.parameters["F2"].abs() < 1e-12);
+    /// ```
+    pub fn sample_under(
+        &self,
+        rng: &mut impl rand::Rng,
+        hypothesis: &str,
+    ) -> Result<Sample, NumericError> {
+        let h = self
+            .hypotheses
+            .get(hypothesis)
+            .ok_or_else(|| NumericError::Unknown {
+                what: "hypothesis".into(),
+                name: hypothesis.into(),
+            })?;
+        sample::draw(self, rng, &h.symmetric_solids, &h.constant_rates)
+    }
+
+    /// Evaluates a scalar expression of the spec's syntax (parameters, coordinates, `dot(q)`,
+    /// `ddot(q)`, `sin`, `cos`) at the sample's instant.
+    ///
+    /// ```
+    /// use torseur::numeric::{NumericModel, Sample};
+    /// let spec = serde_json::from_str(r#"{"title": "t", "parameters": [{"name": "m"}],
+    ///     "coordinates": [{"name": "q", "kind": "angle"}]}"#).unwrap();
+    /// let model = NumericModel::new(&spec).unwrap();
+    /// let s = Sample {
+    ///     parameters: [("m".to_string(), 3.0)].into(),
+    ///     coordinates: [("q".to_string(), [0.0, 2.0, 0.5])].into(),
+    /// };
+    /// let v = model.evaluate_expression("m*cos(q)*dot(q)^2 + ddot(q)", &s).unwrap();
+    /// assert_eq!(v, 12.5);
+    /// ```
+    pub fn evaluate_expression(&self, text: &str, sample: &Sample) -> Result<f64, NumericError> {
+        kin::evaluate_expression(self, text, sample)
+    }
+
+    /// Names of the parameters, in the spec's order.
+    pub fn parameter_names(&self) -> impl Iterator<Item = &str> {
+        self.params.iter().map(|p| p.name.as_str())
+    }
+
+    /// Names of the time coordinates, in the spec's order.
+    pub fn coordinate_names(&self) -> impl Iterator<Item = &str> {
+        self.coords.iter().map(|c| c.name.as_str())
+    }
+}

@@ -1,0 +1,536 @@
+//! Building a [`NumericModel`] from a spec: names, frame and point trees, parsed expressions.
+
+use super::expr::{self, Kind, Name, Node};
+use super::{
+    CoordInfo, FrameInfo, Hypothesis, InertiaInfo, NumericError, NumericModel, ParamInfo,
+    PointInfo, SolidInfo, Symmetry,
+};
+use crate::spec::wire::{SpecFile, SymmetrySpec};
+use std::collections::BTreeMap;
+
+fn spec_err(path: impl Into<String>, message: impl Into<String>) -> NumericError {
+    NumericError::Spec {
+        path: path.into(),
+        message: message.into(),
+    }
+}
+
+/// Where an expression appears, which decides the names it may use.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum Context {
+    /// Parameters only (masses, inertia entries, imposed rates).
+    Constant,
+    /// Parameters and coordinates (rotation angles).
+    Angle,
+    /// Parameters, coordinates and basis vectors (point positions).
+    Position,
+    /// Parameters, coordinates, their rates (a user expression at one instant).
+    Instant,
+}
+
+/// The names known while parsing expressions.
+pub(super) struct Names<'a> {
+    pub params: &'a BTreeMap<String, usize>,
+    pub coords: &'a BTreeMap<String, usize>,
+    pub frames: &'a BTreeMap<String, usize>,
+}
+
+impl Names<'_> {
+    /// Splits `x2` into (frame index, axis) when frame `2` exists.
+    pub fn basis_vector(&self, s: &str) -> Option<(usize, usize)> {
+        let axis = match s.as_bytes().first()? {
+            b'x' => 0,
+            b'y' => 1,
+            b'z' => 2,
+            _ => return None,
+        };
+        self.frames.get(&s[1..]).map(|f| (*f, axis))
+    }
+
+    /// Parses `text` for `ctx` and checks its type (scalar, or vector for positions).
+    pub fn parse(&self, text: &str, ctx: Context) -> Result<Node, String> {
+        let resolve = |name: &str| -> Result<Name, String> {
+            if ctx == Context::Position
+                && let Some((f, a)) = self.basis_vector(name)
+            {
+                return Ok(Name::Basis(f, a));
+            }
+            if let Some(i) = self.params.get(name) {
+                return Ok(Name::Param(*i));
+            }
+            if let Some(i) = self.coords.get(name) {
+                return if ctx == Context::Constant {
+                    Err(format!(
+                        "`{name}` is a time coordinate: only parameters can appear here"
+                    ))
+                } else {
+                    Ok(Name::Coord(*i))
+                };
+            }
+            if self.basis_vector(name).is_some() {
+                return Err(format!(
+                    "the basis vector `{name}` cannot appear in a scalar"
+                ));
+            }
+            Err(format!("unknown name `{name}`"))
+        };
+        let node = expr::parse(text, &resolve, ctx == Context::Instant)?;
+        let k = expr::kind(&node)?;
+        match (ctx, k) {
+            (Context::Position, Kind::Scalar) => Err(
+                "a position is a vector: every term holds one basis vector (x0, y1, z2, …)".into(),
+            ),
+            (_, Kind::Vector) if ctx != Context::Position => {
+                Err("a scalar was expected, not a vector".into())
+            }
+            _ => Ok(node),
+        }
+    }
+}
+
+/// Orders items of a tree so that each comes after the one it hangs from; `parent(i)` is the
+/// index of the parent among the items, or `None` for a root. Errors name a cycle member.
+fn topo_order(n: usize, parent: &dyn Fn(usize) -> Option<usize>) -> Result<Vec<usize>, usize> {
+    let mut placed = vec![false; n];
+    let mut order = Vec::with_capacity(n);
+    while order.len() < n {
+        let before = order.len();
+        for i in 0..n {
+            if !placed[i] && parent(i).is_none_or(|p| placed[p]) {
+                placed[i] = true;
+                order.push(i);
+            }
+        }
+        if order.len() == before {
+            return Err(placed.iter().position(|p| !p).unwrap_or(0));
+        }
+    }
+    Ok(order)
+}
+
+fn unique<'a>(
+    what: &str,
+    path: &str,
+    names: impl Iterator<Item = &'a str>,
+    index: &mut BTreeMap<String, usize>,
+) -> Result<(), NumericError> {
+    for (i, n) in names.enumerate() {
+        if crate::quantity::check_name(n).is_err() {
+            return Err(spec_err(
+                format!("{path}[{i}].name"),
+                format!("{what} name `{n}`: only ASCII letters, digits and `_` are allowed"),
+            ));
+        }
+        if index.insert(n.to_string(), i).is_some() {
+            return Err(spec_err(
+                format!("{path}[{i}].name"),
+                format!("{what} `{n}` is defined twice"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Builds the model; every error names the JSON path of the faulty value.
+pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
+    // Parameters and coordinates.
+    let mut param_index = BTreeMap::new();
+    unique(
+        "parameter",
+        "parameters",
+        spec.parameters.iter().map(|p| p.name.as_str()),
+        &mut param_index,
+    )?;
+    let mut coord_index = BTreeMap::new();
+    unique(
+        "coordinate",
+        "coordinates",
+        spec.coordinates.iter().map(|c| c.name.as_str()),
+        &mut coord_index,
+    )?;
+    for (i, c) in spec.coordinates.iter().enumerate() {
+        if param_index.contains_key(&c.name) {
+            return Err(spec_err(
+                format!("coordinates[{i}].name"),
+                format!("`{}` is both a parameter and a coordinate", c.name),
+            ));
+        }
+    }
+
+    // Frames: the ground first, then parents before children.
+    let ground = spec.ground.clone();
+    let mut spec_frame_index = BTreeMap::new();
+    unique(
+        "frame",
+        "frames",
+        spec.frames.iter().map(|f| f.name.as_str()),
+        &mut spec_frame_index,
+    )?;
+    if let Some(i) = spec_frame_index.get(&ground) {
+        return Err(spec_err(
+            format!("frames[{i}].name"),
+            format!("`{ground}` is the ground frame: it has no parent"),
+        ));
+    }
+    let mut parents = Vec::with_capacity(spec.frames.len());
+    for (i, f) in spec.frames.iter().enumerate() {
+        if f.parent == ground {
+            parents.push(None);
+        } else {
+            let p = spec_frame_index.get(&f.parent).ok_or_else(|| {
+                spec_err(
+                    format!("frames[{i}].parent"),
+                    format!("unknown frame `{}`", f.parent),
+                )
+            })?;
+            parents.push(Some(*p));
+        }
+    }
+    let order = topo_order(spec.frames.len(), &|i| parents[i]).map_err(|i| {
+        spec_err(
+            format!("frames[{i}].parent"),
+            format!("frame `{}` is its own ancestor", spec.frames[i].name),
+        )
+    })?;
+    let mut frame_index = BTreeMap::new();
+    frame_index.insert(ground.clone(), 0usize);
+    for (k, i) in order.iter().enumerate() {
+        frame_index.insert(spec.frames[*i].name.clone(), k + 1);
+    }
+    let names = Names {
+        params: &param_index,
+        coords: &coord_index,
+        frames: &frame_index,
+    };
+
+    let coords = spec
+        .coordinates
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let rate = c
+                .rate
+                .as_ref()
+                .map(|r| {
+                    names
+                        .parse(r, Context::Constant)
+                        .map_err(|m| spec_err(format!("coordinates[{i}].rate"), m))
+                })
+                .transpose()?;
+            Ok(CoordInfo {
+                name: c.name.clone(),
+                kind: c.kind,
+                rate,
+                rate_text: c.rate.clone(),
+            })
+        })
+        .collect::<Result<Vec<_>, NumericError>>()?;
+
+    // Points: the ground origin first, then each after the point it is placed from.
+    let ground_origin = spec
+        .ground_origin
+        .clone()
+        .unwrap_or_else(|| "O0".to_string());
+    let mut spec_point_index = BTreeMap::new();
+    unique(
+        "point",
+        "points",
+        spec.points.iter().map(|p| p.name.as_str()),
+        &mut spec_point_index,
+    )?;
+    if let Some(i) = spec_point_index.get(&ground_origin) {
+        return Err(spec_err(
+            format!("points[{i}].name"),
+            format!("`{ground_origin}` is the ground origin: it cannot be placed"),
+        ));
+    }
+    let mut from = Vec::with_capacity(spec.points.len());
+    for (i, p) in spec.points.iter().enumerate() {
+        let f = p.from.as_deref().unwrap_or(&ground_origin);
+        if f == ground_origin {
+            from.push(None);
+        } else {
+            let k = spec_point_index.get(f).ok_or_else(|| {
+                spec_err(format!("points[{i}].from"), format!("unknown point `{f}`"))
+            })?;
+            from.push(Some(*k));
+        }
+    }
+    let porder = topo_order(spec.points.len(), &|i| from[i]).map_err(|i| {
+        spec_err(
+            format!("points[{i}].from"),
+            format!("point `{}` is placed from itself", spec.points[i].name),
+        )
+    })?;
+    let mut point_index = BTreeMap::new();
+    point_index.insert(ground_origin.clone(), 0usize);
+    for (k, i) in porder.iter().enumerate() {
+        point_index.insert(spec.points[*i].name.clone(), k + 1);
+    }
+    let mut points = vec![PointInfo {
+        name: ground_origin.clone(),
+        from: 0,
+        position: Node::Num(0.0),
+    }];
+    for i in &porder {
+        let p = &spec.points[*i];
+        let position = names
+            .parse(&p.position, Context::Position)
+            .map_err(|m| spec_err(format!("points[{i}].position"), m))?;
+        let f = p.from.as_deref().unwrap_or(&ground_origin);
+        points.push(PointInfo {
+            name: p.name.clone(),
+            from: point_index[f],
+            position,
+        });
+    }
+
+    // Frames, now that points are known (origins).
+    let mut frames = vec![FrameInfo {
+        name: ground.clone(),
+        parent: 0,
+        rotation: None,
+        origin: 0,
+    }];
+    for i in &order {
+        let f = &spec.frames[*i];
+        let rotation = match &f.rotation {
+            None => None,
+            Some(r) => {
+                let (sign, axis_txt) = match r.axis.trim().strip_prefix('-') {
+                    Some(a) => (-1.0, a.trim()),
+                    None => (1.0, r.axis.trim()),
+                };
+                let axis = match axis_txt {
+                    "x" => 0,
+                    "y" => 1,
+                    "z" => 2,
+                    _ => {
+                        return Err(spec_err(
+                            format!("frames[{i}].rotation.axis"),
+                            format!("axis `{}` is not x, y, z, -x, -y or -z", r.axis),
+                        ));
+                    }
+                };
+                let angle = names
+                    .parse(&r.angle, Context::Angle)
+                    .map_err(|m| spec_err(format!("frames[{i}].rotation.angle"), m))?;
+                Some((axis, sign, angle))
+            }
+        };
+        let origin = match &f.origin {
+            None => 0,
+            Some(o) => *point_index.get(o).ok_or_else(|| {
+                spec_err(
+                    format!("frames[{i}].origin"),
+                    format!("unknown point `{o}`"),
+                )
+            })?,
+        };
+        frames.push(FrameInfo {
+            name: f.name.clone(),
+            parent: frame_index[&f.parent],
+            rotation,
+            origin,
+        });
+    }
+
+    // Solids.
+    let mut solid_index = BTreeMap::new();
+    unique(
+        "solid",
+        "solids",
+        spec.solids.iter().map(|s| s.name.as_str()),
+        &mut solid_index,
+    )?;
+    let mut solids = Vec::with_capacity(spec.solids.len());
+    for (i, s) in spec.solids.iter().enumerate() {
+        let path = format!("solids[{i}]");
+        let frame = *frame_index.get(&s.frame).ok_or_else(|| {
+            spec_err(
+                format!("{path}.frame"),
+                format!("unknown frame `{}`", s.frame),
+            )
+        })?;
+        let mass = names
+            .parse(&s.mass, Context::Constant)
+            .map_err(|m| spec_err(format!("{path}.mass"), m))?;
+        let centre = *point_index.get(&s.centre).ok_or_else(|| {
+            spec_err(
+                format!("{path}.centre"),
+                format!("unknown point `{}`", s.centre),
+            )
+        })?;
+        let inertia = match &s.inertia {
+            None => None,
+            Some(inr) => {
+                let point = *point_index.get(&inr.point).ok_or_else(|| {
+                    spec_err(
+                        format!("{path}.inertia.point"),
+                        format!("unknown point `{}`", inr.point),
+                    )
+                })?;
+                let basis = *frame_index.get(&inr.basis).ok_or_else(|| {
+                    spec_err(
+                        format!("{path}.inertia.basis"),
+                        format!("unknown frame `{}`", inr.basis),
+                    )
+                })?;
+                let mut err = None;
+                let matrix: [[Node; 3]; 3] = std::array::from_fn(|r| {
+                    std::array::from_fn(|c| {
+                        names
+                            .parse(&inr.matrix[r][c], Context::Constant)
+                            .unwrap_or_else(|m| {
+                                err.get_or_insert(spec_err(
+                                    format!("{path}.inertia.matrix[{r}][{c}]"),
+                                    m,
+                                ));
+                                Node::Num(0.0)
+                            })
+                    })
+                });
+                if let Some(e) = err {
+                    return Err(e);
+                }
+                Some(InertiaInfo {
+                    point,
+                    basis,
+                    matrix,
+                    text: inr.matrix.clone(),
+                })
+            }
+        };
+        let mut symmetries = Vec::new();
+        for (k, sym) in s.symmetries.iter().enumerate() {
+            let (txt, revolution) = match sym {
+                SymmetrySpec::Plane { normal } => (normal, false),
+                SymmetrySpec::Revolution { axis } => (axis, true),
+            };
+            let (f, axis) = names.basis_vector(txt).ok_or_else(|| {
+                spec_err(
+                    format!("{path}.symmetries[{k}]"),
+                    format!("`{txt}` is not a basis vector such as x1"),
+                )
+            })?;
+            symmetries.push(Symmetry {
+                frame: f,
+                axis,
+                revolution,
+            });
+        }
+        solids.push(SolidInfo {
+            name: s.name.clone(),
+            frame,
+            mass,
+            centre,
+            inertia,
+            symmetries,
+        });
+    }
+
+    // Sets.
+    let mut sets = BTreeMap::new();
+    for (name, members) in &spec.sets {
+        let path = format!("sets.{name}");
+        if crate::quantity::check_name(name).is_err() {
+            return Err(spec_err(
+                path,
+                format!("set name `{name}` is not a valid name"),
+            ));
+        }
+        if solid_index.contains_key(name) {
+            return Err(spec_err(
+                path,
+                format!("`{name}` is both a set and a solid"),
+            ));
+        }
+        let mut list = Vec::new();
+        for (k, m) in members.iter().enumerate() {
+            let s = *solid_index
+                .get(m)
+                .ok_or_else(|| spec_err(format!("{path}[{k}]"), format!("unknown solid `{m}`")))?;
+            if list.contains(&s) {
+                return Err(spec_err(
+                    format!("{path}[{k}]"),
+                    format!("solid `{m}` listed twice"),
+                ));
+            }
+            list.push(s);
+        }
+        sets.insert(name.clone(), list);
+    }
+
+    // Hypotheses.
+    let mut hypotheses = BTreeMap::new();
+    for (i, h) in spec.hypotheses.iter().enumerate() {
+        let path = format!("hypotheses[{i}]");
+        let mut symmetric_solids = Vec::new();
+        for (k, s) in h.symmetric_solids.iter().enumerate() {
+            symmetric_solids.push(*solid_index.get(s).ok_or_else(|| {
+                spec_err(
+                    format!("{path}.symmetric_solids[{k}]"),
+                    format!("unknown solid `{s}`"),
+                )
+            })?);
+        }
+        let mut constant_rates = Vec::new();
+        for (k, q) in h.constant_rates.iter().enumerate() {
+            constant_rates.push(*coord_index.get(q).ok_or_else(|| {
+                spec_err(
+                    format!("{path}.constant_rates[{k}]"),
+                    format!("unknown coordinate `{q}`"),
+                )
+            })?);
+        }
+        if hypotheses
+            .insert(
+                h.name.clone(),
+                Hypothesis {
+                    symmetric_solids,
+                    constant_rates,
+                },
+            )
+            .is_some()
+        {
+            return Err(spec_err(
+                format!("{path}.name"),
+                format!("hypothesis `{}` is defined twice", h.name),
+            ));
+        }
+    }
+
+    // Parameters: which ones are drawn positive (lengths, masses).
+    let mut in_masses = std::collections::BTreeSet::new();
+    for s in &solids {
+        expr::params_in(&s.mass, &mut in_masses);
+    }
+    let params = spec
+        .parameters
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let unit = p.unit.as_deref().map(str::trim).unwrap_or("");
+            ParamInfo {
+                name: p.name.clone(),
+                positive: in_masses.contains(&i)
+                    || matches!(unit, "m" | "mm" | "cm" | "km" | "kg" | "g"),
+            }
+        })
+        .collect();
+
+    Ok(NumericModel {
+        params,
+        coords,
+        frames,
+        points,
+        solids,
+        sets,
+        hypotheses,
+        param_index,
+        coord_index,
+        frame_index,
+        point_index,
+        solid_index,
+    })
+}

@@ -1,0 +1,360 @@
+//! Random physically valid samples: inertia parameters read off random clouds of point masses.
+
+use super::cloud::{cloud_inertia, solid_cloud};
+use super::expr::{self, Node};
+use super::kin::{Values, state};
+use super::la::{V3, mat_vec, sub, transpose};
+use super::{NumericError, NumericModel, Sample};
+use crate::spec::wire::CoordinateKind;
+use rand::Rng;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// Base points of a random cloud, before symmetry operations.
+const CLOUD_POINTS: usize = 6;
+
+/// An entry of an inertia matrix as written: a number, or ± a parameter.
+enum Entry {
+    Number(f64),
+    Param(usize, f64),
+}
+
+fn classify(node: &Node, env: &expr::Env<f64>) -> Option<Entry> {
+    match node {
+        Node::Param(p) => Some(Entry::Param(*p, 1.0)),
+        Node::Neg(inner) if matches!(**inner, Node::Param(_)) => match **inner {
+            Node::Param(p) => Some(Entry::Param(p, -1.0)),
+            _ => None,
+        },
+        _ => {
+            let mut used = BTreeSet::new();
+            expr::params_in(node, &mut used);
+            if used.is_empty() {
+                expr::eval_scalar(node, env).ok().map(Entry::Number)
+            } else {
+                None
+            }
+        }
+    }
+}
+
+/// A symmetry operation on a cloud centred at the origin.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Op {
+    /// Mirror across the plane normal to an axis (doubles the points).
+    Mirror(usize),
+    /// Quarter turns about an axis (quadruples the points): the inertia becomes that of a
+    /// solid of revolution about it.
+    Turn(usize),
+    /// Projection on the plane normal to an axis (a flat body).
+    Flatten(usize),
+}
+
+const OPS: [Op; 9] = [
+    Op::Mirror(0),
+    Op::Mirror(1),
+    Op::Mirror(2),
+    Op::Turn(0),
+    Op::Turn(1),
+    Op::Turn(2),
+    Op::Flatten(0),
+    Op::Flatten(1),
+    Op::Flatten(2),
+];
+
+fn cost(op: Op) -> u32 {
+    match op {
+        Op::Mirror(_) => 1,
+        Op::Turn(_) => 2,
+        Op::Flatten(_) => 10,
+    }
+}
+
+/// Applies the operations of `mask` (bits over [`OPS`]): flattenings, then mirrors, then turns.
+fn symmetrize(base: &[(f64, V3<f64>)], mask: usize) -> Vec<(f64, V3<f64>)> {
+    let mut cloud = base.to_vec();
+    let chosen: Vec<Op> = (0..OPS.len())
+        .filter(|k| mask & (1 << k) != 0)
+        .map(|k| OPS[k])
+        .collect();
+    let rank = |op: &Op| match op {
+        Op::Flatten(_) => 0,
+        Op::Mirror(_) => 1,
+        Op::Turn(_) => 2,
+    };
+    let mut ordered = chosen.clone();
+    ordered.sort_by_key(rank);
+    for op in ordered {
+        cloud = match op {
+            Op::Flatten(a) => cloud
+                .into_iter()
+                .map(|(m, mut r)| {
+                    r[a] = 0.0;
+                    (m, r)
+                })
+                .collect(),
+            Op::Mirror(a) => cloud
+                .into_iter()
+                .flat_map(|(m, r)| {
+                    let mut s = r;
+                    s[a] = -s[a];
+                    [(m / 2.0, r), (m / 2.0, s)]
+                })
+                .collect(),
+            Op::Turn(a) => {
+                let (b, c) = ((a + 1) % 3, (a + 2) % 3);
+                cloud
+                    .into_iter()
+                    .flat_map(|(m, r)| {
+                        let mut out = [(m / 4.0, r); 4];
+                        let mut cur = r;
+                        for slot in out.iter_mut().skip(1) {
+                            let mut next = cur;
+                            next[b] = -cur[c];
+                            next[c] = cur[b];
+                            *slot = (m / 4.0, next);
+                            cur = next;
+                        }
+                        out
+                    })
+                    .collect()
+            }
+        };
+    }
+    cloud
+}
+
+/// Random point masses of total `mass`, centroid at the origin.
+fn random_cloud(rng: &mut impl Rng, mass: f64) -> Vec<(f64, V3<f64>)> {
+    let size: f64 = rng.random_range(0.3..=1.0);
+    let mut pts: Vec<(f64, V3<f64>)> = (0..CLOUD_POINTS)
+        .map(|_| {
+            let w: f64 = rng.random_range(0.2..=1.0);
+            let r = [0, 1, 2].map(|_| size * rng.random_range(-1.0..=1.0));
+            (w, r)
+        })
+        .collect();
+    let total: f64 = pts.iter().map(|p| p.0).sum();
+    let mut centroid = [0.0; 3];
+    for (w, r) in &pts {
+        for k in 0..3 {
+            centroid[k] += w * r[k] / total;
+        }
+    }
+    for p in &mut pts {
+        p.0 *= mass / total;
+        p.1 = sub(&p.1, &centroid);
+    }
+    pts
+}
+
+/// Matches a cloud's matrix against the written entries: parameter values, or `None` when a
+/// number or a repeated parameter does not fit.
+fn fit(pattern: &[[Entry; 3]; 3], mat: &[[f64; 3]; 3]) -> Option<BTreeMap<usize, f64>> {
+    let size = mat.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
+    let tol = 1e-9 * size.max(f64::MIN_POSITIVE);
+    let mut out: BTreeMap<usize, f64> = BTreeMap::new();
+    for r in 0..3 {
+        for c in 0..3 {
+            match pattern[r][c] {
+                Entry::Number(x) => {
+                    if (mat[r][c] - x).abs() > tol {
+                        return None;
+                    }
+                }
+                Entry::Param(p, sign) => {
+                    let v = sign * mat[r][c];
+                    if let Some(old) = out.get(&p) {
+                        if (old - v).abs() > tol {
+                            return None;
+                        }
+                    } else {
+                        out.insert(p, v);
+                    }
+                }
+            }
+        }
+    }
+    Some(out)
+}
+
+/// Draws a sample; `symmetric` solids get their declared symmetries, `constant_rates`
+/// coordinates get q̈ = 0.
+pub(super) fn draw(
+    m: &NumericModel,
+    rng: &mut impl Rng,
+    symmetric: &[usize],
+    constant_rates: &[usize],
+) -> Result<Sample, NumericError> {
+    let fail = |msg: String| NumericError::Sampling(msg);
+    // Parameters read off clouds must not also place or weigh anything.
+    let mut elsewhere = BTreeSet::new();
+    for f in &m.frames {
+        if let Some((_, _, a)) = &f.rotation {
+            expr::params_in(a, &mut elsewhere);
+        }
+    }
+    for p in &m.points {
+        expr::params_in(&p.position, &mut elsewhere);
+    }
+    for c in &m.coords {
+        if let Some(r) = &c.rate {
+            expr::params_in(r, &mut elsewhere);
+        }
+    }
+    let mut from_cloud: BTreeMap<usize, usize> = BTreeMap::new();
+    for (s, solid) in m.solids.iter().enumerate() {
+        expr::params_in(&solid.mass, &mut elsewhere);
+        if let Some(inr) = &solid.inertia {
+            for node in inr.matrix.iter().flatten() {
+                let mut used = BTreeSet::new();
+                expr::params_in(node, &mut used);
+                for p in used {
+                    if let Some(other) = from_cloud.insert(p, s)
+                        && other != s
+                    {
+                        return Err(fail(format!(
+                            "parameter `{}` appears in the inertia of solids {} and {}",
+                            m.params[p].name, m.solids[other].name, solid.name
+                        )));
+                    }
+                }
+            }
+        }
+    }
+    if let Some(p) = from_cloud.keys().find(|p| elsewhere.contains(p)) {
+        return Err(fail(format!(
+            "parameter `{}` appears in an inertia matrix and also in a position, angle, mass \
+             or rate",
+            m.params[*p].name
+        )));
+    }
+
+    let mut vals = Values {
+        params: vec![0.0; m.params.len()],
+        coords: Vec::with_capacity(m.coords.len()),
+    };
+    for (i, p) in m.params.iter().enumerate() {
+        if !from_cloud.contains_key(&i) {
+            vals.params[i] = if p.positive {
+                rng.random_range(0.5..=2.0)
+            } else {
+                rng.random_range(-1.0..=1.0)
+            };
+        }
+    }
+    for (i, c) in m.coords.iter().enumerate() {
+        let q = match c.kind {
+            CoordinateKind::Angle => rng.random_range(-std::f64::consts::PI..=std::f64::consts::PI),
+            CoordinateKind::Length => rng.random_range(0.5..=2.0),
+        };
+        let mut qd = rng.random_range(-2.0..=2.0);
+        let mut qdd = rng.random_range(-2.0..=2.0);
+        if let Some(rate) = &c.rate {
+            qd = expr::eval_scalar(rate, &vals.constants())
+                .map_err(|e| fail(format!("imposed rate of `{}`: {e}", c.name)))?;
+            qdd = 0.0;
+        }
+        if constant_rates.contains(&i) {
+            qdd = 0.0;
+        }
+        vals.coords.push([q, qd, qdd]);
+    }
+
+    // Inertia parameters: the geometry does not depend on them, so place it once.
+    let st = state(m, &vals)?;
+    for (s, solid) in m.solids.iter().enumerate() {
+        let Some(inr) = &solid.inertia else { continue };
+        let mass = expr::eval_scalar(&solid.mass, &vals.constants())
+            .map_err(|e| fail(format!("mass of solid {}: {e}", solid.name)))?;
+        if !(mass.is_finite() && mass > 0.0) {
+            return Err(fail(format!(
+                "solid {} has mass {mass} at the drawn parameters; give its mass parameters \
+                 the unit kg",
+                solid.name
+            )));
+        }
+        let mut err = None;
+        let pattern: [[Entry; 3]; 3] = std::array::from_fn(|r| {
+            std::array::from_fn(|c| {
+                classify(&inr.matrix[r][c], &vals.constants()).unwrap_or_else(|| {
+                    err.get_or_insert(fail(format!(
+                        "inertia entry [{r}][{c}] `{}` of solid {} is not a parameter, minus a \
+                         parameter or a number, so it cannot be read off a random body",
+                        inr.text[r][c], solid.name
+                    )));
+                    Entry::Number(0.0)
+                })
+            })
+        });
+        if let Some(e) = err {
+            return Err(e);
+        }
+        let mut forced = 0usize;
+        if symmetric.contains(&s) {
+            for sym in &solid.symmetries {
+                if sym.frame != inr.basis {
+                    return Err(fail(format!(
+                        "a symmetry of solid {} is written in the basis of frame {}, its \
+                         inertia in that of frame {}",
+                        solid.name, m.frames[sym.frame].name, m.frames[inr.basis].name
+                    )));
+                }
+                let op = if sym.revolution {
+                    Op::Turn(sym.axis)
+                } else {
+                    Op::Mirror(sym.axis)
+                };
+                forced |= 1 << OPS.iter().position(|o| *o == op).unwrap_or(0);
+            }
+        }
+        // QG in the inertia basis.
+        let rb = st.rot0(inr.basis);
+        let qg = mat_vec(
+            &transpose(&rb),
+            &sub(&st.pos0(solid.centre), &st.pos0(inr.point)),
+        );
+        let base = random_cloud(rng, mass);
+        let mut masks: Vec<usize> = (0..1usize << OPS.len())
+            .filter(|mk| mk & forced == forced)
+            .collect();
+        masks.sort_by_key(|mk| {
+            let c: u32 = (0..OPS.len())
+                .filter(|k| mk & (1 << k) != 0)
+                .map(|k| cost(OPS[k]))
+                .sum();
+            (c, *mk)
+        });
+        let found = masks.iter().find_map(|mk| {
+            let cloud = symmetrize(&base, *mk);
+            fit(&pattern, &cloud_inertia(&cloud, &qg))
+        });
+        let Some(assigned) = found else {
+            return Err(fail(format!(
+                "no random body fits the inertia matrix {:?} of solid {} (numbers and repeated \
+                 parameters must follow from mirror planes, axes of revolution or flatness)",
+                inr.text, solid.name
+            )));
+        };
+        for (p, v) in assigned {
+            vals.params[p] = v;
+        }
+    }
+    // Every solid must now be realisable.
+    for s in 0..m.solids.len() {
+        solid_cloud(m, &st, &vals, s)?;
+    }
+    Ok(Sample {
+        parameters: m
+            .params
+            .iter()
+            .zip(&vals.params)
+            .map(|(p, v)| (p.name.clone(), *v))
+            .collect(),
+        coordinates: m
+            .coords
+            .iter()
+            .zip(&vals.coords)
+            .map(|(c, v)| (c.name.clone(), *v))
+            .collect(),
+    })
+}

@@ -1,0 +1,128 @@
+//! Outputs: plain text and JSON of derived quantities, and numeric evaluation.
+
+mod eval;
+
+pub use eval::{Values, ValuesError, eval_value, numeric_point};
+
+use crate::derivation::{Derivation, Value};
+use crate::expr::Expr;
+use crate::mechanism::Mechanism;
+use serde_json::{Value as Json, json};
+
+/// Presentation text of one expression.
+pub fn present(e: &Expr) -> String {
+    e.presentation().to_string()
+}
+
+fn triple(c: &[Expr; 3], f: &impl Fn(&Expr) -> String) -> Vec<String> {
+    c.iter().map(f).collect()
+}
+
+/// A value as one line of text (presentation forms).
+pub fn value_text(m: &Mechanism, v: &Value) -> String {
+    let f = |e: &Expr| present(e);
+    match v {
+        Value::Scalar(e) => present(e),
+        Value::Vector { basis, components } => {
+            format!(
+                "[{}] in B{}",
+                triple(components, &f).join(", "),
+                m.frame_name(*basis)
+            )
+        }
+        Value::Matrix(i) => {
+            let rows: Vec<String> = i
+                .matrix
+                .iter()
+                .map(|r| format!("[{}]", triple(r, &f).join(", ")))
+                .collect();
+            format!(
+                "[{}] at {} in B{}",
+                rows.join(", "),
+                m.point_name(i.point),
+                m.frame_name(i.basis)
+            )
+        }
+        Value::Torsor {
+            point,
+            basis,
+            resultant,
+            moment,
+        } => format!(
+            "{{ R = [{}], M({}) = [{}] }} in B{}",
+            triple(resultant, &f).join(", "),
+            m.point_name(*point),
+            triple(moment, &f).join(", "),
+            m.frame_name(*basis)
+        ),
+    }
+}
+
+/// The text report of `torseur derive`: each quantity, then its forms under each hypothesis.
+pub fn derive_text(m: &Mechanism, ds: &[Derivation]) -> String {
+    let mut out = String::new();
+    for d in ds {
+        out.push_str(&format!("{} = {}\n", d.quantity, value_text(m, &d.value)));
+        for h in &m.hypotheses {
+            out.push_str(&format!(
+                "  under {}: {}\n",
+                h.name,
+                value_text(m, &d.value.under(h))
+            ));
+        }
+    }
+    out
+}
+
+/// A value as JSON: canonical and presentation strings.
+pub fn value_json(m: &Mechanism, v: &Value) -> Json {
+    let canon = |c: &[Expr; 3]| -> Vec<String> { c.iter().map(|e| e.to_string()).collect() };
+    let pres = |c: &[Expr; 3]| -> Vec<String> { c.iter().map(present).collect() };
+    match v {
+        Value::Scalar(e) => {
+            json!({"kind": "scalar", "canonical": e.to_string(), "presentation": present(e), "terms": e.nterms()})
+        }
+        Value::Vector { basis, components } => json!({
+            "kind": "vector", "basis": format!("B{}", m.frame_name(*basis)),
+            "canonical": canon(components), "presentation": pres(components), "terms": v.nterms()}),
+        Value::Matrix(i) => json!({
+            "kind": "matrix", "point": m.point_name(i.point), "basis": format!("B{}", m.frame_name(i.basis)),
+            "canonical": i.matrix.iter().map(canon).collect::<Vec<_>>(),
+            "presentation": i.matrix.iter().map(pres).collect::<Vec<_>>(), "terms": v.nterms()}),
+        Value::Torsor {
+            point,
+            basis,
+            resultant,
+            moment,
+        } => json!({
+            "kind": "torsor", "point": m.point_name(*point), "basis": format!("B{}", m.frame_name(*basis)),
+            "resultant": {"canonical": canon(resultant), "presentation": pres(resultant)},
+            "moment": {"canonical": canon(moment), "presentation": pres(moment)}, "terms": v.nterms()}),
+    }
+}
+
+/// The JSON report of `torseur derive --json`.
+pub fn derive_json(m: &Mechanism, ds: &[Derivation]) -> Json {
+    let qs: Vec<Json> = ds
+        .iter()
+        .map(|d| {
+            let mut o = json!({"id": d.quantity.to_string(), "value": value_json(m, &d.value)});
+            let hs: serde_json::Map<String, Json> = m
+                .hypotheses
+                .iter()
+                .map(|h| (h.name.clone(), value_json(m, &d.value.under(h))))
+                .collect();
+            if !hs.is_empty() {
+                o["hypotheses"] = Json::Object(hs);
+            }
+            o["steps"] = Json::Array(
+                d.steps
+                    .iter()
+                    .map(|s| json!({"label": s.label, "theorem": s.theorem, "value": value_json(m, &s.value)}))
+                    .collect(),
+            );
+            o
+        })
+        .collect();
+    json!({"title": m.title, "quantities": qs})
+}

@@ -1,0 +1,496 @@
+//! Validation of a spec into a [`Mechanism`]: every reference resolved, every expression
+//! parsed, every error naming the JSON path of the offending value.
+
+use super::SpecError;
+use super::wire::{CoordinateKind, SpecFile, SymmetrySpec};
+use crate::expr::{ExprError, Registry};
+use crate::frame::{Angle, Axis, FrameId, Frames, Rotation};
+use crate::inertia::{Inertia, Symmetry};
+use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
+use crate::point::{PointId, Points};
+use crate::quantity::{Quantity, check_name};
+use crate::vector::Vector;
+use std::collections::{BTreeMap, HashSet};
+
+fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
+    SpecError::Invalid {
+        path: path.into(),
+        message: message.into(),
+    }
+}
+
+fn expr_err(path: &str, e: ExprError) -> SpecError {
+    at(path, e.to_string())
+}
+
+fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
+    check_name(n).map_err(|m| at(path, m))
+}
+
+/// Splits `x2` into (axis, frame name) if the frame exists.
+fn basis_vector<'a>(frames: &Frames, s: &'a str) -> Option<(FrameId, Axis)> {
+    let mut c = s.chars();
+    let axis = Axis::parse(&c.next()?.to_string())?;
+    let f = frames.find(c.as_str())?;
+    Some((f, axis))
+}
+
+/// Builds the mechanism described by a spec.
+pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
+    // Names: parameters and coordinates share one namespace with the reserved words and
+    // the basis vector names.
+    let mut names: HashSet<String> = HashSet::new();
+    for (i, p) in spec.parameters.iter().enumerate() {
+        let path = format!("parameters[{i}].name");
+        name_ok(&path, &p.name)?;
+        if !names.insert(p.name.clone()) {
+            return Err(at(path, format!("duplicate name `{}`", p.name)));
+        }
+    }
+    for (i, c) in spec.coordinates.iter().enumerate() {
+        let path = format!("coordinates[{i}].name");
+        name_ok(&path, &c.name)?;
+        if !names.insert(c.name.clone()) {
+            return Err(at(path, format!("duplicate name `{}`", c.name)));
+        }
+    }
+    let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
+    let coords: Vec<(String, CoordinateKind, Option<String>)> = spec
+        .coordinates
+        .iter()
+        .map(|c| (c.name.clone(), c.kind, c.rate.clone()))
+        .collect();
+    let reg =
+        Registry::with_rates(&params, &coords).map_err(|e| at("coordinates", e.to_string()))?;
+
+    // Frames, in an order where each parent comes first (the spec may list them in any order).
+    name_ok("ground", &spec.ground)?;
+    let mut frames = Frames::new(reg.clone(), &spec.ground);
+    let mut frame_names: HashSet<String> = [spec.ground.clone()].into();
+    for (i, f) in spec.frames.iter().enumerate() {
+        name_ok(&format!("frames[{i}].name"), &f.name)?;
+        if !frame_names.insert(f.name.clone()) {
+            return Err(at(
+                format!("frames[{i}].name"),
+                format!("duplicate frame `{}`", f.name),
+            ));
+        }
+    }
+    let mut placed = vec![false; spec.frames.len()];
+    let mut frame_origin_names: Vec<Option<(String, String)>> = vec![None];
+    loop {
+        let mut progress = false;
+        for (i, f) in spec.frames.iter().enumerate() {
+            if placed[i] {
+                continue;
+            }
+            let Some(parent) = frames.find(&f.parent) else {
+                if !frame_names.contains(&f.parent) {
+                    return Err(at(
+                        format!("frames[{i}].parent"),
+                        format!("unknown frame `{}`", f.parent),
+                    ));
+                }
+                continue;
+            };
+            let rotation = match &f.rotation {
+                None => None,
+                Some(r) => {
+                    let path = format!("frames[{i}].rotation");
+                    let (sign, axis_txt) = match r.axis.strip_prefix('-') {
+                        Some(a) => (-1, a),
+                        None => (1, r.axis.as_str()),
+                    };
+                    let axis = Axis::parse(axis_txt).ok_or_else(|| {
+                        at(
+                            format!("{path}.axis"),
+                            format!("axis `{}` is not x, y, z, -x, -y or -z", r.axis),
+                        )
+                    })?;
+                    let coord = reg.coord(&r.angle).ok_or_else(|| {
+                        at(
+                            format!("{path}.angle"),
+                            format!(
+                                "`{}` is not a coordinate (a rotation angle is an angle \
+                                 coordinate; a constant angle is one with rate 0)",
+                                r.angle
+                            ),
+                        )
+                    })?;
+                    if reg.coord_info(coord).kind != CoordinateKind::Angle {
+                        return Err(at(
+                            format!("{path}.angle"),
+                            format!("`{}` is a length, not an angle", r.angle),
+                        ));
+                    }
+                    Some(Rotation {
+                        axis,
+                        angle: Angle { coord, sign },
+                    })
+                }
+            };
+            frames.add(&f.name, parent, rotation);
+            frame_origin_names.push(f.origin.clone().map(|o| (o, format!("frames[{i}].origin"))));
+            placed[i] = true;
+            progress = true;
+        }
+        if placed.iter().all(|p| *p) {
+            break;
+        }
+        if !progress {
+            let i = placed.iter().position(|p| !p).unwrap_or(0);
+            return Err(at(
+                format!("frames[{i}].parent"),
+                format!("the frames form a cycle through `{}`", spec.frames[i].name),
+            ));
+        }
+    }
+    let bv = |s: &str| basis_vector(&frames, s).map(|(f, a)| (f, a.index()));
+
+    // Points, parents first.
+    let origin_name = spec
+        .ground_origin
+        .clone()
+        .unwrap_or_else(|| "O0".to_string());
+    name_ok("ground_origin", &origin_name)?;
+    let mut points = Points::new(&origin_name);
+    let mut point_names: HashSet<String> = [origin_name.clone()].into();
+    for (i, p) in spec.points.iter().enumerate() {
+        name_ok(&format!("points[{i}].name"), &p.name)?;
+        if names.contains(&p.name) {
+            return Err(at(
+                format!("points[{i}].name"),
+                format!("`{}` is already a parameter or coordinate", p.name),
+            ));
+        }
+        if !point_names.insert(p.name.clone()) {
+            return Err(at(
+                format!("points[{i}].name"),
+                format!("duplicate point `{}`", p.name),
+            ));
+        }
+    }
+    let mut done = vec![false; spec.points.len()];
+    loop {
+        let mut progress = false;
+        for (i, p) in spec.points.iter().enumerate() {
+            if done[i] {
+                continue;
+            }
+            let from = p.from.clone().unwrap_or_else(|| origin_name.clone());
+            let Some(parent) = points.find(&from) else {
+                if !point_names.contains(&from) {
+                    return Err(at(
+                        format!("points[{i}].from"),
+                        format!("unknown point `{from}`"),
+                    ));
+                }
+                continue;
+            };
+            let path = format!("points[{i}].position");
+            let parts = reg
+                .parse_vector(&p.position, &bv)
+                .map_err(|e| expr_err(&path, e))?;
+            let mut v = Vector::zero();
+            for (f, c) in parts {
+                v.add_part(f, c);
+            }
+            points.add(&p.name, parent, v);
+            done[i] = true;
+            progress = true;
+        }
+        if done.iter().all(|d| *d) {
+            break;
+        }
+        if !progress {
+            let i = done.iter().position(|d| !d).unwrap_or(0);
+            return Err(at(
+                format!("points[{i}].from"),
+                format!("the points form a cycle through `{}`", spec.points[i].name),
+            ));
+        }
+    }
+    let find_point = |path: &str, n: &str| -> Result<PointId, SpecError> {
+        points
+            .find(n)
+            .ok_or_else(|| at(path, format!("unknown point `{n}`")))
+    };
+    let mut frame_origins = Vec::new();
+    for o in &frame_origin_names {
+        frame_origins.push(match o {
+            None => points.origin(),
+            Some((n, path)) => find_point(path, n)?,
+        });
+    }
+
+    // Solids.
+    let mut bodies = Vec::new();
+    for (i, s) in spec.solids.iter().enumerate() {
+        let path = format!("solids[{i}]");
+        name_ok(&format!("{path}.name"), &s.name)?;
+        if bodies.iter().any(|b: &Body| b.name == s.name) || s.name == spec.ground {
+            return Err(at(
+                format!("{path}.name"),
+                format!("duplicate solid `{}`", s.name),
+            ));
+        }
+        let frame = frames.find(&s.frame).ok_or_else(|| {
+            at(
+                format!("{path}.frame"),
+                format!("unknown frame `{}`", s.frame),
+            )
+        })?;
+        let mass = reg
+            .parse(&s.mass)
+            .map_err(|e| expr_err(&format!("{path}.mass"), e))?;
+        if !mass.is_time_independent() {
+            return Err(at(
+                format!("{path}.mass"),
+                "a mass is constant (parameters only)",
+            ));
+        }
+        let centre = find_point(&format!("{path}.centre"), &s.centre)?;
+        let inertia = match &s.inertia {
+            None => None,
+            Some(spec_i) => {
+                let ip = format!("{path}.inertia");
+                let point = find_point(&format!("{ip}.point"), &spec_i.point)?;
+                let basis = frames.find(&spec_i.basis).ok_or_else(|| {
+                    at(
+                        format!("{ip}.basis"),
+                        format!("unknown frame `{}`", spec_i.basis),
+                    )
+                })?;
+                let mut m: Vec<Vec<crate::expr::Expr>> = Vec::new();
+                for (r, row) in spec_i.matrix.iter().enumerate() {
+                    let mut out = Vec::new();
+                    for (c, cell) in row.iter().enumerate() {
+                        let e = reg
+                            .parse(cell)
+                            .map_err(|e| expr_err(&format!("{ip}.matrix[{r}][{c}]"), e))?;
+                        if !e.is_time_independent() {
+                            return Err(at(
+                                format!("{ip}.matrix[{r}][{c}]"),
+                                "an inertia entry is constant in the solid's basis",
+                            ));
+                        }
+                        out.push(e);
+                    }
+                    m.push(out);
+                }
+                for r in 0..3 {
+                    for c in r + 1..3 {
+                        if m[r][c] != m[c][r] {
+                            return Err(at(
+                                format!("{ip}.matrix[{c}][{r}]"),
+                                format!(
+                                    "the inertia matrix is not symmetric: entry [{r}][{c}] is \
+                                     `{}` but entry [{c}][{r}] is `{}`",
+                                    m[r][c], m[c][r]
+                                ),
+                            ));
+                        }
+                    }
+                }
+                let matrix = std::array::from_fn(|r| std::array::from_fn(|c| m[r][c].clone()));
+                Some(Inertia {
+                    point,
+                    basis,
+                    matrix,
+                })
+            }
+        };
+        let mut symmetries = Vec::new();
+        for (k, sym) in s.symmetries.iter().enumerate() {
+            let sp = format!("{path}.symmetries[{k}]");
+            let (txt, ctor): (&str, fn(Axis) -> Symmetry) = match sym {
+                SymmetrySpec::Plane { normal } => (normal, Symmetry::Plane),
+                SymmetrySpec::Revolution { axis } => (axis, Symmetry::Revolution),
+            };
+            let (f, axis) = basis_vector(&frames, txt)
+                .ok_or_else(|| at(&sp, format!("`{txt}` is not a basis vector")))?;
+            let Some(ine) = &inertia else {
+                return Err(at(&sp, "a point mass has no symmetry to declare"));
+            };
+            if f != ine.basis {
+                return Err(at(
+                    &sp,
+                    format!(
+                        "`{txt}` is not a vector of B{}, the basis the inertia matrix is written in",
+                        frames.get(ine.basis).name
+                    ),
+                ));
+            }
+            symmetries.push(ctor(axis));
+        }
+        bodies.push(Body {
+            name: s.name.clone(),
+            frame,
+            mass,
+            centre,
+            inertia,
+            symmetries,
+        });
+    }
+
+    let mut sets = BTreeMap::new();
+    for (name, members) in &spec.sets {
+        let path = format!("sets.{name}");
+        name_ok(&path, name)?;
+        if bodies.iter().any(|b| &b.name == name) {
+            return Err(at(path, format!("`{name}` is already a solid")));
+        }
+        let mut ids = Vec::new();
+        for (k, m) in members.iter().enumerate() {
+            let id = bodies
+                .iter()
+                .position(|b| &b.name == m)
+                .ok_or_else(|| at(format!("{path}[{k}]"), format!("unknown solid `{m}`")))?;
+            if ids.contains(&BodyId(id)) {
+                return Err(at(
+                    format!("{path}[{k}]"),
+                    format!("solid `{m}` listed twice"),
+                ));
+            }
+            ids.push(BodyId(id));
+        }
+        if ids.is_empty() {
+            return Err(at(path, "a set holds at least one solid"));
+        }
+        sets.insert(name.clone(), ids);
+    }
+
+    let mut hypotheses = Vec::new();
+    for (i, h) in spec.hypotheses.iter().enumerate() {
+        let path = format!("hypotheses[{i}]");
+        name_ok(&format!("{path}.name"), &h.name)?;
+        let mut subs = Vec::new();
+        let mut effects = Vec::new();
+        for (k, c) in h.constant_rates.iter().enumerate() {
+            let q = reg.coord(c).ok_or_else(|| {
+                at(
+                    format!("{path}.constant_rates[{k}]"),
+                    format!("unknown coordinate `{c}`"),
+                )
+            })?;
+            let dd = reg.ddot(q);
+            if let Some(v) = single_var(&dd) {
+                subs.push((v, reg.zero()));
+                effects.push(format!("ddot({c}) = 0"));
+            }
+        }
+        for (k, sname) in h.symmetric_solids.iter().enumerate() {
+            let sp = format!("{path}.symmetric_solids[{k}]");
+            let b = bodies
+                .iter()
+                .find(|b| &b.name == sname)
+                .ok_or_else(|| at(&sp, format!("unknown solid `{sname}`")))?;
+            let Some(ine) = &b.inertia else { continue };
+            for sym in &b.symmetries {
+                for (r, c) in sym.zero_entries() {
+                    let e = &ine.matrix[r][c];
+                    if e.is_zero() {
+                        continue;
+                    }
+                    let v = single_var(e).or_else(|| single_var(&-e)).ok_or_else(|| {
+                        at(
+                            &sp,
+                            format!(
+                                "the symmetries of solid {sname} make entry [{r}][{c}] zero, but \
+                                 it is `{e}`, which is not a single parameter"
+                            ),
+                        )
+                    })?;
+                    if !subs.iter().any(|(x, _)| *x == v) {
+                        subs.push((v, reg.zero()));
+                        effects.push(format!("{} = 0", e.to_string().trim_start_matches('-')));
+                    }
+                }
+                if let Some((a, bb)) = sym.equal_moments() {
+                    let (ea, eb) = (&ine.matrix[a][a], &ine.matrix[bb][bb]);
+                    if ea != eb {
+                        let v = single_var(eb).ok_or_else(|| {
+                            at(
+                                &sp,
+                                format!(
+                                    "the axis of revolution of solid {sname} makes entries \
+                                     [{a}][{a}] and [{bb}][{bb}] equal, but `{eb}` is not a \
+                                     single parameter"
+                                ),
+                            )
+                        })?;
+                        subs.push((v, ea.clone()));
+                        effects.push(format!("{eb} = {ea}"));
+                    }
+                }
+            }
+        }
+        hypotheses.push(Hypothesis {
+            name: h.name.clone(),
+            text: h.text.clone(),
+            substitutions: subs,
+            effects,
+        });
+    }
+
+    let default_basis = match &spec.default_basis {
+        None => frames.ground(),
+        Some(b) => frames
+            .find(b)
+            .ok_or_else(|| at("default_basis", format!("unknown frame `{b}`")))?,
+    };
+    let mut quantities = Vec::new();
+    for (i, q) in spec.quantities.iter().enumerate() {
+        quantities
+            .push(Quantity::parse(q).map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?);
+    }
+
+    let m = Mechanism {
+        title: spec.title.clone(),
+        description: spec.description.clone(),
+        reg,
+        frames,
+        frame_origins,
+        points,
+        bodies,
+        sets,
+        hypotheses,
+        default_basis,
+        quantities,
+        spec: spec.clone(),
+    };
+    // Each requested quantity must refer to known objects.
+    for (i, q) in m.quantities.iter().enumerate() {
+        crate::derivation::resolve(&m, q)
+            .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
+    }
+    Ok(m)
+}
+
+/// The variable index if the expression is exactly one variable with coefficient 1.
+fn single_var(e: &crate::expr::Expr) -> Option<usize> {
+    e.single_variable()
+}
+
+/// Reads a spec from JSON text, with the JSON path and line/column of a structural error.
+/// serde_json's recursion limit turns absurdly deep nesting into an error, not a stack overflow.
+pub fn parse_spec(text: &str) -> Result<SpecFile, SpecError> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    let spec: SpecFile = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        SpecError::Json {
+            path,
+            line: inner.line(),
+            column: inner.column(),
+            message: inner.to_string(),
+        }
+    })?;
+    de.end().map_err(|e| SpecError::Json {
+        path: ".".to_string(),
+        line: e.line(),
+        column: e.column(),
+        message: e.to_string(),
+    })?;
+    Ok(spec)
+}
