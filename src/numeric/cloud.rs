@@ -45,13 +45,11 @@ pub(super) fn solid_cloud(
         });
     };
     let mut ib = [[0.0; 3]; 3];
-    for r in 0..3 {
-        for c in 0..3 {
-            ib[r][c] = expr::eval_scalar(&inr.matrix[r][c], &env).map_err(|e| {
-                NumericError::Evaluation {
-                    what: format!("inertia entry [{r}][{c}] of solid {}", solid.name),
-                    message: e,
-                }
+    for (r, (row, nodes)) in ib.iter_mut().zip(&inr.matrix).enumerate() {
+        for (c, (x, node)) in row.iter_mut().zip(nodes).enumerate() {
+            *x = expr::eval_scalar(node, &env).map_err(|e| NumericError::Evaluation {
+                what: format!("inertia entry [{r}][{c}] of solid {}", solid.name),
+                message: e,
             })?;
         }
     }
@@ -59,8 +57,8 @@ pub(super) fn solid_cloud(
     if !size.is_finite() {
         return Err(not_physical("its inertia matrix is not finite".into()));
     }
-    for r in 0..3 {
-        for c in 0..r {
+    for (r, c) in [(1, 0), (2, 0), (2, 1)] {
+        {
             if (ib[r][c] - ib[c][r]).abs() > TOL * size {
                 return Err(not_physical(format!(
                     "its inertia matrix is not symmetric: entry [{r}][{c}] is {} but [{c}][{r}] \

@@ -1,0 +1,112 @@
+//! Frames and kinematics: DCM, Ω composition, V and Γ by two routes.
+
+use super::*;
+use torseur::kinematics::*;
+
+#[test]
+fn dcm_is_exactly_orthogonal_and_matches_the_elementary_rotations() {
+    let m = regulator();
+    let (f0, f2) = (frame(&m, "0"), frame(&m, "2"));
+    let p = m.frames.dcm(f0, f2);
+    for i in 0..3 {
+        for j in 0..3 {
+            let mut s = m.reg.zero();
+            for k in 0..3 {
+                s = s + &(&p[i][k] * &p[j][k]);
+            }
+            let expected = if i == j { m.reg.one() } else { m.reg.zero() };
+            assert_eq!(s, expected, "P Pᵀ entry ({i},{j})");
+        }
+    }
+    // Column y2 in B0, by hand: y2 = cos θ2 y1 + sin θ2 z1, y1 = −sin θ1 x0 + cos θ1 y0.
+    assert_eq!(p[0][1], ex(&m, "-sin(theta1)*cos(theta2)"));
+    assert_eq!(p[1][1], ex(&m, "cos(theta1)*cos(theta2)"));
+    assert_eq!(p[2][1], ex(&m, "sin(theta2)"));
+}
+
+#[test]
+fn angular_velocities_compose_along_the_chain() {
+    let m = regulator();
+    let (f0, f1, f2) = (frame(&m, "0"), frame(&m, "1"), frame(&m, "2"));
+    let sum = omega(&m, f2, f1).add(&omega(&m, f1, f0));
+    assert_vec_eq(&m, &omega(&m, f2, f0), &sum, "Ω(2/0) = Ω(2/1) + Ω(1/0)");
+    assert_vec_eq(
+        &m,
+        &omega(&m, f0, f2),
+        &omega(&m, f2, f0).neg(),
+        "Ω(0/2) = −Ω(2/0)",
+    );
+    assert_components(
+        &m,
+        &omega(&m, f2, f0),
+        "2",
+        [
+            "dot(theta2)",
+            "sin(theta2)*dot(theta1)",
+            "cos(theta2)*dot(theta1)",
+        ],
+        "Ω(2/0)",
+    );
+}
+
+#[test]
+fn velocity_field_agrees_with_derivation_of_positions() {
+    let m = regulator();
+    for (pt, solid) in [
+        ("G1", "1"),
+        ("O2", "1"),
+        ("O2", "2"),
+        ("G2", "2"),
+        ("O1", "1"),
+    ] {
+        let p = m.point(pt).unwrap();
+        let i = frame(&m, solid);
+        let f0 = m.frames.ground();
+        let by_field = velocity(&m, p, i, f0);
+        let by_derivation = velocity_by_derivation(&m, p, i, f0).expect("fixed in the solid");
+        assert_vec_eq(&m, &by_field, &by_derivation, &format!("V({pt},{solid}/0)"));
+        let g_field = acceleration(&m, p, i, f0);
+        let g_der = acceleration_by_derivation(&m, p, i, f0).unwrap();
+        assert_vec_eq(&m, &g_field, &g_der, &format!("Γ({pt},{solid}/0)"));
+    }
+}
+
+#[test]
+fn velocities_compose_through_the_intermediate_solid() {
+    let m = regulator();
+    let (f0, f1, f2) = (frame(&m, "0"), frame(&m, "1"), frame(&m, "2"));
+    let g2 = m.point("G2").unwrap();
+    let composed = velocity(&m, g2, f2, f1).add(&velocity(&m, g2, f1, f0));
+    assert_vec_eq(
+        &m,
+        &velocity(&m, g2, f2, f0),
+        &composed,
+        "V(G2,2/0) = V(G2,2/1) + V(G2,1/0)",
+    );
+}
+
+#[test]
+fn velocity_of_g2_matches_the_hand_derivation() {
+    // O0G2 = d1 z0 + L1 y1 + L2 y2; d/dt|R0 gives −L1 θ̇1 x1 + L2 (θ̇2 z2 − cos θ2 θ̇1 x2).
+    let m = regulator();
+    let v = velocity(
+        &m,
+        m.point("G2").unwrap(),
+        frame(&m, "2"),
+        m.frames.ground(),
+    );
+    assert_components(
+        &m,
+        &v,
+        "2",
+        ["-(L1 + L2*cos(theta2))*dot(theta1)", "0", "L2*dot(theta2)"],
+        "V(G2,2/0)",
+    );
+}
+
+#[test]
+fn a_point_not_fixed_in_the_solid_is_refused_by_the_derivation_route() {
+    let m = regulator();
+    let g2 = m.point("G2").unwrap();
+    assert!(velocity_by_derivation(&m, g2, frame(&m, "1"), m.frames.ground()).is_none());
+}

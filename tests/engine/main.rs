@@ -1,0 +1,59 @@
+//! Integration tests of the engine; modules mirror `src/`.
+//!
+//! Expected values come from routes that do not share the code under test: hand derivations
+//! from the course, a second theorem, or the definitions.
+
+mod bilan;
+mod kinematics;
+mod regulator;
+mod spec_errors;
+
+use torseur::expr::Expr;
+use torseur::frame::FrameId;
+use torseur::mechanism::Mechanism;
+use torseur::vector::Vector;
+
+/// The course's Application 1.
+pub fn regulator() -> Mechanism {
+    torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/regulateur_centrifuge.json"
+    ))
+    .expect("the regulator spec loads")
+}
+
+/// Parses an expression of the spec syntax in the mechanism.
+pub fn ex(m: &Mechanism, s: &str) -> Expr {
+    m.reg.parse(s).unwrap_or_else(|e| panic!("{s}: {e}"))
+}
+
+/// Frame by name.
+pub fn frame(m: &Mechanism, n: &str) -> FrameId {
+    m.frames.find(n).unwrap()
+}
+
+/// Asserts two vectors are exactly equal (compared in basis `b`).
+pub fn assert_vec_eq(m: &Mechanism, a: &Vector, b: &Vector, what: &str) {
+    let f = m.frames.ground();
+    let (x, y) = (a.express_in(&m.frames, f), b.express_in(&m.frames, f));
+    for k in 0..3 {
+        assert_eq!(
+            x[k], y[k],
+            "{what}: component {k} differs: {} vs {}",
+            x[k], y[k]
+        );
+    }
+}
+
+/// Asserts a vector has the given components (strings) in basis `b`.
+pub fn assert_components(m: &Mechanism, v: &Vector, b: &str, expected: [&str; 3], what: &str) {
+    let c = v.express_in(&m.frames, frame(m, b));
+    for k in 0..3 {
+        let e = ex(m, expected[k]);
+        assert_eq!(
+            c[k], e,
+            "{what}: component {k} is {} but the hand derivation gives {}",
+            c[k], e
+        );
+    }
+}
