@@ -1,0 +1,185 @@
+//! The `torseur` binary, run as a user would. This test binary never uses symbolica itself:
+//! a process that has used it cannot start another symbolica process.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_torseur"))
+}
+
+fn spec() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations/regulateur_centrifuge.json")
+}
+
+fn run(args: &[&str]) -> Output {
+    bin().args(args).output().expect("runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn tmp() -> tempfile::TempDir {
+    tempfile::tempdir().unwrap()
+}
+
+#[test]
+fn derive_prints_only_results_on_stdout() {
+    let o = run(&["derive", spec().to_str().unwrap(), "-q", "delta(O2,2/0).x2"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.starts_with("delta(O2,2/0).x2 = "), "{out}");
+    assert!(out.contains("(L2^2*m2 + A2)*ddot(theta2)"), "{out}");
+    assert!(
+        !out.contains("Symbolica"),
+        "the licence notice must not reach stdout"
+    );
+    assert!(
+        stderr(&o).contains("Symbolica"),
+        "the licence notice stays visible on stderr"
+    );
+}
+
+#[test]
+fn derive_writes_json_with_canonical_forms_and_steps() {
+    let d = tmp();
+    let j = d.path().join("out.json");
+    let o = run(&[
+        "derive",
+        spec().to_str().unwrap(),
+        "--json",
+        j.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&j).unwrap()).unwrap();
+    let qs = v["quantities"].as_array().unwrap();
+    assert_eq!(qs.len(), 9);
+    let d2 = qs.iter().find(|q| q["id"] == "{D(2/0)}_O2 in B2").unwrap();
+    assert_eq!(d2["value"]["kind"], "torsor");
+    assert_eq!(d2["value"]["point"], "O2");
+    assert_eq!(d2["value"]["basis"], "B2");
+    assert!(d2["steps"].as_array().unwrap().len() >= 5);
+    assert!(d2["hypotheses"]["Q2"].is_object());
+}
+
+#[test]
+fn eval_follows_the_json_contract() {
+    let d = tmp();
+    let at = d.path().join("values.json");
+    // theta2 = 0, rates 1 and 0, accelerations 0: delta(O2,2/0).x2 = 0 by the formula
+    // (sin 0 = 0, no ddot), V(G2,2/0) = [-(L1+L2)*1, 0, 0].
+    std::fs::write(
+        &at,
+        r#"{"parameters":{"h1":0.1,"d1":0.2,"L1":0.3,"L2":0.5,"m1":1,"m2":2,
+            "A1":1,"B1":1,"C1":1,"D1":0,"E1":0,"F1":0,"A2":1,"B2":1,"C2":1,"D2":0,"E2":0,"F2":0},
+            "coordinates":{"theta1":[0.4,1,0],"theta2":[0,0,0]}}"#,
+    )
+    .unwrap();
+    let o = run(&[
+        "eval",
+        spec().to_str().unwrap(),
+        "--at",
+        at.to_str().unwrap(),
+        "-q",
+        "V(G2,2/0) in B2",
+        "-q",
+        "delta(O2,2/0).x2",
+        "-q",
+        "{D(2/0)}_O2 in B2",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let q = v["quantities"].as_array().unwrap();
+    assert_eq!(q[0]["id"], "V(G2,2/0) in B2");
+    assert_eq!(q[0]["kind"], "vector");
+    assert_eq!(q[0]["basis"], "B2");
+    let vx = q[0]["value"][0].as_f64().unwrap();
+    assert!((vx + 0.8).abs() < 1e-12, "{vx}");
+    assert_eq!(q[1]["kind"], "scalar");
+    assert!(q[1]["value"].as_f64().unwrap().abs() < 1e-12);
+    assert_eq!(q[2]["kind"], "torsor");
+    assert_eq!(q[2]["point"], "O2");
+    assert_eq!(q[2]["resultant"].as_array().unwrap().len(), 3);
+}
+
+#[test]
+fn bad_input_exits_2_with_a_message_and_writes_nothing() {
+    let d = tmp();
+    let bad = d.path().join("bad.json");
+    std::fs::write(&bad, "{ \"title\": 3 }").unwrap();
+    let out = d.path().join("out.json");
+    let o = run(&[
+        "derive",
+        bad.to_str().unwrap(),
+        "--json",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("title"), "{}", stderr(&o));
+    assert!(stdout(&o).is_empty());
+    assert!(!out.exists());
+    // Unknown quantity notation, unknown file, missing value, usage error.
+    let o = run(&["derive", spec().to_str().unwrap(), "-q", "delta(O2;2/0)"]);
+    assert_eq!(o.status.code(), Some(2));
+    let o = run(&["derive", "/nonexistent/spec.json"]);
+    assert_eq!(o.status.code(), Some(2));
+    let vals = d.path().join("v.json");
+    std::fs::write(&vals, r#"{"parameters":{"m2":1},"coordinates":{}}"#).unwrap();
+    let o = run(&[
+        "eval",
+        spec().to_str().unwrap(),
+        "--at",
+        vals.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("missing"), "{}", stderr(&o));
+    let o = run(&["frobnicate"]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn a_failed_run_leaves_an_existing_output_untouched() {
+    let d = tmp();
+    let out = d.path().join("keep.json");
+    std::fs::write(&out, "precious").unwrap();
+    let o = run(&[
+        "derive",
+        spec().to_str().unwrap(),
+        "-q",
+        "delta(O9,2/0)",
+        "--json",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "precious");
+}
+
+#[test]
+fn concurrent_runs_wait_for_each_other_and_all_succeed() {
+    let children: Vec<_> = (0..4)
+        .map(|_| {
+            bin()
+                .args(["derive", spec().to_str().unwrap()])
+                .stdout(std::process::Stdio::piped())
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+                .unwrap()
+        })
+        .collect();
+    let outs: Vec<Output> = children
+        .into_iter()
+        .map(|c| c.wait_with_output().unwrap())
+        .collect();
+    for o in &outs {
+        assert!(o.status.success(), "exit {:?}: {}", o.status, stderr(o));
+    }
+    // Deterministic: byte-identical output across processes.
+    for o in &outs[1..] {
+        assert_eq!(o.stdout, outs[0].stdout);
+    }
+}
