@@ -348,7 +348,6 @@ pub(super) fn evaluate(
     let vals = values(m, sample)?;
     let st = state(m, &vals)?;
     let basis_name = q.basis.as_deref().unwrap_or(default_basis);
-    let b = m.frame(basis_name)?;
     let frames = |mo: &Motion| -> Result<(usize, usize), NumericError> {
         Ok((
             m.body_frame(&mo.moving, q)?,
@@ -401,7 +400,12 @@ pub(super) fn evaluate(
         quantity: q.to_string(),
         message: "the value is not finite at this sample".into(),
     };
-    let rb = st.rot0(b);
+    // The basis is only looked up when the result is written in it (not for a projection).
+    let rb = if q.projection.is_none() {
+        st.rot0(m.frame(basis_name)?)
+    } else {
+        identity::<f64>()
+    };
     let rbt = transpose(&rb);
     let finite = |v: &V3<f64>| v.iter().all(|x| x.is_finite());
     match (raw, &q.projection) {

@@ -264,7 +264,10 @@ impl NumericModel {
     ///
     /// A vector is given in the basis `q.basis`, else in `default_basis` (a frame name); a
     /// projection `.x2` gives the scalar product with x2. Velocities and accelerations are those
-    /// of the point of the moving solid that coincides with P at the sample's instant.
+    /// of the point of the moving solid that coincides with P at the sample's instant; the
+    /// moving and reference bodies are solids (their frames) or frames, and kinetic and
+    /// dynamic elements take a solid or a set (`sets` of the spec) and sum over its solids.
+    /// A coordinate with an imposed rate must be given q̇ equal to that rate and q̈ = 0.
     ///
     /// ```
     /// use torseur::numeric::{NumericModel, NumValue, Sample};
@@ -294,9 +297,12 @@ impl NumericModel {
     /// Draws a random physically valid sample, reproducible from the generator's state.
     ///
     /// Lengths and masses (parameters with unit m or kg, or entering a mass) are drawn in
-    /// [0.5, 2], other parameters in [−1, 1]; angles in [−π, π], rates and accelerations in
-    /// [−2, 2]. The inertia parameters of each solid are those of a random cloud of point
-    /// masses with the solid's mass, so the matrix is always a real body's.
+    /// [0.5, 2], other parameters in [−1, 1]; angles in [−π, π], length coordinates in
+    /// [0.5, 2], rates and accelerations in [−2, 2] (an imposed rate is evaluated, with q̈ = 0).
+    /// Inertia entries written `P` or `-P` are read off a random cloud of point masses with the
+    /// solid's mass, so the matrix is always a real body's; the cloud gets the mirror planes,
+    /// quarter-turn axes or flatness that the written zeros and repeated entries require.
+    /// Entries written in terms of other parameters (`m*l^2/12`) are kept as written.
     ///
     /// ```
     /// use rand::SeedableRng;

@@ -13,27 +13,21 @@ use std::collections::{BTreeMap, BTreeSet};
 const CLOUD_POINTS: usize = 6;
 
 /// An entry of an inertia matrix as written: a number, or ± a parameter.
+#[derive(Debug, Clone, Copy)]
 enum Entry {
     Number(f64),
     Param(usize, f64),
 }
 
-fn classify(node: &Node, env: &expr::Env<f64>) -> Option<Entry> {
+/// `P` or `-P`: the parameter and the sign.
+fn bare_param(node: &Node) -> Option<(usize, f64)> {
     match node {
-        Node::Param(p) => Some(Entry::Param(*p, 1.0)),
-        Node::Neg(inner) if matches!(**inner, Node::Param(_)) => match **inner {
-            Node::Param(p) => Some(Entry::Param(p, -1.0)),
+        Node::Param(p) => Some((*p, 1.0)),
+        Node::Neg(inner) => match **inner {
+            Node::Param(p) => Some((p, -1.0)),
             _ => None,
         },
-        _ => {
-            let mut used = BTreeSet::new();
-            expr::params_in(node, &mut used);
-            if used.is_empty() {
-                expr::eval_scalar(node, env).ok().map(Entry::Number)
-            } else {
-                None
-            }
-        }
+        _ => None,
     }
 }
 
@@ -186,47 +180,64 @@ pub(super) fn draw(
     constant_rates: &[usize],
 ) -> Result<Sample, NumericError> {
     let fail = |msg: String| NumericError::Sampling(msg);
-    // Parameters read off clouds must not also place or weigh anything.
-    let mut elsewhere = BTreeSet::new();
+    // Entries written `P` or `-P` are read off a random body; the parameter must then appear
+    // nowhere else. `elsewhere` says where each other parameter is first used.
+    let mut elsewhere: BTreeMap<usize, String> = BTreeMap::new();
+    let mut note = |node: &Node, place: &dyn Fn() -> String| {
+        let mut used = BTreeSet::new();
+        expr::params_in(node, &mut used);
+        for p in used {
+            elsewhere.entry(p).or_insert_with(place);
+        }
+    };
     for f in &m.frames {
         if let Some((_, _, a)) = &f.rotation {
-            expr::params_in(a, &mut elsewhere);
+            note(a, &|| format!("the rotation angle of frame {}", f.name));
         }
     }
     for p in &m.points {
-        expr::params_in(&p.position, &mut elsewhere);
+        note(&p.position, &|| format!("the position of point {}", p.name));
     }
     for c in &m.coords {
         if let Some(r) = &c.rate {
-            expr::params_in(r, &mut elsewhere);
+            note(r, &|| format!("the imposed rate of {}", c.name));
         }
     }
     let mut from_cloud: BTreeMap<usize, usize> = BTreeMap::new();
     for (s, solid) in m.solids.iter().enumerate() {
-        expr::params_in(&solid.mass, &mut elsewhere);
-        if let Some(inr) = &solid.inertia {
-            for node in inr.matrix.iter().flatten() {
-                let mut used = BTreeSet::new();
-                expr::params_in(node, &mut used);
-                for p in used {
-                    if let Some(other) = from_cloud.insert(p, s)
-                        && other != s
-                    {
-                        return Err(fail(format!(
-                            "parameter `{}` appears in the inertia of solids {} and {}",
-                            m.params[p].name, m.solids[other].name, solid.name
-                        )));
+        note(&solid.mass, &|| format!("the mass of solid {}", solid.name));
+        let Some(inr) = &solid.inertia else { continue };
+        for r in 0..3 {
+            for c in 0..3 {
+                match bare_param(&inr.matrix[r][c]) {
+                    Some((p, _)) => {
+                        if let Some(other) = from_cloud.insert(p, s)
+                            && other != s
+                        {
+                            return Err(fail(format!(
+                                "parameter `{}` is an inertia entry of solids {} and {}",
+                                m.params[p].name, m.solids[other].name, solid.name
+                            )));
+                        }
                     }
+                    None => note(&inr.matrix[r][c], &|| {
+                        format!(
+                            "the inertia entry [{r}][{c}] `{}` of solid {}",
+                            inr.text[r][c], solid.name
+                        )
+                    }),
                 }
             }
         }
     }
-    if let Some(p) = from_cloud.keys().find(|p| elsewhere.contains(p)) {
-        return Err(fail(format!(
-            "parameter `{}` appears in an inertia matrix and also in a position, angle, mass \
-             or rate",
-            m.params[*p].name
-        )));
+    for (p, s) in &from_cloud {
+        if let Some(place) = elsewhere.get(p) {
+            return Err(fail(format!(
+                "parameter `{}` is an inertia entry of solid {}, read off a random body, but \
+                 it also appears in {place}",
+                m.params[*p].name, m.solids[*s].name
+            )));
+        }
     }
 
     let mut vals = Values {
@@ -273,21 +284,29 @@ pub(super) fn draw(
                 solid.name
             )));
         }
-        let mut err = None;
-        let pattern: [[Entry; 3]; 3] = std::array::from_fn(|r| {
-            std::array::from_fn(|c| {
-                classify(&inr.matrix[r][c], &vals.constants()).unwrap_or_else(|| {
-                    err.get_or_insert(fail(format!(
-                        "inertia entry [{r}][{c}] `{}` of solid {} is not a parameter, minus a \
-                         parameter or a number, so it cannot be read off a random body",
-                        inr.text[r][c], solid.name
-                    )));
-                    Entry::Number(0.0)
-                })
-            })
-        });
-        if let Some(e) = err {
-            return Err(e);
+        let mut pattern = [[Entry::Number(0.0); 3]; 3];
+        let mut free = false;
+        for (r, row) in pattern.iter_mut().enumerate() {
+            for (c, entry) in row.iter_mut().enumerate() {
+                *entry = match bare_param(&inr.matrix[r][c]) {
+                    Some((p, sign)) => {
+                        free = true;
+                        Entry::Param(p, sign)
+                    }
+                    None => Entry::Number(
+                        expr::eval_scalar(&inr.matrix[r][c], &vals.constants()).map_err(|e| {
+                            fail(format!(
+                                "inertia entry [{r}][{c}] `{}` of solid {}: {e}",
+                                inr.text[r][c], solid.name
+                            ))
+                        })?,
+                    ),
+                };
+            }
+        }
+        if !free {
+            // Fully written in terms of other parameters: checked below like any body.
+            continue;
         }
         let mut forced = 0usize;
         if symmetric.contains(&s) {

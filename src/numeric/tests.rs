@@ -1,1 +1,866 @@
+//! Tests of the float backend against results derived by hand from the course's definitions.
 
+use super::kin::{state, values};
+use super::{NumValue, NumericError, NumericModel, Sample, cloud};
+use crate::quantity::Quantity;
+use crate::spec::wire::SpecFile;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+const REGULATOR: &str = include_str!("../../derivations/regulateur_centrifuge.json");
+
+fn model(json: &str) -> NumericModel {
+    let spec: SpecFile = serde_json::from_str(json).expect("test spec is valid JSON");
+    NumericModel::new(&spec).expect("test spec builds")
+}
+
+fn spec_error(json: &str) -> NumericError {
+    let spec: SpecFile = serde_json::from_str(json).expect("test spec is valid JSON");
+    NumericModel::new(&spec).expect_err("the spec must be refused")
+}
+
+fn sample(params: &[(&str, f64)], coords: &[(&str, [f64; 3])]) -> Sample {
+    Sample {
+        parameters: params.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
+        coordinates: coords.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
+    }
+}
+
+fn eval(m: &NumericModel, q: &str, s: &Sample) -> NumValue {
+    let q = Quantity::parse(q).expect("notation");
+    m.evaluate(&q, s, "0")
+        .unwrap_or_else(|e| panic!("{q}: {e}"))
+}
+
+fn vector(m: &NumericModel, q: &str, s: &Sample) -> [f64; 3] {
+    match eval(m, q, s) {
+        NumValue::Vector { value, .. } => value,
+        other => panic!("{q}: expected a vector, got {other:?}"),
+    }
+}
+
+fn scalar(m: &NumericModel, q: &str, s: &Sample) -> f64 {
+    match eval(m, q, s) {
+        NumValue::Scalar(x) => x,
+        other => panic!("{q}: expected a scalar, got {other:?}"),
+    }
+}
+
+fn matrix(m: &NumericModel, q: &str, s: &Sample) -> [[f64; 3]; 3] {
+    match eval(m, q, s) {
+        NumValue::Matrix { value, .. } => value,
+        other => panic!("{q}: expected a matrix, got {other:?}"),
+    }
+}
+
+fn torsor(m: &NumericModel, q: &str, s: &Sample) -> ([f64; 3], [f64; 3]) {
+    match eval(m, q, s) {
+        NumValue::Torsor {
+            resultant, moment, ..
+        } => (resultant, moment),
+        other => panic!("{q}: expected a torsor, got {other:?}"),
+    }
+}
+
+#[track_caller]
+fn close(a: &[f64], b: &[f64], tol: f64) {
+    assert_eq!(a.len(), b.len());
+    let size = b.iter().fold(1.0f64, |s, x| s.max(x.abs()));
+    for (x, y) in a.iter().zip(b) {
+        assert!((x - y).abs() <= tol * size, "{a:?} != {b:?}");
+    }
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn times(k: f64, a: [f64; 3]) -> [f64; 3] {
+    [k * a[0], k * a[1], k * a[2]]
+}
+
+fn mat_vec(m: [[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|i| m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2])
+}
+
+const TOL: f64 = 1e-12;
+
+// ---------------------------------------------------------------- a point mass on an arm
+
+const ARM: &str = r#"{
+  "title": "arm",
+  "parameters": [{"name": "L", "unit": "m"}, {"name": "m", "unit": "kg"}],
+  "coordinates": [{"name": "t", "kind": "angle"}],
+  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}}],
+  "points": [{"name": "P", "position": "L*x1"}],
+  "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "P"}]
+}"#;
+
+#[test]
+fn point_mass_on_a_rotating_arm() {
+    let m = model(ARM);
+    let (l, mass, q, w, a) = (0.8, 1.7, 0.4, 1.3, -0.6);
+    let s = sample(&[("L", l), ("m", mass)], &[("t", [q, w, a])]);
+    // V(P,1/0) = L θ̇ y1, Γ(P,1/0) = L θ̈ y1 − L θ̇² x1.
+    close(&vector(&m, "V(P,1/0) in B1", &s), &[0.0, l * w, 0.0], TOL);
+    close(
+        &vector(&m, "Gamma(P,1/0) in B1", &s),
+        &[-l * w * w, l * a, 0.0],
+        TOL,
+    );
+    // The same in B0: y1 = −sin t x0 + cos t y0.
+    close(
+        &vector(&m, "V(P,1/0)", &s),
+        &[-l * w * q.sin(), l * w * q.cos(), 0.0],
+        TOL,
+    );
+    assert!((scalar(&m, "V(P,1/0).x1", &s)).abs() < TOL);
+    close(&vector(&m, "Omega(1/0)", &s), &[0.0, 0.0, w], TOL);
+    close(&vector(&m, "Omega(0/1)", &s), &[0.0, 0.0, -w], TOL);
+    // σ(O0) = m L² θ̇ z, δ(O0) = m L² θ̈ z; Rc = m V(P), Rd = m Γ(P).
+    close(
+        &vector(&m, "sigma(O0,1/0)", &s),
+        &[0.0, 0.0, mass * l * l * w],
+        TOL,
+    );
+    close(
+        &vector(&m, "delta(O0,1/0)", &s),
+        &[0.0, 0.0, mass * l * l * a],
+        TOL,
+    );
+    close(
+        &vector(&m, "Rd(1/0) in B1", &s),
+        &[-mass * l * w * w, mass * l * a, 0.0],
+        TOL,
+    );
+    close(
+        &vector(&m, "Rc(1/0) in B1", &s),
+        &[0.0, mass * l * w, 0.0],
+        TOL,
+    );
+    // At P itself the moments vanish.
+    close(&vector(&m, "delta(P,1/0)", &s), &[0.0; 3], TOL);
+    let (r, mo) = torsor(&m, "{V(1/0)}_O0 in B1", &s);
+    close(&r, &[0.0, 0.0, w], TOL);
+    close(&mo, &[0.0; 3], TOL);
+    let (r, mo) = torsor(&m, "{D(1/0)}_O0 in B1", &s);
+    close(&r, &[-mass * l * w * w, mass * l * a, 0.0], TOL);
+    close(&mo, &[0.0, 0.0, mass * l * l * a], TOL);
+}
+
+#[test]
+fn negative_axis_is_the_opposite_angle() {
+    let m = model(&ARM.replace(r#""axis": "z""#, r#""axis": "-z""#));
+    let (l, q, w) = (0.8, 0.4, 1.3);
+    let s = sample(&[("L", l), ("m", 1.0)], &[("t", [q, w, 0.0])]);
+    close(&vector(&m, "Omega(1/0)", &s), &[0.0, 0.0, -w], TOL);
+    // x1 = cos t x0 − sin t y0.
+    close(
+        &vector(&m, "V(P,1/0)", &s),
+        &[-l * w * q.sin(), -l * w * q.cos(), 0.0],
+        TOL,
+    );
+}
+
+// ------------------------------------------------ a slider on the arm: relative motion
+
+const SLIDER: &str = r#"{
+  "title": "slider",
+  "coordinates": [{"name": "t", "kind": "angle"}, {"name": "lambda", "kind": "length"}],
+  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}},
+             {"name": "2", "parent": "1", "origin": "P"}],
+  "points": [{"name": "P", "position": "lambda*x1"}]
+}"#;
+
+#[test]
+fn slider_on_a_rotating_arm_has_coriolis_acceleration() {
+    let m = model(SLIDER);
+    let (lam, ld, ldd) = (1.2, 0.7, -0.3);
+    let (w, a) = (1.1, 0.5);
+    let s = sample(&[], &[("t", [0.2, w, a]), ("lambda", [lam, ld, ldd])]);
+    // Γ(P,2/0) = (λ̈ − λ θ̇²) x1 + (λ θ̈ + 2 λ̇ θ̇) y1.
+    close(
+        &vector(&m, "Gamma(P,2/0) in B1", &s),
+        &[ldd - lam * w * w, lam * a + 2.0 * ld * w, 0.0],
+        TOL,
+    );
+    close(&vector(&m, "V(P,2/0) in B1", &s), &[ld, lam * w, 0.0], TOL);
+    close(&vector(&m, "V(P,2/1) in B1", &s), &[ld, 0.0, 0.0], TOL);
+    close(&vector(&m, "V(P,1/0) in B1", &s), &[0.0, lam * w, 0.0], TOL);
+    // The point of 1 under P does not slide: its acceleration has no Coriolis term.
+    close(
+        &vector(&m, "Gamma(P,1/0) in B1", &s),
+        &[-lam * w * w, lam * a, 0.0],
+        TOL,
+    );
+    close(&vector(&m, "Omega(2/1)", &s), &[0.0; 3], TOL);
+}
+
+// ---------------------------------------------------- bodies spinning about a fixed axis
+
+const ROTOR: &str = r#"{
+  "title": "rotor",
+  "parameters": [{"name": "m", "unit": "kg"}, {"name": "a", "unit": "m"}, {"name": "l", "unit": "m"},
+                 {"name": "A"}, {"name": "C"}, {"name": "phi", "unit": "rad"}],
+  "coordinates": [{"name": "t", "kind": "angle"}],
+  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}},
+             {"name": "3", "parent": "1", "rotation": {"axis": "z", "angle": "phi"}}],
+  "points": [{"name": "G", "position": "a*x1"}, {"name": "E", "from": "G", "position": "-l/2*x1"}],
+  "solids": [
+    {"name": "disc", "frame": "1", "mass": "m", "centre": "O0",
+     "inertia": {"point": "O0", "basis": "1", "matrix": [["A","0","0"],["0","A","0"],["0","0","C"]]},
+     "symmetries": [{"kind": "revolution", "axis": "z1"}]},
+    {"name": "rod", "frame": "1", "mass": "m", "centre": "G",
+     "inertia": {"point": "G", "basis": "1",
+                 "matrix": [["0","0","0"],["0","m*l^2/12","0"],["0","0","1/12*m*l^2"]]}},
+    {"name": "rod_end", "frame": "1", "mass": "m", "centre": "G",
+     "inertia": {"point": "E", "basis": "3",
+                 "matrix": [["m*l^2/3*sin(phi)^2", "m*l^2/3*cos(phi)*sin(phi)", "0"],
+                            ["m*l^2/3*cos(phi)*sin(phi)", "m*l^2/3*cos(phi)^2", "0"],
+                            ["0", "0", "m*l^2/3"]]}}
+  ]
+}"#;
+
+#[test]
+fn solid_of_revolution_about_its_fixed_axis() {
+    let m = model(ROTOR);
+    let (c, w, acc) = (0.9, 2.3, -1.1);
+    let s = sample(
+        &[
+            ("m", 2.0),
+            ("a", 0.5),
+            ("l", 1.0),
+            ("A", 0.6),
+            ("C", c),
+            ("phi", 0.4),
+        ],
+        &[("t", [1.0, w, acc])],
+    );
+    // σ(O, S/0) = C ω z, δ = C ω̇ z.
+    close(&vector(&m, "sigma(O0,disc/0)", &s), &[0.0, 0.0, c * w], TOL);
+    close(
+        &vector(&m, "delta(O0,disc/0)", &s),
+        &[0.0, 0.0, c * acc],
+        TOL,
+    );
+    close(&vector(&m, "Rd(disc/0)", &s), &[0.0; 3], TOL);
+}
+
+#[test]
+fn thin_rod_spinning_off_centre() {
+    let m = model(ROTOR);
+    let (mass, a, l, w, acc, t) = (2.0, 0.5, 1.2, 2.3, -1.1, 0.3);
+    let s = sample(
+        &[
+            ("m", mass),
+            ("a", a),
+            ("l", l),
+            ("A", 0.6),
+            ("C", 0.9),
+            ("phi", 0.4),
+        ],
+        &[("t", [t, w, acc])],
+    );
+    // σ(O) = (m l²/12 + m a²) ω z0 for a rod of length l centred at a x1, along x1.
+    let j = mass * l * l / 12.0 + mass * a * a;
+    close(&vector(&m, "sigma(O0,rod/0)", &s), &[0.0, 0.0, j * w], TOL);
+    close(
+        &vector(&m, "delta(O0,rod/0)", &s),
+        &[0.0, 0.0, j * acc],
+        TOL,
+    );
+    // The same rod described by its inertia at its end E, in the basis B3 turned by phi
+    // about z1: there x1 = cos phi x3 − sin phi y3 and I_E = (m l²/3)(Id − x1 x1ᵀ).
+    let s_end = s.clone();
+    close(
+        &vector(&m, "sigma(O0,rod_end/0)", &s_end),
+        &[0.0, 0.0, j * w],
+        TOL,
+    );
+    let i_g = matrix(&m, "I(G,rod_end) in B1", &s_end);
+    let k = mass * l * l / 12.0;
+    close(
+        &i_g.concat(),
+        &[0.0, 0.0, 0.0, 0.0, k, 0.0, 0.0, 0.0, k],
+        TOL,
+    );
+    // Rd = m Γ(G) = −m a ω² x1 + m a ω̇ y1.
+    close(
+        &vector(&m, "Rd(rod/0) in B1", &s),
+        &[-mass * a * w * w, mass * a * acc, 0.0],
+        TOL,
+    );
+}
+
+#[test]
+fn inertia_transported_and_rotated_numerically() {
+    let m = model(ROTOR);
+    let (mass, a, l) = (2.0, 0.5, 1.2);
+    let s = sample(
+        &[
+            ("m", mass),
+            ("a", a),
+            ("l", l),
+            ("A", 0.6),
+            ("C", 0.9),
+            ("phi", 0.4),
+        ],
+        &[("t", [0.7, 1.0, 0.0])],
+    );
+    // Huygens at O0: I_O = I_G + m (a² Id − a² x1 x1ᵀ) in B1.
+    let io = matrix(&m, "I(O0,rod) in B1", &s);
+    let k = mass * l * l / 12.0;
+    let h = mass * a * a;
+    close(
+        &io.concat(),
+        &[0.0, 0.0, 0.0, 0.0, k + h, 0.0, 0.0, 0.0, k + h],
+        TOL,
+    );
+    // A set sums its solids.
+    let both = matrix(&m, "I(O0,disc) in B1", &s);
+    close(
+        &both.concat(),
+        &[0.6, 0.0, 0.0, 0.0, 0.6, 0.0, 0.0, 0.0, 0.9],
+        TOL,
+    );
+}
+
+// ------------------------------------------------------------- the centrifugal regulator
+
+fn regulator_sample(t1: [f64; 3], t2: [f64; 3]) -> Sample {
+    sample(
+        &[
+            ("h1", 0.3),
+            ("d1", 0.5),
+            ("L1", 0.4),
+            ("L2", 0.6),
+            ("m1", 2.0),
+            ("m2", 0.7),
+            ("A1", 2.0),
+            ("B1", 3.0),
+            ("C1", 4.0),
+            ("D1", 0.1),
+            ("E1", 0.2),
+            ("F1", 0.3),
+            ("A2", 0.5),
+            ("B2", 0.6),
+            ("C2", 0.7),
+            ("D2", 0.05),
+            ("E2", 0.04),
+            ("F2", 0.03),
+        ],
+        &[("theta1", t1), ("theta2", t2)],
+    )
+}
+
+#[test]
+fn regulator_velocity_of_g2_by_hand() {
+    let m = model(REGULATOR);
+    let (t1, t2) = ([0.7, 1.3, -0.4], [-0.5, 0.8, 0.9]);
+    let s = regulator_sample(t1, t2);
+    let (l1, l2) = (0.4, 0.6);
+    let (c2, s2) = (t2[0].cos(), t2[0].sin());
+    // O0G2 = d1 z0 + L1 y1 + L2 y2, so V(G2,2/0) = −L1 θ̇1 x1 + L2 Ω(2/0) ∧ y2
+    //   = −(L1 + L2 cos θ2) θ̇1 x2 + L2 θ̇2 z2   (x1 = x2).
+    close(
+        &vector(&m, "V(G2,2/0) in B2", &s),
+        &[-(l1 + l2 * c2) * t1[1], 0.0, l2 * t2[1]],
+        TOL,
+    );
+    // Ω(2/0) = θ̇2 x2 + θ̇1 z1, z1 = sin θ2 y2 + cos θ2 z2.
+    close(
+        &vector(&m, "Omega(2/0) in B2", &s),
+        &[t2[1], t1[1] * s2, t1[1] * c2],
+        TOL,
+    );
+    // Relative to 1: V(G2,2/1) = L2 θ̇2 z2, Γ(G2,2/1) = L2 θ̈2 z2 − L2 θ̇2² y2.
+    close(
+        &vector(&m, "V(G2,2/1) in B2", &s),
+        &[0.0, 0.0, l2 * t2[1]],
+        TOL,
+    );
+    close(
+        &vector(&m, "Gamma(G2,2/1) in B2", &s),
+        &[0.0, -l2 * t2[1] * t2[1], l2 * t2[2]],
+        TOL,
+    );
+    close(&vector(&m, "Omega(2/1) in B1", &s), &[t2[1], 0.0, 0.0], TOL);
+}
+
+#[test]
+fn regulator_rotor_moments_by_hand() {
+    let m = model(REGULATOR);
+    let t1 = [0.7, 1.3, -0.4];
+    let s = regulator_sample(t1, [-0.5, 0.8, 0.9]);
+    let (c1, d1, e1) = (4.0, 0.1, 0.2);
+    let (w, a) = (t1[1], t1[2]);
+    // O1 fixed and G1 on the axis: σ(O1,1/0) = I_G1 Ω = θ̇1 (−E1 x1 − D1 y1 + C1 z1).
+    close(
+        &vector(&m, "sigma(O1,1/0) in B1", &s),
+        &[-e1 * w, -d1 * w, c1 * w],
+        TOL,
+    );
+    // δ(O1,1/0) = d/dt σ(O1,1/0) with dx1/dt = θ̇1 y1, dy1/dt = −θ̇1 x1.
+    let (r, mo) = torsor(&m, "{D(1/0)}_O1 in B1", &s);
+    close(&r, &[0.0; 3], TOL);
+    close(
+        &mo,
+        &[-e1 * a + d1 * w * w, -d1 * a - e1 * w * w, c1 * a],
+        TOL,
+    );
+}
+
+#[test]
+fn regulator_delta_o2_x2_under_q2_by_hand() {
+    let m = model(REGULATOR);
+    for seed in 0..5 {
+        let s = m
+            .sample_under(&mut ChaCha8Rng::seed_from_u64(seed), "Q2")
+            .expect("sample under Q2");
+        let p = &s.parameters;
+        let (t1, t2) = (s.coordinates["theta1"], s.coordinates["theta2"]);
+        assert_eq!(t1[2], 0.0);
+        assert_eq!(t2[2], 0.0);
+        // Symmetries of Q1: the products of inertia vanish, and A1 = B1 (revolution about z1).
+        for k in ["D1", "E1", "F1", "D2", "E2", "F2"] {
+            assert!(p[k].abs() < 1e-12, "{k} = {}", p[k]);
+        }
+        assert!((p["A1"] - p["B1"]).abs() < 1e-12);
+        // δ(G2)·x2 = (C2 − B2) θ̇1² sin θ2 cos θ2, and O2G2 ∧ m2 Γ(G2) · x2
+        // = m2 L2 Γ(G2)·z2 = m2 L2 (L1 + L2 cos θ2) θ̇1² sin θ2.
+        let (c2, s2) = (t2[0].cos(), t2[0].sin());
+        let w2 = t1[1] * t1[1];
+        let expected = (p["C2"] - p["B2"]) * w2 * s2 * c2
+            + p["m2"] * p["L2"] * (p["L1"] + p["L2"] * c2) * w2 * s2;
+        let got = scalar(&m, "delta(O2,2/0).x2", &s);
+        assert!(
+            (got - expected).abs() < 1e-12 * (1.0 + expected.abs()),
+            "{got} != {expected}"
+        );
+    }
+}
+
+/// The Bilan table and the change-of-point formulas hold between values the backend computes
+/// from its point clouds (a second route to each).
+#[test]
+fn regulator_satisfies_the_course_relations() {
+    let m = model(REGULATOR);
+    for seed in 0..10 {
+        let s = m
+            .sample(&mut ChaCha8Rng::seed_from_u64(seed))
+            .expect("sample");
+        let p = &s.parameters;
+        let v = |q: &str| vector(&m, q, &s);
+        let tol = 1e-11;
+        // σ(A) = I_A Ω + m AG ∧ V(A, S/0) at A = O2 (a moving point).
+        let i_o2 = matrix(&m, "I(O2,2)", &s);
+        let sigma = add(
+            mat_vec(i_o2, v("Omega(2/0)")),
+            times(
+                p["m2"],
+                cross(
+                    sub(v_pos(&m, &s, "G2"), v_pos(&m, &s, "O2")),
+                    v("V(O2,2/0)"),
+                ),
+            ),
+        );
+        close(&v("sigma(O2,2/0)"), &sigma, tol);
+        // σ(G) = I_G Ω.
+        close(
+            &v("sigma(G2,2/0)"),
+            &mat_vec(matrix(&m, "I(G2,2)", &s), v("Omega(2/0)")),
+            tol,
+        );
+        // Rc = m V(G), Rd = m Γ(G).
+        close(&v("Rc(2/0)"), &times(p["m2"], v("V(G2,2/0)")), tol);
+        close(&v("Rd(2/0)"), &times(p["m2"], v("Gamma(G2,2/0)")), tol);
+        // δ(B) = δ(A) + BA ∧ Rd, σ(B) = σ(A) + BA ∧ Rc.
+        let ba = sub(v_pos(&m, &s, "O2"), v_pos(&m, &s, "G1"));
+        close(
+            &v("delta(G1,E/0)"),
+            &add(v("delta(O2,E/0)"), cross(ba, v("Rd(E/0)"))),
+            tol,
+        );
+        close(
+            &v("sigma(G1,E/0)"),
+            &add(v("sigma(O2,E/0)"), cross(ba, v("Rc(E/0)"))),
+            tol,
+        );
+        // A set's torsor is the sum of its solids' torsors.
+        let (r, mo) = torsor(&m, "{D(E/0)}_O2 in B1", &s);
+        let (r1, m1) = torsor(&m, "{D(1/0)}_O2 in B1", &s);
+        let (r2, m2) = torsor(&m, "{D(2/0)}_O2 in B1", &s);
+        close(&r, &add(r1, r2), tol);
+        close(&mo, &add(m1, m2), tol);
+        // Composition of motions: Ω, V, and Γ with its Coriolis term.
+        close(
+            &v("Omega(2/0)"),
+            &add(v("Omega(2/1)"), v("Omega(1/0)")),
+            tol,
+        );
+        close(&v("V(G2,2/0)"), &add(v("V(G2,2/1)"), v("V(G2,1/0)")), tol);
+        close(
+            &v("Gamma(G2,2/0)"),
+            &add(
+                add(v("Gamma(G2,2/1)"), v("Gamma(G2,1/0)")),
+                times(2.0, cross(v("Omega(1/0)"), v("V(G2,2/1)"))),
+            ),
+            tol,
+        );
+        // Varignon: V(O1,2/0) = V(O2,2/0) + O1O2 ∧ Ω(2/0).
+        let o1o2 = sub(v_pos(&m, &s, "O2"), v_pos(&m, &s, "O1"));
+        close(
+            &v("V(O1,2/0)"),
+            &add(v("V(O2,2/0)"), cross(o1o2, v("Omega(2/0)"))),
+            tol,
+        );
+        // A fixed point of 1: σ(O1,1/0) = I_O1(1) Ω(1/0).
+        close(
+            &v("sigma(O1,1/0)"),
+            &mat_vec(matrix(&m, "I(O1,1)", &s), v("Omega(1/0)")),
+            tol,
+        );
+        // The projection is the component.
+        let d = vector(&m, "delta(O2,2/0) in B2", &s);
+        assert!((scalar(&m, "delta(O2,2/0).x2", &s) - d[0]).abs() < tol * (1.0 + d[0].abs()));
+    }
+}
+
+/// Position of a point at the sample, ground components (through the internal state).
+fn v_pos(m: &NumericModel, s: &Sample, point: &str) -> [f64; 3] {
+    let vals = values(m, s).expect("values");
+    let st = state(m, &vals).expect("state");
+    st.pos0(m.point_index[point])
+}
+
+#[test]
+fn sampled_inertia_is_read_back_exactly() {
+    let m = model(REGULATOR);
+    let s = m
+        .sample(&mut ChaCha8Rng::seed_from_u64(42))
+        .expect("sample");
+    let p = &s.parameters;
+    let i2 = matrix(&m, "I(G2,2) in B2", &s);
+    let expected = [
+        [p["A2"], -p["F2"], -p["E2"]],
+        [-p["F2"], p["B2"], -p["D2"]],
+        [-p["E2"], -p["D2"], p["C2"]],
+    ];
+    close(&i2.concat(), &expected.concat(), TOL);
+    // A generic body: no product of inertia vanishes.
+    for k in ["D1", "E1", "F1", "D2", "E2", "F2"] {
+        assert!(p[k].abs() > 1e-6, "{k} = {}", p[k]);
+    }
+}
+
+#[test]
+fn cloud_reproduces_mass_centre_and_inertia() {
+    let m = model(REGULATOR);
+    for seed in 0..10 {
+        let s = m
+            .sample(&mut ChaCha8Rng::seed_from_u64(seed))
+            .expect("sample");
+        let vals = values(&m, &s).expect("values");
+        let st = state(&m, &vals).expect("state");
+        for (solid, g, mass, names) in [
+            (0, "G1", "m1", ["A1", "B1", "C1", "D1", "E1", "F1"]),
+            (1, "G2", "m2", ["A2", "B2", "C2", "D2", "E2", "F2"]),
+        ] {
+            let pts = cloud::solid_cloud(&m, &st, &vals, solid).expect("cloud");
+            let total: f64 = pts.iter().map(|p| p.0).sum();
+            assert!((total - s.parameters[mass]).abs() < TOL * s.parameters[mass]);
+            let frame = m.solids[solid].frame;
+            let g_local = st.local0(frame, &st.pos0(m.point_index[g]));
+            let mut centre = [0.0; 3];
+            for (mk, u) in &pts {
+                centre = add(centre, times(mk / total, *u));
+            }
+            close(&centre, &g_local, TOL);
+            let rel: Vec<(f64, [f64; 3])> =
+                pts.iter().map(|(mk, u)| (*mk, sub(*u, g_local))).collect();
+            let i = cloud::cloud_inertia(&rel, &[0.0; 3]);
+            let p = |k: usize| s.parameters[names[k]];
+            let expected = [
+                [p(0), -p(5), -p(4)],
+                [-p(5), p(1), -p(3)],
+                [-p(4), -p(3), p(2)],
+            ];
+            close(&i.concat(), &expected.concat(), TOL);
+        }
+    }
+}
+
+#[test]
+fn sampling_is_reproducible_and_valid() {
+    let m = model(REGULATOR);
+    let a = m.sample(&mut ChaCha8Rng::seed_from_u64(7)).expect("sample");
+    let b = m.sample(&mut ChaCha8Rng::seed_from_u64(7)).expect("sample");
+    let c = m.sample(&mut ChaCha8Rng::seed_from_u64(8)).expect("sample");
+    assert_eq!(a, b);
+    assert_ne!(a, c);
+    let names: Vec<&str> = m.parameter_names().collect();
+    assert_eq!(a.parameters.len(), names.len());
+    for (k, v) in &a.parameters {
+        assert!(v.is_finite(), "{k}");
+    }
+    for k in ["h1", "d1", "L1", "L2", "m1", "m2"] {
+        assert!((0.5..=2.0).contains(&a.parameters[k]), "{k}");
+    }
+    for q in a.coordinates.values() {
+        assert!((-std::f64::consts::PI..=std::f64::consts::PI).contains(&q[0]));
+        assert!((-2.0..=2.0).contains(&q[1]) && (-2.0..=2.0).contains(&q[2]));
+    }
+    // Every quantity of the spec evaluates at many samples.
+    let spec: SpecFile = serde_json::from_str(REGULATOR).expect("json");
+    for seed in 0..20 {
+        let s = m
+            .sample(&mut ChaCha8Rng::seed_from_u64(seed))
+            .expect("sample");
+        for q in &spec.quantities {
+            let q = Quantity::parse(q).expect("notation");
+            m.evaluate(&q, &s, "0")
+                .unwrap_or_else(|e| panic!("{q}: {e}"));
+        }
+    }
+    assert!(matches!(
+        m.sample_under(&mut ChaCha8Rng::seed_from_u64(1), "H9"),
+        Err(NumericError::Unknown { .. })
+    ));
+}
+
+#[test]
+fn sampling_follows_the_written_matrix() {
+    let m = model(ROTOR);
+    for seed in 0..5 {
+        let s = m
+            .sample(&mut ChaCha8Rng::seed_from_u64(seed))
+            .expect("sample");
+        let (a, c) = (s.parameters["A"], s.parameters["C"]);
+        // A solid of revolution about z: 0 < A, C ≤ 2A (C = Jx + Jy, A = Jy + Jz).
+        assert!(
+            a > 0.0 && c > 0.0 && c <= 2.0 * a + 1e-12,
+            "A = {a}, C = {c}"
+        );
+        // The written matrix is that of a real body.
+        let i = matrix(&m, "I(O0,disc) in B1", &s);
+        close(&i.concat(), &[a, 0.0, 0.0, 0.0, a, 0.0, 0.0, 0.0, c], TOL);
+    }
+    let bad = ROTOR.replace(r#"["0","A","0"]"#, r#"["0","2*A","0"]"#);
+    let m = model(&bad);
+    let e = m
+        .sample(&mut ChaCha8Rng::seed_from_u64(0))
+        .expect_err("2*A cannot be read off a cloud");
+    assert!(e.to_string().contains("`2*A`"), "{e}");
+}
+
+#[test]
+fn imposed_rate_is_kept() {
+    let json = ARM
+        .replace(
+            r#"{"name": "t", "kind": "angle"}"#,
+            r#"{"name": "t", "kind": "angle", "rate": "2*w"}"#,
+        )
+        .replace(
+            r#"{"name": "m", "unit": "kg"}"#,
+            r#"{"name": "m", "unit": "kg"}, {"name": "w"}"#,
+        );
+    let m = model(&json);
+    let s = m.sample(&mut ChaCha8Rng::seed_from_u64(3)).expect("sample");
+    let t = s.coordinates["t"];
+    assert_eq!(t[1], 2.0 * s.parameters["w"]);
+    assert_eq!(t[2], 0.0);
+    eval(&m, "V(P,1/0)", &s);
+    let mut wrong = s.clone();
+    wrong
+        .coordinates
+        .insert("t".into(), [t[0], t[1] + 1.0, 0.0]);
+    let e = m
+        .evaluate(&Quantity::parse("V(P,1/0)").expect("q"), &wrong, "0")
+        .expect_err("contradicts the imposed rate");
+    assert!(matches!(e, NumericError::Sample(_)), "{e}");
+}
+
+#[test]
+fn impossible_bodies_are_refused() {
+    let m = model(ROTOR);
+    let q = Quantity::parse("sigma(O0,disc/0)").expect("q");
+    let base = [
+        ("m", 2.0),
+        ("a", 0.5),
+        ("l", 1.0),
+        ("A", 0.6),
+        ("C", 0.9),
+        ("phi", 0.4),
+    ];
+    let with = |k: &str, v: f64| {
+        let mut p = base.to_vec();
+        for e in &mut p {
+            if e.0 == k {
+                e.1 = v;
+            }
+        }
+        sample(&p, &[("t", [0.0, 1.0, 0.0])])
+    };
+    // C > 2A: one principal moment exceeds the sum of the other two.
+    let e = m.evaluate(&q, &with("C", 1.3), "0").expect_err("C > A + B");
+    assert!(
+        matches!(&e, NumericError::NotPhysical { solid, .. } if solid == "disc"),
+        "{e}"
+    );
+    let e = m.evaluate(&q, &with("m", -1.0), "0").expect_err("m < 0");
+    assert!(matches!(e, NumericError::NotPhysical { .. }), "{e}");
+    // Kinematics do not need the bodies.
+    assert!(
+        m.evaluate(
+            &Quantity::parse("Omega(disc/0)").expect("q"),
+            &with("C", 5.0),
+            "0"
+        )
+        .is_ok()
+    );
+}
+
+#[test]
+fn sample_and_quantity_errors_name_the_object() {
+    let m = model(REGULATOR);
+    let s = regulator_sample([0.1, 0.2, 0.3], [0.4, 0.5, 0.6]);
+    let err = |q: &str, s: &Sample| {
+        m.evaluate(&Quantity::parse(q).expect("q"), s, "0")
+            .expect_err("must fail")
+            .to_string()
+    };
+    assert_eq!(err("V(Q,2/0)", &s), "unknown point `Q`");
+    assert_eq!(err("Rc(7/0)", &s), "unknown solid or set `7`");
+    assert_eq!(err("V(O2,2/0) in B9", &s), "unknown frame `9`");
+    assert!(err("Omega(E/0)", &s).contains("`E` is a set"));
+    let mut missing = s.clone();
+    missing.parameters.remove("L2");
+    assert_eq!(
+        err("Omega(1/0)", &missing),
+        "sample: missing parameter `L2`"
+    );
+    let mut extra = s.clone();
+    extra.parameters.insert("L3".into(), 1.0);
+    assert_eq!(err("Omega(1/0)", &extra), "sample: unknown parameter `L3`");
+    let mut nan = s.clone();
+    nan.coordinates
+        .insert("theta1".into(), [f64::NAN, 0.0, 0.0]);
+    assert!(err("Omega(1/0)", &nan).contains("theta1"));
+}
+
+#[test]
+fn spec_errors_name_the_json_path() {
+    let e = spec_error(
+        r#"{"title": "t", "frames": [{"name": "1", "parent": "2"}, {"name": "2", "parent": "1"}]}"#,
+    );
+    assert!(e.to_string().contains("own ancestor"), "{e}");
+    let e = spec_error(r#"{"title": "t", "points": [{"name": "P", "position": "L*x1"}]}"#);
+    assert_eq!(
+        e.to_string(),
+        "spec, at points[0].position: unknown name `L`"
+    );
+    let e = spec_error(
+        r#"{"title": "t", "parameters": [{"name": "L"}], "points": [{"name": "P", "position": "L"}]}"#,
+    );
+    assert!(e.to_string().contains("points[0].position"), "{e}");
+    let e = spec_error(
+        r#"{"title": "t", "parameters": [{"name": "L"}],
+            "points": [{"name": "P", "position": "L*x0*x0"}]}"#,
+    );
+    assert!(e.to_string().contains("two basis vectors"), "{e}");
+    let e = spec_error(
+        r#"{"title": "t", "coordinates": [{"name": "q", "kind": "angle"}],
+            "solids": [{"name": "1", "frame": "0", "mass": "q", "centre": "O0"}]}"#,
+    );
+    assert!(e.to_string().contains("solids[0].mass"), "{e}");
+    let e = spec_error(
+        r#"{"title": "t", "coordinates": [{"name": "q", "kind": "angle"}],
+            "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "w", "angle": "q"}}]}"#,
+    );
+    assert!(e.to_string().contains("frames[0].rotation.axis"), "{e}");
+}
+
+#[test]
+fn expression_syntax() {
+    let m = model(
+        r#"{"title": "t", "parameters": [{"name": "x"}, {"name": "L_2"}],
+            "coordinates": [{"name": "q", "kind": "angle"}]}"#,
+    );
+    let s = sample(&[("x", 3.0), ("L_2", 0.5)], &[("q", [0.3, 2.0, -1.0])]);
+    let ev = |t: &str| m.evaluate_expression(t, &s);
+    let ok = |t: &str| ev(t).unwrap_or_else(|e| panic!("{t}: {e}"));
+    assert_eq!(ok("-x^2"), -9.0);
+    assert_eq!(ok("x^-1"), 1.0 / 3.0);
+    assert_eq!(ok("x^(-2)"), 1.0 / 9.0);
+    assert_eq!(ok("1/2*x"), 1.5);
+    assert_eq!(ok("x - 1 - 1"), 1.0);
+    assert_eq!(ok("2*(x + L_2)"), 7.0);
+    assert_eq!(ok("12/x/2"), 2.0);
+    assert_eq!(ok("0.25 * x"), 0.75);
+    assert_eq!(ok("dot(q)^2 + ddot(q)"), 3.0);
+    assert!((ok("sin(q)^2 + cos(q)^2") - 1.0).abs() < 1e-15);
+    assert_eq!(ok("cos(2*q)"), (0.6f64).cos());
+    for bad in [
+        "2x", "x^y", "x^2^2", "sin x", "tan(q)", "(x", "x)", "x +", "", "y", "dot(x)", "x;", "x1",
+        "1/0",
+    ] {
+        assert!(ev(bad).is_err(), "`{bad}` must be refused");
+    }
+}
+
+/// The documentation examples, run here too (their asserts, with crate paths).
+#[test]
+fn documentation_examples_hold() {
+    let spec: SpecFile =
+        serde_json::from_str(r#"{"title": "t", "frames": [{"name": "1", "parent": "7"}]}"#)
+            .expect("json");
+    let e = NumericModel::new(&spec).expect_err("unknown parent");
+    assert_eq!(
+        e.to_string(),
+        "spec, at frames[0].parent: unknown frame `7`"
+    );
+
+    let m = model(
+        r#"{
+      "title": "arm", "parameters": [{"name": "L"}],
+      "coordinates": [{"name": "t", "kind": "angle"}],
+      "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}}],
+      "points": [{"name": "P", "position": "L*x1"}]}"#,
+    );
+    let s = sample(&[("L", 2.0)], &[("t", [0.3, 5.0, 0.0])]);
+    assert!((scalar(&m, "V(P,1/0).y1", &s) - 10.0).abs() < 1e-12);
+
+    let m = model(
+        r#"{"title": "t", "parameters": [{"name": "m"}],
+        "coordinates": [{"name": "q", "kind": "angle"}]}"#,
+    );
+    let s = sample(&[("m", 3.0)], &[("q", [0.0, 2.0, 0.5])]);
+    assert_eq!(
+        m.evaluate_expression("m*cos(q)*dot(q)^2 + ddot(q)", &s),
+        Ok(12.5)
+    );
+
+    let m = model(REGULATOR);
+    let s = m.sample(&mut rand::rng()).expect("sample");
+    assert!(matches!(
+        eval(&m, "{D(E/0)}_O2 in B1", &s),
+        NumValue::Torsor { .. }
+    ));
+    let v = NumValue::Vector {
+        basis: "0".into(),
+        value: [1.0, 2.0, 3.0],
+    };
+    assert_eq!(v.numbers(), vec![1.0, 2.0, 3.0]);
+}
