@@ -109,10 +109,14 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             .ok_or_else(|| err(format!("unknown basis `B{b}`")))?;
     }
     if let Some((f, axis)) = &q.projection {
+        // Intermediate steps are written in the basis of the projection vector.
         let fid = m
             .frames
             .find(f)
             .ok_or_else(|| err(format!("unknown basis vector `{axis}{f}`")))?;
+        if q.basis.is_none() {
+            r.basis = fid;
+        }
         r.projection = Some((
             fid,
             Axis::parse(&axis.to_string()).ok_or_else(|| err("bad axis".into()))?,
@@ -200,11 +204,24 @@ impl Value {
     }
 }
 
+/// What a step computes, for printing in the course's notation.
+#[derive(Debug, Clone)]
+pub enum StepKind {
+    /// A quantity of the notation (Ω, I, σ, δ, Rc, Rd...).
+    Quantity(QuantityKind),
+    /// The derivative of a quantity in a frame: [d/dt σ(A,S/R)]_R.
+    Derivative(QuantityKind, String),
+    /// The complementary term V(A/R) ∧ m V(G/R) of δ: (point A, centre G, frame R).
+    Complementary(String, String, String),
+}
+
 /// One step of a derivation.
 #[derive(Debug, Clone)]
 pub struct Step {
     /// What is computed, in the notation (`sigma(O2,2/0)`).
     pub label: String,
+    /// The same, structured.
+    pub kind: StepKind,
     /// The theorem or definition used, in the course's words.
     pub theorem: String,
     /// The value.
@@ -276,6 +293,10 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
             let a = r.point.unwrap_or(m.body(s).centre);
             if let Some(ig) = torsor::inertia_at_centre(m, s) {
                 steps.push(Step {
+                    kind: StepKind::Quantity(QuantityKind::Inertia {
+                        point: m.point_name(m.body(s).centre).to_string(),
+                        solid: m.body(s).name.clone(),
+                    }),
                     label: format!("I({},{})", m.point_name(m.body(s).centre), m.body(s).name),
                     theorem: "opérateur d'inertie donné par l'énoncé".into(),
                     value: Value::Matrix(ig),
@@ -311,7 +332,16 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
             } else {
                 torsor::kinetic_resultant(m, &r.solids, reference)
             };
+            let mo = motion.clone().unwrap_or(Motion {
+                moving: String::new(),
+                reference: String::new(),
+            });
             steps.push(Step {
+                kind: StepKind::Quantity(if dynamic {
+                    QuantityKind::DynamicResultant(mo)
+                } else {
+                    QuantityKind::KineticResultant(mo)
+                }),
                 label: format!("{}({mname})", if dynamic { "Rd" } else { "Rc" }),
                 theorem: if dynamic {
                     "R_d = m Γ(G, S/R0), sommée sur les solides".into()
@@ -378,7 +408,12 @@ fn moment_steps(
         let sn = &body.name;
         let om = omega(m, body.frame, r);
         let ib = torsor::inertia_basis(m, s);
+        let mo = Motion {
+            moving: sn.clone(),
+            reference: rn.clone(),
+        };
         steps.push(Step {
+            kind: StepKind::Quantity(QuantityKind::Omega(mo.clone())),
             label: format!("Omega({sn}/{rn})"),
             theorem: "composition des vecteurs rotation".into(),
             value: vec_value(m, &om, ib),
@@ -386,6 +421,10 @@ fn moment_steps(
         let ia = torsor::inertia_at(m, s, a);
         let huygens = a != body.centre && body.inertia.is_some();
         steps.push(Step {
+            kind: StepKind::Quantity(QuantityKind::Inertia {
+                point: an.clone(),
+                solid: sn.clone(),
+            }),
             label: format!("I({an},{sn})"),
             theorem: if huygens {
                 format!(
@@ -401,7 +440,12 @@ fn moment_steps(
         });
         let sigma = torsor::kinetic_moment_solid(m, s, a, r);
         let fixed = crate::kinematics::velocity(m, a, body.frame, r).is_zero(&m.frames);
+        let sigma_kind = QuantityKind::KineticMoment {
+            point: an.clone(),
+            motion: mo.clone(),
+        };
         steps.push(Step {
+            kind: StepKind::Quantity(sigma_kind.clone()),
             label: format!("sigma({an},{sn}/{rn})"),
             theorem: if a == body.centre {
                 "σ(G, S/R0) = I_G(S)·Ω(S/R0)".into()
@@ -418,6 +462,7 @@ fn moment_steps(
         }
         let d_sigma = sigma.derivative_in(&m.frames, r);
         steps.push(Step {
+            kind: StepKind::Derivative(sigma_kind, rn.clone()),
             label: format!("d/dt sigma({an},{sn}/{rn})|{rn}"),
             theorem: "dérivation vectorielle (formule de Bour)".into(),
             value: vec_value(m, &d_sigma, b),
@@ -428,6 +473,11 @@ fn moment_steps(
             let mv_g = velocity(m, body.centre, body.frame, r).scale(&body.mass);
             let extra = v_a.cross(&m.frames, &mv_g);
             steps.push(Step {
+                kind: StepKind::Complementary(
+                    an.clone(),
+                    m.point_name(body.centre).to_string(),
+                    rn.clone(),
+                ),
                 label: format!("V({an}/{rn}) ^ m V({}/{rn})", m.point_name(body.centre)),
                 theorem: "terme complémentaire V(A/R0) ∧ m V(G/R0)".into(),
                 value: vec_value(m, &extra, b),
@@ -435,6 +485,10 @@ fn moment_steps(
             delta = delta.add(&extra);
         }
         steps.push(Step {
+            kind: StepKind::Quantity(QuantityKind::DynamicMoment {
+                point: an.clone(),
+                motion: mo.clone(),
+            }),
             label: format!("delta({an},{sn}/{rn})"),
             theorem: "δ(A, S/R0) = d/dt σ(A, S/R0)|R0 + V(A/R0) ∧ m V(G/R0)".into(),
             value: vec_value(m, &delta, b),

@@ -37,6 +37,20 @@ enum Command {
         /// Also write the full results (canonical and presentation forms, steps) as JSON.
         #[arg(long)]
         json: Option<PathBuf>,
+        /// Also write the answer key (LaTeX) of the spec's quantities.
+        #[arg(long)]
+        latex: Option<PathBuf>,
+    },
+    /// The whole answer key (« corrigé ») as LaTeX, on stdout or in a file, optionally as PDF.
+    AnswerKey {
+        /// Problem spec (JSON).
+        spec: PathBuf,
+        /// Output .tex file (stdout if absent).
+        #[arg(short = 'o', long = "output")]
+        output: Option<PathBuf>,
+        /// Also compile the PDF with pdflatex (next to the .tex file).
+        #[arg(long, requires = "output")]
+        pdf: bool,
     },
     /// Numbers: evaluates quantities at the values of a JSON file.
     Eval {
@@ -48,6 +62,21 @@ enum Command {
         /// A quantity in course notation; repeatable.
         #[arg(long = "quantity", short = 'q')]
         quantities: Vec<String>,
+    },
+    /// Exact equivalence of a hand-written result with the derived one (exit 1 if not).
+    Verify {
+        /// Problem spec (JSON).
+        spec: PathBuf,
+        /// The quantity, in course notation.
+        #[arg(long = "quantity", short = 'q')]
+        quantity: String,
+        /// The hand-written value: a scalar, `[x, y, z]` in the quantity's basis, or
+        /// `[[Rx, Ry, Rz], [Mx, My, Mz]]` for a torsor.
+        #[arg(long = "expr", short = 'e')]
+        expr: String,
+        /// Compare with the derived value under this hypothesis of the spec.
+        #[arg(long)]
+        hypothesis: Option<String>,
     },
 }
 
@@ -136,10 +165,59 @@ fn write_atomic(path: &Path, content: &[u8]) -> Result<(), Failure> {
         .and_then(|_| tmp.flush())
         .with_context(|| format!("cannot write {}", path.display()))
         .map_err(bad_input)?;
+    {
+        use std::os::unix::fs::PermissionsExt;
+        // Keep an existing file's mode; a new one gets the usual rw-r--r--.
+        let mode = std::fs::metadata(path)
+            .map(|m| m.permissions().mode())
+            .unwrap_or(0o644);
+        let _ = tmp
+            .as_file()
+            .set_permissions(std::fs::Permissions::from_mode(mode));
+    }
     tmp.persist(path)
         .map_err(|e| anyhow!("cannot write {}: {}", path.display(), e.error))
         .map_err(bad_input)?;
     Ok(())
+}
+
+/// Compiles LaTeX with pdflatex in a temporary directory (no shell escape) and returns the PDF.
+fn compile_pdf(tex: &str) -> Result<Vec<u8>, Failure> {
+    let dir = tempfile::tempdir().map_err(bad_input)?;
+    std::fs::write(dir.path().join("key.tex"), tex).map_err(bad_input)?;
+    let run = || {
+        std::process::Command::new("pdflatex")
+            .args([
+                "-no-shell-escape",
+                "-interaction=nonstopmode",
+                "-halt-on-error",
+                "key.tex",
+            ])
+            .current_dir(dir.path())
+            .stdin(std::process::Stdio::null())
+            .output()
+    };
+    let o = match run() {
+        Ok(o) => o,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            return Err(bad_input(anyhow!(
+                "pdflatex is not installed (run scripts/setup, or install Debian's texlive)"
+            )));
+        }
+        Err(e) => return Err(bad_input(anyhow!("cannot run pdflatex: {e}"))),
+    };
+    if !o.status.success() {
+        let log = String::from_utf8_lossy(&o.stdout);
+        let tail: Vec<&str> = log
+            .lines()
+            .filter(|l| l.starts_with('!') || l.starts_with("l."))
+            .collect();
+        return Err(Failure {
+            code: 1,
+            error: anyhow!("pdflatex failed: {}", tail.join(" | ")),
+        });
+    }
+    std::fs::read(dir.path().join("key.pdf")).map_err(bad_input)
 }
 
 fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
@@ -160,10 +238,17 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             spec,
             quantities: qs,
             json,
+            latex,
         } => {
             let m = load(&spec)?;
             let qs = quantities(&m, &qs)?;
             let ds = derive_all(&m, &qs)?;
+            if let Some(path) = latex {
+                let mut mq = m.clone();
+                mq.quantities = qs.clone();
+                let tex = torseur::latex::answer_key(&mq).map_err(bad_input)?;
+                write_atomic(&path, tex.as_bytes())?;
+            }
             if let Some(path) = json {
                 let j = output::derive_json(&m, &ds);
                 let text = serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n";
@@ -190,6 +275,41 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 .collect();
             let j = serde_json::json!({ "quantities": items });
             emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))
+        }
+        Command::AnswerKey { spec, output, pdf } => {
+            let m = load(&spec)?;
+            let tex = torseur::latex::answer_key(&m).map_err(bad_input)?;
+            match output {
+                None => emit(&tex),
+                Some(path) => {
+                    if pdf {
+                        let bytes = compile_pdf(&tex)?;
+                        write_atomic(&path, tex.as_bytes())?;
+                        write_atomic(&path.with_extension("pdf"), &bytes)
+                    } else {
+                        write_atomic(&path, tex.as_bytes())
+                    }
+                }
+            }
+        }
+        Command::Verify {
+            spec,
+            quantity,
+            expr,
+            hypothesis,
+        } => {
+            let m = load(&spec)?;
+            let v = torseur::verify::verify(&m, &quantity, &expr, hypothesis.as_deref())
+                .map_err(bad_input)?;
+            emit(&format!("{v}\n"))?;
+            if v.is_equivalent() {
+                Ok(())
+            } else {
+                Err(Failure {
+                    code: 1,
+                    error: anyhow!("{} differs from the derived result", v.quantity),
+                })
+            }
         }
     }
 }

@@ -9,7 +9,7 @@
 //! test is exact and costs nothing.
 
 mod parse;
-mod print;
+pub(crate) mod print;
 
 pub use print::{Presentation, PresentationGroup};
 
@@ -581,6 +581,11 @@ impl Expr {
     /// The symbolica expression (for the compiled evaluator and interoperability).
     pub fn to_atom(&self) -> Atom {
         self.p.to_expression()
+    }
+
+    /// Whether the expression is exactly 1.
+    pub fn is_one(&self) -> bool {
+        self.p.is_one()
     }
 
     /// The constant value if the expression is a rational number.

@@ -21,6 +21,30 @@ pub struct TermParts {
     pub rates: Vec<(CoordId, u8, u8)>,
 }
 
+impl TermParts {
+    /// A term holding only a kinematic monomial.
+    pub fn rates_only(rates: Vec<(CoordId, u8, u8)>) -> TermParts {
+        TermParts {
+            coef: Rational::one(),
+            params: vec![],
+            trig: vec![],
+            values: vec![],
+            rates,
+        }
+    }
+
+    /// Sign of the coefficient and its absolute value as (numerator, denominator) text.
+    pub fn coef_text(&self) -> (bool, String, String) {
+        let a = self.coef.abs();
+        let s = a.to_string();
+        let (n, d) = match s.split_once('/') {
+            Some((n, d)) => (n.to_string(), d.to_string()),
+            None => (s, "1".to_string()),
+        };
+        (self.coef.is_negative(), n, d)
+    }
+}
+
 /// Splits exponents into the parts of a term.
 pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
     let mut t = TermParts {
@@ -56,8 +80,13 @@ fn rate_key(rates: &[(CoordId, u8, u8)]) -> Vec<(Reverse<u8>, CoordId, Reverse<u
         .collect()
 }
 
-fn other_key(t: &TermParts) -> (Vec<(usize, Reverse<u8>)>, Vec<(CoordId, bool, Reverse<u8>)>) {
+/// Ordering key of the non-kinematic part: parameters, then trigonometric factors.
+/// Terms without parameters or trigonometric factors (plain numbers) come last.
+type OtherKey = (bool, Vec<(usize, Reverse<u8>)>, Vec<(CoordId, bool, Reverse<u8>)>);
+
+fn other_key(t: &TermParts) -> OtherKey {
     (
+        t.params.is_empty() && t.trig.is_empty(),
         t.params.iter().map(|&(p, k)| (p, Reverse(k))).collect(),
         t.trig
             .iter()
@@ -141,6 +170,9 @@ pub fn to_text(e: &Expr) -> String {
     join_signed(ordered_terms(e).iter().map(|t| term_text(reg, t)).collect())
 }
 
+/// A kinematic monomial: (coordinate, derivative order, exponent).
+type Kinematic = Vec<(CoordId, u8, u8)>;
+
 /// One group of the presentation form: `factor · (rest) · kinematic`.
 #[derive(Debug, Clone)]
 pub struct PresentationGroup {
@@ -177,7 +209,7 @@ impl Expr {
     pub fn presentation(&self) -> Presentation {
         let reg = self.registry().clone();
         let terms = ordered_terms(self);
-        let mut groups: Vec<(Vec<(CoordId, u8, u8)>, Vec<TermParts>)> = Vec::new();
+        let mut groups: Vec<(Kinematic, Vec<TermParts>)> = Vec::new();
         for t in terms {
             match groups.iter_mut().find(|(k, _)| *k == t.rates) {
                 Some(g) => g.1.push(t),
@@ -288,10 +320,8 @@ impl std::fmt::Display for Presentation {
         for g in &self.groups {
             let (neg, head) = term_text(reg, &g.factor);
             let mut factors: Vec<String> = Vec::new();
-            if !(head == "1" && g.rest.nterms() > 1) || g.rest.nterms() == 1 {
-                if head != "1" || (g.kinematic.is_empty() && g.rest.nterms() == 1) {
-                    factors.push(head);
-                }
+            if head != "1" || (g.kinematic.is_empty() && g.rest.is_one()) {
+                factors.push(head);
             }
             if !(g.rest.nterms() == 1 && g.rest.as_rational().is_some_and(|r| r.is_one())) {
                 let r = to_text(&g.rest);

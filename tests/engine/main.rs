@@ -1,4 +1,5 @@
 //! Integration tests of the engine; modules mirror `src/`.
+#![allow(clippy::needless_range_loop)]
 //!
 //! Expected values come from routes that do not share the code under test: hand derivations
 //! from the course, a second theorem, or the definitions.

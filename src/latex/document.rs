@@ -1,0 +1,295 @@
+//! The answer key (« corrigé »): set-up, hypotheses with the particular forms of the inertia
+//! matrices, then each requested quantity with the steps of the course's methodology, in the
+//! general case and under each hypothesis. All text about the problem comes from the spec.
+
+use super::{basis, basis_vector, escape_text, frame, name, point, quantity, value};
+use crate::derivation::{Derivation, StepKind, Value, derive};
+use crate::inertia::Symmetry;
+use crate::mechanism::Mechanism;
+use crate::quantity::QuantityKind;
+use std::fmt::Write;
+
+fn step_lhs(k: &StepKind) -> String {
+    match k {
+        StepKind::Quantity(q) => quantity(q),
+        StepKind::Derivative(q, r) => format!(
+            "\\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}}",
+            quantity(q),
+            frame(r)
+        ),
+        StepKind::Complementary(a, g, r) => format!(
+            "\\overrightarrow{{V({}/{})}} \\wedge m\\,\\overrightarrow{{V({}/{})}}",
+            point(a),
+            frame(r),
+            point(g),
+            frame(r)
+        ),
+    }
+}
+
+fn theorem_text(t: &str) -> String {
+    escape_text(t)
+}
+
+fn align(body: &str) -> String {
+    format!("\\begin{{align*}}\n{body}\n\\end{{align*}}\n")
+}
+
+fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) -> String {
+    let axes = ['x', 'y', 'z'];
+    match s {
+        Symmetry::Plane(n) => {
+            let others: Vec<String> = (0..3)
+                .filter(|&k| k != n.index())
+                .map(|k| basis_vector(axes[k], basis_frame))
+                .collect();
+            format!(
+                "le plan $({}, {}, {})$ est un plan de symétrie",
+                point(centre),
+                others[0],
+                others[1]
+            )
+        }
+        Symmetry::Revolution(a) => {
+            let _ = m;
+            format!(
+                "l'axe $({}, {})$ est un axe de révolution",
+                point(centre),
+                basis_vector(axes[a.index()], basis_frame)
+            )
+        }
+    }
+}
+
+/// The complete answer key of a mechanism as a LaTeX document.
+pub fn answer_key(m: &Mechanism) -> Result<String, crate::derivation::ResolveError> {
+    let ds: Vec<Derivation> = m
+        .quantities
+        .iter()
+        .map(|q| derive(m, q))
+        .collect::<Result<_, _>>()?;
+    let mut o = String::new();
+    o.push_str(
+        "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\
+         \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
+         \\usepackage{amsmath,amssymb}\n\\usepackage[margin=2cm]{geometry}\n\
+         \\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.5em}\n",
+    );
+    let _ = writeln!(
+        o,
+        "\\title{{Corrigé -- {}}}\n\\author{{torseur}}\n\\date{{}}",
+        escape_text(&m.title)
+    );
+    o.push_str("\\begin{document}\n\\maketitle\n");
+    if let Some(d) = &m.description {
+        let _ = writeln!(o, "{}\n", escape_text(d));
+    }
+
+    // Set-up.
+    o.push_str("\\section*{Paramétrage}\n\\begin{itemize}\n");
+    for c in &m.spec.coordinates {
+        let kind = match c.kind {
+            crate::spec::wire::CoordinateKind::Angle => "angle",
+            crate::spec::wire::CoordinateKind::Length => "longueur",
+        };
+        let desc = c
+            .description
+            .as_deref()
+            .map(escape_text)
+            .unwrap_or_default();
+        let _ = writeln!(o, "\\item ${}(t)$ ({kind}) : {desc}", name(&c.name));
+    }
+    for f in m.frames.ids().skip(1) {
+        let fr = m.frames.get(f);
+        let parent = m.frames.get(fr.parent.unwrap_or(m.frames.ground()));
+        match &fr.rotation {
+            Some(r) => {
+                let q = &m.reg.coord_info(r.angle.coord).name;
+                let sign = if r.angle.sign < 0 { "-" } else { "" };
+                let _ = writeln!(
+                    o,
+                    "\\item ${}$ est obtenu à partir de ${}$ par la rotation d'angle ${sign}{}$ \
+                     autour de ${}$.",
+                    frame(&fr.name),
+                    frame(&parent.name),
+                    name(q),
+                    basis_vector(r.axis.letter(), &parent.name)
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    o,
+                    "\\item La base ${}$ est celle de ${}$.",
+                    basis(&fr.name),
+                    frame(&parent.name)
+                );
+            }
+        }
+    }
+    for p in m.points.ids().skip(1) {
+        let pt = m.points.get(p);
+        let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
+        let parts: Vec<String> = pt
+            .offset
+            .parts()
+            .flat_map(|(b, c)| {
+                let bn = m.frame_name(b).to_string();
+                (0..3)
+                    .filter(|&k| !c[k].is_zero())
+                    .map(|k| {
+                        let e = super::expr(&c[k]);
+                        let bv = basis_vector(['x', 'y', 'z'][k], &bn);
+                        if c[k].nterms() > 1 {
+                            format!("\\left({e}\\right){bv}")
+                        } else if e == "1" {
+                            bv
+                        } else if e == "-1" {
+                            format!("-{bv}")
+                        } else {
+                            format!("{e}\\,{bv}")
+                        }
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        let rhs = if parts.is_empty() {
+            "\\vec{0}".to_string()
+        } else {
+            parts.join(" + ").replace("+ -", "- ")
+        };
+        let _ = writeln!(
+            o,
+            "\\item $\\overrightarrow{{{}{}}} = {rhs}$.",
+            point(from),
+            point(&pt.name)
+        );
+    }
+    o.push_str("\\end{itemize}\n");
+    for b in &m.bodies {
+        let _ = write!(
+            o,
+            "Solide ${}$ : masse ${}$, centre d'inertie ${}$",
+            name(&b.name),
+            super::expr(&b.mass),
+            point(m.point_name(b.centre))
+        );
+        match &b.inertia {
+            Some(i) => {
+                let _ = writeln!(
+                    o,
+                    ", opérateur d'inertie\n\\[ I_{{{}}}({}) = {} \\]",
+                    point(m.point_name(i.point)),
+                    name(&b.name),
+                    super::matrix(m, i)
+                );
+            }
+            None => o.push_str(" (masse ponctuelle).\n\n"),
+        }
+    }
+
+    // Hypotheses.
+    if !m.hypotheses.is_empty() {
+        o.push_str("\\section*{Hypothèses}\n");
+        for (h, hs) in m.hypotheses.iter().zip(&m.spec.hypotheses) {
+            let _ = writeln!(
+                o,
+                "\\subsection*{{{} }}\n{}\n",
+                escape_text(&h.name),
+                h.text.as_deref().map(escape_text).unwrap_or_default()
+            );
+            for sname in &hs.symmetric_solids {
+                let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
+                    continue;
+                };
+                let Some(i) = &b.inertia else { continue };
+                let bn = m.frame_name(i.basis).to_string();
+                let centre = m.point_name(i.point).to_string();
+                for s in &b.symmetries {
+                    let entries: Vec<String> = s
+                        .zero_entries()
+                        .iter()
+                        .map(|&(r, c)| super::expr(&i.matrix[r][c]))
+                        .filter(|t| t != "0")
+                        .map(|t| format!("${}$", t.trim_start_matches('-')))
+                        .collect();
+                    let _ = writeln!(
+                        o,
+                        "Pour le solide ${}$, {} : {}{}.\n",
+                        name(sname),
+                        symmetry_text(m, &bn, *s, &centre),
+                        if entries.is_empty() {
+                            "les produits d'inertie correspondants sont nuls".to_string()
+                        } else {
+                            format!("les produits d'inertie {} sont nuls", entries.join(", "))
+                        },
+                        if s.equal_moments().is_some() {
+                            " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
+                        } else {
+                            ""
+                        }
+                    );
+                }
+                let under = Value::Matrix(i.clone()).under(h);
+                if let Value::Matrix(iu) = under {
+                    let _ = writeln!(
+                        o,
+                        "\\[ I_{{{}}}({}) = {} \\]",
+                        point(&centre),
+                        name(sname),
+                        super::matrix(m, &iu)
+                    );
+                }
+            }
+            if !h.effects.is_empty() {
+                let eff: Vec<String> = h
+                    .effects
+                    .iter()
+                    .map(|e| {
+                        let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
+                        let lx = m.reg.parse(l).map(|x| super::expr(&x)).unwrap_or_default();
+                        let rx = m.reg.parse(r).map(|x| super::expr(&x)).unwrap_or_default();
+                        format!("${lx} = {rx}$")
+                    })
+                    .collect();
+                let _ = writeln!(o, "Sous cette hypothèse : {}.\n", eff.join(", "));
+            }
+        }
+    }
+
+    // Results.
+    o.push_str("\\section*{Résultats}\n");
+    for d in &ds {
+        let q = &d.quantity;
+        let title = match &q.projection {
+            Some((f, axis)) => format!("{} \\cdot {}", quantity(&q.kind), basis_vector(*axis, f)),
+            None => quantity(&q.kind),
+        };
+        let _ = writeln!(o, "\\subsection*{{${title}$}}");
+        for s in &d.steps {
+            let _ = writeln!(o, "{} :", theorem_text(&s.theorem));
+            o.push_str(&align(&value(m, &step_lhs(&s.kind), &s.value)));
+        }
+        o.push_str("Résultat :\n");
+        let lhs = match &q.kind {
+            k if k.is_torsor() => quantity(k),
+            QuantityKind::Inertia { .. } => quantity(&q.kind),
+            _ => title.clone(),
+        };
+        o.push_str(&align(&value(m, &lhs, &d.value)));
+        for h in &m.hypotheses {
+            let under = d.value.under(h);
+            if under.exprs() == d.value.exprs() {
+                let _ = writeln!(
+                    o,
+                    "Sous l'hypothèse {}, le résultat est inchangé.\n",
+                    escape_text(&h.name)
+                );
+                continue;
+            }
+            let _ = writeln!(o, "Sous l'hypothèse {} :", escape_text(&h.name));
+            o.push_str(&align(&value(m, &lhs, &under)));
+        }
+    }
+    o.push_str("\\end{document}\n");
+    Ok(o)
+}

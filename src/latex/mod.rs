@@ -1,0 +1,602 @@
+//! LaTeX in the course's notation: names (θ1 → \theta_{1}), expressions collected by
+//! kinematic monomials, vectors on their basis, torsors, inertia matrices; and the answer key.
+//!
+//! Nothing from a spec reaches the LaTeX unvalidated: identifiers are checked to be ASCII
+//! letters, digits and `_` when the spec is loaded, and free text goes through [`escape_text`].
+
+mod document;
+
+pub use document::answer_key;
+
+use crate::derivation::Value;
+use crate::expr::print::TermParts;
+use crate::expr::{CoordId, Expr, Presentation, Registry};
+use crate::mechanism::Mechanism;
+use crate::quantity::{Motion, QuantityKind};
+use std::sync::Arc;
+
+const GREEK: &[&str] = &[
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+    "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",
+    "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega",
+];
+
+/// An identifier as the course writes it: `L1` → `L_{1}`, `theta1` → `\theta_{1}`,
+/// `x_a` → `x_{a}`, `omega` → `\omega`.
+///
+/// ```
+/// assert_eq!(torseur::latex::name("theta1"), "\\theta_{1}");
+/// assert_eq!(torseur::latex::name("A2"), "A_{2}");
+/// assert_eq!(torseur::latex::name("lambda"), "\\lambda");
+/// ```
+pub fn name(n: &str) -> String {
+    let safe: String = n
+        .chars()
+        .filter(|c| c.is_ascii_alphanumeric() || *c == '_')
+        .collect();
+    let (head, sub) = match safe.split_once('_') {
+        Some((h, s)) => (h.to_string(), s.replace('_', "")),
+        None => {
+            let cut = safe
+                .char_indices()
+                .find(|(i, c)| *i > 0 && c.is_ascii_digit())
+                .map(|(i, _)| i)
+                .unwrap_or(safe.len());
+            (safe[..cut].to_string(), safe[cut..].to_string())
+        }
+    };
+    let head = if GREEK.contains(&head.as_str()) {
+        format!("\\{head}")
+    } else if head.len() > 1 {
+        format!("\\mathrm{{{head}}}")
+    } else {
+        head
+    };
+    if sub.is_empty() {
+        head
+    } else {
+        format!("{head}_{{{sub}}}")
+    }
+}
+
+/// Escapes free text (titles, statements) for LaTeX: every special character is neutralised,
+/// so `\input`, `\write18` or unbalanced braces print as text and execute nothing.
+///
+/// ```
+/// assert_eq!(torseur::latex::escape_text("\\input{x} 50% & $"),
+///            "\\textbackslash{}input\\{x\\} 50\\% \\& \\$");
+/// ```
+pub fn escape_text(s: &str) -> String {
+    let mut o = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '\\' => o.push_str("\\textbackslash{}"),
+            '{' => o.push_str("\\{"),
+            '}' => o.push_str("\\}"),
+            '$' => o.push_str("\\$"),
+            '&' => o.push_str("\\&"),
+            '#' => o.push_str("\\#"),
+            '%' => o.push_str("\\%"),
+            '_' => o.push_str("\\_"),
+            '^' => o.push_str("\\textasciicircum{}"),
+            '~' => o.push_str("\\textasciitilde{}"),
+            '<' => o.push_str("\\textless{}"),
+            '>' => o.push_str("\\textgreater{}"),
+            '\n' | '\r' | '\t' => o.push(' '),
+            c if (c as u32) < 0x20 => {}
+            c if (c as u32) <= 0xFF => o.push(c),
+            '’' => o.push('\''),
+            '«' | '»' => o.push('"'),
+            'θ' => o.push_str("$\\theta$"),
+            '∧' => o.push_str("$\\wedge$"),
+            '·' => o.push_str("$\\cdot$"),
+            'Γ' => o.push_str("$\\Gamma$"),
+            '−' => o.push('-'),
+            'Ω' => o.push_str("$\\Omega$"),
+            'σ' => o.push_str("$\\sigma$"),
+            'δ' => o.push_str("$\\delta$"),
+            _ => o.push('?'),
+        }
+    }
+    o
+}
+
+/// A point name: `O2` → `O_{2}`.
+pub fn point(n: &str) -> String {
+    name(n)
+}
+
+/// Basis vector `\vec{x}_{2}`.
+pub fn basis_vector(axis: char, frame: &str) -> String {
+    format!("\\vec{{{axis}}}_{{{}}}", escape_ident(frame))
+}
+
+fn escape_ident(s: &str) -> String {
+    s.chars()
+        .filter(|c| c.is_ascii_alphanumeric() || *c == '_')
+        .map(|c| if c == '_' { ' ' } else { c })
+        .collect::<String>()
+        .replace(' ', "")
+}
+
+/// A frame `\mathcal{R}_{0}` and a basis `\mathcal{B}_{2}`.
+pub fn frame(n: &str) -> String {
+    format!("\\mathcal{{R}}_{{{}}}", escape_ident(n))
+}
+
+/// A basis `\mathcal{B}_{2}`.
+pub fn basis(n: &str) -> String {
+    format!("\\mathcal{{B}}_{{{}}}", escape_ident(n))
+}
+
+fn motion(m: &Motion) -> String {
+    format!("{}/{}", escape_ident(&m.moving), escape_ident(&m.reference))
+}
+
+/// A quantity in the seed's notation: `\overrightarrow{\delta(O_{2},2/0)}`, `\{\mathcal{D}(2/0)\}_{O_2}`.
+pub fn quantity(k: &QuantityKind) -> String {
+    use QuantityKind::*;
+    let arrow = |s: String| format!("\\overrightarrow{{{s}}}");
+    match k {
+        Omega(mo) => arrow(format!("\\Omega({})", motion(mo))),
+        Velocity {
+            point: p,
+            motion: mo,
+        } => arrow(format!("V({},{})", point(p), motion(mo))),
+        Acceleration {
+            point: p,
+            motion: mo,
+        } => arrow(format!("\\Gamma({},{})", point(p), motion(mo))),
+        Inertia { point: p, solid } => format!("I_{{{}}}({})", point(p), escape_ident(solid)),
+        KineticResultant(mo) => arrow(format!("R_c({})", motion(mo))),
+        KineticMoment {
+            point: p,
+            motion: mo,
+        } => arrow(format!("\\sigma({},{})", point(p), motion(mo))),
+        DynamicResultant(mo) => arrow(format!("R_d({})", motion(mo))),
+        DynamicMoment {
+            point: p,
+            motion: mo,
+        } => arrow(format!("\\delta({},{})", point(p), motion(mo))),
+        KinematicTorsor {
+            motion: mo,
+            point: p,
+        } => {
+            format!(
+                "\\left\\{{\\mathcal{{V}}({})\\right\\}}_{{{}}}",
+                motion(mo),
+                point(p)
+            )
+        }
+        KineticTorsor {
+            motion: mo,
+            point: p,
+        } => {
+            format!(
+                "\\left\\{{\\mathcal{{C}}({})\\right\\}}_{{{}}}",
+                motion(mo),
+                point(p)
+            )
+        }
+        DynamicTorsor {
+            motion: mo,
+            point: p,
+        } => {
+            format!(
+                "\\left\\{{\\mathcal{{D}}({})\\right\\}}_{{{}}}",
+                motion(mo),
+                point(p)
+            )
+        }
+    }
+}
+
+/// Factors of a term in the teacher's order: parameters, then trigonometry, then rates.
+fn factors(reg: &Registry, t: &TermParts) -> Vec<String> {
+    let pw = |b: String, k: u8| if k == 1 { b } else { format!("{b}^{{{k}}}") };
+    let mut f = Vec::new();
+    for &(p, k) in &t.params {
+        f.push(pw(name(&reg.parameters()[p]), k));
+    }
+    for &(q, is_cos, k) in &t.trig {
+        let fun = if is_cos { "\\cos" } else { "\\sin" };
+        let arg = name(&reg.coord_info(q).name);
+        f.push(if k == 1 {
+            format!("{fun}{arg}")
+        } else {
+            format!("{fun}^{{{k}}}{arg}")
+        });
+    }
+    for &(q, k) in &t.values {
+        f.push(pw(name(&reg.coord_info(q).name), k));
+    }
+    for &(q, o, k) in &t.rates {
+        f.push(pw(rate(reg, q, o), k));
+    }
+    f
+}
+
+fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
+    let n = name(&reg.coord_info(q).name);
+    // \dot{\theta}_{1}: the accent on the head, the subscript after.
+    let (head, sub) = match n.split_once("_{") {
+        Some((h, s)) => (h.to_string(), format!("_{{{s}")),
+        None => (n.clone(), String::new()),
+    };
+    let acc = ["\\dot", "\\ddot", "\\dddot"][(order.clamp(1, 3) - 1) as usize];
+    format!("{acc}{{{head}}}{sub}")
+}
+
+/// One signed term; the sign is returned apart.
+fn term(reg: &Registry, t: &TermParts) -> (bool, String) {
+    let (neg, n, d) = t.coef_text();
+    let num = if d == "1" {
+        n.clone()
+    } else {
+        format!("\\frac{{{n}}}{{{d}}}")
+    };
+    let f = factors(reg, t);
+    let body = if f.is_empty() {
+        num
+    } else if n == "1" && d == "1" {
+        f.join("\\,")
+    } else {
+        format!("{num}\\,{}", f.join("\\,"))
+    };
+    (neg, body)
+}
+
+fn join(parts: &[(bool, String)]) -> String {
+    if parts.is_empty() {
+        return "0".to_string();
+    }
+    let mut o = String::new();
+    for (i, (neg, s)) in parts.iter().enumerate() {
+        o.push_str(match (i, neg) {
+            (0, true) => "-",
+            (0, false) => "",
+            (_, true) => " - ",
+            (_, false) => " + ",
+        });
+        o.push_str(s);
+    }
+    o
+}
+
+/// Plain (canonical-order) LaTeX of an expression.
+pub fn expr_plain(e: &Expr) -> String {
+    let reg = e.registry();
+    let parts: Vec<_> = crate::expr::print::ordered_terms(e)
+        .iter()
+        .map(|t| term(reg, t))
+        .collect();
+    join(&parts)
+}
+
+/// The groups of the presentation form, each as (negative, LaTeX).
+fn groups(p: &Presentation) -> Vec<(bool, String)> {
+    let reg: &Arc<Registry> = p.registry();
+    p.groups
+        .iter()
+        .map(|g| {
+            let (neg, head) = term(reg, &g.factor);
+            let rest_is_one = g.rest.is_one();
+            let mut f = Vec::new();
+            let bare = head == "1" && g.kinematic.is_empty();
+            if head != "1" || (rest_is_one && g.kinematic.is_empty()) {
+                f.push(head);
+            }
+            if !rest_is_one {
+                let r = expr_plain(&g.rest);
+                f.push(if g.rest.nterms() > 1 && !bare {
+                    format!("\\left({r}\\right)")
+                } else {
+                    r
+                });
+            }
+            let kin = TermParts::rates_only(g.kinematic.clone());
+            f.extend(factors(reg, &kin));
+            (neg, f.join("\\,"))
+        })
+        .collect()
+}
+
+/// The presentation form in LaTeX (collected by q̈ and q̇q̇, common factors out).
+///
+/// ```
+/// use torseur::expr::Registry;
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::new(&["m".into(), "L".into()], &[("theta1".into(), CoordinateKind::Angle)]).unwrap();
+/// let e = reg.parse("m*L^2*ddot(theta1) - m*L*sin(theta1)*dot(theta1)^2").unwrap();
+/// assert_eq!(torseur::latex::expr(&e),
+///     "m\\,L^{2}\\,\\ddot{\\theta}_{1} - m\\,L\\,\\sin\\theta_{1}\\,\\dot{\\theta}_{1}^{2}");
+/// ```
+pub fn expr(e: &Expr) -> String {
+    join(&groups(&e.presentation()))
+}
+
+/// Approximate printed width of LaTeX math, in characters of the body text.
+fn width(s: &str) -> usize {
+    let mut w = 0usize;
+    let mut chars = s.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '\\' => {
+                let mut cmd = String::new();
+                while let Some(&d) = chars.peek() {
+                    if d.is_ascii_alphabetic() {
+                        cmd.push(d);
+                        chars.next();
+                    } else {
+                        break;
+                    }
+                }
+                w += match cmd.as_str() {
+                    "" | "left" | "right" | "mathrm" | "dot" | "ddot" | "dddot" | "vec" => 0,
+                    "frac" => 1,
+                    "sin" | "cos" => 3,
+                    _ => 1,
+                };
+                if cmd.is_empty() {
+                    chars.next();
+                }
+            }
+            '{' | '}' | '_' | '^' => {}
+            ' ' => {}
+            '+' | '-' | '=' => w += 2,
+            _ => w += 1,
+        }
+    }
+    w
+}
+
+/// Unbreakable pieces of the presentation form: each group, or, for a group too wide for a
+/// line, its factor and the terms of its parenthesised coefficient one by one (`\Big(`
+/// and `\Big)` may span lines, `\left(` and `\right)` may not).
+fn atoms(e: &Expr, max: usize) -> Vec<String> {
+    let p = e.presentation();
+    let reg = p.registry().clone();
+    let mut out = Vec::new();
+    for (i, (g, (neg, whole))) in p.groups.iter().zip(groups(&p)).enumerate() {
+        let sign = |neg: bool, first: bool| match (first, neg) {
+            (true, true) => "-".to_string(),
+            (true, false) => String::new(),
+            (false, true) => " - ".to_string(),
+            (false, false) => " + ".to_string(),
+        };
+        if width(&whole) <= max || g.rest.nterms() <= 1 {
+            out.push(format!("{}{whole}", sign(neg, i == 0)));
+            continue;
+        }
+        let (_, head) = term(&reg, &g.factor);
+        let kin: Vec<String> = factors(&reg, &TermParts::rates_only(g.kinematic.clone()));
+        let terms: Vec<(bool, String)> = crate::expr::print::ordered_terms(&g.rest)
+            .iter()
+            .map(|t| term(&reg, t))
+            .collect();
+        let open = if head == "1" {
+            "\\Big(".to_string()
+        } else {
+            format!("{head}\\,\\Big(")
+        };
+        let n = terms.len();
+        for (k, (tn, ts)) in terms.into_iter().enumerate() {
+            let mut piece = String::new();
+            if k == 0 {
+                piece.push_str(&sign(neg, i == 0));
+                piece.push_str(&open);
+                piece.push_str(&format!("{}{ts}", if tn { "-" } else { "" }));
+            } else {
+                piece.push_str(&format!("{}{ts}", sign(tn, false)));
+            }
+            if k + 1 == n {
+                piece.push_str("\\Big)");
+                if !kin.is_empty() {
+                    piece.push_str(&format!("\\,{}", kin.join("\\,")));
+                }
+            }
+            out.push(piece);
+        }
+    }
+    if out.is_empty() {
+        out.push("0".to_string());
+    }
+    out
+}
+
+/// Lines of at most `max` width (as far as single terms allow), broken between groups and,
+/// when a group is too wide, inside its coefficient.
+pub fn expr_lines(e: &Expr, max: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut cur = String::new();
+    for piece in atoms(e, max) {
+        if !cur.is_empty() && width(&cur) + width(&piece) > max {
+            lines.push(std::mem::take(&mut cur));
+        }
+        cur.push_str(&piece);
+    }
+    lines.push(cur);
+    lines
+}
+
+/// A vector as a sum over its basis vectors, one line per component when long, inside an
+/// `aligned` block: `\left(...\right)\vec{x}_2 + ...`.
+pub fn vector_sum(
+    m: &Mechanism,
+    lhs: &str,
+    basis_frame: &str,
+    c: &[Expr; 3],
+    max: usize,
+) -> String {
+    let axes = ['x', 'y', 'z'];
+    let mut lines: Vec<String> = Vec::new();
+    let mut first = true;
+    for k in 0..3 {
+        if c[k].is_zero() {
+            continue;
+        }
+        let bv = basis_vector(axes[k], basis_frame);
+        let ls = expr_lines(&c[k], max);
+        let single_term = c[k].presentation().groups.len() == 1;
+        let sign = if first { "" } else { "+ " };
+        if ls.len() == 1 && single_term {
+            let s = &ls[0];
+            let s = if !first && s.starts_with('-') {
+                format!("- {}", &s[1..])
+            } else {
+                format!("{sign}{s}")
+            };
+            lines.push(format!("{s}\\,{bv}"));
+        } else if ls.len() == 1 {
+            lines.push(format!("{sign}\\left({}\\right){bv}", ls[0]));
+        } else {
+            let n = ls.len();
+            for (i, l) in ls.into_iter().enumerate() {
+                let open = if i == 0 {
+                    format!("{sign}\\Big(")
+                } else {
+                    "\\quad ".to_string()
+                };
+                let close = if i + 1 == n {
+                    format!("\\Big)\\,{bv}")
+                } else {
+                    String::new()
+                };
+                lines.push(format!("{open}{l}{close}"));
+            }
+        }
+        first = false;
+    }
+    let _ = m;
+    if lines.is_empty() {
+        return format!("{lhs} &= \\vec{{0}}");
+    }
+    let total: usize = lines.iter().map(|l| width(l)).sum();
+    if total <= max && lines.iter().all(|l| !l.contains("\\Big")) {
+        return format!("{lhs} &= {}", lines.join(" "));
+    }
+    let mut out = format!("{lhs} &= {}", lines[0]);
+    for l in &lines[1..] {
+        out.push_str(&format!(" \\\\\n&\\phantom{{=}} {l}"));
+    }
+    out
+}
+
+/// A short vector as a column with its basis as subscript.
+pub fn vector_column(basis_frame: &str, c: &[Expr; 3]) -> String {
+    format!(
+        "\\begin{{pmatrix}} {} \\\\ {} \\\\ {} \\end{{pmatrix}}_{{{}}}",
+        expr(&c[0]),
+        expr(&c[1]),
+        expr(&c[2]),
+        basis(basis_frame)
+    )
+}
+
+/// An inertia matrix with its point and basis.
+pub fn matrix(m: &Mechanism, i: &crate::inertia::Inertia) -> String {
+    let rows: Vec<String> = i
+        .matrix
+        .iter()
+        .map(|r| r.iter().map(expr).collect::<Vec<_>>().join(" & "))
+        .collect();
+    format!(
+        "\\begin{{pmatrix}} {} \\end{{pmatrix}}_{{{}}}",
+        rows.join(" \\\\ "),
+        basis(m.frame_name(i.basis))
+    )
+}
+
+/// A matrix too wide for a line: named entries I_xx, I_xy... in the matrix, then each
+/// non-trivial entry on its own line (lines of an `align*`).
+fn matrix_named(m: &Mechanism, lhs: &str, i: &crate::inertia::Inertia) -> String {
+    let ax = ['x', 'y', 'z'];
+    let mut cells: Vec<Vec<String>> = vec![vec![String::new(); 3]; 3];
+    let mut defs = Vec::new();
+    for r in 0..3 {
+        for c in 0..3 {
+            let e = &i.matrix[r][c];
+            let short = expr(e);
+            cells[r][c] = if e.nterms() <= 1 && width(&short) <= 8 {
+                short
+            } else {
+                let n = format!("I_{{{}{}}}", ax[r.min(c)], ax[r.max(c)]);
+                if r <= c {
+                    defs.push(format!(
+                        "{n} &= {}",
+                        expr_lines(e, LINE).join(" \\\\\n&\\phantom{=} ")
+                    ));
+                }
+                n
+            };
+        }
+    }
+    let rows: Vec<String> = cells.iter().map(|r| r.join(" & ")).collect();
+    let mut out = format!(
+        "{lhs} &= \\begin{{pmatrix}} {} \\end{{pmatrix}}_{{{}}}",
+        rows.join(" \\\\ "),
+        basis(m.frame_name(i.basis))
+    );
+    for d in defs {
+        out.push_str(&format!(" \\\\\n{d}"));
+    }
+    out
+}
+
+/// Width (in characters) beyond which a vector is written over several lines.
+pub const LINE: usize = 62;
+
+/// A value on the right of `lhs`, as lines of an `align*` environment.
+pub fn value(m: &Mechanism, lhs: &str, v: &Value) -> String {
+    match v {
+        Value::Scalar(e) => {
+            let ls = expr_lines(e, LINE);
+            let mut out = format!("{lhs} &= {}", ls[0]);
+            for l in &ls[1..] {
+                out.push_str(&format!(" \\\\\n&\\phantom{{=}} {l}"));
+            }
+            out
+        }
+        Value::Vector {
+            basis: b,
+            components,
+        } => vector_sum(m, lhs, m.frame_name(*b), components, LINE),
+        Value::Matrix(i) => {
+            let mx = matrix(m, i);
+            if width(&mx) > LINE + 20 {
+                matrix_named(m, lhs, i)
+            } else {
+                format!("{lhs} &= {mx}")
+            }
+        }
+        Value::Torsor {
+            point: p,
+            basis: b,
+            resultant,
+            moment,
+        } => {
+            let short = resultant
+                .iter()
+                .chain(moment.iter())
+                .all(|e| e.nterms() <= 1);
+            let pn = point(m.point_name(*p));
+            if short {
+                let rows: Vec<String> = (0..3)
+                    .map(|k| format!("{} & {}", expr(&resultant[k]), expr(&moment[k])))
+                    .collect();
+                format!(
+                    "{lhs} &= \\left\\{{ \\begin{{array}}{{c|c}} {} \\end{{array}} \\right\\}}_{{{pn},\\,{}}}",
+                    rows.join(" \\\\ "),
+                    basis(m.frame_name(*b))
+                )
+            } else {
+                let bn = m.frame_name(*b);
+                format!(
+                    "{}\\\\\n{}",
+                    vector_sum(m, "\\vec{R}", bn, resultant, LINE),
+                    vector_sum(m, &format!("\\vec{{M}}({pn})"), bn, moment, LINE)
+                )
+            }
+        }
+    }
+}
