@@ -2,9 +2,8 @@
 
 use super::expr;
 use super::kin::{State, Values};
-use super::la::{M3, V3, add, mat_mul, point_inertia, sub, transpose};
+use super::la::{M3, V3, add, column, identity, mat_mul, point_inertia, sub, transpose};
 use super::{NumericError, NumericModel};
-use nalgebra::{Matrix3, SymmetricEigen};
 
 /// Relative tolerance on the symmetry of a matrix and on negative principal second moments.
 const TOL: f64 = 1e-10;
@@ -94,24 +93,24 @@ pub(super) fn solid_cloud(
         ));
     }
     let half_trace = 0.5 * (i_g[0][0] + i_g[1][1] + i_g[2][2]);
-    let j = Matrix3::from_fn(|r, c| if r == c { half_trace } else { 0.0 } - i_g[r][c]);
-    let eig = SymmetricEigen::new(j);
+    let mut j = [[0.0; 3]; 3];
+    for (r, row) in j.iter_mut().enumerate() {
+        for (c, x) in row.iter_mut().enumerate() {
+            *x = if r == c { half_trace } else { 0.0 } - i_g[r][c];
+        }
+    }
+    let (values, axes) = symmetric_eigen(&j);
     let mut cloud = Vec::with_capacity(6);
-    for k in 0..3 {
-        let jk = eig.eigenvalues[k];
+    for (k, jk) in values.into_iter().enumerate() {
         if jk < -TOL * scale.max(f64::MIN_POSITIVE) {
-            let principal: Vec<f64> = (0..3).map(|l| half_trace - eig.eigenvalues[l]).collect();
+            let principal = values.map(|l| half_trace - l);
             return Err(not_physical(format!(
                 "its inertia at G has principal moments {principal:?}: one exceeds the sum of \
                  the other two, which no body can have (A ≤ B + C)"
             )));
         }
         let a = (3.0 * jk.max(0.0) / mass).sqrt();
-        let e = [
-            eig.eigenvectors[(0, k)],
-            eig.eigenvectors[(1, k)],
-            eig.eigenvectors[(2, k)],
-        ];
+        let e = column(&axes, k);
         for sign in [1.0, -1.0] {
             let d = [e[0] * a * sign, e[1] * a * sign, e[2] * a * sign];
             cloud.push((mass / 6.0, add(&g, &d)));
@@ -133,4 +132,63 @@ pub(super) fn cloud_inertia(cloud: &[(f64, V3<f64>)], d: &V3<f64>) -> M3<f64> {
         }
     }
     acc
+}
+
+/// Eigenvalues and orthonormal eigenvectors (the columns of the matrix) of a symmetric 3×3
+/// matrix, by cyclic Jacobi rotations: J = V diag(λ) Vᵀ.
+///
+/// Each rotation is applied to the matrix and accumulated into V together, so column k of V
+/// always belongs to the diagonal entry k: no pairing step that could mismatch them. (nalgebra's
+/// `SymmetricEigen` has one: for a 2×2 block whose off-diagonal entry is at its deflation
+/// threshold, about 1e-16 relative, it takes the block's eigenvalues in its own order but skips
+/// the rotation of the eigenvectors, which swaps principal axes of a diagonal matrix carrying
+/// rounding noise.)
+pub(super) fn symmetric_eigen(m: &M3<f64>) -> ([f64; 3], M3<f64>) {
+    /// Far more sweeps than convergence needs (quadratic: a handful from any start).
+    const MAX_SWEEPS: usize = 64;
+    let mut a = *m;
+    // Exactly symmetric from the start: the mean of the two triangles.
+    for (p, q) in [(0, 1), (0, 2), (1, 2)] {
+        let x = 0.5 * (a[p][q] + a[q][p]);
+        a[p][q] = x;
+        a[q][p] = x;
+    }
+    let mut v = identity::<f64>();
+    for _ in 0..MAX_SWEEPS {
+        if a[0][1] == 0.0 && a[0][2] == 0.0 && a[1][2] == 0.0 {
+            break;
+        }
+        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
+            let apq = a[p][q];
+            if apq == 0.0 {
+                continue;
+            }
+            // The rotation R (R_pp = R_qq = c, R_pq = s, R_qp = −s) with Rᵀ A R zero at (p, q):
+            // t = tan φ is the smaller root of t² + 2θ t − 1 = 0, θ = (a_qq − a_pp) / 2a_pq.
+            let theta = (a[q][q] - a[p][p]) / (2.0 * apq);
+            let t = if theta.is_finite() {
+                1.0f64.copysign(theta) / (theta.abs() + theta.hypot(1.0))
+            } else {
+                0.0
+            };
+            let c = 1.0 / t.hypot(1.0);
+            let s = t * c;
+            let r = 3 - p - q;
+            let (app, aqq, arp, arq) = (a[p][p], a[q][q], a[r][p], a[r][q]);
+            a[p][p] = app - t * apq;
+            a[q][q] = aqq + t * apq;
+            a[p][q] = 0.0;
+            a[q][p] = 0.0;
+            a[r][p] = c * arp - s * arq;
+            a[p][r] = a[r][p];
+            a[r][q] = s * arp + c * arq;
+            a[q][r] = a[r][q];
+            for row in v.iter_mut() {
+                let (vp, vq) = (row[p], row[q]);
+                row[p] = c * vp - s * vq;
+                row[q] = s * vp + c * vq;
+            }
+        }
+    }
+    ([a[0][0], a[1][1], a[2][2]], v)
 }

@@ -864,3 +864,161 @@ fn documentation_examples_hold() {
     };
     assert_eq!(v.numbers(), vec![1.0, 2.0, 3.0]);
 }
+
+/// δ(O2,2/0)·x2 by hand (Euler's equations at G2 for I_G2 = diag(A2, B2, C2) in B2, then the
+/// transport to O2): (A2 + m2 L2²) θ̈2 + sin θ2 (m2 L1 L2 + (C2 − B2 + m2 L2²) cos θ2) θ̇1².
+fn regulator_delta_o2_x2_hand(s: &Sample) -> f64 {
+    let p = &s.parameters;
+    let (t1, t2) = (s.coordinates["theta1"], s.coordinates["theta2"]);
+    let (m2, l1, l2) = (p["m2"], p["L1"], p["L2"]);
+    let (c2, s2) = (t2[0].cos(), t2[0].sin());
+    (p["A2"] + m2 * l2 * l2) * t2[2]
+        + s2 * (m2 * l1 * l2 + (p["C2"] - p["B2"] + m2 * l2 * l2) * c2) * t1[1] * t1[1]
+}
+
+/// A sample drawn under Q1 (exactly diagonal inertia, signed zeros) once gave −5.7911...
+#[test]
+fn regulator_delta_o2_x2_diagonal_inertia_regression() {
+    let m = model(REGULATOR);
+    let s = sample(
+        &[
+            ("A1", 0.10751785437735437),
+            ("A2", 0.45463361815135467),
+            ("B1", 0.10751785437735437),
+            ("B2", 0.19302692859932108),
+            ("C1", 0.09730515755372715),
+            ("C2", 0.3300930407199903),
+            ("D1", -2.168404344971009e-19),
+            ("D2", -0.0),
+            ("E1", -0.0),
+            ("E2", -0.0),
+            ("F1", -0.0),
+            ("F2", -0.0),
+            ("L1", 0.9831449611249415),
+            ("L2", 1.9493208320643345),
+            ("d1", 1.8037184852301271),
+            ("h1", 0.5474312312749883),
+            ("m1", 1.3669761823722646),
+            ("m2", 1.8729056984295582),
+        ],
+        &[
+            (
+                "theta1",
+                [1.0660226263051014, 0.7304457436127683, 0.12798499598703827],
+            ),
+            (
+                "theta2",
+                [1.9974716586931711, -0.5454215664701474, -0.8126133752476417],
+            ),
+        ],
+    );
+    let expected = regulator_delta_o2_x2_hand(&s);
+    assert!((expected - -5.867315907923602).abs() < 1e-12 * 5.87);
+    let got = scalar(&m, "delta(O2,2/0).x2", &s);
+    assert!(
+        (got - expected).abs() <= 1e-12 * expected.abs(),
+        "{got} != {expected}"
+    );
+}
+
+/// Samples under Q1 (diagonal inertia in B2, the exact case of the regression above) and
+/// random diagonal inertias, against the hand formula.
+#[test]
+fn regulator_delta_o2_x2_diagonal_inertia_by_hand() {
+    let m = model(REGULATOR);
+    let mut failures = Vec::new();
+    for seed in 0..200 {
+        let s = m
+            .sample_under(&mut ChaCha8Rng::seed_from_u64(seed), "Q1")
+            .expect("sample under Q1");
+        let expected = regulator_delta_o2_x2_hand(&s);
+        let got = scalar(&m, "delta(O2,2/0).x2", &s);
+        if (got - expected).abs() > 1e-12 * (1.0 + expected.abs()) {
+            failures.push((seed, got, expected));
+        }
+    }
+    assert!(failures.is_empty(), "Q1 seeds failing: {failures:?}");
+    // Diagonal inertias given directly: principal moments A = jy + jz, B = jz + jx,
+    // C = jx + jy from second moments jₖ ≥ 0, products of inertia ±0.
+    use rand::Rng;
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    for _ in 0..200 {
+        let mut s = m.sample(&mut rng).expect("sample");
+        let j = [0, 1, 2].map(|_| rng.random_range(0.0..=1.0));
+        for (k, v) in [
+            ("A2", j[1] + j[2]),
+            ("B2", j[2] + j[0]),
+            ("C2", j[0] + j[1]),
+            ("D2", -0.0),
+            ("E2", 0.0),
+            ("F2", -0.0),
+        ] {
+            s.parameters.insert(k.into(), v);
+        }
+        let expected = regulator_delta_o2_x2_hand(&s);
+        let got = scalar(&m, "delta(O2,2/0).x2", &s);
+        assert!(
+            (got - expected).abs() <= 1e-12 * (1.0 + expected.abs()),
+            "{s:?}: {got} != {expected}"
+        );
+    }
+}
+
+/// The principal axes: V diag(λ) Vᵀ gives the matrix back and V is orthonormal, including for
+/// diagonal matrices carrying rounding noise at the deflation threshold of nalgebra's
+/// `SymmetricEigen` (which swapped two axes of the first matrix below), repeated eigenvalues
+/// and zeros.
+#[test]
+fn principal_axes_recompose_the_matrix() {
+    use rand::Rng;
+    let mut cases: Vec<[[f64; 3]; 3]> = vec![
+        // J = tr(I_G2)/2 Id − I_G2 of the regression sample, in B2.
+        [
+            [0.034243175583978325, 0.0, -4.35610802358069e-17],
+            [0.0, 0.2958498651360119, 0.0],
+            [-4.35610802358069e-17, 0.0, 0.1587837530153427],
+        ],
+        [[0.0; 3]; 3],
+        [[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0]],
+        [[1.0, 0.0, 0.0], [0.0, 3.0, 0.0], [0.0, 0.0, 0.0]],
+        [
+            [1.0, 1e-300, 0.0],
+            [1e-300, 1.0, 5e-324],
+            [0.0, 5e-324, -0.0],
+        ],
+        [[1.0, 1.0, 1.0], [1.0, 1.0, 1.0], [1.0, 1.0, 1.0]],
+    ];
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    for _ in 0..300 {
+        let mut a = [[0.0; 3]; 3];
+        let noise = [1.0, 1e-8, 1e-16, 1e-17][rng.random_range(0..4)];
+        for r in 0..3 {
+            a[r][r] = rng.random_range(-1.0..=1.0);
+            for c in 0..r {
+                let x = noise * rng.random_range(-1.0..=1.0);
+                a[r][c] = x;
+                a[c][r] = x;
+            }
+        }
+        if rng.random_bool(0.3) {
+            a[1][1] = a[0][0];
+        }
+        cases.push(a);
+    }
+    for a in cases {
+        let (values, v) = cloud::symmetric_eigen(&a);
+        let size = a.iter().flatten().fold(0.0f64, |s, x| s.max(x.abs()));
+        for r in 0..3 {
+            for c in 0..3 {
+                let back: f64 = (0..3).map(|k| v[r][k] * values[k] * v[c][k]).sum();
+                assert!(
+                    (back - a[r][c]).abs() <= 1e-14 * size,
+                    "{a:?}: V diag{values:?} Vᵀ [{r}][{c}] = {back}"
+                );
+                let dot: f64 = (0..3).map(|k| v[k][r] * v[k][c]).sum();
+                let id = if r == c { 1.0 } else { 0.0 };
+                assert!((dot - id).abs() <= 1e-14, "{a:?}: V is not orthonormal");
+            }
+        }
+    }
+}
