@@ -32,6 +32,7 @@
 // Matrix and vector code indexes components as the formulas do (I[i][j], u[k]).
 #![allow(clippy::needless_range_loop)]
 
+pub mod check;
 pub mod derivation;
 pub mod expr;
 pub mod frame;

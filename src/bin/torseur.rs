@@ -63,6 +63,20 @@ enum Command {
         #[arg(long = "quantity", short = 'q')]
         quantities: Vec<String>,
     },
+    /// Symbolic results against the independent float backend (exit 1 on a mismatch).
+    Check {
+        /// Problem spec (JSON).
+        spec: PathBuf,
+        /// Random samples per quantity.
+        #[arg(long, default_value_t = 20)]
+        samples: usize,
+        /// Seed of the random generator (reproducible runs).
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Print the report as JSON.
+        #[arg(long)]
+        json: bool,
+    },
     /// Exact equivalence of a hand-written result with the derived one (exit 1 if not).
     Verify {
         /// Problem spec (JSON).
@@ -290,6 +304,41 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                         write_atomic(&path, tex.as_bytes())
                     }
                 }
+            }
+        }
+        Command::Check {
+            spec,
+            samples,
+            seed,
+            json,
+        } => {
+            let m = load(&spec)?;
+            let r =
+                torseur::check::check(&m, samples.clamp(1, 100_000), seed).map_err(bad_input)?;
+            if json {
+                let rows: Vec<serde_json::Value> = r
+                    .rows
+                    .iter()
+                    .map(|x| {
+                        serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
+                            "worst_relative_error": x.worst, "sample": x.sample,
+                            "ok": x.worst <= torseur::check::TOLERANCE})
+                    })
+                    .collect();
+                let j = serde_json::json!({"samples": r.samples, "seed": r.seed,
+                    "tolerance": torseur::check::TOLERANCE, "passed": r.passed(), "quantities": rows});
+                emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))?;
+            } else {
+                emit(&format!("{r}\n"))?;
+            }
+            if r.passed() {
+                Ok(())
+            } else {
+                let names: Vec<String> = r.failures().iter().map(|x| x.quantity.clone()).collect();
+                Err(Failure {
+                    code: 1,
+                    error: anyhow!("symbolic and float results disagree: {}", names.join(", ")),
+                })
             }
         }
         Command::Verify {

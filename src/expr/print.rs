@@ -82,7 +82,11 @@ fn rate_key(rates: &[(CoordId, u8, u8)]) -> Vec<(Reverse<u8>, CoordId, Reverse<u
 
 /// Ordering key of the non-kinematic part: parameters, then trigonometric factors.
 /// Terms without parameters or trigonometric factors (plain numbers) come last.
-type OtherKey = (bool, Vec<(usize, Reverse<u8>)>, Vec<(CoordId, bool, Reverse<u8>)>);
+type OtherKey = (
+    bool,
+    Vec<(usize, Reverse<u8>)>,
+    Vec<(CoordId, bool, Reverse<u8>)>,
+);
 
 fn other_key(t: &TermParts) -> OtherKey {
     (

@@ -5,7 +5,10 @@
 //! from the course, a second theorem, or the definitions.
 
 mod bilan;
+mod check;
 mod kinematics;
+mod latex;
+mod properties;
 mod regulator;
 mod spec_errors;
 

@@ -1,0 +1,205 @@
+//! `check`: the symbolic results against the independent float backend, on random physically
+//! valid samples (bodies realised as random point clouds, random angles, rates, accelerations).
+
+use crate::derivation::{ResolveError, Value, derive, resolve};
+use crate::mechanism::{Hypothesis, Mechanism};
+use crate::numeric::{NumericError, NumericModel, Sample};
+use crate::output::{Values, ValuesError, numeric_point};
+use crate::quantity::Quantity;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use std::fmt;
+
+/// Agreement demanded between the two sides (relative).
+pub const TOLERANCE: f64 = 1e-9;
+
+/// Why a check could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum CheckError {
+    /// The float backend refused the spec or a sample.
+    #[error("float backend: {0}")]
+    Numeric(#[from] NumericError),
+    /// A quantity does not resolve.
+    #[error(transparent)]
+    Resolve(#[from] ResolveError),
+    /// A sample does not fit the mechanism.
+    #[error(transparent)]
+    Values(#[from] ValuesError),
+}
+
+/// The worst disagreement found for one quantity (under one hypothesis).
+#[derive(Debug, Clone)]
+pub struct CheckRow {
+    /// Quantity id.
+    pub quantity: String,
+    /// Hypothesis the forms were taken under, if any.
+    pub hypothesis: Option<String>,
+    /// Worst relative error over the samples: ‖sym − num‖∞ / max(‖sym‖∞, ‖num‖∞, 1e-3): values of the problems are O(1), so a quantity
+    /// that is zero is compared absolutely.
+    pub worst: f64,
+    /// Index of the sample where it occurred.
+    pub sample: usize,
+}
+
+/// The result of a check run.
+#[derive(Debug, Clone)]
+pub struct CheckReport {
+    /// Number of samples per quantity.
+    pub samples: usize,
+    /// Seed of the random generator.
+    pub seed: u64,
+    /// One row per quantity and hypothesis.
+    pub rows: Vec<CheckRow>,
+}
+
+impl CheckReport {
+    /// Rows beyond the tolerance.
+    pub fn failures(&self) -> Vec<&CheckRow> {
+        self.rows
+            .iter()
+            .filter(|r| r.worst.is_nan() || r.worst > TOLERANCE)
+            .collect()
+    }
+
+    /// Whether every quantity agrees within [`TOLERANCE`].
+    pub fn passed(&self) -> bool {
+        self.failures().is_empty()
+    }
+}
+
+impl fmt::Display for CheckReport {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let w = self
+            .rows
+            .iter()
+            .map(|r| r.quantity.len())
+            .max()
+            .unwrap_or(8)
+            .max(8);
+        writeln!(
+            f,
+            "{:<w$}  {:<10}  {:>12}  {:>6}  verdict",
+            "quantity", "hypothesis", "worst rel.", "sample"
+        )?;
+        for r in &self.rows {
+            writeln!(
+                f,
+                "{:<w$}  {:<10}  {:>12.3e}  {:>6}  {}",
+                r.quantity,
+                r.hypothesis.as_deref().unwrap_or("-"),
+                r.worst,
+                r.sample,
+                if r.worst <= TOLERANCE {
+                    "ok"
+                } else {
+                    "MISMATCH"
+                }
+            )?;
+        }
+        write!(
+            f,
+            "{} quantities x {} samples (seed {}), tolerance {TOLERANCE:e}: {}",
+            self.rows.len(),
+            self.samples,
+            self.seed,
+            if self.passed() {
+                "all agree"
+            } else {
+                "MISMATCH"
+            }
+        )
+    }
+}
+
+fn relative_error(sym: &[f64], num: &[f64]) -> f64 {
+    if sym.len() != num.len() {
+        return f64::INFINITY;
+    }
+    let norm = |v: &[f64]| v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    let diff = sym
+        .iter()
+        .zip(num)
+        .fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+    let scale = norm(sym).max(norm(num)).max(1e-3);
+    if diff.is_nan() {
+        f64::INFINITY
+    } else {
+        diff / scale
+    }
+}
+
+/// The quantity as the float backend must evaluate it: in the basis the symbolic side used.
+fn as_evaluated(m: &Mechanism, q: &Quantity) -> Result<Quantity, ResolveError> {
+    if q.projection.is_some() {
+        return Ok(q.clone());
+    }
+    let r = resolve(m, q)?;
+    Ok(q.with_basis(m.frame_name(r.basis)))
+}
+
+/// Compares one symbolic value of `q` with the float backend on `samples` random samples
+/// (drawn under `hypothesis` if given). The symbolic value may come from anywhere: tests use
+/// this to prove that a wrong formula is caught.
+pub fn compare(
+    m: &Mechanism,
+    model: &NumericModel,
+    q: &Quantity,
+    symbolic: &Value,
+    hypothesis: Option<&Hypothesis>,
+    samples: usize,
+    rng: &mut ChaCha8Rng,
+) -> Result<CheckRow, CheckError> {
+    let evaluated = as_evaluated(m, q)?;
+    let default = m.frame_name(m.default_basis).to_string();
+    let mut row = CheckRow {
+        quantity: q.to_string(),
+        hypothesis: hypothesis.map(|h| h.name.clone()),
+        worst: 0.0,
+        sample: 0,
+    };
+    for k in 0..samples {
+        let s: Sample = match hypothesis {
+            Some(h) => model.sample_under(rng, &h.name)?,
+            None => model.sample(rng)?,
+        };
+        let values = Values {
+            parameters: s.parameters.clone(),
+            coordinates: s.coordinates.clone(),
+        };
+        let point = numeric_point(m, &values)?;
+        let sym: Vec<f64> = symbolic.exprs().iter().map(|e| e.eval(&point)).collect();
+        let num = model.evaluate(&evaluated, &s, &default)?.numbers();
+        let err = relative_error(&sym, &num);
+        if err.is_nan() || err > row.worst {
+            row.worst = err;
+            row.sample = k;
+        }
+    }
+    Ok(row)
+}
+
+/// Checks every requested quantity of the spec, in general and under each hypothesis.
+///
+/// ```
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let report = torseur::check::check(&m, 5, 1).unwrap();
+/// assert!(report.passed(), "{report}");
+/// ```
+pub fn check(m: &Mechanism, samples: usize, seed: u64) -> Result<CheckReport, CheckError> {
+    let model = NumericModel::new(&m.spec)?;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut rows = Vec::new();
+    for q in &m.quantities {
+        let v = derive(m, q)?.value;
+        rows.push(compare(m, &model, q, &v, None, samples, &mut rng)?);
+        for h in &m.hypotheses {
+            let vh = v.under(h);
+            rows.push(compare(m, &model, q, &vh, Some(h), samples, &mut rng)?);
+        }
+    }
+    Ok(CheckReport {
+        samples,
+        seed,
+        rows,
+    })
+}

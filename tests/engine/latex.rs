@@ -1,0 +1,90 @@
+//! The answer key is pinned by a committed golden file; re-approve a reviewed change with
+//! `TORSEUR_BLESS=1 cargo test --test engine latex`.
+
+use super::*;
+
+fn golden(name: &str, actual: &str) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("latex")
+        .join(name);
+    if std::env::var_os("TORSEUR_BLESS").is_some() {
+        std::fs::write(&path, actual).unwrap();
+        return;
+    }
+    let expected = std::fs::read_to_string(&path)
+        .unwrap_or_else(|_| panic!("{} missing: run with TORSEUR_BLESS=1", path.display()));
+    if expected != actual {
+        let (e, a): (Vec<&str>, Vec<&str>) = (expected.lines().collect(), actual.lines().collect());
+        let first = e
+            .iter()
+            .zip(&a)
+            .position(|(x, y)| x != y)
+            .unwrap_or(e.len().min(a.len()));
+        panic!(
+            "{name} differs from the golden file at line {}:\n- {}\n+ {}\n(re-approve a reviewed change with TORSEUR_BLESS=1)",
+            first + 1,
+            e.get(first).unwrap_or(&"<end>"),
+            a.get(first).unwrap_or(&"<end>")
+        );
+    }
+}
+
+#[test]
+fn regulator_answer_key_matches_the_golden_file() {
+    let m = regulator();
+    let tex = torseur::latex::answer_key(&m).unwrap();
+    golden("regulateur_centrifuge.tex", &tex);
+}
+
+#[test]
+fn the_answer_key_is_deterministic() {
+    let a = torseur::latex::answer_key(&regulator()).unwrap();
+    let b = torseur::latex::answer_key(&regulator()).unwrap();
+    assert_eq!(a, b);
+}
+
+#[test]
+fn the_key_shows_the_course_notation() {
+    let tex = torseur::latex::answer_key(&regulator()).unwrap();
+    for needle in [
+        "\\overrightarrow{\\delta(O_{2},2/0)}",
+        "\\left\\{\\mathcal{D}(2/0)\\right\\}_{O_{2}}",
+        "\\dot{\\theta}_{1}",
+        "\\ddot{\\theta}_{2}",
+        "\\vec{x}_{2}",
+        "\\mathcal{B}_{2}",
+        "\\mathcal{R}_{0}",
+        "\\cos\\theta_{2}",
+        "L_{1}",
+        "A_{2}",
+        "théorème de Huygens",
+    ] {
+        assert!(tex.contains(needle), "missing {needle}");
+    }
+}
+
+#[test]
+fn spec_text_cannot_inject_latex() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/regulateur_centrifuge.json"
+    ))
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["title"] = "\\input{/etc/passwd} \\write18{rm -rf /} }{".into();
+    v["hypotheses"][0]["text"] = "$\\immediate\\write18{id}$ %".into();
+    let m = torseur::spec::from_str(&v.to_string()).unwrap();
+    let tex = torseur::latex::answer_key(&m).unwrap();
+    assert!(!tex.contains("\\input{"));
+    assert!(!tex.contains("\\write18"));
+    assert!(!tex.contains("\\immediate"));
+    assert!(tex.contains("\\textbackslash{}input\\{/etc/passwd\\}"));
+    // Braces stay balanced.
+    let depth = tex.chars().fold(0i64, |d, c| match c {
+        '{' => d + 1,
+        '}' => d - 1,
+        _ => d,
+    });
+    let escaped = tex.matches("\\{").count() as i64 - tex.matches("\\}").count() as i64;
+    assert_eq!(depth, escaped);
+}
