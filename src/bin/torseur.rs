@@ -231,6 +231,18 @@ fn compile_pdf(tex: &str) -> Result<Vec<u8>, Failure> {
             error: anyhow!("pdflatex failed: {}", tail.join(" | ")),
         });
     }
+    // Report lines that overflow the page by more than 20pt (the key must fit the page).
+    let log = std::fs::read_to_string(dir.path().join("key.log")).unwrap_or_default();
+    for l in log.lines().filter(|l| l.starts_with("Overfull \\hbox (")) {
+        let pt: f64 = l["Overfull \\hbox (".len()..]
+            .split("pt")
+            .next()
+            .and_then(|x| x.parse().ok())
+            .unwrap_or(0.0);
+        if pt > 20.0 {
+            eprintln!("torseur: warning: {l}");
+        }
+    }
     std::fs::read(dir.path().join("key.pdf")).map_err(bad_input)
 }
 

@@ -183,3 +183,97 @@ fn concurrent_runs_wait_for_each_other_and_all_succeed() {
         assert_eq!(o.stdout, outs[0].stdout);
     }
 }
+
+#[test]
+fn answer_key_compiles_to_pdf_without_overfull_lines() {
+    // Needs pdflatex: scripts/setup (the README's first command, and CI) installs it.
+    let d = tmp();
+    let tex = d.path().join("regulateur.tex");
+    let o = run(&[
+        "answer-key",
+        spec().to_str().unwrap(),
+        "-o",
+        tex.to_str().unwrap(),
+        "--pdf",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let pdf = std::fs::read(d.path().join("regulateur.pdf")).unwrap();
+    assert!(pdf.starts_with(b"%PDF"));
+    assert!(!stderr(&o).contains("Overfull"), "{}", stderr(&o));
+    assert!(stdout(&o).is_empty());
+}
+
+#[test]
+fn answer_key_goes_to_stdout_without_output_file() {
+    let o = run(&["answer-key", spec().to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.starts_with("\\documentclass"));
+    assert!(out.trim_end().ends_with("\\end{document}"));
+}
+
+#[test]
+fn verify_answers_equivalent_or_shows_the_difference() {
+    let s = spec();
+    let ok = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "delta(O2,2/0).x2",
+        "--hypothesis",
+        "Q1",
+        "-e",
+        "(A2 + m2*L2^2)*ddot(theta2) + (m2*L1*L2*sin(theta2) + 1/2*(C2 - B2 + m2*L2^2)*sin(2*theta2))*dot(theta1)^2",
+    ]);
+    assert_eq!(ok.status.code(), Some(0), "{}", stderr(&ok));
+    assert!(stdout(&ok).contains("equivalent"));
+    let bad = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "delta(O2,2/0).x2",
+        "--hypothesis",
+        "Q1",
+        "-e",
+        "(A2 + m2*L2^2)*ddot(theta2)",
+    ]);
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(stdout(&bad).contains("NOT equivalent"));
+    assert!(stdout(&bad).contains("dot(theta1)^2"), "{}", stdout(&bad));
+    let vector = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "V(G2,2/0) in B2",
+        "-e",
+        "[-(L1 + L2*cos(theta2))*dot(theta1), 0, L2*dot(theta2)]",
+    ]);
+    assert_eq!(vector.status.code(), Some(0), "{}", stderr(&vector));
+    let malformed = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "V(G2,2/0) in B2",
+        "-e",
+        "[1, 2",
+    ]);
+    assert_eq!(malformed.status.code(), Some(2));
+}
+
+#[test]
+fn check_reports_agreement_with_the_float_backend() {
+    let o = run(&[
+        "check",
+        spec().to_str().unwrap(),
+        "--samples",
+        "5",
+        "--seed",
+        "9",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["passed"], true);
+    assert_eq!(v["seed"], 9);
+    assert_eq!(v["quantities"].as_array().unwrap().len(), 27);
+}
