@@ -2,8 +2,9 @@
 
 use super::expr;
 use super::kin::{State, Values};
-use super::la::{M3, V3, add, column, identity, mat_mul, point_inertia, sub, transpose};
+use super::la::point_inertia;
 use super::{NumericError, NumericModel};
+use nalgebra::{Matrix3, Vector3};
 
 /// Relative tolerance on the symmetry of a matrix and on negative principal second moments.
 const TOL: f64 = 1e-10;
@@ -20,7 +21,7 @@ pub(super) fn solid_cloud(
     st: &State,
     vals: &Values,
     s: usize,
-) -> Result<Vec<(f64, V3<f64>)>, NumericError> {
+) -> Result<Vec<(f64, Vector3<f64>)>, NumericError> {
     let solid = &m.solids[s];
     let not_physical = |message: String| NumericError::NotPhysical {
         solid: solid.name.clone(),
@@ -43,47 +44,35 @@ pub(super) fn solid_cloud(
             vec![(mass, g)]
         });
     };
-    let mut ib = [[0.0; 3]; 3];
-    for (r, (row, nodes)) in ib.iter_mut().zip(&inr.matrix).enumerate() {
-        for (c, (x, node)) in row.iter_mut().zip(nodes).enumerate() {
-            *x = expr::eval_scalar(node, &env).map_err(|e| NumericError::Evaluation {
+    let mut ib = Matrix3::zeros();
+    for (r, nodes) in inr.matrix.iter().enumerate() {
+        for (c, node) in nodes.iter().enumerate() {
+            ib[(r, c)] = expr::eval_scalar(node, &env).map_err(|e| NumericError::Evaluation {
                 what: format!("inertia entry [{r}][{c}] of solid {}", solid.name),
                 message: e,
             })?;
         }
     }
-    let size = ib.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
-    if !size.is_finite() {
+    if !ib.iter().all(|x| x.is_finite()) {
         return Err(not_physical("its inertia matrix is not finite".into()));
     }
+    let size = ib.amax();
     for (r, c) in [(1, 0), (2, 0), (2, 1)] {
-        {
-            if (ib[r][c] - ib[c][r]).abs() > TOL * size {
-                return Err(not_physical(format!(
-                    "its inertia matrix is not symmetric: entry [{r}][{c}] is {} but [{c}][{r}] \
-                     is {}",
-                    ib[r][c], ib[c][r]
-                )));
-            }
+        if (ib[(r, c)] - ib[(c, r)]).abs() > TOL * size {
+            return Err(not_physical(format!(
+                "its inertia matrix is not symmetric: entry [{r}][{c}] is {} but [{c}][{r}] is {}",
+                ib[(r, c)],
+                ib[(c, r)]
+            )));
         }
     }
     // To the solid's basis: with C = R_fᵀ R_b (columns: b's vectors in f), I_f = C I_b Cᵀ.
-    let c = mat_mul(&transpose(&st.rot0(f)), &st.rot0(inr.basis));
-    let i_q = mat_mul(&mat_mul(&c, &ib), &transpose(&c));
+    let c = st.rot0(f).transpose() * st.rot0(inr.basis);
+    let i_q = c * ib * c.transpose();
     // Back from the given point Q to G: I_Q = I_G + m (|QG|² Id − QG QGᵀ).
-    let qg = sub(&g, &st.local0(f, &st.pos0(inr.point)));
-    let shift = point_inertia(&qg);
-    let mut i_g = i_q;
-    for r in 0..3 {
-        for c in 0..3 {
-            i_g[r][c] -= mass * shift[r][c];
-        }
-    }
-    let scale = i_g
-        .iter()
-        .flatten()
-        .chain(i_q.iter().flatten())
-        .fold(0.0f64, |a, x| a.max(x.abs()));
+    let qg = g - st.local0(f, &st.pos0(inr.point));
+    let i_g = i_q - point_inertia(&qg) * mass;
+    let scale = i_g.amax().max(i_q.amax());
     if mass == 0.0 {
         if scale == 0.0 {
             return Ok(Vec::new());
@@ -92,13 +81,8 @@ pub(super) fn solid_cloud(
             "its mass is zero but its inertia is not".into(),
         ));
     }
-    let half_trace = 0.5 * (i_g[0][0] + i_g[1][1] + i_g[2][2]);
-    let mut j = [[0.0; 3]; 3];
-    for (r, row) in j.iter_mut().enumerate() {
-        for (c, x) in row.iter_mut().enumerate() {
-            *x = if r == c { half_trace } else { 0.0 } - i_g[r][c];
-        }
-    }
+    let half_trace = 0.5 * i_g.trace();
+    let j = Matrix3::from_diagonal_element(half_trace) - i_g;
     let (values, axes) = symmetric_eigen(&j);
     let mut cloud = Vec::with_capacity(6);
     for (k, jk) in values.into_iter().enumerate() {
@@ -110,10 +94,9 @@ pub(super) fn solid_cloud(
             )));
         }
         let a = (3.0 * jk.max(0.0) / mass).sqrt();
-        let e = column(&axes, k);
+        let e = axes.column(k);
         for sign in [1.0, -1.0] {
-            let d = [e[0] * a * sign, e[1] * a * sign, e[2] * a * sign];
-            cloud.push((mass / 6.0, add(&g, &d)));
+            cloud.push((mass / 6.0, g + e * (a * sign)));
         }
     }
     Ok(cloud)
@@ -121,51 +104,58 @@ pub(super) fn solid_cloud(
 
 /// Σ mₖ (|d + rₖ|² Id − (d + rₖ)(d + rₖ)ᵀ): inertia about a point from which the cloud's
 /// reference point is at `d`.
-pub(super) fn cloud_inertia(cloud: &[(f64, V3<f64>)], d: &V3<f64>) -> M3<f64> {
-    let mut acc = [[0.0; 3]; 3];
-    for (mk, r) in cloud {
-        let pi = point_inertia(&add(d, r));
-        for i in 0..3 {
-            for j in 0..3 {
-                acc[i][j] += mk * pi[i][j];
-            }
-        }
-    }
-    acc
+pub(super) fn cloud_inertia(cloud: &[(f64, Vector3<f64>)], d: &Vector3<f64>) -> Matrix3<f64> {
+    cloud.iter().fold(Matrix3::zeros(), |acc, (mk, r)| {
+        acc + point_inertia(&(d + r)) * *mk
+    })
 }
 
 /// Eigenvalues and orthonormal eigenvectors (the columns of the matrix) of a symmetric 3×3
 /// matrix, by cyclic Jacobi rotations: J = V diag(λ) Vᵀ.
 ///
 /// Each rotation is applied to the matrix and accumulated into V together, so column k of V
-/// always belongs to the diagonal entry k: no pairing step that could mismatch them. (nalgebra's
-/// `SymmetricEigen` has one: for a 2×2 block whose off-diagonal entry is at its deflation
-/// threshold, about 1e-16 relative, it takes the block's eigenvalues in its own order but skips
-/// the rotation of the eigenvectors, which swaps principal axes of a diagonal matrix carrying
-/// rounding noise.)
-pub(super) fn symmetric_eigen(m: &M3<f64>) -> ([f64; 3], M3<f64>) {
+/// always belongs to the diagonal entry k: no pairing step that could mismatch them.
+///
+/// Not nalgebra's `SymmetricEigen`: in nalgebra 0.33.3 it can return eigenvalues and
+/// eigenvectors in different orders, so that V diag(λ) Vᵀ is not the matrix (the same symptom
+/// as dimforge/nalgebra#1109, open, a 4×4 matrix there). It happened here on the second
+/// moments J = (tr I_G / 2) Id − I_G of a diagonal I_G carrying rounding noise,
+///
+/// ```text
+/// [ 0.034243175583978325   0                    −4.35610802358069e-17 ]
+/// [ 0                      0.2958498651360119    0                    ]
+/// [ −4.35610802358069e-17  0                     0.1587837530153427   ]
+/// ```
+///
+/// for which it pairs x with 0.1588 and z with 0.0342 (V diag(λ) Vᵀ off by 0.12): the cloud
+/// then had the wrong inertia and δ(O2, 2/0)·x2 of the regulator came out wrong
+/// (test `regulator_delta_o2_x2_diagonal_inertia_regression`). The cause is its 2×2 step:
+/// for a block whose off-diagonal entry sits at the deflation threshold (about 1e-16
+/// relative), it takes the block's eigenvalues in their own order but skips the rotation of
+/// the eigenvectors when the Givens rotation's norm is below that threshold.
+pub(super) fn symmetric_eigen(m: &Matrix3<f64>) -> ([f64; 3], Matrix3<f64>) {
     /// Far more sweeps than convergence needs (quadratic: a handful from any start).
     const MAX_SWEEPS: usize = 64;
-    let mut a = *m;
     // Exactly symmetric from the start: the mean of the two triangles.
+    let mut a = *m;
     for (p, q) in [(0, 1), (0, 2), (1, 2)] {
-        let x = 0.5 * (a[p][q] + a[q][p]);
-        a[p][q] = x;
-        a[q][p] = x;
+        let x = 0.5 * (a[(p, q)] + a[(q, p)]);
+        a[(p, q)] = x;
+        a[(q, p)] = x;
     }
-    let mut v = identity::<f64>();
+    let mut v = Matrix3::identity();
     for _ in 0..MAX_SWEEPS {
-        if a[0][1] == 0.0 && a[0][2] == 0.0 && a[1][2] == 0.0 {
+        if a[(0, 1)] == 0.0 && a[(0, 2)] == 0.0 && a[(1, 2)] == 0.0 {
             break;
         }
         for (p, q) in [(0, 1), (0, 2), (1, 2)] {
-            let apq = a[p][q];
+            let apq = a[(p, q)];
             if apq == 0.0 {
                 continue;
             }
             // The rotation R (R_pp = R_qq = c, R_pq = s, R_qp = −s) with Rᵀ A R zero at (p, q):
             // t = tan φ is the smaller root of t² + 2θ t − 1 = 0, θ = (a_qq − a_pp) / 2a_pq.
-            let theta = (a[q][q] - a[p][p]) / (2.0 * apq);
+            let theta = (a[(q, q)] - a[(p, p)]) / (2.0 * apq);
             let t = if theta.is_finite() {
                 1.0f64.copysign(theta) / (theta.abs() + theta.hypot(1.0))
             } else {
@@ -174,21 +164,20 @@ pub(super) fn symmetric_eigen(m: &M3<f64>) -> ([f64; 3], M3<f64>) {
             let c = 1.0 / t.hypot(1.0);
             let s = t * c;
             let r = 3 - p - q;
-            let (app, aqq, arp, arq) = (a[p][p], a[q][q], a[r][p], a[r][q]);
-            a[p][p] = app - t * apq;
-            a[q][q] = aqq + t * apq;
-            a[p][q] = 0.0;
-            a[q][p] = 0.0;
-            a[r][p] = c * arp - s * arq;
-            a[p][r] = a[r][p];
-            a[r][q] = s * arp + c * arq;
-            a[q][r] = a[r][q];
-            for row in v.iter_mut() {
-                let (vp, vq) = (row[p], row[q]);
-                row[p] = c * vp - s * vq;
-                row[q] = s * vp + c * vq;
-            }
+            let (app, aqq, arp, arq) = (a[(p, p)], a[(q, q)], a[(r, p)], a[(r, q)]);
+            a[(p, p)] = app - t * apq;
+            a[(q, q)] = aqq + t * apq;
+            a[(p, q)] = 0.0;
+            a[(q, p)] = 0.0;
+            a[(r, p)] = c * arp - s * arq;
+            a[(p, r)] = a[(r, p)];
+            a[(r, q)] = s * arp + c * arq;
+            a[(q, r)] = a[(r, q)];
+            // V ← V R: columns p and q turn together.
+            let (vp, vq) = (v.column(p).into_owned(), v.column(q).into_owned());
+            v.set_column(p, &(vp * c - vq * s));
+            v.set_column(q, &(vp * s + vq * c));
         }
     }
-    ([a[0][0], a[1][1], a[2][2]], v)
+    ([a[(0, 0)], a[(1, 1)], a[(2, 2)]], v)
 }

@@ -8,15 +8,23 @@
 //! term    := unary (('*' | '/') unary)*
 //! unary   := ('-' | '+') unary | power
 //! power   := primary ('^' integer | '^' '(' integer ')')?      integer: optional sign, digits
-//! primary := number | name | sin(expr) | cos(expr) | dot(coord) | ddot(coord) | '(' expr ')'
+//! primary := number | pi | name | sin(expr) | cos(expr) | dot(coord) | ddot(coord)
+//!          | '(' expr ')'
 //! ```
 //!
-//! A name is a parameter, a time coordinate or, where vectors are allowed, a basis vector
-//! (`x1`, `y0`, `z2`) that multiplies scalars.
+//! `pi` is π, as on the symbolic side (`cos(theta2 + pi/2)`). Any other name is a parameter,
+//! a time coordinate or, where vectors are allowed, a basis vector (`x1`, `y0`, `z2`) that
+//! multiplies scalars.
 
+use nalgebra::{Matrix3, Vector3};
 use num_dual::DualNum;
 
-/// Numbers the evaluator runs on: `f64` or a dual number over `f64`.
+/// The name of the constant π in the syntax: reserved, so no parameter or coordinate has it.
+pub(crate) const PI_NAME: &str = "pi";
+
+/// Numbers the evaluator runs on: `f64` or a dual number over `f64`. Both are nalgebra
+/// scalars (`DualNum` brings `Clone + PartialEq + Debug + 'static` and the closed arithmetic),
+/// so `Vector3<T>` and `Matrix3<T>` have their whole algebra.
 pub(crate) trait Num: DualNum<f64> + Copy {}
 impl<T: DualNum<f64> + Copy> Num for T {}
 
@@ -288,6 +296,9 @@ impl Parser<'_> {
             if self.peek() == Some(b'(') {
                 return self.call(&name);
             }
+            if name == PI_NAME {
+                return Ok(Node::Num(std::f64::consts::PI));
+            }
             return Ok(match (self.resolve)(&name)? {
                 Name::Param(i) => Node::Param(i),
                 Name::Coord(i) => Node::Coord(i),
@@ -409,7 +420,7 @@ pub(crate) fn params_in(node: &Node, out: &mut std::collections::BTreeSet<usize>
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Val<T> {
     S(T),
-    V([T; 3]),
+    V(Vector3<T>),
 }
 
 /// What names evaluate to.
@@ -421,7 +432,7 @@ pub(crate) struct Env<'a, T> {
     /// [q̇, q̈] of each coordinate.
     pub rates: &'a [[T; 2]],
     /// Orientation of each frame: column k is its k-th basis vector in ground components.
-    pub frames: &'a [[[T; 3]; 3]],
+    pub frames: &'a [Matrix3<T>],
 }
 
 /// Evaluates a node that passed [`kind`].
@@ -437,33 +448,25 @@ pub(crate) fn eval<T: Num>(node: &Node, env: &Env<T>) -> Result<Val<T>, String> 
         }
         Node::Basis(f, a) => {
             let m = env.frames.get(*f).ok_or_else(missing)?;
-            Val::V([m[0][*a], m[1][*a], m[2][*a]])
+            Val::V(m.column(*a).into_owned())
         }
         Node::Neg(a) => match eval(a, env)? {
             Val::S(x) => Val::S(-x),
-            Val::V(v) => Val::V([-v[0], -v[1], -v[2]]),
+            Val::V(v) => Val::V(-v),
         },
         Node::Add(a, b) | Node::Sub(a, b) => {
-            let sign = if matches!(node, Node::Sub(..)) {
-                -1.0
-            } else {
-                1.0
-            };
+            let sub = matches!(node, Node::Sub(..));
             match (eval(a, env)?, eval(b, env)?) {
-                (Val::S(x), Val::S(y)) => Val::S(x + y * sign),
-                (Val::V(u), Val::V(v)) => {
-                    Val::V([u[0] + v[0] * sign, u[1] + v[1] * sign, u[2] + v[2] * sign])
-                }
+                (Val::S(x), Val::S(y)) => Val::S(if sub { x - y } else { x + y }),
+                (Val::V(u), Val::V(v)) => Val::V(if sub { u - v } else { u + v }),
                 // The scalar is the literal zero (checked by `kind`).
                 (Val::V(u), Val::S(_)) => Val::V(u),
-                (Val::S(_), Val::V(v)) => Val::V([v[0] * sign, v[1] * sign, v[2] * sign]),
+                (Val::S(_), Val::V(v)) => Val::V(if sub { -v } else { v }),
             }
         }
         Node::Mul(a, b) => match (eval(a, env)?, eval(b, env)?) {
             (Val::S(x), Val::S(y)) => Val::S(x * y),
-            (Val::S(x), Val::V(v)) | (Val::V(v), Val::S(x)) => {
-                Val::V([v[0] * x, v[1] * x, v[2] * x])
-            }
+            (Val::S(x), Val::V(v)) | (Val::V(v), Val::S(x)) => Val::V(v * x),
             (Val::V(_), Val::V(_)) => return Err("a term holds two basis vectors".into()),
         },
         Node::Div(a, b) => {
@@ -476,7 +479,7 @@ pub(crate) fn eval<T: Num>(node: &Node, env: &Env<T>) -> Result<Val<T>, String> 
             }
             match eval(a, env)? {
                 Val::S(x) => Val::S(x / d),
-                Val::V(v) => Val::V([v[0] / d, v[1] / d, v[2] / d]),
+                Val::V(v) => Val::V(v / d),
             }
         }
         Node::Pow(a, n) => match eval(a, env)? {
@@ -508,10 +511,10 @@ pub(crate) fn eval_scalar<T: Num>(node: &Node, env: &Env<T>) -> Result<T, String
 }
 
 /// Evaluates a vector node (the literal zero gives the zero vector).
-pub(crate) fn eval_vector<T: Num>(node: &Node, env: &Env<T>) -> Result<[T; 3], String> {
+pub(crate) fn eval_vector<T: Num>(node: &Node, env: &Env<T>) -> Result<Vector3<T>, String> {
     match eval(node, env)? {
         Val::V(v) => Ok(v),
-        Val::S(x) if x.re() == 0.0 => Ok([T::from(0.0); 3]),
+        Val::S(x) if x.re() == 0.0 => Ok(Vector3::zeros()),
         Val::S(_) => Err("a scalar where a vector was expected".into()),
     }
 }

@@ -1,13 +1,11 @@
 //! Motion through the frame chain with dual numbers, and the quantities as the course defines them.
 
 use super::expr::{self, Env, Node};
-use super::la::{
-    M3, V3, add, column, cross, dot, identity, mat_mul, mat_parts, mat_vec, parts, point_inertia,
-    scale, sub, transpose, zero,
-};
+use super::la::{mat_parts, parts, point_inertia, rows};
 use super::model::{Context, Names};
 use super::{NumValue, NumericError, NumericModel, Sample, cloud};
 use crate::quantity::{Motion, Quantity, QuantityKind};
+use nalgebra::{Matrix3, Vector3};
 use num_dual::{Dual2_64, DualNum};
 
 type D2 = Dual2_64;
@@ -94,61 +92,56 @@ pub(super) fn values(m: &NumericModel, s: &Sample) -> Result<Values, NumericErro
 /// Every frame's orientation and every point's position at t → 0, as dual numbers in t.
 pub(super) struct State {
     /// Per frame: column k is its k-th basis vector in ground components.
-    pub rot: Vec<M3<D2>>,
+    pub rot: Vec<Matrix3<D2>>,
     /// Per point: position from the ground origin, ground components.
-    pub pos: Vec<V3<D2>>,
+    pub pos: Vec<Vector3<D2>>,
     /// Per frame: index of its origin point.
     origin: Vec<usize>,
 }
 
-fn re(v: &V3<D2>) -> V3<f64> {
-    [v[0].re, v[1].re, v[2].re]
-}
-
-fn constant(v: &V3<f64>) -> V3<D2> {
-    [D2::from(v[0]), D2::from(v[1]), D2::from(v[2])]
-}
-
 impl State {
     /// Orientation of frame `f` at t = 0.
-    pub fn rot0(&self, f: usize) -> M3<f64> {
-        mat_parts(&self.rot[f])[0]
+    pub fn rot0(&self, f: usize) -> Matrix3<f64> {
+        self.rot[f].map(|x| x.re)
     }
 
     /// Position of point `p` at t = 0.
-    pub fn pos0(&self, p: usize) -> V3<f64> {
-        re(&self.pos[p])
+    pub fn pos0(&self, p: usize) -> Vector3<f64> {
+        self.pos[p].map(|x| x.re)
     }
 
     /// Origin of frame `f` as a function of t.
-    pub fn origin(&self, f: usize) -> V3<D2> {
+    pub fn origin(&self, f: usize) -> Vector3<D2> {
         self.pos[self.origin[f]]
     }
 
     /// Components in frame `f`'s basis, from its origin, of the ground-component point `p`
     /// at t = 0.
-    pub fn local0(&self, f: usize, p: &V3<f64>) -> V3<f64> {
-        mat_vec(&transpose(&self.rot0(f)), &sub(p, &re(&self.origin(f))))
+    pub fn local0(&self, f: usize, p: &Vector3<f64>) -> Vector3<f64> {
+        self.rot0(f).transpose() * (p - self.origin(f).map(|x| x.re))
     }
 
     /// Path of the material point of frame `i` with local coordinates `u`, seen from frame
     /// `j`: components in j's basis from j's origin, r(t) = R_jᵀ (O_i + R_i u − O_j).
-    pub fn track(&self, i: usize, u: &V3<f64>, j: usize) -> V3<D2> {
-        let p = add(&self.origin(i), &mat_vec(&self.rot[i], &constant(u)));
-        mat_vec(&transpose(&self.rot[j]), &sub(&p, &self.origin(j)))
+    pub fn track(&self, i: usize, u: &Vector3<f64>, j: usize) -> Vector3<D2> {
+        let p = self.origin(i) + self.rot[i] * u.map(D2::from);
+        self.rot[j].transpose() * (p - self.origin(j))
     }
 }
 
 /// Rotation matrix of an elementary rotation about `axis` of the parent by `a`: its columns are
 /// the new basis vectors in the parent's components.
-fn elementary(axis: usize, a: D2) -> M3<D2> {
+///
+/// Written out rather than `Rotation3::from_axis_angle`, which returns the identity when
+/// `a == 0`: a dual number compares by its real part, so q = 0 would drop q̇ and q̈.
+fn elementary(axis: usize, a: D2) -> Matrix3<D2> {
     let (s, c) = (a.sin(), a.cos());
-    let mut m = identity::<D2>();
+    let mut m = Matrix3::identity();
     let (b, d) = ((axis + 1) % 3, (axis + 2) % 3);
-    m[b][b] = c;
-    m[d][b] = s;
-    m[b][d] = -s;
-    m[d][d] = c;
+    m[(b, b)] = c;
+    m[(d, b)] = s;
+    m[(b, d)] = -s;
+    m[(d, d)] = c;
     m
 }
 
@@ -160,7 +153,7 @@ pub(super) fn state(m: &NumericModel, v: &Values) -> Result<State, NumericError>
         .iter()
         .map(|c| [D2::from(c[1]), D2::from(c[2])])
         .collect();
-    let mut rot = vec![identity::<D2>(); m.frames.len()];
+    let mut rot = vec![Matrix3::<D2>::identity(); m.frames.len()];
     for (k, f) in m.frames.iter().enumerate().skip(1) {
         let parent = rot[f.parent];
         rot[k] = match &f.rotation {
@@ -176,7 +169,7 @@ pub(super) fn state(m: &NumericModel, v: &Values) -> Result<State, NumericError>
                     what: format!("rotation angle of frame {}", f.name),
                     message: e,
                 })?;
-                mat_mul(&parent, &elementary(*axis, a * *sign))
+                parent * elementary(*axis, a * *sign)
             }
         };
     }
@@ -186,13 +179,13 @@ pub(super) fn state(m: &NumericModel, v: &Values) -> Result<State, NumericError>
         rates: &rates,
         frames: &rot,
     };
-    let mut pos = vec![[zero::<D2>(); 3]; m.points.len()];
+    let mut pos = vec![Vector3::<D2>::zeros(); m.points.len()];
     for (k, p) in m.points.iter().enumerate().skip(1) {
         let d = expr::eval_vector(&p.position, &env).map_err(|e| NumericError::Evaluation {
             what: format!("position of point {}", p.name),
             message: e,
         })?;
-        pos[k] = add(&pos[p.from], &d);
+        pos[k] = pos[p.from] + d;
     }
     Ok(State {
         rot,
@@ -259,25 +252,24 @@ impl NumericModel {
 
 /// Ω(i/j) in ground components, from its definition: with R = R_jᵀ R_i the orientation of i
 /// in j, dR/dt Rᵀ is the skew matrix of Ω(i/j) in j's basis.
-fn omega(st: &State, i: usize, j: usize) -> V3<f64> {
-    let r = mat_mul(&transpose(&st.rot[j]), &st.rot[i]);
-    let [r0, dr] = mat_parts(&r);
-    let w = mat_mul(&dr, &transpose(&r0));
-    let in_j = [
-        0.5 * (w[2][1] - w[1][2]),
-        0.5 * (w[0][2] - w[2][0]),
-        0.5 * (w[1][0] - w[0][1]),
-    ];
-    mat_vec(&st.rot0(j), &in_j)
+fn omega(st: &State, i: usize, j: usize) -> Vector3<f64> {
+    let [r0, dr] = mat_parts(&(st.rot[j].transpose() * st.rot[i]));
+    let w = dr * r0.transpose();
+    let in_j = Vector3::new(
+        0.5 * (w[(2, 1)] - w[(1, 2)]),
+        0.5 * (w[(0, 2)] - w[(2, 0)]),
+        0.5 * (w[(1, 0)] - w[(0, 1)]),
+    );
+    st.rot0(j) * in_j
 }
 
 /// V(P, i/j) and Γ(P, i/j) in ground components: the point of i that coincides with P at
 /// t = 0, moved with i and differentiated in j.
-fn point_motion(st: &State, p: usize, i: usize, j: usize) -> [V3<f64>; 2] {
+fn point_motion(st: &State, p: usize, i: usize, j: usize) -> [Vector3<f64>; 2] {
     let u = st.local0(i, &st.pos0(p));
     let [_, v, g] = parts(&st.track(i, &u, j));
     let rj = st.rot0(j);
-    [mat_vec(&rj, &v), mat_vec(&rj, &g)]
+    [rj * v, rj * g]
 }
 
 /// Σ mₖ V, Σ mₖ APₖ ∧ V, Σ mₖ Γ, Σ mₖ APₖ ∧ Γ over the clouds of `solids`, motion relative
@@ -289,22 +281,22 @@ fn kinetic(
     solids: &[usize],
     j: usize,
     a: usize,
-) -> Result<[V3<f64>; 4], NumericError> {
+) -> Result<[Vector3<f64>; 4], NumericError> {
     let a_j = st.local0(j, &st.pos0(a));
-    let mut acc = [[0.0; 3]; 4];
+    let mut acc = [Vector3::zeros(); 4];
     for s in solids {
         let f = m.solids[*s].frame;
         for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
             let [r, v, g] = parts(&st.track(f, &u, j));
-            let ap = sub(&r, &a_j);
-            acc[0] = add(&acc[0], &scale(&v, mk));
-            acc[1] = add(&acc[1], &scale(&cross(&ap, &v), mk));
-            acc[2] = add(&acc[2], &scale(&g, mk));
-            acc[3] = add(&acc[3], &scale(&cross(&ap, &g), mk));
+            let ap = r - a_j;
+            acc[0] += v * mk;
+            acc[1] += ap.cross(&v) * mk;
+            acc[2] += g * mk;
+            acc[3] += ap.cross(&g) * mk;
         }
     }
     let rj = st.rot0(j);
-    Ok(acc.map(|x| mat_vec(&rj, &x)))
+    Ok(acc.map(|x| rj * x))
 }
 
 /// I(P, S) = Σ mₖ (|PPₖ|² Id − PPₖ PPₖᵀ), ground components.
@@ -314,29 +306,23 @@ fn inertia(
     vals: &Values,
     solids: &[usize],
     p: usize,
-) -> Result<M3<f64>, NumericError> {
+) -> Result<Matrix3<f64>, NumericError> {
     let p0 = st.pos0(p);
-    let mut acc = [[0.0; 3]; 3];
+    let mut acc = Matrix3::zeros();
     for s in solids {
         let f = m.solids[*s].frame;
-        let (rf, of) = (st.rot0(f), re(&st.origin(f)));
+        let (rf, of) = (st.rot0(f), st.origin(f).map(|x| x.re));
         for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
-            let d = sub(&add(&of, &mat_vec(&rf, &u)), &p0);
-            let pi = point_inertia(&d);
-            for r in 0..3 {
-                for c in 0..3 {
-                    acc[r][c] += mk * pi[r][c];
-                }
-            }
+            acc += point_inertia(&(of + rf * u - p0)) * mk;
         }
     }
     Ok(acc)
 }
 
 enum Raw {
-    Vector(V3<f64>),
-    Matrix(M3<f64>),
-    Torsor(String, V3<f64>, V3<f64>),
+    Vector(Vector3<f64>),
+    Matrix(Matrix3<f64>),
+    Torsor(String, Vector3<f64>, Vector3<f64>),
 }
 
 pub(super) fn evaluate(
@@ -354,7 +340,7 @@ pub(super) fn evaluate(
             m.body_frame(&mo.reference, q)?,
         ))
     };
-    let kin = |mo: &Motion, a: usize| -> Result<[V3<f64>; 4], NumericError> {
+    let kin = |mo: &Motion, a: usize| -> Result<[Vector3<f64>; 4], NumericError> {
         let solids = m.solids_of(&mo.moving)?;
         let j = m.body_frame(&mo.reference, q)?;
         kinetic(m, &st, &vals, &solids, j, a)
@@ -404,10 +390,10 @@ pub(super) fn evaluate(
     let rb = if q.projection.is_none() {
         st.rot0(m.frame(basis_name)?)
     } else {
-        identity::<f64>()
+        Matrix3::identity()
     };
-    let rbt = transpose(&rb);
-    let finite = |v: &V3<f64>| v.iter().all(|x| x.is_finite());
+    let rbt = rb.transpose();
+    let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
     match (raw, &q.projection) {
         (Raw::Vector(v), Some((frame, axis))) => {
             let k = match axis {
@@ -421,15 +407,14 @@ pub(super) fn evaluate(
                     });
                 }
             };
-            let e = column(&st.rot0(m.frame(frame)?), k);
-            let x = dot(&v, &e);
+            let x = v.dot(&st.rot0(m.frame(frame)?).column(k));
             if !x.is_finite() {
                 return Err(not_finite());
             }
             Ok(NumValue::Scalar(x))
         }
         (Raw::Vector(v), None) => {
-            let value = mat_vec(&rbt, &v);
+            let value: [f64; 3] = (rbt * v).into();
             if !finite(&value) {
                 return Err(not_finite());
             }
@@ -439,8 +424,8 @@ pub(super) fn evaluate(
             })
         }
         (Raw::Matrix(mat), None) => {
-            let value = mat_mul(&mat_mul(&rbt, &mat), &rb);
-            if !value.iter().all(finite) {
+            let value = rows(&(rbt * mat * rb));
+            if !finite(value.as_flattened()) {
                 return Err(not_finite());
             }
             Ok(NumValue::Matrix {
@@ -449,7 +434,7 @@ pub(super) fn evaluate(
             })
         }
         (Raw::Torsor(point, r, mo), None) => {
-            let (resultant, moment) = (mat_vec(&rbt, &r), mat_vec(&rbt, &mo));
+            let (resultant, moment): ([f64; 3], [f64; 3]) = ((rbt * r).into(), (rbt * mo).into());
             if !finite(&resultant) || !finite(&moment) {
                 return Err(not_finite());
             }

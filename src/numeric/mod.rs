@@ -4,7 +4,8 @@
 //! `torsor`, symbolica): the spec's expressions are parsed again by a hand-written parser,
 //! frames are rotation matrices, and every time derivative is exact through second-order dual
 //! numbers in t — each coordinate is q(t) = q + q̇ t + q̈ t²/2 around t = 0, so a position's
-//! dual parts are its velocity and acceleration, never a finite difference.
+//! dual parts are its velocity and acceleration, never a finite difference. Vectors and
+//! matrices are nalgebra's `Vector3` and `Matrix3`, over `f64` and over num-dual's `Dual2_64`.
 //!
 //! Each solid is realised as a cloud of point masses with the solid's mass, centre of inertia
 //! and inertia operator at G, and the kinetic and dynamic elements are the course's sums:
@@ -345,7 +346,7 @@ impl NumericModel {
     }
 
     /// Evaluates a scalar expression of the spec's syntax (parameters, coordinates, `dot(q)`,
-    /// `ddot(q)`, `sin`, `cos`) at the sample's instant.
+    /// `ddot(q)`, `sin`, `cos`, `pi`) at the sample's instant.
     ///
     /// ```
     /// use torseur::numeric::{NumericModel, Sample};

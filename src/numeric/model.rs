@@ -148,6 +148,21 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         spec.coordinates.iter().map(|c| c.name.as_str()),
         &mut coord_index,
     )?;
+    // `pi` is π in every expression, so it cannot name a parameter or a coordinate.
+    for (path, what, i) in [
+        ("parameters", "parameter", param_index.get(expr::PI_NAME)),
+        ("coordinates", "coordinate", coord_index.get(expr::PI_NAME)),
+    ] {
+        if let Some(i) = i {
+            return Err(spec_err(
+                format!("{path}[{i}].name"),
+                format!(
+                    "{what} name `{}`: the name is reserved for π",
+                    expr::PI_NAME
+                ),
+            ));
+        }
+    }
     for (i, c) in spec.coordinates.iter().enumerate() {
         if param_index.contains_key(&c.name) {
             return Err(spec_err(

@@ -3,9 +3,9 @@
 use super::cloud::{cloud_inertia, solid_cloud};
 use super::expr::{self, Node};
 use super::kin::{Values, state};
-use super::la::{V3, mat_vec, sub, transpose};
 use super::{NumericError, NumericModel, Sample};
 use crate::spec::wire::CoordinateKind;
+use nalgebra::{Matrix3, Vector3};
 use rand::Rng;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -64,7 +64,7 @@ fn cost(op: Op) -> u32 {
 }
 
 /// Applies the operations of `mask` (bits over [`OPS`]): flattenings, then mirrors, then turns.
-fn symmetrize(base: &[(f64, V3<f64>)], mask: usize) -> Vec<(f64, V3<f64>)> {
+fn symmetrize(base: &[(f64, Vector3<f64>)], mask: usize) -> Vec<(f64, Vector3<f64>)> {
     let mut cloud = base.to_vec();
     let chosen: Vec<Op> = (0..OPS.len())
         .filter(|k| mask & (1 << k) != 0)
@@ -118,17 +118,17 @@ fn symmetrize(base: &[(f64, V3<f64>)], mask: usize) -> Vec<(f64, V3<f64>)> {
 }
 
 /// Random point masses of total `mass`, centroid at the origin.
-fn random_cloud(rng: &mut impl Rng, mass: f64) -> Vec<(f64, V3<f64>)> {
+fn random_cloud(rng: &mut impl Rng, mass: f64) -> Vec<(f64, Vector3<f64>)> {
     let size: f64 = rng.random_range(0.3..=1.0);
-    let mut pts: Vec<(f64, V3<f64>)> = (0..CLOUD_POINTS)
+    let mut pts: Vec<(f64, Vector3<f64>)> = (0..CLOUD_POINTS)
         .map(|_| {
             let w: f64 = rng.random_range(0.2..=1.0);
-            let r = [0, 1, 2].map(|_| size * rng.random_range(-1.0..=1.0));
+            let r = Vector3::from_fn(|_, _| size * rng.random_range(-1.0..=1.0));
             (w, r)
         })
         .collect();
     let total: f64 = pts.iter().map(|p| p.0).sum();
-    let mut centroid = [0.0; 3];
+    let mut centroid = Vector3::zeros();
     for (w, r) in &pts {
         for k in 0..3 {
             centroid[k] += w * r[k] / total;
@@ -136,27 +136,27 @@ fn random_cloud(rng: &mut impl Rng, mass: f64) -> Vec<(f64, V3<f64>)> {
     }
     for p in &mut pts {
         p.0 *= mass / total;
-        p.1 = sub(&p.1, &centroid);
+        p.1 -= centroid;
     }
     pts
 }
 
 /// Matches a cloud's matrix against the written entries: parameter values, or `None` when a
 /// number or a repeated parameter does not fit.
-fn fit(pattern: &[[Entry; 3]; 3], mat: &[[f64; 3]; 3]) -> Option<BTreeMap<usize, f64>> {
-    let size = mat.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
+fn fit(pattern: &[[Entry; 3]; 3], mat: &Matrix3<f64>) -> Option<BTreeMap<usize, f64>> {
+    let size = mat.amax();
     let tol = 1e-9 * size.max(f64::MIN_POSITIVE);
     let mut out: BTreeMap<usize, f64> = BTreeMap::new();
     for r in 0..3 {
         for c in 0..3 {
             match pattern[r][c] {
                 Entry::Number(x) => {
-                    if (mat[r][c] - x).abs() > tol {
+                    if (mat[(r, c)] - x).abs() > tol {
                         return None;
                     }
                 }
                 Entry::Param(p, sign) => {
-                    let v = sign * mat[r][c];
+                    let v = sign * mat[(r, c)];
                     if let Some(old) = out.get(&p) {
                         if (old - v).abs() > tol {
                             return None;
@@ -327,11 +327,7 @@ pub(super) fn draw(
             }
         }
         // QG in the inertia basis.
-        let rb = st.rot0(inr.basis);
-        let qg = mat_vec(
-            &transpose(&rb),
-            &sub(&st.pos0(solid.centre), &st.pos0(inr.point)),
-        );
+        let qg = st.rot0(inr.basis).transpose() * (st.pos0(solid.centre) - st.pos0(inr.point));
         let base = random_cloud(rng, mass);
         let mut masks: Vec<usize> = (0..1usize << OPS.len())
             .filter(|mk| mk & forced == forced)

@@ -1,9 +1,10 @@
 //! Tests of the float backend against results derived by hand from the course's definitions.
 
 use super::kin::{state, values};
-use super::{NumValue, NumericError, NumericModel, Sample, cloud};
+use super::{NumValue, NumericError, NumericModel, Sample, cloud, la};
 use crate::quantity::Quantity;
 use crate::spec::wire::SpecFile;
+use nalgebra::{Matrix3, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -71,28 +72,26 @@ fn close(a: &[f64], b: &[f64], tol: f64) {
     }
 }
 
+// The hand formulas work on the arrays of `NumValue`, with nalgebra's algebra.
+
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
+    Vector3::from(a).cross(&Vector3::from(b)).into()
 }
 
 fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+    (Vector3::from(a) + Vector3::from(b)).into()
 }
 
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+    (Vector3::from(a) - Vector3::from(b)).into()
 }
 
 fn times(k: f64, a: [f64; 3]) -> [f64; 3] {
-    [k * a[0], k * a[1], k * a[2]]
+    (Vector3::from(a) * k).into()
 }
 
 fn mat_vec(m: [[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
-    [0, 1, 2].map(|i| m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2])
+    (Matrix3::from_fn(|r, c| m[r][c]) * Vector3::from(v)).into()
 }
 
 const TOL: f64 = 1e-12;
@@ -542,7 +541,7 @@ fn regulator_satisfies_the_course_relations() {
 fn v_pos(m: &NumericModel, s: &Sample, point: &str) -> [f64; 3] {
     let vals = values(m, s).expect("values");
     let st = state(m, &vals).expect("state");
-    st.pos0(m.point_index[point])
+    st.pos0(m.point_index[point]).into()
 }
 
 #[test]
@@ -583,14 +582,11 @@ fn cloud_reproduces_mass_centre_and_inertia() {
             assert!((total - s.parameters[mass]).abs() < TOL * s.parameters[mass]);
             let frame = m.solids[solid].frame;
             let g_local = st.local0(frame, &st.pos0(m.point_index[g]));
-            let mut centre = [0.0; 3];
-            for (mk, u) in &pts {
-                centre = add(centre, times(mk / total, *u));
-            }
-            close(&centre, &g_local, TOL);
-            let rel: Vec<(f64, [f64; 3])> =
-                pts.iter().map(|(mk, u)| (*mk, sub(*u, g_local))).collect();
-            let i = cloud::cloud_inertia(&rel, &[0.0; 3]);
+            let centre: Vector3<f64> = pts.iter().map(|(mk, u)| u * (mk / total)).sum();
+            close(centre.as_slice(), g_local.as_slice(), TOL);
+            let rel: Vec<(f64, Vector3<f64>)> =
+                pts.iter().map(|(mk, u)| (*mk, u - g_local)).collect();
+            let i = la::rows(&cloud::cloud_inertia(&rel, &Vector3::zeros()));
             let p = |k: usize| s.parameters[names[k]];
             let expected = [
                 [p(0), -p(5), -p(4)],
@@ -812,12 +808,76 @@ fn expression_syntax() {
     assert_eq!(ok("dot(q)^2 + ddot(q)"), 3.0);
     assert!((ok("sin(q)^2 + cos(q)^2") - 1.0).abs() < 1e-15);
     assert_eq!(ok("cos(2*q)"), (0.6f64).cos());
+    // `pi` is π, as on the symbolic side.
+    assert_eq!(ok("pi"), std::f64::consts::PI);
+    assert_eq!(ok("x*pi/2"), 1.5 * std::f64::consts::PI);
+    assert!((ok("cos(q + pi/2)") + (0.3f64).sin()).abs() < 1e-15);
+    assert!((ok("sin(pi - q)") - (0.3f64).sin()).abs() < 1e-15);
     for bad in [
         "2x", "x^y", "x^2^2", "sin x", "tan(q)", "(x", "x)", "x +", "", "y", "dot(x)", "x;", "x1",
-        "1/0",
+        "1/0", "pi(q)", "2pi", "dot(pi)",
     ] {
         assert!(ev(bad).is_err(), "`{bad}` must be refused");
     }
+}
+
+/// `pi` in a rotation angle and in a position: frame 1 is turned by θ + π/2 about z0, so
+/// P = L x1 = L (−sin θ x0 + cos θ y0) and its velocity and acceleration follow; the dual parts
+/// go through the constant.
+#[test]
+fn pi_in_angles_and_positions() {
+    let m = model(
+        r#"{"title": "t", "parameters": [{"name": "L", "unit": "m"}],
+            "coordinates": [{"name": "theta2", "kind": "angle"}],
+            "frames": [{"name": "1", "parent": "0",
+                        "rotation": {"axis": "z", "angle": "theta2 + pi/2"}}],
+            "points": [{"name": "P", "position": "L*x1"},
+                       {"name": "Q", "position": "L*cos(theta2 + pi/2)*x0"}]}"#,
+    );
+    let (l, q, w, a) = (1.3, 0.7, -0.9, 0.4);
+    let s = sample(&[("L", l)], &[("theta2", [q, w, a])]);
+    let (c, sn) = (q.cos(), q.sin());
+    close(&v_pos(&m, &s, "P"), &[-l * sn, l * c, 0.0], TOL);
+    close(&v_pos(&m, &s, "Q"), &[-l * sn, 0.0, 0.0], TOL);
+    close(
+        &vector(&m, "V(P,1/0)", &s),
+        &[-l * w * c, -l * w * sn, 0.0],
+        TOL,
+    );
+    close(
+        &vector(&m, "Gamma(P,1/0)", &s),
+        &[
+            -l * a * c + l * w * w * sn,
+            -l * a * sn - l * w * w * c,
+            0.0,
+        ],
+        TOL,
+    );
+    close(&vector(&m, "Omega(1/0)", &s), &[0.0, 0.0, w], TOL);
+    // `pi` is reserved: no parameter or coordinate takes the name.
+    let e = spec_error(r#"{"title": "t", "parameters": [{"name": "L"}, {"name": "pi"}]}"#);
+    assert_eq!(
+        e.to_string(),
+        "spec, at parameters[1].name: parameter name `pi`: the name is reserved for π"
+    );
+    let e = spec_error(r#"{"title": "t", "coordinates": [{"name": "pi", "kind": "angle"}]}"#);
+    assert!(e.to_string().contains("coordinates[0].name"), "{e}");
+}
+
+/// A joint at exactly q = 0 keeps its rates: the dual angle's real part is zero but not its
+/// derivatives (nalgebra's `Rotation3::from_axis_angle` would return the identity there).
+#[test]
+fn a_joint_at_exactly_zero_keeps_its_rates() {
+    let m = model(ARM);
+    let (l, w, a) = (0.8, 1.3, -0.6);
+    let s = sample(&[("L", l), ("m", 1.0)], &[("t", [0.0, w, a])]);
+    close(&vector(&m, "V(P,1/0)", &s), &[0.0, l * w, 0.0], TOL);
+    close(
+        &vector(&m, "Gamma(P,1/0)", &s),
+        &[-l * w * w, l * a, 0.0],
+        TOL,
+    );
+    close(&vector(&m, "Omega(1/0)", &s), &[0.0, 0.0, w], TOL);
 }
 
 /// The documentation examples, run here too (their asserts, with crate paths).
@@ -971,54 +1031,55 @@ fn regulator_delta_o2_x2_diagonal_inertia_by_hand() {
 #[test]
 fn principal_axes_recompose_the_matrix() {
     use rand::Rng;
-    let mut cases: Vec<[[f64; 3]; 3]> = vec![
+    let mut cases: Vec<Matrix3<f64>> = vec![
         // J = tr(I_G2)/2 Id − I_G2 of the regression sample, in B2.
-        [
-            [0.034243175583978325, 0.0, -4.35610802358069e-17],
-            [0.0, 0.2958498651360119, 0.0],
-            [-4.35610802358069e-17, 0.0, 0.1587837530153427],
-        ],
-        [[0.0; 3]; 3],
-        [[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0]],
-        [[1.0, 0.0, 0.0], [0.0, 3.0, 0.0], [0.0, 0.0, 0.0]],
-        [
-            [1.0, 1e-300, 0.0],
-            [1e-300, 1.0, 5e-324],
-            [0.0, 5e-324, -0.0],
-        ],
-        [[1.0, 1.0, 1.0], [1.0, 1.0, 1.0], [1.0, 1.0, 1.0]],
+        Matrix3::new(
+            0.034243175583978325,
+            0.0,
+            -4.35610802358069e-17,
+            0.0,
+            0.2958498651360119,
+            0.0,
+            -4.35610802358069e-17,
+            0.0,
+            0.1587837530153427,
+        ),
+        Matrix3::zeros(),
+        Matrix3::from_diagonal_element(2.0),
+        Matrix3::from_diagonal(&Vector3::new(1.0, 3.0, 0.0)),
+        Matrix3::new(1.0, 1e-300, 0.0, 1e-300, 1.0, 5e-324, 0.0, 5e-324, -0.0),
+        Matrix3::repeat(1.0),
     ];
     let mut rng = ChaCha8Rng::seed_from_u64(11);
     for _ in 0..300 {
-        let mut a = [[0.0; 3]; 3];
+        let mut a = Matrix3::zeros();
         let noise = [1.0, 1e-8, 1e-16, 1e-17][rng.random_range(0..4)];
         for r in 0..3 {
-            a[r][r] = rng.random_range(-1.0..=1.0);
+            a[(r, r)] = rng.random_range(-1.0..=1.0);
             for c in 0..r {
                 let x = noise * rng.random_range(-1.0..=1.0);
-                a[r][c] = x;
-                a[c][r] = x;
+                a[(r, c)] = x;
+                a[(c, r)] = x;
             }
         }
         if rng.random_bool(0.3) {
-            a[1][1] = a[0][0];
+            a[(1, 1)] = a[(0, 0)];
         }
         cases.push(a);
     }
     for a in cases {
         let (values, v) = cloud::symmetric_eigen(&a);
-        let size = a.iter().flatten().fold(0.0f64, |s, x| s.max(x.abs()));
-        for r in 0..3 {
-            for c in 0..3 {
-                let back: f64 = (0..3).map(|k| v[r][k] * values[k] * v[c][k]).sum();
-                assert!(
-                    (back - a[r][c]).abs() <= 1e-14 * size,
-                    "{a:?}: V diag{values:?} Vᵀ [{r}][{c}] = {back}"
-                );
-                let dot: f64 = (0..3).map(|k| v[k][r] * v[k][c]).sum();
-                let id = if r == c { 1.0 } else { 0.0 };
-                assert!((dot - id).abs() <= 1e-14, "{a:?}: V is not orthonormal");
-            }
-        }
+        let back = v * Matrix3::from_diagonal(&Vector3::from(values)) * v.transpose();
+        // Entry by entry (`amax` would pass over a NaN).
+        let tol = 1e-14 * a.amax();
+        assert!(
+            (back - a).iter().all(|x| x.abs() <= tol),
+            "{a}: V diag{values:?} Vᵀ = {back}"
+        );
+        let gram = v.transpose() * v - Matrix3::identity();
+        assert!(
+            gram.iter().all(|x| x.abs() <= 1e-14),
+            "{a}: V = {v} is not orthonormal"
+        );
     }
 }
