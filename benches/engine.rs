@@ -1,7 +1,13 @@
-//! In-process timing of the regulator's derivations (no process start).
+//! In-process timings on the regulator: loading, deriving every quantity, and evaluating
+//! δ(O2,2/0) numerically, compiled (symbolica's evaluator) versus the float backend.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use rand::SeedableRng;
 use std::hint::black_box;
+use torseur::derivation::derive;
+use torseur::numeric::NumericModel;
+use torseur::output::{Values, numeric_point};
+use torseur::quantity::Quantity;
 
 fn regulator(c: &mut Criterion) {
     let path = concat!(
@@ -17,11 +23,45 @@ fn regulator(c: &mut Criterion) {
             let ds: Vec<_> = m
                 .quantities
                 .iter()
-                .map(|q| torseur::derive(&m, q).unwrap())
+                .map(|q| derive(&m, q).unwrap())
                 .collect();
             torseur::output::derive_text(&m, &ds).len()
         })
     });
+
+    // δ(O2,2/0) in B2 at many points: compiled once, evaluated per point.
+    let q = Quantity::parse("delta(O2,2/0) in B2").unwrap();
+    let v = derive(&m, &q).unwrap().value;
+    let exprs = v.exprs();
+    let mut compiled = m.reg.compile(&exprs).unwrap();
+    let model = NumericModel::new(&m.spec).unwrap();
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+    let sample = model.sample(&mut rng).unwrap();
+    let values = Values {
+        parameters: sample.parameters.clone(),
+        coordinates: sample.coordinates.clone(),
+    };
+    let point = numeric_point(&m, &values).unwrap();
+    let mut out = [0.0; 3];
+    compiled.evaluate(&point, &mut out);
+    let reference = model.evaluate(&q, &sample, "0").unwrap().numbers();
+    for k in 0..3 {
+        assert!((out[k] - reference[k]).abs() <= 1e-9 * (1.0 + reference[k].abs()));
+    }
+    c.bench_function("delta(O2,2/0) compiled evaluation (per point)", |b| {
+        b.iter(|| {
+            compiled.evaluate(black_box(&point), &mut out);
+            out[0]
+        })
+    });
+    c.bench_function(
+        "delta(O2,2/0) canonical polynomial evaluation (per point)",
+        |b| b.iter(|| exprs.iter().map(|e| e.eval(black_box(&point))).sum::<f64>()),
+    );
+    c.bench_function(
+        "delta(O2,2/0) float backend from definitions (per point)",
+        |b| b.iter(|| model.evaluate(black_box(&q), &sample, "0").unwrap()),
+    );
 }
 
 criterion_group!(benches, regulator);

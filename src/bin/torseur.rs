@@ -363,6 +363,18 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             let v = torseur::verify::verify(&m, &quantity, &expr, hypothesis.as_deref())
                 .map_err(bad_input)?;
             emit(&format!("{v}\n"))?;
+            for (k, d) in v
+                .difference
+                .iter()
+                .enumerate()
+                .filter(|(_, d)| !d.is_zero())
+            {
+                emit(&format!(
+                    "  component {} (LaTeX): {}\n",
+                    k + 1,
+                    torseur::latex::expr(d)
+                ))?;
+            }
             if v.is_equivalent() {
                 Ok(())
             } else {
