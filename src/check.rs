@@ -1,7 +1,7 @@
 //! `check`: the symbolic results against the independent float backend, on random physically
 //! valid samples (bodies realised as random point clouds, random angles, rates, accelerations).
 
-use crate::derivation::{ResolveError, Value, derive, resolve};
+use crate::derivation::{ResolveError, Value, derive_values, resolve};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::numeric::{NumericError, NumericModel, Sample};
 use crate::output::{Values, ValuesError, numeric_point};
@@ -189,8 +189,9 @@ pub fn check(m: &Mechanism, samples: usize, seed: u64) -> Result<CheckReport, Ch
     let model = NumericModel::new(&m.spec)?;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut rows = Vec::new();
-    for q in &m.quantities {
-        let v = derive(m, q)?.value;
+    let derived = derive_values(m, &m.quantities)?;
+    for (q, d) in m.quantities.iter().zip(derived) {
+        let v = d.value;
         rows.push(compare(m, &model, q, &v, None, samples, &mut rng)?);
         for h in &m.hypotheses {
             let vh = v.under(h);

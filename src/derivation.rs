@@ -497,3 +497,130 @@ fn moment_steps(
     }
     total
 }
+
+/// Per-solid results shared by the quantities of one run: the moment at the centre of inertia
+/// (σ(G) or δ(G)) and the resultant (m V(G) or m Γ(G)), by solid, reference frame and kind.
+#[derive(Debug, Default)]
+pub struct Cache {
+    centre: std::collections::HashMap<(BodyId, FrameId, bool), (Vector, Vector)>,
+}
+
+impl Cache {
+    /// (σ(G, S/R), m V(G, S/R)), or (δ(G, S/R), m Γ(G, S/R)) when `dynamic`.
+    ///
+    /// δ(G) = d/dt|R σ(G) with σ(G) = I_G(S)·Ω(S/R) written in the solid's basis, where I_G is
+    /// constant: the Bour formula there is Euler's I_G Ω̇ + Ω ∧ I_G Ω.
+    fn at_centre(
+        &mut self,
+        m: &Mechanism,
+        s: BodyId,
+        r: FrameId,
+        dynamic: bool,
+    ) -> &(Vector, Vector) {
+        self.centre.entry((s, r, dynamic)).or_insert_with(|| {
+            let b = m.body(s);
+            let sigma_g = torsor::kinetic_moment_solid(m, s, b.centre, r);
+            if dynamic {
+                let rd = acceleration(m, b.centre, b.frame, r).scale(&b.mass);
+                (sigma_g.derivative_in(&m.frames, r), rd)
+            } else {
+                (sigma_g, velocity(m, b.centre, b.frame, r).scale(&b.mass))
+            }
+        })
+    }
+}
+
+/// The moment at A by transport from each centre of inertia: M(A) = Σ M(G_i) + AG_i ∧ R_i
+/// (σ(A) = σ(G) + AG ∧ m V(G); δ(A) = δ(G) + AG ∧ m Γ(G)); projected on `u` when given, as
+/// M(G)·u + R·(u ∧ AG), which never builds the full vector.
+fn moment_by_transport(
+    m: &Mechanism,
+    cache: &mut Cache,
+    solids: &[BodyId],
+    a: PointId,
+    r: FrameId,
+    dynamic: bool,
+    u: Option<&Vector>,
+) -> (Vector, Option<Expr>) {
+    let mut total = Vector::zero();
+    let mut scalar = m.reg.zero();
+    for &s in solids {
+        let ag = m.points.vector(a, m.body(s).centre);
+        let (mg, res) = cache.at_centre(m, s, r, dynamic);
+        match u {
+            Some(u) => {
+                scalar =
+                    scalar + mg.dot(&m.frames, u) + res.dot(&m.frames, &u.cross(&m.frames, &ag));
+            }
+            None => total = total.add(mg).add(&ag.cross(&m.frames, res)),
+        }
+    }
+    (total, u.map(|_| scalar))
+}
+
+/// Values only, by the fastest exact route: kinetic and dynamic moments and torsors by
+/// transport from the centres of inertia (each solid's σ(G), δ(G), m V(G), m Γ(G) computed
+/// once for all the quantities), the rest as [`derive`] does. The returned derivations have no
+/// steps; their values are identical (same canonical forms) to those of [`derive`], which
+/// follows the course's methodology and records every step.
+///
+/// ```
+/// use torseur::{derivation::{derive, derive_values}, spec};
+/// let m = spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let fast = derive_values(&m, &m.quantities).unwrap();
+/// for (q, d) in m.quantities.iter().zip(&fast) {
+///     assert_eq!(d.value.exprs(), derive(&m, q).unwrap().value.exprs());
+/// }
+/// ```
+pub fn derive_values(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, ResolveError> {
+    let mut cache = Cache::default();
+    qs.iter().map(|q| derive_value(m, q, &mut cache)).collect()
+}
+
+fn derive_value(
+    m: &Mechanism,
+    q: &Quantity,
+    cache: &mut Cache,
+) -> Result<Derivation, ResolveError> {
+    use QuantityKind::*;
+    let r = resolve(m, q)?;
+    let reference = r.reference.unwrap_or(m.frames.ground());
+    let a = r.point.unwrap_or(m.points.origin());
+    let b = r.basis;
+    let done = |value: Value| Derivation {
+        quantity: q.clone(),
+        steps: vec![],
+        value,
+    };
+    match &q.kind {
+        KineticMoment { .. } | DynamicMoment { .. } => {
+            let dynamic = matches!(q.kind, DynamicMoment { .. });
+            let u = r
+                .projection
+                .map(|(f, axis)| Vector::along(f, axis, m.reg.one()));
+            let (v, s) =
+                moment_by_transport(m, cache, &r.solids, a, reference, dynamic, u.as_ref());
+            Ok(done(match s {
+                Some(s) => Value::Scalar(s),
+                None => vec_value(m, &v, b),
+            }))
+        }
+        KineticTorsor { .. } | DynamicTorsor { .. } => {
+            let dynamic = matches!(q.kind, DynamicTorsor { .. });
+            let (mom, _) = moment_by_transport(m, cache, &r.solids, a, reference, dynamic, None);
+            let res = r.solids.iter().fold(Vector::zero(), |acc, &s| {
+                acc.add(&cache.at_centre(m, s, reference, dynamic).1)
+            });
+            Ok(done(torsor_value(
+                m,
+                &Torsor {
+                    point: a,
+                    resultant: res,
+                    moment: mom,
+                },
+                b,
+            )))
+        }
+        _ => derive(m, q).map(|d| done(d.value)),
+    }
+}

@@ -1,7 +1,7 @@
 //! Exact equivalence of a hand-written result with the derived one: « is this δ(O2,2/0)·x2
 //! equal to the true one? ». The decision is the canonical form's zero test, never sampling.
 
-use crate::derivation::{Value, derive};
+use crate::derivation::{Value, derive_values};
 use crate::expr::{Expr, ExprError};
 use crate::mechanism::Mechanism;
 use crate::quantity::{NotationError, Quantity};
@@ -139,7 +139,10 @@ pub fn verify(
     hypothesis: Option<&str>,
 ) -> Result<Verdict, VerifyError> {
     let q = Quantity::parse(quantity)?;
-    let mut derived = derive(m, &q)?.value;
+    let mut derived = derive_values(m, std::slice::from_ref(&q))?
+        .pop()
+        .map(|d| d.value)
+        .ok_or_else(|| VerifyError::Shape("nothing derived".into()))?;
     if let Some(h) = hypothesis {
         let h = m
             .hypotheses

@@ -40,6 +40,9 @@ enum Command {
         /// Also write the answer key (LaTeX) of the spec's quantities.
         #[arg(long)]
         latex: Option<PathBuf>,
+        /// Print the number of terms of each canonical form, and the time taken, on stderr.
+        #[arg(long)]
+        stats: bool,
     },
     /// The whole answer key (« corrigé ») as LaTeX, on stdout or in a file, optionally as PDF.
     AnswerKey {
@@ -162,8 +165,14 @@ fn quantities(m: &Mechanism, given: &[String]) -> Result<Vec<Quantity>, Failure>
         .collect()
 }
 
+/// With the steps of the course's methodology (for JSON and LaTeX).
 fn derive_all(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, Failure> {
     qs.iter().map(|q| derive(m, q).map_err(bad_input)).collect()
+}
+
+/// Values only, by the fastest exact route.
+fn values_only(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, Failure> {
+    torseur::derivation::derive_values(m, qs).map_err(bad_input)
 }
 
 /// Writes a file atomically: a temporary file in the same directory, renamed over the target.
@@ -265,10 +274,16 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             quantities: qs,
             json,
             latex,
+            stats,
         } => {
+            let start = std::time::Instant::now();
             let m = load(&spec)?;
             let qs = quantities(&m, &qs)?;
-            let ds = derive_all(&m, &qs)?;
+            let ds = if json.is_some() {
+                derive_all(&m, &qs)?
+            } else {
+                values_only(&m, &qs)?
+            };
             if let Some(path) = latex {
                 let mut mq = m.clone();
                 mq.quantities = qs.clone();
@@ -280,7 +295,19 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 let text = serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n";
                 write_atomic(&path, text.as_bytes())?;
             }
-            emit(&output::derive_text(&m, &ds))
+            emit(&output::derive_text(&m, &ds))?;
+            if stats {
+                let mut total = 0;
+                for d in &ds {
+                    total += d.value.nterms();
+                    eprintln!("terms {:>9}  {}", d.value.nterms(), d.quantity);
+                }
+                eprintln!(
+                    "terms {total:>9}  total; {:.3} s",
+                    start.elapsed().as_secs_f64()
+                );
+            }
+            Ok(())
         }
         Command::Eval {
             spec,
@@ -294,7 +321,7 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             let values = output::Values::parse(&text).map_err(bad_input)?;
             let point = output::numeric_point(&m, &values).map_err(bad_input)?;
             let qs = quantities(&m, &qs)?;
-            let ds = derive_all(&m, &qs)?;
+            let ds = values_only(&m, &qs)?;
             let items: Vec<serde_json::Value> = ds
                 .iter()
                 .map(|d| output::eval_value(&m, &d.quantity.to_string(), &d.value, &point))

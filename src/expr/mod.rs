@@ -93,7 +93,7 @@ impl CoordInfo {
 }
 
 /// What a polynomial variable stands for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum VarRole {
     /// A constant parameter (index in [`Registry::parameters`]).
     Parameter(usize),
@@ -123,6 +123,7 @@ pub enum VarRole {
 pub struct Registry {
     vars: Arc<Vec<PolyVariable>>,
     roles: Vec<VarRole>,
+    role_index: HashMap<VarRole, usize>,
     parameters: Vec<String>,
     param_var: HashMap<String, usize>,
     coords: Vec<CoordInfo>,
@@ -234,8 +235,10 @@ impl Registry {
             .enumerate()
             .map(|(i, c)| (c.name.clone(), CoordId(i)))
             .collect();
+        let role_index = roles.iter().enumerate().map(|(i, r)| (*r, i)).collect();
         let mut reg = Registry {
             vars: Arc::new(vars),
+            role_index,
             roles,
             parameters: parameters.to_vec(),
             param_var,
@@ -248,6 +251,7 @@ impl Registry {
             let base = Arc::new(Registry {
                 vars: reg.vars.clone(),
                 roles: reg.roles.clone(),
+                role_index: reg.role_index.clone(),
                 parameters: reg.parameters.clone(),
                 param_var: reg.param_var.clone(),
                 coords: reg.coords.clone(),
@@ -293,6 +297,11 @@ impl Registry {
     /// Number of polynomial variables.
     pub fn nvars(&self) -> usize {
         self.vars.len()
+    }
+
+    /// The variable standing for `role`, if the registry has one.
+    pub fn index_of(&self, role: VarRole) -> Option<usize> {
+        self.role_index.get(&role).copied()
     }
 
     /// What variable `i` stands for.
@@ -406,9 +415,32 @@ impl Registry {
     /// assert!((out[0] - e.eval(&point)).abs() < 1e-12);
     /// ```
     pub fn compile(&self, exprs: &[&Expr]) -> Result<Compiled, ExprError> {
-        let atoms: Vec<Atom> = exprs.iter().map(|e| e.to_atom()).collect();
+        self.compile_with(exprs, COMPILE_HORNER, COMPILE_CPE)
+    }
+
+    /// [`Registry::compile`] with explicit optimisation effort (Horner scheme iterations,
+    /// common-pair elimination iterations). One core: symbolica's restricted mode allows no
+    /// more.
+    pub fn compile_with(
+        &self,
+        exprs: &[&Expr],
+        horner: usize,
+        cpe: Option<usize>,
+    ) -> Result<Compiled, ExprError> {
+        // The factored presentation form (groups by kinematic monomial, common factors out)
+        // is a better starting point for the optimiser than the expanded polynomial.
+        let atoms: Vec<Atom> = exprs
+            .iter()
+            .map(|e| {
+                let text = e.presentation().to_string();
+                symbolica::try_parse!(&text).unwrap_or_else(|_| e.to_atom())
+            })
+            .collect();
         let params: Vec<Atom> = self.vars.iter().map(|v| v.to_atom()).collect();
         let ev = Atom::evaluator_multiple(&atoms, &params)
+            .cores(1)
+            .horner_iterations(horner)
+            .cpe_iterations(cpe)
             .build()
             .map_err(|e| ExprError::Declaration(format!("cannot compile: {e:?}")))?
             .map_coeff(&|c| c.re.to_f64());
@@ -434,6 +466,11 @@ impl Registry {
         parse::parse_vector(self, s, basis_vector)
     }
 }
+
+/// Default Horner-scheme iterations of [`Registry::compile`].
+pub const COMPILE_HORNER: usize = 1;
+/// Default common-pair elimination iterations of [`Registry::compile`].
+pub const COMPILE_CPE: Option<usize> = None;
 
 /// Expressions compiled for fast repeated numeric evaluation (see [`Registry::compile`]).
 pub struct Compiled {
@@ -633,10 +670,14 @@ impl Expr {
 
     /// Builds an expression from terms (any order; like terms are combined).
     pub(crate) fn from_terms(reg: &Arc<Registry>, terms: Vec<(Rational, Vec<u8>)>) -> Expr {
-        let mut p = reg.poly_zero();
+        let mut coefficients = Vec::with_capacity(terms.len());
+        let mut exponents = Vec::with_capacity(terms.len() * reg.nvars());
         for (c, e) in terms {
-            p = p + reg.poly_zero().monomial(c, e);
+            coefficients.push(c);
+            exponents.extend_from_slice(&e);
         }
+        // Sorts and combines like terms in one pass.
+        let p = Poly::from_coefficient_list(coefficients, exponents, reg.vars.clone(), &Q);
         reg.wrap(p)
     }
 

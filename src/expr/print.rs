@@ -229,10 +229,8 @@ impl Expr {
                     .map(|t| {
                         let mut e = vec![0u8; reg.nvars()];
                         let strip = |e: &mut Vec<u8>, role: VarRole, k: u8| {
-                            for i in 0..reg.nvars() {
-                                if reg.role(i) == role {
-                                    e[i] += k;
-                                }
+                            if let Some(i) = reg.index_of(role) {
+                                e[i] += k;
                             }
                         };
                         for &(p, k) in &t.params {

@@ -110,3 +110,28 @@ fn a_point_not_fixed_in_the_solid_is_refused_by_the_derivation_route() {
     let g2 = m.point("G2").unwrap();
     assert!(velocity_by_derivation(&m, g2, frame(&m, "1"), m.frames.ground()).is_none());
 }
+
+#[test]
+fn a_constant_angle_between_bases_turns_components_but_adds_no_rotation() {
+    // Frame 1 turned by the constant angle alpha (a coordinate with rate 0) about z0, frame 2
+    // by q about x1: Ω(2/0) = q̇ x1 only, and x1 = cos α x0 + sin α y0.
+    let spec = r#"{"title": "t", "parameters": [{"name": "L"}],
+      "coordinates": [{"name": "alpha", "kind": "angle", "rate": "0"}, {"name": "q", "kind": "angle"}],
+      "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "alpha"}},
+                 {"name": "2", "parent": "1", "rotation": {"axis": "x", "angle": "q"}}],
+      "points": [{"name": "P", "from": "O0", "position": "L*y2"}]}"#;
+    let m = torseur::spec::from_str(spec).unwrap();
+    let (f0, f2) = (m.frames.ground(), frame(&m, "2"));
+    assert_components(&m, &omega(&m, f2, f0), "1", ["dot(q)", "0", "0"], "Ω(2/0)");
+    assert_components(
+        &m,
+        &omega(&m, f2, f0),
+        "0",
+        ["cos(alpha)*dot(q)", "sin(alpha)*dot(q)", "0"],
+        "Ω(2/0) in B0",
+    );
+    assert!(ex(&m, "dot(alpha)").is_zero());
+    // V(P,2/0) = L q̇ z2 (P turns with q about x1).
+    let v = velocity(&m, m.point("P").unwrap(), f2, f0);
+    assert_components(&m, &v, "2", ["0", "0", "L*dot(q)"], "V(P,2/0)");
+}

@@ -5,6 +5,7 @@
 //! from the course, a second theorem, or the definitions.
 
 mod bilan;
+mod chain;
 mod check;
 mod kinematics;
 mod latex;
