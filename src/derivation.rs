@@ -560,8 +560,8 @@ fn moment_by_transport(
 
 /// Values only, by the fastest exact route: kinetic and dynamic moments and torsors by
 /// transport from the centres of inertia (each solid's σ(G), δ(G), m V(G), m Γ(G) computed
-/// once for all the quantities), the rest as [`derive`] does. The returned derivations have no
-/// steps; their values are identical (same canonical forms) to those of [`derive`], which
+/// once for all the quantities), the rest as [`derive()`] does. The returned derivations have no
+/// steps; their values are identical (same canonical forms) to those of [`derive()`], which
 /// follows the course's methodology and records every step.
 ///
 /// ```

@@ -1,4 +1,4 @@
-//! Problem specs: JSON wire types and their validation into a [`Mechanism`](crate::mechanism::Mechanism).
+//! Problem specs: JSON wire types and their validation into a [`crate::mechanism::Mechanism`].
 
 mod validate;
 pub mod wire;

@@ -55,7 +55,7 @@ impl Torsor {
 }
 
 /// The operator I_G(S) at the centre of inertia, in the basis the statement gives it in.
-/// Given at another point P: I_G = I_P − m [PG] (Huygens backwards). None for a point mass.
+/// Given at another point P: I_G = I_P − m ⟦PG⟧ (Huygens backwards). None for a point mass.
 pub fn inertia_at_centre(m: &Mechanism, s: BodyId) -> Option<Inertia> {
     let b = m.body(s);
     let given = b.inertia.as_ref()?;
