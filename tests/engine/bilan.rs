@@ -170,3 +170,31 @@ fn huygens_transport_round_trips_and_matches_the_point_mass_formula() {
     }
     let _ = (velocity, acceleration);
 }
+
+#[test]
+fn inertia_given_at_another_point_is_moved_to_g_by_huygens() {
+    // The flyweight's inertia given at O2 instead of G2: O2G2 = L2 y2, so by hand
+    // I_O2 = I_G2 + m2 diag(L2², 0, L2²). Every derived quantity must be unchanged.
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/regulateur_centrifuge.json"
+    ))
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["solids"][1]["inertia"]["point"] = "O2".into();
+    v["solids"][1]["inertia"]["matrix"][0][0] = "A2 + m2*L2^2".into();
+    v["solids"][1]["inertia"]["matrix"][2][2] = "C2 + m2*L2^2".into();
+    v["solids"][1]["symmetries"] = serde_json::json!([]);
+    v["hypotheses"] = serde_json::json!([]);
+    let moved = torseur::spec::from_str(&v.to_string()).unwrap();
+    let m = regulator();
+    for q in &m.quantities {
+        let a = torseur::derive(&m, q).unwrap().value;
+        let b = torseur::derive(&moved, q).unwrap().value;
+        let (a, b): (Vec<String>, Vec<String>) = (
+            a.exprs().iter().map(|e| e.to_string()).collect(),
+            b.exprs().iter().map(|e| e.to_string()).collect(),
+        );
+        assert_eq!(a, b, "{q}");
+    }
+}

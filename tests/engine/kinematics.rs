@@ -135,3 +135,16 @@ fn a_constant_angle_between_bases_turns_components_but_adds_no_rotation() {
     let v = velocity(&m, m.point("P").unwrap(), f2, f0);
     assert_components(&m, &v, "2", ["0", "0", "L*dot(q)"], "V(P,2/0)");
 }
+
+#[test]
+fn a_negative_axis_turns_the_other_way() {
+    // Rotation by q about −z0: Ω(1/0) = −q̇ z0 and x1 = cos q x0 − sin q y0.
+    let spec = r#"{"title": "t", "coordinates": [{"name": "q", "kind": "angle"}],
+      "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "-z", "angle": "q"}}]}"#;
+    let m = torseur::spec::from_str(spec).unwrap();
+    let (f0, f1) = (m.frames.ground(), frame(&m, "1"));
+    assert_components(&m, &omega(&m, f1, f0), "0", ["0", "0", "-dot(q)"], "Ω(1/0)");
+    let p = m.frames.dcm(f0, f1);
+    assert_eq!(p[0][0], ex(&m, "cos(q)"));
+    assert_eq!(p[1][0], ex(&m, "-sin(q)"));
+}
