@@ -82,8 +82,12 @@ fn rate_key(rates: &[(CoordId, u8, u8)]) -> Vec<(Reverse<u8>, CoordId, Reverse<u
 
 /// Ordering key of the non-kinematic part: parameters, then trigonometric factors.
 /// Terms without parameters or trigonometric factors (plain numbers) come last.
+///
+/// Within that, as a teacher writes a sum: lower degree in the parameters first
+/// (A2 + m2 L2², L1 + L2 cos θ2), then by parameter order.
 type OtherKey = (
     bool,
+    u32,
     Vec<(usize, Reverse<u8>)>,
     Vec<(CoordId, bool, Reverse<u8>)>,
 );
@@ -91,6 +95,7 @@ type OtherKey = (
 fn other_key(t: &TermParts) -> OtherKey {
     (
         t.params.is_empty() && t.trig.is_empty(),
+        t.params.iter().map(|&(_, k)| k as u32).sum(),
         t.params.iter().map(|&(p, k)| (p, Reverse(k))).collect(),
         t.trig
             .iter()
@@ -270,7 +275,7 @@ impl Expr {
 }
 
 /// The common factor of a group: gcd of the monomials in parameters and trigonometric
-/// factors, with the rational content and the sign of the first term.
+/// factors, with the rational content, and the sign of most of its terms.
 fn common_factor(ts: &[TermParts]) -> TermParts {
     let first = &ts[0];
     let mut params = first.params.clone();
@@ -294,7 +299,11 @@ fn common_factor(ts: &[TermParts]) -> TermParts {
     for t in &ts[1..] {
         coef = coef.gcd(&t.coef);
     }
-    let coef = if first.coef.is_negative() {
+    // A minus sign comes out of the group only when most of its terms are negative (a tie
+    // stays positive).
+    let negatives = ts.iter().filter(|t| t.coef.is_negative()).count();
+    let negative = 2 * negatives > ts.len();
+    let coef = if negative {
         coef.abs().neg()
     } else {
         coef.abs()
