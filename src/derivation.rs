@@ -260,8 +260,6 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
     let r = resolve(m, q)?;
     let b = r.basis;
     let mut steps = Vec::new();
-    let motion = q.kind.motion().cloned();
-    let mname = motion.as_ref().map(|x| x.to_string()).unwrap_or_default();
     let reference = r.reference.unwrap_or(m.frames.ground());
     let vector: Option<Vector>;
     let mut value: Option<Value> = None;
@@ -327,37 +325,86 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
         KineticTorsor { .. } | DynamicTorsor { .. } => {
             let a = r.point.unwrap_or(m.points.origin());
             let dynamic = matches!(q.kind, DynamicTorsor { .. });
-            let res = if dynamic {
-                torsor::dynamic_resultant(m, &r.solids, reference)
-            } else {
-                torsor::kinetic_resultant(m, &r.solids, reference)
-            };
-            let mo = motion.clone().unwrap_or(Motion {
-                moving: String::new(),
-                reference: String::new(),
-            });
-            steps.push(Step {
-                kind: StepKind::Quantity(if dynamic {
-                    QuantityKind::DynamicResultant(mo)
+            let rn = m.frame_name(reference).to_string();
+            let set = r.solids.len() > 1;
+            let mut res_total = Vector::zero();
+            let mut mom_total = Vector::zero();
+            for &s in &r.solids {
+                let body = m.body(s);
+                let mo = Motion {
+                    moving: body.name.clone(),
+                    reference: rn.clone(),
+                };
+                // Each solid of a set is taken where its torsor is simplest (the course's
+                // method): at A if A is its frame origin or its centre, else at its frame
+                // origin when that point is fixed in the reference frame; then moved to A.
+                let origin = m.origin(body.frame);
+                let p = if !set || a == origin || a == body.centre {
+                    a
+                } else if point_velocity(m, origin, reference).is_zero(&m.frames) {
+                    origin
                 } else {
-                    QuantityKind::KineticResultant(mo)
-                }),
-                label: format!("{}({mname})", if dynamic { "Rd" } else { "Rc" }),
-                theorem: if dynamic {
-                    "R_d = m Γ(G, S/R0), sommée sur les solides".into()
+                    a
+                };
+                let res = if dynamic {
+                    acceleration(m, body.centre, body.frame, reference).scale(&body.mass)
                 } else {
-                    "R_c = m V(G, S/R0), sommée sur les solides".into()
-                },
-                value: vec_value(m, &res, b),
-            });
-            let mom = moment_steps(m, &r.solids, a, reference, b, dynamic, &mut steps);
+                    velocity(m, body.centre, body.frame, reference).scale(&body.mass)
+                };
+                steps.push(Step {
+                    kind: StepKind::Quantity(if dynamic {
+                        QuantityKind::DynamicResultant(mo.clone())
+                    } else {
+                        QuantityKind::KineticResultant(mo.clone())
+                    }),
+                    label: format!("{}({mo})", if dynamic { "Rd" } else { "Rc" }),
+                    theorem: if dynamic {
+                        "Rd = m Γ(G, S/R0)".into()
+                    } else {
+                        "Rc = m V(G, S/R0)".into()
+                    },
+                    value: vec_value(m, &res, b),
+                });
+                let mom = moment_steps(m, &[s], p, reference, b, dynamic, &mut steps);
+                let t = Torsor {
+                    point: p,
+                    resultant: res,
+                    moment: mom,
+                };
+                let t = if p == a {
+                    t
+                } else {
+                    let moved = t.at(m, a);
+                    let (pn, an) = (m.point_name(p).to_string(), m.point_name(a).to_string());
+                    let kind = if dynamic {
+                        QuantityKind::DynamicTorsor {
+                            motion: mo.clone(),
+                            point: an.clone(),
+                        }
+                    } else {
+                        QuantityKind::KineticTorsor {
+                            motion: mo.clone(),
+                            point: an.clone(),
+                        }
+                    };
+                    steps.push(Step {
+                        label: kind.to_string(),
+                        kind: StepKind::Quantity(kind),
+                        theorem: format!("changement de point : M({an}) = M({pn}) + {an}{pn} ∧ R"),
+                        value: torsor_value(m, &moved, b),
+                    });
+                    moved
+                };
+                res_total = res_total.add(&t.resultant);
+                mom_total = mom_total.add(&t.moment);
+            }
             vector = None;
             value = Some(torsor_value(
                 m,
                 &Torsor {
                     point: a,
-                    resultant: res,
-                    moment: mom,
+                    resultant: res_total,
+                    moment: mom_total,
                 },
                 b,
             ));
@@ -428,7 +475,7 @@ fn moment_steps(
             label: format!("I({an},{sn})"),
             theorem: if huygens {
                 format!(
-                    "théorème de Huygens : I_{an} = I_{g} + m [{an}{g}]",
+                    "théorème de Huygens, de {g} en {an}",
                     g = m.point_name(body.centre)
                 )
             } else if body.inertia.is_none() {

@@ -5,8 +5,10 @@
 use super::{basis, basis_vector, escape_text, frame, name, point, quantity, value};
 use crate::derivation::{Derivation, StepKind, Value, derive};
 use crate::inertia::Symmetry;
-use crate::mechanism::Mechanism;
+use crate::mechanism::{Hypothesis, Mechanism};
+use crate::quantity::Quantity;
 use crate::quantity::QuantityKind;
+use crate::spec::wire::{HypothesisSpec, QuestionSpec};
 use std::fmt::Write;
 
 fn step_lhs(k: &StepKind) -> String {
@@ -61,13 +63,168 @@ fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) ->
     }
 }
 
-/// The complete answer key of a mechanism as a LaTeX document.
+/// A hypothesis: its statement, the zeros its symmetries give (each justified by its plane or
+/// axis), the particular inertia matrices, and what it sets.
+fn hypothesis_block(o: &mut String, m: &Mechanism, h: &Hypothesis, hs: &HypothesisSpec) {
+    let _ = writeln!(
+        o,
+        "\\subsection*{{Hypothèse {}}}\n{}\n",
+        escape_text(&h.name),
+        h.text.as_deref().map(escape_text).unwrap_or_default()
+    );
+    for sname in &hs.symmetric_solids {
+        let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
+            continue;
+        };
+        let Some(i) = &b.inertia else { continue };
+        let bn = m.frame_name(i.basis).to_string();
+        let centre = m.point_name(i.point).to_string();
+        for s in &b.symmetries {
+            let entries: Vec<String> = s
+                .zero_entries()
+                .iter()
+                .map(|&(r, c)| super::expr(&i.matrix[r][c]))
+                .filter(|t| t != "0")
+                .map(|t| format!("${}$", t.trim_start_matches('-')))
+                .collect();
+            let _ = writeln!(
+                o,
+                "Pour le solide ${}$, {} : {}{}.\n",
+                name(sname),
+                symmetry_text(m, &bn, *s, &centre),
+                if entries.is_empty() {
+                    "les produits d'inertie correspondants sont nuls".to_string()
+                } else {
+                    format!("les produits d'inertie {} sont nuls", entries.join(", "))
+                },
+                if s.equal_moments().is_some() {
+                    " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
+                } else {
+                    ""
+                }
+            );
+        }
+        let under = Value::Matrix(i.clone()).under(h);
+        if let Value::Matrix(iu) = under {
+            let _ = writeln!(
+                o,
+                "\\[ I_{{{}}}({}) = {} \\]",
+                point(&centre),
+                name(sname),
+                super::matrix(m, &iu)
+            );
+        }
+    }
+    if !h.effects.is_empty() {
+        let eff: Vec<String> = h
+            .effects
+            .iter()
+            .map(|e| {
+                let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
+                let lx = m.reg.parse(l).map(|x| super::expr(&x)).unwrap_or_default();
+                let rx = m.reg.parse(r).map(|x| super::expr(&x)).unwrap_or_default();
+                format!("${lx} = {rx}$")
+            })
+            .collect();
+        let _ = writeln!(o, "Sous cette hypothèse : {}.\n", eff.join(", "));
+    }
+}
+
+/// A quantity: the steps of the methodology, the result, and the result under each hypothesis.
+fn quantity_block(o: &mut String, m: &Mechanism, d: &Derivation) {
+    let q = &d.quantity;
+    let title = quantity_title(q);
+    let _ = writeln!(o, "\\subsection*{{${title}$}}");
+    for s in &d.steps {
+        let _ = writeln!(o, "{} :", theorem_text(&s.theorem));
+        o.push_str(&align(&value(m, &step_lhs(&s.kind), &s.value)));
+    }
+    o.push_str("Résultat :\n");
+    let lhs = match &q.kind {
+        k if k.is_torsor() => quantity(k),
+        QuantityKind::Inertia { .. } => quantity(&q.kind),
+        _ => title.clone(),
+    };
+    o.push_str(&align(&value(m, &lhs, &d.value)));
+    for h in &m.hypotheses {
+        let under = d.value.under(h);
+        if under.exprs() == d.value.exprs() {
+            let _ = writeln!(
+                o,
+                "Sous l'hypothèse {}, le résultat est inchangé.\n",
+                escape_text(&h.name)
+            );
+            continue;
+        }
+        let _ = writeln!(o, "Sous l'hypothèse {} :", escape_text(&h.name));
+        o.push_str(&align(&value(m, &lhs, &under)));
+    }
+}
+
+/// A question: its statement, the teacher's answer text, the hypotheses it discusses, its
+/// quantities derived step by step, and its equations written out.
+fn question_block(
+    o: &mut String,
+    m: &Mechanism,
+    qs: &QuestionSpec,
+) -> Result<(), crate::derivation::ResolveError> {
+    let _ = writeln!(o, "\\section*{{{}}}", escape_text(&qs.title));
+    if let Some(st) = &qs.statement {
+        let _ = writeln!(o, "\\emph{{{}}}\n", escape_text(st));
+    }
+    if let Some(a) = &qs.answer {
+        let _ = writeln!(o, "{}\n", escape_text(a));
+    }
+    for name in &qs.hypotheses {
+        if let Some((h, hs)) = m
+            .hypotheses
+            .iter()
+            .zip(&m.spec.hypotheses)
+            .find(|(h, _)| &h.name == name)
+        {
+            hypothesis_block(o, m, h, hs);
+        }
+    }
+    for text in &qs.quantities {
+        let q = Quantity::parse(text).map_err(|e| crate::derivation::ResolveError {
+            quantity: text.clone(),
+            message: e.to_string(),
+        })?;
+        quantity_block(o, m, &derive(m, &q)?);
+    }
+    for e in &qs.equations {
+        let q = Quantity::parse(&e.quantity).map_err(|er| crate::derivation::ResolveError {
+            quantity: e.quantity.clone(),
+            message: er.to_string(),
+        })?;
+        let d = derive(m, &q)?;
+        if let Some(r) = &e.reason {
+            let _ = writeln!(o, "{} :", escape_text(r));
+        }
+        let lhs = format!("{} = {}", name(&e.lhs), quantity_title(&q));
+        o.push_str(&align(&value(m, &lhs, &d.value)));
+        for h in &m.hypotheses {
+            let under = d.value.under(h);
+            if under.exprs() != d.value.exprs() {
+                let _ = writeln!(o, "Sous l'hypothèse {} :", escape_text(&h.name));
+                o.push_str(&align(&value(m, &name(&e.lhs), &under)));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A quantity as a heading: \\overrightarrow{\\delta(O_2,2/0)}\\cdot\\vec{x}_2 for a projection.
+fn quantity_title(q: &Quantity) -> String {
+    match &q.projection {
+        Some((f, axis)) => format!("{} \\cdot {}", quantity(&q.kind), basis_vector(*axis, f)),
+        None => quantity(&q.kind),
+    }
+}
+
+/// The complete answer key of a mechanism as a LaTeX document: the set-up, then either each
+/// question of the spec with its answer, or the hypotheses and every requested quantity.
 pub fn answer_key(m: &Mechanism) -> Result<String, crate::derivation::ResolveError> {
-    let ds: Vec<Derivation> = m
-        .quantities
-        .iter()
-        .map(|q| derive(m, q))
-        .collect::<Result<_, _>>()?;
     let mut o = String::new();
     o.push_str(
         "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\
@@ -187,107 +344,20 @@ pub fn answer_key(m: &Mechanism) -> Result<String, crate::derivation::ResolveErr
         }
     }
 
-    // Hypotheses.
-    if !m.hypotheses.is_empty() {
-        o.push_str("\\section*{Hypothèses}\n");
-        for (h, hs) in m.hypotheses.iter().zip(&m.spec.hypotheses) {
-            let _ = writeln!(
-                o,
-                "\\subsection*{{{} }}\n{}\n",
-                escape_text(&h.name),
-                h.text.as_deref().map(escape_text).unwrap_or_default()
-            );
-            for sname in &hs.symmetric_solids {
-                let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
-                    continue;
-                };
-                let Some(i) = &b.inertia else { continue };
-                let bn = m.frame_name(i.basis).to_string();
-                let centre = m.point_name(i.point).to_string();
-                for s in &b.symmetries {
-                    let entries: Vec<String> = s
-                        .zero_entries()
-                        .iter()
-                        .map(|&(r, c)| super::expr(&i.matrix[r][c]))
-                        .filter(|t| t != "0")
-                        .map(|t| format!("${}$", t.trim_start_matches('-')))
-                        .collect();
-                    let _ = writeln!(
-                        o,
-                        "Pour le solide ${}$, {} : {}{}.\n",
-                        name(sname),
-                        symmetry_text(m, &bn, *s, &centre),
-                        if entries.is_empty() {
-                            "les produits d'inertie correspondants sont nuls".to_string()
-                        } else {
-                            format!("les produits d'inertie {} sont nuls", entries.join(", "))
-                        },
-                        if s.equal_moments().is_some() {
-                            " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
-                        } else {
-                            ""
-                        }
-                    );
-                }
-                let under = Value::Matrix(i.clone()).under(h);
-                if let Value::Matrix(iu) = under {
-                    let _ = writeln!(
-                        o,
-                        "\\[ I_{{{}}}({}) = {} \\]",
-                        point(&centre),
-                        name(sname),
-                        super::matrix(m, &iu)
-                    );
-                }
-            }
-            if !h.effects.is_empty() {
-                let eff: Vec<String> = h
-                    .effects
-                    .iter()
-                    .map(|e| {
-                        let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
-                        let lx = m.reg.parse(l).map(|x| super::expr(&x)).unwrap_or_default();
-                        let rx = m.reg.parse(r).map(|x| super::expr(&x)).unwrap_or_default();
-                        format!("${lx} = {rx}$")
-                    })
-                    .collect();
-                let _ = writeln!(o, "Sous cette hypothèse : {}.\n", eff.join(", "));
+    if m.spec.questions.is_empty() {
+        if !m.hypotheses.is_empty() {
+            o.push_str("\\section*{Hypothèses}\n");
+            for (h, hs) in m.hypotheses.iter().zip(&m.spec.hypotheses) {
+                hypothesis_block(&mut o, m, h, hs);
             }
         }
-    }
-
-    // Results.
-    o.push_str("\\section*{Résultats}\n");
-    for d in &ds {
-        let q = &d.quantity;
-        let title = match &q.projection {
-            Some((f, axis)) => format!("{} \\cdot {}", quantity(&q.kind), basis_vector(*axis, f)),
-            None => quantity(&q.kind),
-        };
-        let _ = writeln!(o, "\\subsection*{{${title}$}}");
-        for s in &d.steps {
-            let _ = writeln!(o, "{} :", theorem_text(&s.theorem));
-            o.push_str(&align(&value(m, &step_lhs(&s.kind), &s.value)));
+        o.push_str("\\section*{Résultats}\n");
+        for q in &m.quantities {
+            quantity_block(&mut o, m, &derive(m, q)?);
         }
-        o.push_str("Résultat :\n");
-        let lhs = match &q.kind {
-            k if k.is_torsor() => quantity(k),
-            QuantityKind::Inertia { .. } => quantity(&q.kind),
-            _ => title.clone(),
-        };
-        o.push_str(&align(&value(m, &lhs, &d.value)));
-        for h in &m.hypotheses {
-            let under = d.value.under(h);
-            if under.exprs() == d.value.exprs() {
-                let _ = writeln!(
-                    o,
-                    "Sous l'hypothèse {}, le résultat est inchangé.\n",
-                    escape_text(&h.name)
-                );
-                continue;
-            }
-            let _ = writeln!(o, "Sous l'hypothèse {} :", escape_text(&h.name));
-            o.push_str(&align(&value(m, &lhs, &under)));
+    } else {
+        for qs in &m.spec.questions {
+            question_block(&mut o, m, qs)?;
         }
     }
     o.push_str("\\end{document}\n");

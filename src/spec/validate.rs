@@ -445,6 +445,27 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             .push(Quantity::parse(q).map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?);
     }
 
+    // Questions: names and quantities must resolve (their text is escaped when printed).
+    for (i, qs) in spec.questions.iter().enumerate() {
+        let path = format!("questions[{i}]");
+        for (k, h) in qs.hypotheses.iter().enumerate() {
+            if !hypotheses.iter().any(|x: &Hypothesis| &x.name == h) {
+                return Err(at(
+                    format!("{path}.hypotheses[{k}]"),
+                    format!("unknown hypothesis `{h}`"),
+                ));
+            }
+        }
+        for (k, q) in qs.quantities.iter().enumerate() {
+            Quantity::parse(q).map_err(|e| at(format!("{path}.quantities[{k}]"), e.to_string()))?;
+        }
+        for (k, e) in qs.equations.iter().enumerate() {
+            name_ok(&format!("{path}.equations[{k}].lhs"), &e.lhs)?;
+            Quantity::parse(&e.quantity)
+                .map_err(|er| at(format!("{path}.equations[{k}].quantity"), er.to_string()))?;
+        }
+    }
+
     let m = Mechanism {
         title: spec.title.clone(),
         description: spec.description.clone(),
@@ -463,6 +484,21 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     for (i, q) in m.quantities.iter().enumerate() {
         crate::derivation::resolve(&m, q)
             .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
+    }
+    for (i, qs) in m.spec.questions.iter().enumerate() {
+        let texts = qs
+            .quantities
+            .iter()
+            .map(|q| (format!("questions[{i}].quantities"), q))
+            .chain(
+                qs.equations
+                    .iter()
+                    .map(|e| (format!("questions[{i}].equations"), &e.quantity)),
+            );
+        for (path, q) in texts {
+            let parsed = Quantity::parse(q).map_err(|e| at(&path, e.to_string()))?;
+            crate::derivation::resolve(&m, &parsed).map_err(|e| at(&path, e.to_string()))?;
+        }
     }
     Ok(m)
 }

@@ -45,6 +45,47 @@ pub struct SpecFile {
     /// Requested quantities in course notation.
     #[serde(default)]
     pub quantities: Vec<String>,
+    /// The questions of the statement, for the answer key (optional: without them the key
+    /// lists the requested quantities).
+    #[serde(default)]
+    pub questions: Vec<QuestionSpec>,
+}
+
+/// One question of the statement and what its answer shows.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct QuestionSpec {
+    /// Heading (`Question 3`).
+    pub title: String,
+    /// The question as the subject asks it.
+    #[serde(default)]
+    pub statement: Option<String>,
+    /// The teacher's text: a method, a discussion.
+    #[serde(default)]
+    pub answer: Option<String>,
+    /// Hypotheses whose consequences the answer shows (particular inertia matrices, what is
+    /// set to zero).
+    #[serde(default)]
+    pub hypotheses: Vec<String>,
+    /// Quantities derived step by step in the answer.
+    #[serde(default)]
+    pub quantities: Vec<String>,
+    /// Equations `lhs = quantity` written out (a theorem applied, e.g. the motor torque).
+    #[serde(default)]
+    pub equations: Vec<EquationSpec>,
+}
+
+/// An equation of an answer: a named unknown equal to a derived quantity.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct EquationSpec {
+    /// Name of the left-hand side (`Cm`), written C_{m}.
+    pub lhs: String,
+    /// The quantity it equals, in course notation (`delta(O1,E/0).z0`).
+    pub quantity: String,
+    /// Why, in the course's words (which theorem, which actions vanish).
+    #[serde(default)]
+    pub reason: Option<String>,
 }
 
 fn default_ground() -> String {

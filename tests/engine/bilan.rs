@@ -186,6 +186,7 @@ fn inertia_given_at_another_point_is_moved_to_g_by_huygens() {
     v["solids"][1]["inertia"]["matrix"][2][2] = "C2 + m2*L2^2".into();
     v["solids"][1]["symmetries"] = serde_json::json!([]);
     v["hypotheses"] = serde_json::json!([]);
+    v["questions"] = serde_json::json!([]);
     let moved = torseur::spec::from_str(&v.to_string()).unwrap();
     let m = regulator();
     for q in &m.quantities {
