@@ -54,6 +54,10 @@ enum Command {
         /// Also compile the PDF with pdflatex (next to the .tex file).
         #[arg(long, requires = "output")]
         pdf: bool,
+        /// How vectors are written: `sum` over the basis vectors, or `column` with the basis
+        /// as subscript (long vectors stay sums).
+        #[arg(long, value_enum, default_value_t = Vectors::Sum)]
+        vectors: Vectors,
     },
     /// Numbers: evaluates quantities at the values of a JSON file.
     Eval {
@@ -95,6 +99,15 @@ enum Command {
         #[arg(long)]
         hypothesis: Option<String>,
     },
+}
+
+/// How vectors are written in the answer key.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum Vectors {
+    /// a x2 + b y2 + c z2
+    Sum,
+    /// (a, b, c) in a column, with the basis as subscript
+    Column,
 }
 
 /// A failure with its exit code.
@@ -329,9 +342,18 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             let j = serde_json::json!({ "quantities": items });
             emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))
         }
-        Command::AnswerKey { spec, output, pdf } => {
+        Command::AnswerKey {
+            spec,
+            output,
+            pdf,
+            vectors,
+        } => {
             let m = load(&spec)?;
-            let tex = torseur::latex::answer_key(&m).map_err(bad_input)?;
+            let style = match vectors {
+                Vectors::Sum => torseur::latex::VectorStyle::Sum,
+                Vectors::Column => torseur::latex::VectorStyle::Column,
+            };
+            let tex = torseur::latex::answer_key_with(&m, style).map_err(bad_input)?;
             match output {
                 None => emit(&tex),
                 Some(path) => {

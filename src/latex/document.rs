@@ -2,7 +2,9 @@
 //! matrices, then each requested quantity with the steps of the course's methodology, in the
 //! general case and under each hypothesis. All text about the problem comes from the spec.
 
-use super::{basis, basis_vector, escape_text, frame, name, point, quantity, value};
+use super::{
+    VectorStyle, basis, basis_vector, escape_text, frame, name, point, quantity, value_styled,
+};
 use crate::derivation::{Derivation, StepKind, Value, derive};
 use crate::inertia::Symmetry;
 use crate::mechanism::{Hypothesis, Mechanism};
@@ -131,7 +133,8 @@ fn hypothesis_block(o: &mut String, m: &Mechanism, h: &Hypothesis, hs: &Hypothes
 }
 
 /// A quantity: the steps of the methodology, the result, and the result under each hypothesis.
-fn quantity_block(o: &mut String, m: &Mechanism, d: &Derivation) {
+fn quantity_block(o: &mut String, m: &Mechanism, style: VectorStyle, d: &Derivation) {
+    let value = |m: &Mechanism, lhs: &str, v: &Value| value_styled(m, style, lhs, v);
     let q = &d.quantity;
     let title = quantity_title(q);
     let _ = writeln!(o, "\\subsection*{{${title}$}}");
@@ -166,8 +169,10 @@ fn quantity_block(o: &mut String, m: &Mechanism, d: &Derivation) {
 fn question_block(
     o: &mut String,
     m: &Mechanism,
+    style: VectorStyle,
     qs: &QuestionSpec,
 ) -> Result<(), crate::derivation::ResolveError> {
+    let value = |m: &Mechanism, lhs: &str, v: &Value| value_styled(m, style, lhs, v);
     let _ = writeln!(o, "\\section*{{{}}}", escape_text(&qs.title));
     if let Some(st) = &qs.statement {
         let _ = writeln!(o, "\\emph{{{}}}\n", escape_text(st));
@@ -190,7 +195,7 @@ fn question_block(
             quantity: text.clone(),
             message: e.to_string(),
         })?;
-        quantity_block(o, m, &derive(m, &q)?);
+        quantity_block(o, m, style, &derive(m, &q)?);
     }
     for e in &qs.equations {
         let q = Quantity::parse(&e.quantity).map_err(|er| crate::derivation::ResolveError {
@@ -225,6 +230,14 @@ fn quantity_title(q: &Quantity) -> String {
 /// The complete answer key of a mechanism as a LaTeX document: the set-up, then either each
 /// question of the spec with its answer, or the hypotheses and every requested quantity.
 pub fn answer_key(m: &Mechanism) -> Result<String, crate::derivation::ResolveError> {
+    answer_key_with(m, VectorStyle::Sum)
+}
+
+/// [`answer_key`] with vectors written in the given style.
+pub fn answer_key_with(
+    m: &Mechanism,
+    style: VectorStyle,
+) -> Result<String, crate::derivation::ResolveError> {
     let mut o = String::new();
     o.push_str(
         "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\
@@ -353,11 +366,11 @@ pub fn answer_key(m: &Mechanism) -> Result<String, crate::derivation::ResolveErr
         }
         o.push_str("\\section*{Résultats}\n");
         for q in &m.quantities {
-            quantity_block(&mut o, m, &derive(m, q)?);
+            quantity_block(&mut o, m, style, &derive(m, q)?);
         }
     } else {
         for qs in &m.spec.questions {
-            question_block(&mut o, m, qs)?;
+            question_block(&mut o, m, style, qs)?;
         }
     }
     o.push_str("\\end{document}\n");

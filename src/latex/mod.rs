@@ -6,7 +6,7 @@
 
 mod document;
 
-pub use document::answer_key;
+pub use document::{answer_key, answer_key_with};
 
 use crate::derivation::Value;
 use crate::expr::print::TermParts;
@@ -546,8 +546,36 @@ fn matrix_named(m: &Mechanism, lhs: &str, i: &crate::inertia::Inertia) -> String
 /// Width (in characters) beyond which a vector is written over several lines.
 pub const LINE: usize = 62;
 
-/// A value on the right of `lhs`, as lines of an `align*` environment.
+/// How vectors are written in the answer key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum VectorStyle {
+    /// As a sum over the basis vectors: `a\,\vec{x}_2 + b\,\vec{y}_2` (the default).
+    #[default]
+    Sum,
+    /// As a column with its basis as subscript, when it fits the line (else as a sum).
+    Column,
+}
+
+/// A value on the right of `lhs`, as lines of an `align*` environment (vectors as sums).
 pub fn value(m: &Mechanism, lhs: &str, v: &Value) -> String {
+    value_styled(m, VectorStyle::Sum, lhs, v)
+}
+
+/// A value on the right of `lhs`, with vectors in the given style.
+pub fn value_styled(m: &Mechanism, style: VectorStyle, lhs: &str, v: &Value) -> String {
+    if let (
+        VectorStyle::Column,
+        Value::Vector {
+            basis: b,
+            components,
+        },
+    ) = (style, v)
+    {
+        let col = vector_column(m.frame_name(*b), components);
+        if components.iter().all(|c| width(&expr(c)) <= LINE) {
+            return format!("{lhs} &= {col}");
+        }
+    }
     match v {
         Value::Scalar(e) => {
             let ls = expr_lines(e, LINE);

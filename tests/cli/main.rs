@@ -277,3 +277,33 @@ fn check_reports_agreement_with_the_float_backend() {
     assert_eq!(v["seed"], 9);
     assert_eq!(v["quantities"].as_array().unwrap().len(), 27);
 }
+
+#[test]
+fn vectors_can_be_written_as_columns_with_their_basis() {
+    let d = tmp();
+    let tex = d.path().join("col.tex");
+    let o = run(&[
+        "answer-key",
+        spec().to_str().unwrap(),
+        "--vectors",
+        "column",
+        "-o",
+        tex.to_str().unwrap(),
+        "--pdf",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let t = std::fs::read_to_string(&tex).unwrap();
+    assert!(t.contains(
+        "\\overrightarrow{\\Omega(2/0)} &= \\begin{pmatrix} \\dot{\\theta}_{2} \\\\ \\sin\\theta_{2}\\,\\dot{\\theta}_{1} \\\\ \\cos\\theta_{2}\\,\\dot{\\theta}_{1} \\end{pmatrix}_{\\mathcal{B}_{2}}"
+    ));
+    // Long vectors stay sums over the basis vectors, so nothing overflows the page.
+    assert!(t.contains("\\Big)\\,\\vec{x}_{2}"));
+    assert!(!stderr(&o).contains("Overfull"), "{}", stderr(&o));
+    let o = run(&[
+        "answer-key",
+        spec().to_str().unwrap(),
+        "--vectors",
+        "diagonal",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}
