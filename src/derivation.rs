@@ -620,8 +620,22 @@ fn moment_by_transport(
 /// }
 /// ```
 pub fn derive_values(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, ResolveError> {
+    derive_values_with(m, qs, |_, _| {})
+}
+
+/// [`derive_values`], calling `done(k, q)` after the k-th quantity (1-based), for progress.
+pub fn derive_values_with(
+    m: &Mechanism,
+    qs: &[Quantity],
+    mut done: impl FnMut(usize, &Quantity),
+) -> Result<Vec<Derivation>, ResolveError> {
     let mut cache = Cache::default();
-    qs.iter().map(|q| derive_value(m, q, &mut cache)).collect()
+    let mut out = Vec::with_capacity(qs.len());
+    for (k, q) in qs.iter().enumerate() {
+        out.push(derive_value(m, q, &mut cache)?);
+        done(k + 1, q);
+    }
+    Ok(out)
 }
 
 fn derive_value(

@@ -21,6 +21,9 @@ use torseur::quantity::Quantity;
     about = "Exact derivations of rigid-body dynamics in the course's torsor notation"
 )]
 struct Cli {
+    /// Stop with a clear message (exit 2) if the work takes longer than this many seconds.
+    #[arg(long, global = true, value_name = "SECONDS")]
+    timeout: Option<f64>,
     #[command(subcommand)]
     command: Command,
 }
@@ -183,9 +186,32 @@ fn derive_all(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, Failure
     qs.iter().map(|q| derive(m, q).map_err(bad_input)).collect()
 }
 
-/// Values only, by the fastest exact route.
+/// Values only, by the fastest exact route; progress on stderr once the work passes a second.
 fn values_only(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, Failure> {
-    torseur::derivation::derive_values(m, qs).map_err(bad_input)
+    let start = std::time::Instant::now();
+    torseur::derivation::derive_values_with(m, qs, |k, q| {
+        let t = start.elapsed().as_secs_f64();
+        if t > 1.0 {
+            eprintln!("torseur: derived {k}/{} ({q}) after {t:.1} s", qs.len());
+        }
+    })
+    .map_err(bad_input)
+}
+
+/// Ends the process with a clear message if `limit` seconds pass. Outputs are written
+/// atomically at the very end, so nothing half-written is left.
+fn watchdog(limit: f64) -> Result<(), Failure> {
+    if !(limit.is_finite() && limit > 0.0) {
+        return Err(bad_input(anyhow!(
+            "--timeout takes a positive number of seconds"
+        )));
+    }
+    std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_secs_f64(limit));
+        eprintln!("torseur: error: stopped after the time limit of {limit} s (--timeout)");
+        std::process::exit(2);
+    });
+    Ok(())
 }
 
 /// Writes a file atomically: a temporary file in the same directory, renamed over the target.
@@ -269,6 +295,9 @@ fn compile_pdf(tex: &str) -> Result<Vec<u8>, Failure> {
 }
 
 fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
+    if let Some(limit) = cli.timeout {
+        watchdog(limit)?;
+    }
     let _lock = torseur::lock::ProcessLock::acquire(|| {
         eprintln!(
             "torseur: waiting for another torseur run to finish (symbolica allows one at a time)"

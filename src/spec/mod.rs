@@ -1,8 +1,10 @@
 //! Problem specs: JSON wire types and their validation into a [`crate::mechanism::Mechanism`].
 
+mod locate;
 mod validate;
 pub mod wire;
 
+pub use locate::locate;
 pub use validate::{build, parse_spec};
 
 use crate::mechanism::Mechanism;
@@ -32,12 +34,14 @@ pub enum SpecError {
         message: String,
     },
     /// Valid JSON whose content is wrong (an unknown frame, a cycle, a bad expression...).
-    #[error("at {path}: {message}")]
+    #[error("at {path}{}: {message}", .location.map(|(l, c)| format!(" (line {l}, column {c})")).unwrap_or_default())]
     Invalid {
         /// JSON path of the value.
         path: String,
         /// What is wrong.
         message: String,
+        /// 1-based line and column of the value, when the text is known.
+        location: Option<(usize, usize)>,
     },
 }
 
@@ -71,7 +75,14 @@ pub fn load(path: impl AsRef<Path>) -> Result<Mechanism, SpecError> {
     from_str(&text)
 }
 
-/// Parses and validates spec text.
+/// Parses and validates spec text; errors carry the line and column of the value.
 pub fn from_str(text: &str) -> Result<Mechanism, SpecError> {
-    build(&parse_spec(text)?)
+    build(&parse_spec(text)?).map_err(|e| match e {
+        SpecError::Invalid { path, message, .. } => SpecError::Invalid {
+            location: locate(text, &path),
+            path,
+            message,
+        },
+        other => other,
+    })
 }

@@ -16,6 +16,7 @@ fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
     SpecError::Invalid {
         path: path.into(),
         message: message.into(),
+        location: None,
     }
 }
 

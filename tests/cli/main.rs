@@ -307,3 +307,28 @@ fn vectors_can_be_written_as_columns_with_their_basis() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn a_time_limit_stops_long_work_cleanly() {
+    let d = tmp();
+    let out = d.path().join("chain.json");
+    let chain = Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations/chain/chain_9.json");
+    let o = run(&[
+        "derive",
+        chain.to_str().unwrap(),
+        "--timeout",
+        "0.3",
+        "--json",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("time limit of 0.3 s"), "{}", stderr(&o));
+    assert!(stdout(&o).is_empty());
+    assert_eq!(
+        std::fs::read_dir(d.path()).unwrap().count(),
+        0,
+        "nothing written"
+    );
+    let o = run(&["derive", spec().to_str().unwrap(), "--timeout", "-1"]);
+    assert_eq!(o.status.code(), Some(2));
+}

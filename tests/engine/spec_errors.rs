@@ -123,3 +123,29 @@ fn a_symmetry_that_contradicts_the_entries_is_refused() {
     assert!(e.to_string().contains("symmetries"), "{e}");
     assert!(path_of(&e).starts_with("hypotheses"), "{e}");
 }
+
+#[test]
+fn content_errors_point_at_line_and_column_in_the_file() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/regulateur_centrifuge.json"
+    ))
+    .unwrap();
+    let needle = "\"parent\": \"1\"";
+    let at = text.find(needle).expect("frame 2's parent");
+    let bad = text.replacen(needle, "\"parent\": \"9\"", 1);
+    let line = text[..at].matches('\n').count() + 1;
+    let column =
+        text[..at].rsplit('\n').next().unwrap().chars().count() + needle.find('"').unwrap() + 11;
+    match from_str(&bad) {
+        Err(SpecError::Invalid { path, location, .. }) => {
+            assert_eq!(path, "frames[1].parent");
+            assert_eq!(
+                location,
+                Some((line, column)),
+                "value `\"9\"` is at {line}:{column}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+}
