@@ -7,7 +7,7 @@ use crate::point::{PointId, Points};
 use crate::quantity::Quantity;
 use crate::spec::wire::SpecFile;
 use std::collections::BTreeMap;
-use std::sync::Arc;
+use std::rc::Rc;
 
 /// Typed index of a solid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -63,7 +63,7 @@ pub struct Mechanism {
     /// Statement.
     pub description: Option<String>,
     /// Parameters and coordinates.
-    pub reg: Arc<Registry>,
+    pub reg: Rc<Registry>,
     /// Frames (the ground is the root).
     pub frames: Frames,
     /// Origin point of each frame, indexed by frame.

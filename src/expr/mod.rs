@@ -17,6 +17,7 @@ use crate::spec::wire::CoordinateKind;
 use std::collections::HashMap;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
+use std::rc::Rc;
 use std::sync::Arc;
 use symbolica::atom::{Atom, AtomCore, Symbol};
 use symbolica::domains::rational::{Q, Rational, RationalField};
@@ -66,6 +67,9 @@ pub enum ExprError {
     /// A registry declaration problem.
     #[error("{0}")]
     Declaration(String),
+    /// Another thread is using symbolica (restricted mode: one thread at a time).
+    #[error("{0}")]
+    Thread(String),
 }
 
 /// How a coordinate enters expressions.
@@ -121,6 +125,9 @@ pub enum VarRole {
 /// ```
 #[derive(Debug)]
 pub struct Registry {
+    /// Ownership of symbolica for this thread while the registry lives (also makes the
+    /// registry, and every expression, `!Send` and `!Sync`).
+    _guard: ThreadGuard,
     vars: Arc<Vec<PolyVariable>>,
     roles: Vec<VarRole>,
     role_index: HashMap<VarRole, usize>,
@@ -139,6 +146,75 @@ fn rate_symbol(order: u8) -> Symbol {
     }
 }
 
+/// How long a thread waits for another to finish with symbolica before getting an error.
+const THREAD_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
+
+/// The thread that uses symbolica in this process, if any.
+static OWNER: std::sync::Mutex<Option<std::thread::ThreadId>> = std::sync::Mutex::new(None);
+
+/// Releases the ownership when the owning thread exits.
+struct OwnerMark;
+
+impl Drop for OwnerMark {
+    fn drop(&mut self) {
+        let me = std::thread::current().id();
+        let mut owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
+        if *owner == Some(me) {
+            *owner = None;
+        }
+    }
+}
+
+thread_local! {
+    static MARK: OwnerMark = const { OwnerMark };
+}
+
+/// One thread at a time may use symbolica: its restricted mode aborts the process when a
+/// second thread uses it while the first is alive (threads one after another are fine). The
+/// first thread that creates a registry owns symbolica until it exits; another thread then
+/// gets a clear error instead of an abort. Registries and expressions are `!Send` and `!Sync`,
+/// so they never migrate. With `SYMBOLICA_LICENSE` set the limit does not apply.
+#[derive(Debug)]
+struct ThreadGuard {
+    _not_send: std::marker::PhantomData<*const ()>,
+}
+
+impl ThreadGuard {
+    fn acquire() -> Result<ThreadGuard, ExprError> {
+        let guard = ThreadGuard {
+            _not_send: std::marker::PhantomData,
+        };
+        if std::env::var_os("SYMBOLICA_LICENSE").is_some() {
+            return Ok(guard);
+        }
+        let me = std::thread::current().id();
+        // A thread that has just finished releases symbolica in its exit destructors: wait a
+        // little for that before refusing (serialised hand-over between threads).
+        let start = std::time::Instant::now();
+        let mut owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
+        while owner.is_some_and(|id| id != me) && start.elapsed() < THREAD_WAIT {
+            drop(owner);
+            std::thread::sleep(std::time::Duration::from_millis(1));
+            owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
+        }
+        match *owner {
+            Some(id) if id == me => {}
+            Some(id) => {
+                return Err(ExprError::Thread(format!(
+                    "thread {me:?} cannot use torseur while thread {id:?} is using it: \
+                     unlicensed symbolica allows one thread at a time (use torseur from one \
+                     thread, let the other thread finish first, or set SYMBOLICA_LICENSE)"
+                )));
+            }
+            None => {
+                *owner = Some(me);
+                MARK.with(|_| {});
+            }
+        }
+        Ok(guard)
+    }
+}
+
 /// Names reserved by the expression syntax.
 pub const RESERVED: &[&str] = &["sin", "cos", "dot", "ddot", "dddot", "pi", "t"];
 
@@ -147,7 +223,7 @@ impl Registry {
     pub fn new(
         parameters: &[String],
         coords: &[(String, CoordinateKind)],
-    ) -> Result<Arc<Registry>, ExprError> {
+    ) -> Result<Rc<Registry>, ExprError> {
         let with_rates: Vec<(String, CoordinateKind, Option<String>)> =
             coords.iter().map(|(n, k)| (n.clone(), *k, None)).collect();
         Registry::with_rates(parameters, &with_rates)
@@ -158,7 +234,10 @@ impl Registry {
     pub fn with_rates(
         parameters: &[String],
         coords: &[(String, CoordinateKind, Option<String>)],
-    ) -> Result<Arc<Registry>, ExprError> {
+    ) -> Result<Rc<Registry>, ExprError> {
+        // Before any symbolica call: a second thread using symbolica concurrently would abort
+        // the process in its restricted mode.
+        let guard = ThreadGuard::acquire()?;
         let mut vars: Vec<PolyVariable> = Vec::new();
         let mut roles = Vec::new();
         let mut seen: HashMap<String, ()> = HashMap::new();
@@ -237,6 +316,7 @@ impl Registry {
             .collect();
         let role_index = roles.iter().enumerate().map(|(i, r)| (*r, i)).collect();
         let mut reg = Registry {
+            _guard: guard,
             vars: Arc::new(vars),
             role_index,
             roles,
@@ -248,7 +328,8 @@ impl Registry {
         // Imposed rates are expressions in the parameters: parse them with a registry that
         // shares the same variable list.
         if coords.iter().any(|c| c.2.is_some()) {
-            let base = Arc::new(Registry {
+            let base = Rc::new(Registry {
+                _guard: ThreadGuard::acquire()?,
                 vars: reg.vars.clone(),
                 roles: reg.roles.clone(),
                 role_index: reg.role_index.clone(),
@@ -271,7 +352,7 @@ impl Registry {
                 }
             }
         }
-        Ok(Arc::new(reg))
+        Ok(Rc::new(reg))
     }
 
     /// The parameters, in declaration order.
@@ -313,14 +394,14 @@ impl Registry {
         Poly::new(&Q, None, self.vars.clone())
     }
 
-    fn wrap(self: &Arc<Self>, p: Poly) -> Expr {
+    fn wrap(self: &Rc<Self>, p: Poly) -> Expr {
         Expr {
             p,
             reg: self.clone(),
         }
     }
 
-    fn var(self: &Arc<Self>, i: usize) -> Expr {
+    fn var(self: &Rc<Self>, i: usize) -> Expr {
         let mut e = vec![0u8; self.vars.len()];
         e[i] = 1;
         let p = self.poly_zero().monomial(Rational::one(), e);
@@ -328,38 +409,38 @@ impl Registry {
     }
 
     /// 0.
-    pub fn zero(self: &Arc<Self>) -> Expr {
+    pub fn zero(self: &Rc<Self>) -> Expr {
         self.wrap(self.poly_zero())
     }
 
     /// 1.
-    pub fn one(self: &Arc<Self>) -> Expr {
+    pub fn one(self: &Rc<Self>) -> Expr {
         self.integer(1)
     }
 
     /// An integer constant.
-    pub fn integer(self: &Arc<Self>, n: i64) -> Expr {
+    pub fn integer(self: &Rc<Self>, n: i64) -> Expr {
         self.rational(n, 1)
     }
 
     /// The rational constant n/d (d ≠ 0).
-    pub fn rational(self: &Arc<Self>, n: i64, d: i64) -> Expr {
+    pub fn rational(self: &Rc<Self>, n: i64, d: i64) -> Expr {
         let r = Rational::new(n, d);
         self.constant(r)
     }
 
-    fn constant(self: &Arc<Self>, r: Rational) -> Expr {
+    fn constant(self: &Rc<Self>, r: Rational) -> Expr {
         let p = self.poly_zero().constant(r);
         self.wrap(p)
     }
 
     /// A parameter, by name.
-    pub fn param(self: &Arc<Self>, name: &str) -> Option<Expr> {
+    pub fn param(self: &Rc<Self>, name: &str) -> Option<Expr> {
         self.param_var.get(name).map(|&i| self.var(i))
     }
 
     /// cos q (for a length coordinate, which has none, this is 1: never used so).
-    pub fn cos(self: &Arc<Self>, q: CoordId) -> Expr {
+    pub fn cos(self: &Rc<Self>, q: CoordId) -> Expr {
         match self.coords[q.0].trig {
             Some((c, _)) => self.var(c),
             None => self.one(),
@@ -367,7 +448,7 @@ impl Registry {
     }
 
     /// sin q (0 for a length coordinate).
-    pub fn sin(self: &Arc<Self>, q: CoordId) -> Expr {
+    pub fn sin(self: &Rc<Self>, q: CoordId) -> Expr {
         match self.coords[q.0].trig {
             Some((_, s)) => self.var(s),
             None => self.zero(),
@@ -375,22 +456,22 @@ impl Registry {
     }
 
     /// q for a length coordinate (None for an angle, which enters only by cos and sin).
-    pub fn value(self: &Arc<Self>, q: CoordId) -> Option<Expr> {
+    pub fn value(self: &Rc<Self>, q: CoordId) -> Option<Expr> {
         self.coords[q.0].value.map(|i| self.var(i))
     }
 
     /// q̇.
-    pub fn dot(self: &Arc<Self>, q: CoordId) -> Expr {
+    pub fn dot(self: &Rc<Self>, q: CoordId) -> Expr {
         self.rate(q, 1)
     }
 
     /// q̈.
-    pub fn ddot(self: &Arc<Self>, q: CoordId) -> Expr {
+    pub fn ddot(self: &Rc<Self>, q: CoordId) -> Expr {
         self.rate(q, 2)
     }
 
     /// Derivative of order 1 to 3 of q.
-    pub fn rate(self: &Arc<Self>, q: CoordId, order: u8) -> Expr {
+    pub fn rate(self: &Rc<Self>, q: CoordId, order: u8) -> Expr {
         let c = &self.coords[q.0];
         match (&c.rates, &c.imposed_rate) {
             (Some(r), _) => self.var(r[(order.clamp(1, 3) - 1) as usize]),
@@ -451,7 +532,7 @@ impl Registry {
     }
 
     /// Parses an expression of the spec syntax (see DESIGN.md) into canonical form.
-    pub fn parse(self: &Arc<Self>, s: &str) -> Result<Expr, ExprError> {
+    pub fn parse(self: &Rc<Self>, s: &str) -> Result<Expr, ExprError> {
         parse::parse_scalar(self, s)
     }
 
@@ -459,7 +540,7 @@ impl Registry {
     /// basis vector names (returning a basis key and an axis index). Returns, per basis key,
     /// the three components.
     pub fn parse_vector<K: Ord + Copy>(
-        self: &Arc<Self>,
+        self: &Rc<Self>,
         s: &str,
         basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
     ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
@@ -503,7 +584,7 @@ impl fmt::Debug for Compiled {
 #[derive(Clone)]
 pub struct Expr {
     p: Poly,
-    reg: Arc<Registry>,
+    reg: Rc<Registry>,
 }
 
 impl fmt::Debug for Expr {
@@ -514,7 +595,7 @@ impl fmt::Debug for Expr {
 
 impl PartialEq for Expr {
     fn eq(&self, other: &Expr) -> bool {
-        Arc::ptr_eq(&self.reg, &other.reg) && self.p == other.p
+        Rc::ptr_eq(&self.reg, &other.reg) && self.p == other.p
     }
 }
 
@@ -522,7 +603,7 @@ impl Eq for Expr {}
 
 impl Expr {
     /// The registry this expression belongs to.
-    pub fn registry(&self) -> &Arc<Registry> {
+    pub fn registry(&self) -> &Rc<Registry> {
         &self.reg
     }
 
@@ -669,7 +750,7 @@ impl Expr {
     }
 
     /// Builds an expression from terms (any order; like terms are combined).
-    pub(crate) fn from_terms(reg: &Arc<Registry>, terms: Vec<(Rational, Vec<u8>)>) -> Expr {
+    pub(crate) fn from_terms(reg: &Rc<Registry>, terms: Vec<(Rational, Vec<u8>)>) -> Expr {
         let mut coefficients = Vec::with_capacity(terms.len());
         let mut exponents = Vec::with_capacity(terms.len() * reg.nvars());
         for (c, e) in terms {
@@ -706,7 +787,7 @@ macro_rules! binop {
         impl $trait<&Expr> for &Expr {
             type Output = Expr;
             fn $method(self, rhs: &Expr) -> Expr {
-                debug_assert!(Arc::ptr_eq(&self.reg, &rhs.reg), "expressions of two registries");
+                debug_assert!(Rc::ptr_eq(&self.reg, &rhs.reg), "expressions of two registries");
                 let p = &self.p $op &rhs.p;
                 let p = if $reduce { Expr::reduce(p, &self.reg) } else { p };
                 self.with(p)

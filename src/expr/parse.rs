@@ -6,7 +6,7 @@
 
 use super::{CoordId, Expr, ExprError, Registry};
 use crate::spec::wire::CoordinateKind;
-use std::sync::Arc;
+use std::rc::Rc;
 use symbolica::atom::{Atom, AtomCore, AtomView, Symbol};
 use symbolica::domains::rational::{Q, Rational, RationalField};
 use symbolica::poly::polynomial::MultivariatePolynomial;
@@ -58,13 +58,13 @@ fn parse_atom(s: &str) -> Result<Atom, ExprError> {
     })
 }
 
-pub(super) fn parse_scalar(reg: &Arc<Registry>, s: &str) -> Result<Expr, ExprError> {
+pub(super) fn parse_scalar(reg: &Rc<Registry>, s: &str) -> Result<Expr, ExprError> {
     let a = parse_atom(s)?;
     Walker { reg, input: s }.scalar(a.as_view())
 }
 
 pub(super) fn parse_vector<K: Ord + Copy>(
-    reg: &Arc<Registry>,
+    reg: &Rc<Registry>,
     s: &str,
     basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
 ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
@@ -130,7 +130,7 @@ pub(super) fn parse_vector<K: Ord + Copy>(
 }
 
 struct Walker<'a> {
-    reg: &'a Arc<Registry>,
+    reg: &'a Rc<Registry>,
     input: &'a str,
 }
 
@@ -346,7 +346,7 @@ enum AngleTerm {
 }
 
 /// (cos nq, sin nq) by repeated angle addition (de Moivre), for any integer n.
-fn multiple_angle(reg: &Arc<Registry>, q: CoordId, n: i64) -> (Expr, Expr) {
+fn multiple_angle(reg: &Rc<Registry>, q: CoordId, n: i64) -> (Expr, Expr) {
     let (c1, s1) = (reg.cos(q), reg.sin(q));
     let (mut c, mut s) = (reg.one(), reg.zero());
     for _ in 0..n.unsigned_abs() {

@@ -3,7 +3,7 @@
 
 use super::{CoordId, Expr, Registry, VarRole};
 use std::cmp::Reverse;
-use std::sync::Arc;
+use std::rc::Rc;
 use symbolica::domains::rational::Rational;
 
 /// A term split the way a teacher reads it.
@@ -200,7 +200,7 @@ pub struct PresentationGroup {
 pub struct Presentation {
     /// The groups, q̈ first, then products of rates, then the rest.
     pub groups: Vec<PresentationGroup>,
-    reg: Arc<Registry>,
+    reg: Rc<Registry>,
 }
 
 impl Expr {
@@ -319,7 +319,7 @@ fn common_factor(ts: &[TermParts]) -> TermParts {
 
 impl Presentation {
     /// The registry of the expression.
-    pub fn registry(&self) -> &Arc<Registry> {
+    pub fn registry(&self) -> &Rc<Registry> {
         &self.reg
     }
 }

@@ -1,6 +1,6 @@
 use super::*;
 
-fn reg() -> Arc<Registry> {
+fn reg() -> Rc<Registry> {
     Registry::new(
         &["m".into(), "L".into(), "k".into()],
         &[

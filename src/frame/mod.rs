@@ -8,7 +8,7 @@
 //! the geometry allows, instead of forming a full direction-cosine matrix.
 
 use crate::expr::{CoordId, Expr, Registry};
-use std::sync::Arc;
+use std::rc::Rc;
 
 /// Typed index of a frame in a [`Frames`] arena.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -97,13 +97,13 @@ pub struct Frame {
 /// Arena of frames; the ground (Galilean) frame is always `FrameId(0)`.
 #[derive(Debug, Clone)]
 pub struct Frames {
-    reg: Arc<Registry>,
+    reg: Rc<Registry>,
     frames: Vec<Frame>,
 }
 
 impl Frames {
     /// A tree holding only the ground frame `ground`.
-    pub fn new(reg: Arc<Registry>, ground: &str) -> Self {
+    pub fn new(reg: Rc<Registry>, ground: &str) -> Self {
         Frames {
             reg,
             frames: vec![Frame {
@@ -121,7 +121,7 @@ impl Frames {
     }
 
     /// The expression registry shared by all frames.
-    pub fn registry(&self) -> &Arc<Registry> {
+    pub fn registry(&self) -> &Rc<Registry> {
         &self.reg
     }
 

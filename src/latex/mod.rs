@@ -13,7 +13,7 @@ use crate::expr::print::TermParts;
 use crate::expr::{CoordId, Expr, Presentation, Registry};
 use crate::mechanism::Mechanism;
 use crate::quantity::{Motion, QuantityKind};
-use std::sync::Arc;
+use std::rc::Rc;
 
 const GREEK: &[&str] = &[
     "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
@@ -275,7 +275,7 @@ pub fn expr_plain(e: &Expr) -> String {
 
 /// The groups of the presentation form, each as (negative, LaTeX).
 fn groups(p: &Presentation) -> Vec<(bool, String)> {
-    let reg: &Arc<Registry> = p.registry();
+    let reg: &Rc<Registry> = p.registry();
     p.groups
         .iter()
         .map(|g| {

@@ -12,6 +12,7 @@ mod latex;
 mod properties;
 mod regulator;
 mod spec_errors;
+mod threads;
 
 use torseur::expr::Expr;
 use torseur::frame::FrameId;
