@@ -93,7 +93,8 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             r.solids = vec![b];
             r.basis = torsor::inertia_basis(m, b);
         }
-        KineticResultant(mo) | DynamicResultant(mo) => kinetic(mo, &mut r)?,
+        KineticResultant(mo) | DynamicResultant(mo) | KineticEnergy(mo) => kinetic(mo, &mut r)?,
+        Unknown(_) | Eom(_) => {}
         KineticMoment { point: p, motion }
         | DynamicMoment { point: p, motion }
         | KineticTorsor { motion, point: p }
@@ -213,6 +214,27 @@ pub enum StepKind {
     Derivative(QuantityKind, String),
     /// The complementary term V(A/R) ∧ m V(G/R) of δ: (point A, centre G, frame R).
     Complementary(String, String, String),
+    /// An action torsor {T(from→on)} at a point.
+    Action {
+        /// What exerts it (`0`, `pes`, `moteur`).
+        from: String,
+        /// What receives it.
+        on: String,
+        /// Point of reduction.
+        point: String,
+    },
+    /// A quantity projected on a basis vector (frame name, axis letter).
+    Projected(QuantityKind, (String, char)),
+    /// The sum of the actions exterior to a system: its moment at a point (resultant when
+    /// none), projected on a basis vector.
+    External {
+        /// The isolated solid or set.
+        isolate: String,
+        /// Point of the moments, none for the resultant.
+        point: Option<String>,
+        /// Projection vector (frame name, axis letter).
+        on: (String, char),
+    },
 }
 
 /// One step of a derivation.
@@ -265,6 +287,7 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
     let mut value: Option<Value> = None;
     use QuantityKind::*;
     match &q.kind {
+        KineticEnergy(_) | Unknown(_) | Eom(_) => return crate::pfd::derive(m, q),
         Omega(_) => {
             vector = Some(omega(m, r.moving_frame.unwrap_or(reference), reference));
         }

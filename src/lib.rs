@@ -27,7 +27,8 @@
 //! Layers: [`spec`] (JSON to [`mechanism::Mechanism`]), [`expr`] (the only module that uses
 //! symbolica: canonical polynomial form), mechanics ([`frame`], [`vector`], [`point`],
 //! [`inertia`], [`kinematics`], [`torsor`]), [`derivation`] (steps with their theorems),
-//! [`output`] (text, JSON, numbers).
+//! [`pfd`] (actions, the Fundamental Principle of Dynamics, Lagrange), [`output`] (text, JSON,
+//! numbers).
 #![deny(missing_docs)]
 // Matrix and vector code indexes components as the formulas do (I[i][j], u[k]).
 #![allow(clippy::needless_range_loop)]
@@ -43,8 +44,10 @@ pub mod lock;
 pub mod mechanism;
 pub mod numeric;
 pub mod output;
+pub mod pfd;
 pub mod point;
 pub mod quantity;
+pub mod simulate;
 pub mod spec;
 pub mod torsor;
 pub mod vector;

@@ -80,6 +80,8 @@ pub struct Mechanism {
     pub default_basis: FrameId,
     /// Requested quantities.
     pub quantities: Vec<Quantity>,
+    /// Actions, links and the declared equations of the PFD.
+    pub dynamics: crate::pfd::Dynamics,
     /// The spec it was built from (the float backend works from it).
     pub spec: SpecFile,
 }

@@ -44,6 +44,13 @@ pub enum QuantityKind {
     KineticTorsor { motion: Motion, point: String },
     /// {D(S/R)}_A: dynamic torsor.
     DynamicTorsor { motion: Motion, point: String },
+    /// Ec(S/R): kinetic energy.
+    KineticEnergy(Motion),
+    /// An unknown of the PFD solved in closed form (`C_m`, `X01`): its bare name.
+    Unknown(String),
+    /// eom(q): the equation of motion of coordinate q, as the expression equal to zero
+    /// (dynamic side minus actions, unknowns eliminated).
+    Eom(String),
 }
 
 /// A requested quantity: a kind, an optional basis to express it in, an optional projection.
@@ -77,6 +84,8 @@ impl Quantity {
     /// assert_eq!(q.projection, Some(("2".to_string(), 'x')));
     /// assert_eq!(q.to_string(), "delta(O2,2/0).x2");
     /// assert!(Quantity::parse("delta(O2;2/0)").is_err());
+    /// // Found by the fuzzer: a long name of multi-byte characters is an error, not a panic.
+    /// assert!(Quantity::parse("Omega(߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰/0)").is_err());
     /// ```
     pub fn parse(input: &str) -> Result<Quantity, NotationError> {
         let err = |reason: &str| NotationError {
@@ -115,7 +124,9 @@ impl Quantity {
             }
             None => (body.clone(), None),
         };
-        let kind = if let Some(rest) = core.strip_prefix('{') {
+        let kind = if !core.contains('(') && crate::expr::check_identifier(&core).is_ok() {
+            QuantityKind::Unknown(core.clone())
+        } else if let Some(rest) = core.strip_prefix('{') {
             // {C(2/0)}_O2
             let (inner, point) = rest
                 .split_once("}_")
@@ -153,6 +164,11 @@ impl Quantity {
                         _ => QuantityKind::DynamicMoment { point, motion },
                     }
                 }
+                "Ec" => QuantityKind::KineticEnergy(motion(args).map_err(|r| err(&r))?),
+                "eom" => {
+                    crate::expr::check_identifier(args).map_err(|r| err(&r))?;
+                    QuantityKind::Eom(args.to_string())
+                }
                 "I" => {
                     let (p, solid) = args
                         .split_once(',')
@@ -167,13 +183,19 @@ impl Quantity {
                 other => {
                     return Err(err(&format!(
                         "unknown quantity `{other}` (known: Omega, V, Gamma, I, Rc, sigma, Rd, \
-                         delta, {{V(..)}}_A, {{C(..)}}_A, {{D(..)}}_A)"
+                         delta, Ec, eom, {{V(..)}}_A, {{C(..)}}_A, {{D(..)}}_A, or the name \
+                         of an unknown)"
                     )));
                 }
             }
         };
         if projection.is_some() && matches!(kind, QuantityKind::Inertia { .. }) {
             return Err(err("an inertia operator cannot be projected"));
+        }
+        if (projection.is_some() || basis.is_some()) && kind.is_scalar_kind() {
+            return Err(err(
+                "this quantity is a scalar: it takes no basis or projection",
+            ));
         }
         if projection.is_some() && kind.is_torsor() {
             return Err(err("a torsor cannot be projected"));
@@ -197,9 +219,9 @@ impl Quantity {
         }
     }
 
-    /// Whether the value is a scalar (a projection).
+    /// Whether the value is a scalar (a projection, an energy, an unknown, an equation).
     pub fn is_scalar(&self) -> bool {
-        self.projection.is_some()
+        self.projection.is_some() || self.kind.is_scalar_kind()
     }
 }
 
@@ -211,6 +233,14 @@ impl QuantityKind {
             QuantityKind::KinematicTorsor { .. }
                 | QuantityKind::KineticTorsor { .. }
                 | QuantityKind::DynamicTorsor { .. }
+        )
+    }
+
+    /// Whether the kind is a scalar by itself (no projection needed).
+    pub fn is_scalar_kind(&self) -> bool {
+        matches!(
+            self,
+            QuantityKind::KineticEnergy(_) | QuantityKind::Unknown(_) | QuantityKind::Eom(_)
         )
     }
 
@@ -226,7 +256,8 @@ impl QuantityKind {
             | KinematicTorsor { motion, .. }
             | KineticTorsor { motion, .. }
             | DynamicTorsor { motion, .. } => Some(motion),
-            Inertia { .. } => None,
+            KineticEnergy(m) => Some(m),
+            Inertia { .. } | Unknown(_) | Eom(_) => None,
         }
     }
 }
@@ -246,6 +277,9 @@ impl fmt::Display for QuantityKind {
             KinematicTorsor { motion, point } => write!(f, "{{V({motion})}}_{point}"),
             KineticTorsor { motion, point } => write!(f, "{{C({motion})}}_{point}"),
             DynamicTorsor { motion, point } => write!(f, "{{D({motion})}}_{point}"),
+            KineticEnergy(m) => write!(f, "Ec({m})"),
+            Unknown(name) => write!(f, "{name}"),
+            Eom(q) => write!(f, "eom({q})"),
         }
     }
 }
@@ -291,7 +325,8 @@ pub fn check_name(s: &str) -> Result<(), String> {
         return Err("empty name".to_string());
     }
     if s.len() > 32 {
-        return Err(format!("name `{}…` longer than 32 characters", &s[..32]));
+        let head: String = s.chars().take(32).collect();
+        return Err(format!("name `{head}…` longer than 32 characters"));
     }
     if !s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') || s.starts_with('_') {
         return Err(format!(

@@ -151,7 +151,23 @@ pub fn verify(
             .ok_or_else(|| VerifyError::Hypothesis(h.to_string()))?;
         derived = derived.under(h);
     }
-    let given = parse_shaped(m, &derived, text)?;
+    // An equation of motion may be written `lhs = rhs`, and is the same equation when
+    // multiplied by a nonzero number.
+    let is_equation = matches!(q.kind, crate::quantity::QuantityKind::Eom(_));
+    let given = match (is_equation, text.split_once('=')) {
+        (true, Some((l, r))) => vec![&m.reg.parse(l.trim())? - &m.reg.parse(r.trim())?],
+        _ => parse_shaped(m, &derived, text)?,
+    };
+    if is_equation
+        && let (Some(g), Some(d)) = (given.first(), derived.exprs().first())
+        && g.constant_multiple_of(d).is_some()
+    {
+        return Ok(Verdict {
+            quantity: q.to_string(),
+            difference: vec![m.reg.zero()],
+            derived,
+        });
+    }
     let difference = given
         .iter()
         .zip(derived.exprs())

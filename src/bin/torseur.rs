@@ -87,6 +87,24 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Integrates the equations of motion for a scenario of the spec: CSV on stdout or in a
+    /// file, plots as SVG and PNG.
+    Simulate {
+        /// Problem spec (JSON).
+        spec: PathBuf,
+        /// Scenario name (the spec's `scenarios`).
+        #[arg(long)]
+        scenario: String,
+        /// Output CSV file (stdout if absent).
+        #[arg(short = 'o', long = "output")]
+        output: Option<PathBuf>,
+        /// Plot as SVG (every coordinate and recorded quantity against time).
+        #[arg(long)]
+        plot: Option<PathBuf>,
+        /// Plot as PNG.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
     /// Exact equivalence of a hand-written result with the derived one (exit 1 if not).
     Verify {
         /// Problem spec (JSON).
@@ -244,9 +262,12 @@ fn write_atomic(path: &Path, content: &[u8]) -> Result<(), Failure> {
 }
 
 /// Compiles LaTeX with pdflatex in a temporary directory (no shell escape) and returns the PDF.
-fn compile_pdf(tex: &str) -> Result<Vec<u8>, Failure> {
+fn compile_pdf(tex: &str, figures: &[(String, Vec<u8>)]) -> Result<Vec<u8>, Failure> {
     let dir = tempfile::tempdir().map_err(bad_input)?;
     std::fs::write(dir.path().join("key.tex"), tex).map_err(bad_input)?;
+    for (name, bytes) in figures {
+        std::fs::write(dir.path().join(name), bytes).map_err(bad_input)?;
+    }
     let run = || {
         std::process::Command::new("pdflatex")
             .args([
@@ -329,8 +350,21 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             if let Some(path) = latex {
                 let mut mq = m.clone();
                 mq.quantities = qs.clone();
-                let tex = torseur::latex::answer_key(&mq).map_err(bad_input)?;
-                write_atomic(&path, tex.as_bytes())?;
+                let key =
+                    torseur::latex::answer_key_document(&mq, torseur::latex::VectorStyle::Sum)
+                        .map_err(bad_input)?;
+                let mut figures = Vec::new();
+                for (name, fig) in &key.figures {
+                    figures.push((name.clone(), fig.to_png(2).map_err(bad_input)?));
+                }
+                let dir = match path.parent() {
+                    Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+                    _ => PathBuf::from("."),
+                };
+                for (name, bytes) in &figures {
+                    write_atomic(&dir.join(name), bytes)?;
+                }
+                write_atomic(&path, key.tex.as_bytes())?;
             }
             if let Some(path) = json {
                 let j = output::derive_json(&m, &ds);
@@ -382,17 +416,41 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 Vectors::Sum => torseur::latex::VectorStyle::Sum,
                 Vectors::Column => torseur::latex::VectorStyle::Column,
             };
-            let tex = torseur::latex::answer_key_with(&m, style).map_err(bad_input)?;
+            let key = torseur::latex::answer_key_document(&m, style).map_err(bad_input)?;
+            let tex = key.tex;
+            // Every figure is rendered before anything is written.
+            let mut figures = Vec::new();
+            for (name, fig) in &key.figures {
+                figures.push((name.clone(), fig.to_png(2).map_err(bad_input)?));
+            }
             match output {
-                None => emit(&tex),
-                Some(path) => {
-                    if pdf {
-                        let bytes = compile_pdf(&tex)?;
-                        write_atomic(&path, tex.as_bytes())?;
-                        write_atomic(&path.with_extension("pdf"), &bytes)
-                    } else {
-                        write_atomic(&path, tex.as_bytes())
+                None => {
+                    if !figures.is_empty() {
+                        eprintln!(
+                            "torseur: the key includes {} figure(s): give -o to write them",
+                            figures.len()
+                        );
                     }
+                    emit(&tex)
+                }
+                Some(path) => {
+                    let dir = match path.parent() {
+                        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+                        _ => PathBuf::from("."),
+                    };
+                    let pdf_bytes = if pdf {
+                        Some(compile_pdf(&tex, &figures)?)
+                    } else {
+                        None
+                    };
+                    for (name, bytes) in &figures {
+                        write_atomic(&dir.join(name), bytes)?;
+                    }
+                    write_atomic(&path, tex.as_bytes())?;
+                    if let Some(bytes) = pdf_bytes {
+                        write_atomic(&path.with_extension("pdf"), &bytes)?;
+                    }
+                    Ok(())
                 }
             }
         }
@@ -429,6 +487,55 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                     code: 1,
                     error: anyhow!("symbolic and float results disagree: {}", names.join(", ")),
                 })
+            }
+        }
+        Command::Simulate {
+            spec,
+            scenario,
+            output,
+            plot,
+            png,
+        } => {
+            let m = load(&spec)?;
+            let run = torseur::simulate::simulate(&m, &scenario).map_err(bad_input)?;
+            let table = run.table().map_err(bad_input)?;
+            let ids: Vec<&str> = run
+                .columns
+                .iter()
+                .map(|c| c.id.as_str())
+                .filter(|id| !id.starts_with("int("))
+                .collect();
+            let fig = torseur::simulate::figure(
+                &format!("{} ({})", m.title, run.scenario),
+                &[(run.scenario.as_str(), &run)],
+                &ids,
+                true,
+            );
+            // Everything is computed before anything is written.
+            let svg = match &plot {
+                Some(_) => Some(fig.to_svg().map_err(bad_input)?),
+                None => None,
+            };
+            let png_bytes = match &png {
+                Some(_) => Some(fig.to_png(2).map_err(bad_input)?),
+                None => None,
+            };
+            let csv = table.to_csv();
+            if let (Some(p), Some(s)) = (&plot, &svg) {
+                write_atomic(p, s.as_bytes())?;
+            }
+            if let (Some(p), Some(b)) = (&png, &png_bytes) {
+                write_atomic(p, b)?;
+            }
+            eprintln!(
+                "simulate: {} points, {} evaluations, {} steps",
+                run.times.len(),
+                run.stats.evaluations,
+                run.stats.accepted_steps
+            );
+            match output {
+                None => emit(&csv),
+                Some(p) => write_atomic(&p, csv.as_bytes()),
             }
         }
         Command::Verify {

@@ -99,13 +99,14 @@ impl CoordInfo {
 /// What a polynomial variable stands for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum VarRole {
-    /// A constant parameter (index in [`Registry::parameters`]).
+    /// A constant parameter (index in [`Registry::parameters`]), or beyond them an unknown
+    /// of the PFD (index − number of parameters in [`Registry::unknowns`]).
     Parameter(usize),
     /// cos q of an angle coordinate.
     Cos(CoordId),
     /// sin q of an angle coordinate.
     Sin(CoordId),
-    /// q itself, for a length coordinate.
+    /// q itself, for a length coordinate (or an angle that enters as itself).
     Value(CoordId),
     /// q̇ (order 1), q̈ (order 2), third derivative (order 3).
     Rate(CoordId, u8),
@@ -131,7 +132,9 @@ pub struct Registry {
     vars: Arc<Vec<PolyVariable>>,
     roles: Vec<VarRole>,
     role_index: HashMap<VarRole, usize>,
+    /// Parameters, then unknowns.
     parameters: Vec<String>,
+    n_params: usize,
     param_var: HashMap<String, usize>,
     coords: Vec<CoordInfo>,
     coord_by_name: HashMap<String, CoordId>,
@@ -215,6 +218,38 @@ impl ThreadGuard {
     }
 }
 
+/// A name usable in expressions (parameters, coordinates): an ASCII letter, then letters,
+/// digits or `_`, at most 32 characters. (`21` would read as a number.)
+///
+/// ```
+/// assert!(torseur::expr::check_identifier("theta1").is_ok());
+/// assert!(torseur::expr::check_identifier("21").is_err());
+/// assert!(torseur::expr::check_identifier("m-1").is_err());
+/// ```
+pub fn check_identifier(n: &str) -> Result<(), String> {
+    let mut chars = n.chars();
+    let first_ok = chars.next().is_some_and(|c| c.is_ascii_alphabetic());
+    if !first_ok || n.len() > 32 || !n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Err(format!(
+            "`{n}` is not a valid name for an expression: a letter, then letters, digits or `_` \
+             (at most 32 characters)"
+        ));
+    }
+    Ok(())
+}
+
+/// Longest expression text the parser accepts. A canonical form prints to a text that parses
+/// back to it whenever that text is within this length.
+pub const MAX_INPUT_LEN: usize = 20_000;
+
+/// Largest degree in one variable an expression can have (exponents are stored in a byte).
+/// Parsing refuses anything beyond it, so every expression's text parses back.
+pub const MAX_INPUT_DEGREE: u32 = 255;
+
+/// Largest degree in one variable of the expressions a spec gives (positions, masses, inertia
+/// entries, rates): mechanics multiplies them a few times, staying within [`MAX_INPUT_DEGREE`].
+pub const MAX_SPEC_DEGREE: u32 = 32;
+
 /// Names reserved by the expression syntax.
 pub const RESERVED: &[&str] = &["sin", "cos", "dot", "ddot", "dddot", "pi", "t"];
 
@@ -235,6 +270,18 @@ impl Registry {
         parameters: &[String],
         coords: &[(String, CoordinateKind, Option<String>)],
     ) -> Result<Rc<Registry>, ExprError> {
+        Registry::with_unknowns(parameters, coords, &[], &[])
+    }
+
+    /// [`Registry::with_rates`], plus the unknowns of the PFD (link components, a motor
+    /// torque: scalars that enter linearly and are solved for) and the angles that also enter
+    /// as themselves (a torsion spring's −k(θ − θ0)), not only through sin and cos.
+    pub fn with_unknowns(
+        parameters: &[String],
+        coords: &[(String, CoordinateKind, Option<String>)],
+        unknowns: &[String],
+        raw_angles: &[String],
+    ) -> Result<Rc<Registry>, ExprError> {
         // Before any symbolica call: a second thread using symbolica concurrently would abort
         // the process in its restricted mode.
         let guard = ThreadGuard::acquire()?;
@@ -242,6 +289,7 @@ impl Registry {
         let mut roles = Vec::new();
         let mut seen: HashMap<String, ()> = HashMap::new();
         let mut check = |n: &str| -> Result<(), ExprError> {
+            check_identifier(n).map_err(ExprError::Declaration)?;
             if RESERVED.contains(&n) {
                 return Err(ExprError::Declaration(format!(
                     "`{n}` is reserved by the expression syntax"
@@ -280,6 +328,11 @@ impl Registry {
                     ));
                     roles.push(VarRole::Cos(id));
                     info.trig = Some((vars.len() - 1, vars.len() - 2));
+                    if raw_angles.contains(name) {
+                        vars.push(PolyVariable::Symbol(symbolica::symbol!(name.as_str())));
+                        roles.push(VarRole::Value(id));
+                        info.value = Some(vars.len() - 1);
+                    }
                 }
                 CoordinateKind::Length => {
                     vars.push(PolyVariable::Symbol(symbolica::symbol!(name.as_str())));
@@ -303,6 +356,8 @@ impl Registry {
             infos.push(info);
         }
         let mut param_var = HashMap::new();
+        let n_params = parameters.len();
+        let parameters: Vec<String> = parameters.iter().chain(unknowns).cloned().collect();
         for (i, p) in parameters.iter().enumerate() {
             check(p)?;
             vars.push(PolyVariable::Symbol(symbolica::symbol!(p.as_str())));
@@ -320,7 +375,8 @@ impl Registry {
             vars: Arc::new(vars),
             role_index,
             roles,
-            parameters: parameters.to_vec(),
+            parameters,
+            n_params,
             param_var,
             coords: infos,
             coord_by_name,
@@ -334,6 +390,7 @@ impl Registry {
                 roles: reg.roles.clone(),
                 role_index: reg.role_index.clone(),
                 parameters: reg.parameters.clone(),
+                n_params: reg.n_params,
                 param_var: reg.param_var.clone(),
                 coords: reg.coords.clone(),
                 coord_by_name: reg.coord_by_name.clone(),
@@ -357,7 +414,22 @@ impl Registry {
 
     /// The parameters, in declaration order.
     pub fn parameters(&self) -> &[String] {
-        &self.parameters
+        &self.parameters[..self.n_params]
+    }
+
+    /// The unknowns of the PFD, in declaration order.
+    pub fn unknowns(&self) -> &[String] {
+        &self.parameters[self.n_params..]
+    }
+
+    /// Name of the parameter or unknown of a [`VarRole::Parameter`] index.
+    pub fn scalar_name(&self, i: usize) -> &str {
+        &self.parameters[i]
+    }
+
+    /// Whether a [`VarRole::Parameter`] index is an unknown of the PFD.
+    pub fn is_unknown(&self, i: usize) -> bool {
+        i >= self.n_params
     }
 
     /// The coordinates, in declaration order.
@@ -401,6 +473,11 @@ impl Registry {
         }
     }
 
+    /// The polynomial variable `i` as an expression (see [`Registry::role`]).
+    pub fn variable(self: &Rc<Self>, i: usize) -> Expr {
+        self.var(i)
+    }
+
     fn var(self: &Rc<Self>, i: usize) -> Expr {
         let mut e = vec![0u8; self.vars.len()];
         e[i] = 1;
@@ -429,7 +506,7 @@ impl Registry {
         self.constant(r)
     }
 
-    fn constant(self: &Rc<Self>, r: Rational) -> Expr {
+    pub(crate) fn constant(self: &Rc<Self>, r: Rational) -> Expr {
         let p = self.poly_zero().constant(r);
         self.wrap(p)
     }
@@ -641,6 +718,22 @@ impl Expr {
         }
     }
 
+    /// The largest degree of any variable.
+    pub fn max_degree(&self) -> u32 {
+        (0..self.reg.nvars())
+            .map(|i| self.p.degree(i) as u32)
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// Whether `self * other` keeps every degree within [`MAX_INPUT_DEGREE`].
+    pub(crate) fn product_fits(&self, other: &Expr, times: u32) -> bool {
+        (0..self.reg.nvars()).all(|i| {
+            let d = self.p.degree(i) as u32 * times + other.p.degree(i) as u32;
+            d <= MAX_INPUT_DEGREE
+        })
+    }
+
     /// Whether the variable `i` occurs.
     #[allow(dead_code)]
     pub(crate) fn contains_var(&self, i: usize) -> bool {
@@ -770,6 +863,72 @@ impl Expr {
     /// Whether the expression is exactly 1.
     pub fn is_one(&self) -> bool {
         self.p.is_one()
+    }
+
+    /// Partial derivative with respect to polynomial variable `i`, every other variable held
+    /// fixed (the coefficient of an unknown that enters linearly).
+    pub fn derivative(&self, i: usize) -> Expr {
+        if self.p.degree(i) == 0 {
+            return self.zero_like();
+        }
+        self.with(self.p.derivative(i))
+    }
+
+    /// Partial derivative ∂/∂q with respect to a coordinate's value, its rates held fixed:
+    /// through cos q and sin q for an angle (∂cos q/∂q = −sin q, ∂sin q/∂q = cos q), and q
+    /// itself where it enters as itself.
+    pub fn partial_coordinate(&self, q: CoordId) -> Expr {
+        let reg = &self.reg;
+        let c = &reg.coords[q.0];
+        let mut acc = self.zero_like();
+        if let Some((ci, si)) = c.trig {
+            if self.p.degree(ci) > 0 {
+                acc = &acc - &(&self.derivative(ci) * &reg.sin(q));
+            }
+            if self.p.degree(si) > 0 {
+                acc = &acc + &(&self.derivative(si) * &reg.cos(q));
+            }
+        }
+        if let Some(vi) = c.value {
+            acc = &acc + &self.derivative(vi);
+        }
+        acc
+    }
+
+    /// Partial derivative with respect to q̇ (order 1), q̈ (order 2) of a coordinate; zero for
+    /// a coordinate whose rate is imposed (it has no rate variables).
+    pub fn partial_rate(&self, q: CoordId, order: u8) -> Expr {
+        match self.reg.coords[q.0].rates {
+            Some(r) => self.derivative(r[order as usize - 1]),
+            None => self.zero_like(),
+        }
+    }
+
+    /// `self / c` when `c` is a nonzero rational number, none otherwise (the canonical form is
+    /// polynomial: it never divides by a variable).
+    pub fn div_constant(&self, c: &Expr) -> Option<Expr> {
+        let r = c.as_rational()?;
+        if r.is_zero() {
+            return None;
+        }
+        Some(self * &self.reg.constant(r.inv()))
+    }
+
+    /// The nonzero number k with `self = k · other`, if there is one (two equations `e = 0`
+    /// that differ by such a factor are the same equation).
+    pub fn constant_multiple_of(&self, other: &Expr) -> Option<Expr> {
+        if other.p.nterms() == 0 {
+            return None;
+        }
+        let (c, e) = (&other.p.coefficients[0], other.p.exponents(0));
+        let t = (0..self.p.nterms()).find(|&t| self.p.exponents(t) == e)?;
+        let k = self.reg.constant(&self.p.coefficients[t] / c);
+        (&k * other == *self).then_some(k)
+    }
+
+    /// Whether the expression is a nonzero rational number.
+    pub fn is_nonzero_constant(&self) -> bool {
+        self.as_rational().is_some_and(|r| !r.is_zero())
     }
 
     /// The constant value if the expression is a rational number.

@@ -11,8 +11,9 @@ use symbolica::atom::{Atom, AtomCore, AtomView, Symbol};
 use symbolica::domains::rational::{Q, Rational, RationalField};
 use symbolica::poly::polynomial::MultivariatePolynomial;
 
-const MAX_INPUT: usize = 20_000;
-const MAX_POWER: i64 = 64;
+/// Longest expression text accepted (see [`super::MAX_INPUT_LEN`]).
+const MAX_INPUT: usize = super::MAX_INPUT_LEN;
+const MAX_POWER: i64 = 255;
 
 /// Only these characters can appear in an expression of the spec syntax.
 fn check_chars(s: &str) -> Result<(), String> {
@@ -44,18 +45,202 @@ fn check_chars(s: &str) -> Result<(), String> {
     if depth != 0 {
         return Err("unbalanced parentheses".to_string());
     }
+    // Only the syntax's functions may be called, never with empty arguments: the text must
+    // not reach symbolica's own function evaluation (cot(), exp(...)).
+    let b = s.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        if b[i].is_ascii_alphabetic() || b[i] == b'_' {
+            let start = i;
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                i += 1;
+            }
+            let word = &s[start..i];
+            if i < b.len() && (b[i] == b'(' || b[i] == b'[') && !FUNCTIONS.contains(&word) {
+                return Err(format!(
+                    "`{word}(...)`: the functions are sin, cos, dot and ddot"
+                ));
+            }
+        } else {
+            i += 1;
+        }
+    }
+    if s.split_whitespace().collect::<String>().contains("()") {
+        return Err("empty parentheses".to_string());
+    }
+    check_powers(s)
+}
+
+/// Exponents are integer literals, nested powers multiply to at most [`MAX_POWER`], and
+/// `a^b^c` is refused: symbolica would otherwise compute `4444^444442` before any check of ours.
+fn check_powers(s: &str) -> Result<(), String> {
+    let b = s.as_bytes();
+    let skip = |mut i: usize| {
+        while i < b.len() && b[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        i
+    };
+    // The exponent starting after the `^` at `i`: its value and the index after it.
+    let exponent = |i: usize| -> Result<(u64, usize), String> {
+        let mut j = skip(i + 1);
+        let paren = j < b.len() && b[j] == b'(';
+        if paren {
+            j = skip(j + 1);
+        }
+        if j < b.len() && (b[j] == b'-' || b[j] == b'+') {
+            j = skip(j + 1);
+        }
+        let start = j;
+        while j < b.len() && b[j].is_ascii_digit() {
+            j += 1;
+        }
+        if j == start || (j < b.len() && b[j] == b'.') {
+            return Err("an exponent must be an integer literal".to_string());
+        }
+        let digits = &s[start..j];
+        let value = if digits.len() > 4 {
+            u64::MAX
+        } else {
+            digits.parse::<u64>().unwrap_or(u64::MAX)
+        };
+        if paren {
+            j = skip(j);
+            if j >= b.len() || b[j] != b')' {
+                return Err("an exponent must be an integer literal".to_string());
+            }
+            j += 1;
+        }
+        let after = skip(j);
+        if after < b.len() && b[after] == b'^' {
+            return Err("`a^b^c` is ambiguous: write (a^b)^c".to_string());
+        }
+        Ok((value, j))
+    };
+    let too_high = || format!("powers are limited to ±{MAX_POWER}, nested powers included");
+    // For each open group, the largest product of exponents inside it.
+    let mut stack: Vec<u64> = vec![1];
+    let mut i = 0;
+    while i < b.len() {
+        match b[i] {
+            b'(' | b'[' => {
+                stack.push(1);
+                i += 1;
+            }
+            b')' | b']' => {
+                let inner = stack.pop().unwrap_or(1);
+                let k = skip(i + 1);
+                let (power, next) = if k < b.len() && b[k] == b'^' {
+                    exponent(k)?
+                } else {
+                    (1, i + 1)
+                };
+                let total = inner.saturating_mul(power);
+                if total > MAX_POWER as u64 {
+                    return Err(too_high());
+                }
+                if let Some(top) = stack.last_mut() {
+                    *top = (*top).max(total);
+                }
+                i = next;
+            }
+            b'^' => {
+                let (power, next) = exponent(i)?;
+                if power > MAX_POWER as u64 {
+                    return Err(too_high());
+                }
+                if let Some(top) = stack.last_mut() {
+                    *top = (*top).max(power);
+                }
+                i = next;
+            }
+            _ => i += 1,
+        }
+    }
     Ok(())
 }
+
+/// The functions of the expression syntax.
+const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
 
 fn parse_atom(s: &str) -> Result<Atom, ExprError> {
     check_chars(s).map_err(|reason| ExprError::Parse {
         input: s.to_string(),
         reason,
     })?;
-    symbolica::try_parse!(s).map_err(|e| ExprError::Parse {
+    let exact = exact_decimals(s).map_err(|reason| ExprError::Parse {
+        input: s.to_string(),
+        reason,
+    })?;
+    symbolica::try_parse!(&exact).map_err(|e| ExprError::Parse {
         input: s.to_string(),
         reason: e.to_string(),
     })
+}
+
+/// Decimal literals as exact fractions (`0.25` → `(25/100)`), so symbolica never reads a
+/// float (a float zero divisor made its parser panic), then refuses a literal zero divisor.
+fn exact_decimals(s: &str) -> Result<String, String> {
+    let b = s.as_bytes();
+    let mut out = String::with_capacity(s.len() + 8);
+    let mut i = 0;
+    while i < b.len() {
+        let c = b[i];
+        let starts_number = (c.is_ascii_digit()
+            || (c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit)))
+            && (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_'));
+        if !starts_number {
+            if c == b'.' {
+                return Err("a `.` outside a number".to_string());
+            }
+            out.push(c as char);
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+        let int = &s[start..i];
+        if i < b.len() && b[i] == b'.' {
+            i += 1;
+            let fs = i;
+            while i < b.len() && b[i].is_ascii_digit() {
+                i += 1;
+            }
+            let frac = &s[fs..i];
+            if frac.len() > 64 {
+                return Err("more than 64 decimals".to_string());
+            }
+            let digits = format!("{int}{frac}");
+            let digits = digits.trim_start_matches('0');
+            let digits = if digits.is_empty() { "0" } else { digits };
+            out.push_str(&format!("({digits}/1{})", "0".repeat(frac.len())));
+        } else {
+            out.push_str(int);
+        }
+        // `2x` or `1e5`: symbolica would read a float in scientific notation.
+        if i < b.len() && (b[i].is_ascii_alphabetic() || b[i] == b'_') {
+            return Err(format!(
+                "`{}` is a number followed by a name: write the product with `*`",
+                &s[start..(i + 1).min(s.len())]
+            ));
+        }
+    }
+    // A literal zero divisor: `/0`, `/ 0.0`, `/(0)`.
+    let compact: String = out.chars().filter(|c| !c.is_whitespace()).collect();
+    let cb = compact.as_bytes();
+    for (k, _) in compact.match_indices('/') {
+        let mut j = k + 1;
+        while j < cb.len() && cb[j] == b'(' {
+            j += 1;
+        }
+        let n = cb[j..].iter().take_while(|d| d.is_ascii_digit()).count();
+        if n > 0 && cb[j..j + n].iter().all(|&d| d == b'0') {
+            return Err("division by zero".to_string());
+        }
+    }
+    Ok(out)
 }
 
 pub(super) fn parse_scalar(reg: &Rc<Registry>, s: &str) -> Result<Expr, ExprError> {
@@ -142,6 +327,13 @@ impl Walker<'_> {
         }
     }
 
+    fn degree_too_high(&self) -> ExprError {
+        self.unsupported(&format!(
+            "the expanded expression would have a degree over {} in one variable",
+            super::MAX_INPUT_DEGREE
+        ))
+    }
+
     fn number(&self, v: AtomView) -> Result<Rational, ExprError> {
         let p: MultivariatePolynomial<RationalField, u8> = v
             .try_to_polynomial(&Q, None)
@@ -183,7 +375,11 @@ impl Walker<'_> {
             AtomView::Mul(m) => {
                 let mut acc = reg.one();
                 for t in m.iter() {
-                    acc = &acc * &self.scalar(t)?;
+                    let f = self.scalar(t)?;
+                    if !acc.product_fits(&f, 1) {
+                        return Err(self.degree_too_high());
+                    }
+                    acc = &acc * &f;
                 }
                 Ok(acc)
             }
@@ -198,7 +394,11 @@ impl Walker<'_> {
                     return Err(self.unsupported(&format!("powers are limited to ±{MAX_POWER}")));
                 }
                 if n >= 0 {
-                    return Ok(self.scalar(base)?.pow(n as u32));
+                    let b = self.scalar(base)?;
+                    if !reg.zero().product_fits(&b, 0) || !b.product_fits(&reg.zero(), n as u32) {
+                        return Err(self.degree_too_high());
+                    }
+                    return Ok(b.pow(n as u32));
                 }
                 // A negative power is allowed of a number only: the canonical form is a
                 // polynomial.

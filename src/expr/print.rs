@@ -122,7 +122,7 @@ fn factors_text(reg: &Registry, t: &TermParts) -> Vec<String> {
     };
     let mut f = Vec::new();
     for &(p, k) in &t.params {
-        f.push(pw(reg.parameters()[p].clone(), k));
+        f.push(pw(reg.scalar_name(p).to_string(), k));
     }
     for &(q, is_cos, k) in &t.trig {
         let n = &reg.coord_info(q).name;

@@ -21,6 +21,32 @@ fn step_lhs(k: &StepKind) -> String {
             quantity(q),
             frame(r)
         ),
+        StepKind::Action { from, on, point: p } => format!(
+            "\\left\\{{\\mathcal{{T}}({} \\rightarrow {})\\right\\}}_{{{}}}",
+            action_side(from),
+            action_side(on),
+            point(p)
+        ),
+        StepKind::Projected(q, (f, a)) => format!("{} \\cdot {}", quantity(q), basis_vector(*a, f)),
+        StepKind::External {
+            isolate,
+            point: p,
+            on: (f, a),
+        } => {
+            let s = action_side(isolate);
+            let arrow = format!("\\bar{{{s}}} \\rightarrow {s}");
+            match p {
+                Some(p) => format!(
+                    "\\overrightarrow{{M({},{arrow})}} \\cdot {}",
+                    point(p),
+                    basis_vector(*a, f)
+                ),
+                None => format!(
+                    "\\overrightarrow{{R({arrow})}} \\cdot {}",
+                    basis_vector(*a, f)
+                ),
+            }
+        }
         StepKind::Complementary(a, g, r) => format!(
             "\\overrightarrow{{V({}/{})}} \\wedge m\\,\\overrightarrow{{V({}/{})}}",
             point(a),
@@ -28,6 +54,17 @@ fn step_lhs(k: &StepKind) -> String {
             point(g),
             frame(r)
         ),
+    }
+}
+
+/// A solid number as is, a name (`pes`, `moteur`) upright.
+fn action_side(n: &str) -> String {
+    if n.chars().all(|c| c.is_ascii_digit()) {
+        n.to_string()
+    } else if n.len() == 1 {
+        name(n)
+    } else {
+        format!("\\mathrm{{{}}}", n.replace('_', "\\_"))
     }
 }
 
@@ -146,6 +183,8 @@ fn quantity_block(o: &mut String, m: &Mechanism, style: VectorStyle, d: &Derivat
     let lhs = match &q.kind {
         k if k.is_torsor() => quantity(k),
         QuantityKind::Inertia { .. } => quantity(&q.kind),
+        // An equation of motion is written 0 = … (the residual, dynamic side minus actions).
+        QuantityKind::Eom(_) => "0".to_string(),
         _ => title.clone(),
     };
     o.push_str(&align(&value(m, &lhs, &d.value)));
@@ -238,11 +277,29 @@ pub fn answer_key_with(
     m: &Mechanism,
     style: VectorStyle,
 ) -> Result<String, crate::derivation::ResolveError> {
+    answer_key_document(m, style).map(|k| k.tex)
+}
+
+/// An answer key with the figures it includes (`\includegraphics{name}`): the caller writes
+/// each figure as PNG under its name, next to the .tex file.
+pub struct AnswerKey {
+    /// The LaTeX document.
+    pub tex: String,
+    /// File name (`simulation-q7.png`) and figure.
+    pub figures: Vec<(String, crate::simulate::Figure)>,
+}
+
+/// [`answer_key_with`], with the figures of the simulations the questions show.
+pub fn answer_key_document(
+    m: &Mechanism,
+    style: VectorStyle,
+) -> Result<AnswerKey, crate::derivation::ResolveError> {
+    let mut figures = Vec::new();
     let mut o = String::new();
     o.push_str(
         "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\
          \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
-         \\usepackage{amsmath,amssymb}\n\\usepackage[margin=2cm]{geometry}\n\
+         \\usepackage{amsmath,amssymb,graphicx}\n\\usepackage[margin=2cm]{geometry}\n\
          \\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.5em}\n",
     );
     let _ = writeln!(
@@ -369,10 +426,141 @@ pub fn answer_key_with(
             quantity_block(&mut o, m, style, &derive(m, q)?);
         }
     } else {
-        for qs in &m.spec.questions {
+        for (k, qs) in m.spec.questions.iter().enumerate() {
             question_block(&mut o, m, style, qs)?;
+            if let Some(sim) = &qs.simulation {
+                let file = format!("simulation-{}.png", k + 1);
+                figures.push((file.clone(), simulation_block(&mut o, m, sim, &file)?));
+            }
         }
     }
     o.push_str("\\end{document}\n");
-    Ok(o)
+    Ok(AnswerKey { tex: o, figures })
+}
+
+/// A number as the French text writes it: three significant digits, decimal comma.
+fn french(v: f64) -> String {
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let digits = (2 - v.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    format!("{v:.digits$}").replace('.', "{,}")
+}
+
+/// The simulations of a question: the assumed values, the curves, the maxima against the
+/// statement's.
+fn simulation_block(
+    o: &mut String,
+    m: &Mechanism,
+    sim: &crate::spec::wire::SimulationSpec,
+    file: &str,
+) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
+    let fail = |what: &str, e: String| crate::derivation::ResolveError {
+        quantity: what.to_string(),
+        message: e,
+    };
+    let mut runs = Vec::new();
+    for name in &sim.scenarios {
+        runs.push(crate::simulate::simulate(m, name).map_err(|e| fail(name, e.to_string()))?);
+    }
+    // The assumed values, as the statement gives none.
+    if let Some(first) = sim
+        .scenarios
+        .first()
+        .and_then(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
+    {
+        o.push_str(
+            "Le sujet ne donne pas de valeurs numériques : les simulations utilisent les valeurs \
+             supposées suivantes (unités SI).\n\n\\begin{center}\n\\begin{tabular}{llll}\n",
+        );
+        let cells: Vec<String> = first
+            .values
+            .iter()
+            .map(|(k, v)| format!("${} = {}$", name(k), french_sci(*v)))
+            .collect();
+        for row in cells.chunks(4) {
+            let _ = writeln!(o, "{} \\\\", row.join(" & "));
+        }
+        o.push_str("\\end{tabular}\n\\end{center}\n");
+    }
+    for (name, sc) in sim.scenarios.iter().filter_map(|n| {
+        m.spec
+            .scenarios
+            .iter()
+            .find(|s| &s.name == n)
+            .map(|s| (n, s))
+    }) {
+        if let Some(d) = &sc.description {
+            let _ = writeln!(
+                o,
+                "\\textbf{{{}}} : {}\n",
+                escape_text(name),
+                escape_text(d)
+            );
+        }
+    }
+    let pairs: Vec<(&str, &crate::simulate::Run)> = sim
+        .scenarios
+        .iter()
+        .map(String::as_str)
+        .zip(runs.iter())
+        .collect();
+    let ids: Vec<&str> = sim.plot.iter().map(String::as_str).collect();
+    let figure = crate::simulate::figure(&m.title, &pairs, &ids, true);
+    let _ = writeln!(
+        o,
+        "\\begin{{center}}\n\\includegraphics[width=0.85\\textwidth]{{{file}}}\n\\end{{center}}"
+    );
+    if let Some(col) = &sim.maximum {
+        let unit = runs
+            .first()
+            .and_then(|r| r.columns.iter().find(|c| &c.id == col))
+            .map(|c| format!(" ({})", escape_text(&c.unit)))
+            .unwrap_or_default();
+        let _ = writeln!(
+            o,
+            "\\begin{{center}}\n\\begin{{tabular}}{{lcc}}\nCas & ${}$ maximal calculé{unit} & \
+             ${}$ maximal du sujet{unit} \\\\\n\\hline",
+            name(col),
+            name(col)
+        );
+        for (scenario, run) in sim.scenarios.iter().zip(&runs) {
+            let (v, t) = run
+                .max_abs(col)
+                .ok_or_else(|| fail(scenario, format!("no column `{col}` in the run")))?;
+            let reference = sim
+                .reference
+                .get(scenario)
+                .map(|r| format!("${}$", french(*r)))
+                .unwrap_or_else(|| "--".to_string());
+            let _ = writeln!(
+                o,
+                "{} & ${}$ (à $t = {}$~s) & {} \\\\",
+                escape_text(scenario),
+                french(v),
+                french(t),
+                reference
+            );
+        }
+        o.push_str("\\end{tabular}\n\\end{center}\n");
+    }
+    Ok(figure)
+}
+
+/// A value for the table of assumed values: plain when moderate, else a power of ten.
+fn french_sci(v: f64) -> String {
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let e = v.abs().log10().floor() as i32;
+    if (-2..=3).contains(&e) {
+        return format!("{v}").replace('.', "{,}");
+    }
+    let mant = v / 10f64.powi(e);
+    let mant = format!("{mant:.3}");
+    let mant = mant
+        .trim_end_matches('0')
+        .trim_end_matches('.')
+        .replace('.', "{,}");
+    format!("{mant} \\cdot 10^{{{e}}}")
 }

@@ -6,7 +6,7 @@
 
 mod document;
 
-pub use document::{answer_key, answer_key_with};
+pub use document::{AnswerKey, answer_key, answer_key_document, answer_key_with};
 
 use crate::derivation::Value;
 use crate::expr::print::TermParts;
@@ -188,6 +188,9 @@ pub fn quantity(k: &QuantityKind) -> String {
                 point(p)
             )
         }
+        KineticEnergy(mo) => format!("E_{{c}}({})", motion(mo)),
+        Unknown(n) => name(n),
+        Eom(q) => format!("\\text{{équation du mouvement en }} {}", name(q)),
     }
 }
 
@@ -196,7 +199,7 @@ fn factors(reg: &Registry, t: &TermParts) -> Vec<String> {
     let pw = |b: String, k: u8| if k == 1 { b } else { format!("{b}^{{{k}}}") };
     let mut f = Vec::new();
     for &(p, k) in &t.params {
-        f.push(pw(name(&reg.parameters()[p]), k));
+        f.push(pw(name(reg.scalar_name(p)), k));
     }
     for &(q, is_cos, k) in &t.trig {
         let fun = if is_cos { "\\cos" } else { "\\sin" };

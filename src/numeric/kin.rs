@@ -3,7 +3,7 @@
 use super::expr::{self, Env, Node};
 use super::la::{mat_parts, parts, point_inertia, rows};
 use super::model::{Context, Names};
-use super::{NumValue, NumericError, NumericModel, Sample, cloud};
+use super::{NumValue, NumericError, NumericModel, Sample, cloud, dynamics};
 use crate::quantity::{Motion, Quantity, QuantityKind};
 use nalgebra::{Matrix3, Vector3};
 use num_dual::{Dual2_64, DualNum};
@@ -252,7 +252,7 @@ impl NumericModel {
 
 /// Ω(i/j) in ground components, from its definition: with R = R_jᵀ R_i the orientation of i
 /// in j, dR/dt Rᵀ is the skew matrix of Ω(i/j) in j's basis.
-fn omega(st: &State, i: usize, j: usize) -> Vector3<f64> {
+pub(super) fn omega(st: &State, i: usize, j: usize) -> Vector3<f64> {
     let [r0, dr] = mat_parts(&(st.rot[j].transpose() * st.rot[i]));
     let w = dr * r0.transpose();
     let in_j = Vector3::new(
@@ -265,7 +265,7 @@ fn omega(st: &State, i: usize, j: usize) -> Vector3<f64> {
 
 /// V(P, i/j) and Γ(P, i/j) in ground components: the point of i that coincides with P at
 /// t = 0, moved with i and differentiated in j.
-fn point_motion(st: &State, p: usize, i: usize, j: usize) -> [Vector3<f64>; 2] {
+pub(super) fn point_motion(st: &State, p: usize, i: usize, j: usize) -> [Vector3<f64>; 2] {
     let u = st.local0(i, &st.pos0(p));
     let [_, v, g] = parts(&st.track(i, &u, j));
     let rj = st.rot0(j);
@@ -274,7 +274,7 @@ fn point_motion(st: &State, p: usize, i: usize, j: usize) -> [Vector3<f64>; 2] {
 
 /// Σ mₖ V, Σ mₖ APₖ ∧ V, Σ mₖ Γ, Σ mₖ APₖ ∧ Γ over the clouds of `solids`, motion relative
 /// to frame `j`, A = point `a`; ground components.
-fn kinetic(
+pub(super) fn kinetic(
     m: &NumericModel,
     st: &State,
     vals: &Values,
@@ -299,6 +299,25 @@ fn kinetic(
     Ok(acc.map(|x| rj * x))
 }
 
+/// Ec = Σ ½ mₖ |V(Pₖ/Rj)|² over the clouds of `solids`, motion relative to frame `j`.
+fn kinetic_energy(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    solids: &[usize],
+    j: usize,
+) -> Result<f64, NumericError> {
+    let mut e = 0.0;
+    for s in solids {
+        let f = m.solids[*s].frame;
+        for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
+            let [_, v, _] = parts(&st.track(f, &u, j));
+            e += 0.5 * mk * v.norm_squared();
+        }
+    }
+    Ok(e)
+}
+
 /// I(P, S) = Σ mₖ (|PPₖ|² Id − PPₖ PPₖᵀ), ground components.
 fn inertia(
     m: &NumericModel,
@@ -320,6 +339,7 @@ fn inertia(
 }
 
 enum Raw {
+    Scalar(f64),
     Vector(Vector3<f64>),
     Matrix(Matrix3<f64>),
     Torsor(String, Vector3<f64>, Vector3<f64>),
@@ -381,13 +401,20 @@ pub(super) fn evaluate(
             let k = kin(motion, m.point(point)?)?;
             Raw::Torsor(point.clone(), k[2], k[3])
         }
+        K::KineticEnergy(mo) => {
+            let solids = m.solids_of(&mo.moving)?;
+            let j = m.body_frame(&mo.reference, q)?;
+            Raw::Scalar(kinetic_energy(m, &st, &vals, &solids, j)?)
+        }
+        K::Unknown(name) => Raw::Scalar(dynamics::unknown(m, &st, &vals, name)?),
+        K::Eom(c) => Raw::Scalar(dynamics::eom(m, &st, &vals, c)?),
     };
     let not_finite = || NumericError::Quantity {
         quantity: q.to_string(),
         message: "the value is not finite at this sample".into(),
     };
     // The basis is only looked up when the result is written in it (not for a projection).
-    let rb = if q.projection.is_none() {
+    let rb = if q.projection.is_none() && !matches!(raw, Raw::Scalar(_)) {
         st.rot0(m.frame(basis_name)?)
     } else {
         Matrix3::identity()
@@ -395,6 +422,12 @@ pub(super) fn evaluate(
     let rbt = rb.transpose();
     let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
     match (raw, &q.projection) {
+        (Raw::Scalar(x), None) => {
+            if !x.is_finite() {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Scalar(x))
+        }
         (Raw::Vector(v), Some((frame, axis))) => {
             let k = match axis {
                 'x' => 0,

@@ -12,7 +12,13 @@
 //!
 //! - Rc(S/R0) = Σ mₖ V(Pₖ/R0), σ(A, S/R0) = Σ mₖ APₖ ∧ V(Pₖ/R0);
 //! - Rd(S/R0) = Σ mₖ Γ(Pₖ/R0), δ(A, S/R0) = Σ mₖ APₖ ∧ Γ(Pₖ/R0);
-//! - I(A, S) = Σ mₖ (|APₖ|² Id − APₖ APₖᵀ).
+//! - I(A, S) = Σ mₖ (|APₖ|² Id − APₖ APₖᵀ);
+//! - Ec(S/R0) = Σ ½ mₖ |V(Pₖ/R0)|².
+//!
+//! The PFD (`dynamics`) is recomputed the same way: gravity acts on every point mass, the
+//! links' unknowns, friction, springs and given actions are torsors at their points with their
+//! reactions, each declared theorem is a residual affine in the unknowns, and the equations
+//! without `eom` are solved with nalgebra's LU.
 //!
 //! ```
 //! use torseur::numeric::{NumericModel, NumValue, Sample};
@@ -26,13 +32,16 @@
 //! ```
 
 mod cloud;
-mod expr;
+mod dynamics;
+pub(crate) mod expr;
 mod kin;
 mod la;
 mod model;
 mod sample;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_pfd;
 
 use crate::quantity::Quantity;
 use crate::spec::wire::{CoordinateKind, SpecFile};
@@ -245,6 +254,8 @@ pub struct NumericModel {
     frame_index: BTreeMap<String, usize>,
     point_index: BTreeMap<String, usize>,
     solid_index: BTreeMap<String, usize>,
+    /// Gravity, links, actions and the declared equations of the PFD.
+    dynamics: dynamics::Dynamics,
 }
 
 impl NumericModel {
@@ -269,6 +280,14 @@ impl NumericModel {
     /// moving and reference bodies are solids (their frames) or frames, and kinetic and
     /// dynamic elements take a solid or a set (`sets` of the spec) and sum over its solids.
     /// A coordinate with an imposed rate must be given q̇ equal to that rate and q̈ = 0.
+    ///
+    /// Scalars by themselves: `Ec(S/R)` is Σ ½ mₖ |V(Pₖ/R)|² over the clouds of S; an unknown
+    /// (`C_m`, `X01`) is its value solved from the spec's `pfd` equations without `eom`
+    /// (square, nonsingular, nalgebra's LU); `eom(q)` is the residual (dynamic side minus
+    /// actions) of the equation whose `eom` is q, those unknowns substituted and q̈ the
+    /// sample's. Actions are gravity on every point mass of the clouds, the links (one unknown
+    /// per transmitted component, with viscous friction and springs), the given actions, and
+    /// the reaction of each; isolating S keeps those a member receives from a non-member.
     ///
     /// ```
     /// use torseur::numeric::{NumericModel, NumValue, Sample};
@@ -297,8 +316,9 @@ impl NumericModel {
 
     /// Draws a random physically valid sample, reproducible from the generator's state.
     ///
-    /// Lengths and masses (parameters with unit m or kg, or entering a mass) are drawn in
-    /// [0.5, 2], other parameters in [−1, 1]; angles in [−π, π], length coordinates in
+    /// Lengths and masses (parameters with unit m or kg, or entering a mass) and the
+    /// parameters of gravity, friction coefficients and stiffnesses are drawn in [0.5, 2], other
+    /// parameters in [−1, 1] (the unknowns of the PFD are not parameters: they get no value); angles in [−π, π], length coordinates in
     /// [0.5, 2], rates and accelerations in [−2, 2] (an imposed rate is evaluated, with q̈ = 0).
     /// Inertia entries written `P` or `-P` are read off a random cloud of point masses with the
     /// solid's mass, so the matrix is always a real body's; the cloud gets the mirror planes,
@@ -372,5 +392,12 @@ impl NumericModel {
     /// Names of the time coordinates, in the spec's order.
     pub fn coordinate_names(&self) -> impl Iterator<Item = &str> {
         self.coords.iter().map(|c| c.name.as_str())
+    }
+
+    /// Names of the unknowns of the PFD (never parameters, so never in a [`Sample`]): the
+    /// transmitted components of the links in order (X, Y, Z, L, M, N followed by the link's
+    /// name), then the actions' unknowns in order of first appearance.
+    pub fn unknown_names(&self) -> impl Iterator<Item = &str> {
+        self.dynamics.unknowns.iter().map(String::as_str)
     }
 }

@@ -8,7 +8,7 @@ use super::{
 use crate::spec::wire::{SpecFile, SymmetrySpec};
 use std::collections::BTreeMap;
 
-fn spec_err(path: impl Into<String>, message: impl Into<String>) -> NumericError {
+pub(super) fn spec_err(path: impl Into<String>, message: impl Into<String>) -> NumericError {
     NumericError::Spec {
         path: path.into(),
         message: message.into(),
@@ -26,6 +26,21 @@ pub(super) enum Context {
     Position,
     /// Parameters, coordinates, their rates (a user expression at one instant).
     Instant,
+    /// Parameters and basis vectors (gravity, a constant vector).
+    ConstantVector,
+    /// Parameters, coordinates, their rates, basis vectors and the unknowns given to
+    /// [`Names::parse_with`] (the resultant or moment of an action).
+    Action,
+}
+
+impl Context {
+    /// Whether the expression is a vector (else a scalar).
+    fn vector(self) -> bool {
+        matches!(
+            self,
+            Context::Position | Context::ConstantVector | Context::Action
+        )
+    }
 }
 
 /// The names known while parsing expressions.
@@ -49,8 +64,18 @@ impl Names<'_> {
 
     /// Parses `text` for `ctx` and checks its type (scalar, or vector for positions).
     pub fn parse(&self, text: &str, ctx: Context) -> Result<Node, String> {
+        self.parse_with(text, ctx, &BTreeMap::new())
+    }
+
+    /// [`Names::parse`], where the names of `unknowns` are the unknowns of these indices.
+    pub fn parse_with(
+        &self,
+        text: &str,
+        ctx: Context,
+        unknowns: &BTreeMap<String, usize>,
+    ) -> Result<Node, String> {
         let resolve = |name: &str| -> Result<Name, String> {
-            if ctx == Context::Position
+            if ctx.vector()
                 && let Some((f, a)) = self.basis_vector(name)
             {
                 return Ok(Name::Basis(f, a));
@@ -58,10 +83,18 @@ impl Names<'_> {
             if let Some(i) = self.params.get(name) {
                 return Ok(Name::Param(*i));
             }
+            if let Some(i) = unknowns.get(name) {
+                return Ok(Name::Unknown(*i));
+            }
             if let Some(i) = self.coords.get(name) {
                 return if ctx == Context::Constant {
                     Err(format!(
                         "`{name}` is a time coordinate: only parameters can appear here"
+                    ))
+                } else if ctx == Context::ConstantVector {
+                    Err(format!(
+                        "`{name}` is a time coordinate: only parameters and basis vectors can \
+                         appear here"
                     ))
                 } else {
                     Ok(Name::Coord(*i))
@@ -74,15 +107,20 @@ impl Names<'_> {
             }
             Err(format!("unknown name `{name}`"))
         };
-        let node = expr::parse(text, &resolve, ctx == Context::Instant)?;
+        let node = expr::parse(
+            text,
+            &resolve,
+            matches!(ctx, Context::Instant | Context::Action),
+        )?;
         let k = expr::kind(&node)?;
         match (ctx, k) {
             (Context::Position, Kind::Scalar) => Err(
                 "a position is a vector: every term holds one basis vector (x0, y1, z2, …)".into(),
             ),
-            (_, Kind::Vector) if ctx != Context::Position => {
-                Err("a scalar was expected, not a vector".into())
-            }
+            (Context::ConstantVector | Context::Action, Kind::Scalar) => Err(
+                "a vector was expected: every term holds one basis vector (x0, y1, z2, …)".into(),
+            ),
+            (_, Kind::Vector) if !ctx.vector() => Err("a scalar was expected, not a vector".into()),
             _ => Ok(node),
         }
     }
@@ -534,7 +572,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         })
         .collect();
 
-    Ok(NumericModel {
+    let mut model = NumericModel {
         params,
         coords,
         frames,
@@ -547,5 +585,21 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         frame_index,
         point_index,
         solid_index,
-    })
+        dynamics: Default::default(),
+    };
+    model.dynamics = super::dynamics::build(spec, &model)?;
+    // Gravity, friction coefficients and stiffnesses are drawn positive, like lengths.
+    let dy = &model.dynamics;
+    let mut positive = std::collections::BTreeSet::new();
+    for node in dy.gravity.iter().chain(dy.links.iter().flat_map(|l| {
+        l.friction
+            .iter()
+            .chain(l.spring.iter().map(|s| &s.stiffness))
+    })) {
+        expr::params_in(node, &mut positive);
+    }
+    for i in positive {
+        model.params[i].positive = true;
+    }
+    Ok(model)
 }

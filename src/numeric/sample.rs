@@ -203,6 +203,26 @@ pub(super) fn draw(
             note(r, &|| format!("the imposed rate of {}", c.name));
         }
     }
+    let dy = &m.dynamics;
+    if let Some(g) = &dy.gravity {
+        note(g, &|| "gravity".to_string());
+    }
+    for (i, l) in dy.links.iter().enumerate() {
+        if let Some(f) = &l.friction {
+            note(f, &|| format!("the friction of links[{i}]"));
+        }
+        if let Some(sp) = &l.spring {
+            note(&sp.stiffness, &|| format!("the spring of links[{i}]"));
+            if let Some(q0) = &sp.free {
+                note(q0, &|| format!("the spring of links[{i}]"));
+            }
+        }
+    }
+    for (i, a) in dy.actions.iter().enumerate() {
+        for node in a.resultant.iter().chain(&a.moment) {
+            note(node, &|| format!("actions[{i}]"));
+        }
+    }
     let mut from_cloud: BTreeMap<usize, usize> = BTreeMap::new();
     for (s, solid) in m.solids.iter().enumerate() {
         note(&solid.mass, &|| format!("the mass of solid {}", solid.name));

@@ -58,6 +58,8 @@ pub fn numeric_point(m: &Mechanism, values: &Values) -> Result<Vec<f64>, ValuesE
     let mut point = Vec::with_capacity(reg.nvars());
     for i in 0..reg.nvars() {
         let v = match reg.role(i) {
+            // Solved values never contain an unknown.
+            VarRole::Parameter(k) if reg.is_unknown(k) => f64::NAN,
             VarRole::Parameter(k) => {
                 let name = &reg.parameters()[k];
                 *values
@@ -81,7 +83,12 @@ pub fn numeric_point(m: &Mechanism, values: &Values) -> Result<Vec<f64>, ValuesE
                 }
             }
         };
-        if !v.is_finite() && !matches!(reg.role(i), VarRole::Rate(_, 3)) {
+        let exempt = match reg.role(i) {
+            VarRole::Rate(_, 3) => true,
+            VarRole::Parameter(k) => reg.is_unknown(k),
+            _ => false,
+        };
+        if !v.is_finite() && !exempt {
             return Err(ValuesError(format!("non-finite value for variable {i}")));
         }
         point.push(v);

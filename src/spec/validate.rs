@@ -12,7 +12,7 @@ use crate::quantity::{Quantity, check_name};
 use crate::vector::Vector;
 use std::collections::{BTreeMap, HashSet};
 
-fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
+pub(super) fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
     SpecError::Invalid {
         path: path.into(),
         message: message.into(),
@@ -20,8 +20,22 @@ fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
     }
 }
 
-fn expr_err(path: &str, e: ExprError) -> SpecError {
+pub(super) fn expr_err(path: &str, e: ExprError) -> SpecError {
     at(path, e.to_string())
+}
+
+/// Bounds the degree of a spec expression (see [`crate::expr::MAX_SPEC_DEGREE`]).
+fn bounded(path: &str, e: crate::expr::Expr) -> Result<crate::expr::Expr, SpecError> {
+    if e.max_degree() > crate::expr::MAX_SPEC_DEGREE {
+        return Err(at(
+            path,
+            format!(
+                "degree over {} in one variable",
+                crate::expr::MAX_SPEC_DEGREE
+            ),
+        ));
+    }
+    Ok(e)
 }
 
 fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
@@ -43,14 +57,14 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     let mut names: HashSet<String> = HashSet::new();
     for (i, p) in spec.parameters.iter().enumerate() {
         let path = format!("parameters[{i}].name");
-        name_ok(&path, &p.name)?;
+        crate::expr::check_identifier(&p.name).map_err(|m| at(&path, m))?;
         if !names.insert(p.name.clone()) {
             return Err(at(path, format!("duplicate name `{}`", p.name)));
         }
     }
     for (i, c) in spec.coordinates.iter().enumerate() {
         let path = format!("coordinates[{i}].name");
-        name_ok(&path, &c.name)?;
+        crate::expr::check_identifier(&c.name).map_err(|m| at(&path, m))?;
         if !names.insert(c.name.clone()) {
             return Err(at(path, format!("duplicate name `{}`", c.name)));
         }
@@ -61,8 +75,9 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         .iter()
         .map(|c| (c.name.clone(), c.kind, c.rate.clone()))
         .collect();
-    let reg =
-        Registry::with_rates(&params, &coords).map_err(|e| at("coordinates", e.to_string()))?;
+    let (unknowns, raw_angles) = super::dynamics::pfd_names(spec, &names)?;
+    let reg = Registry::with_unknowns(&params, &coords, &unknowns, &raw_angles)
+        .map_err(|e| at("coordinates", e.to_string()))?;
 
     // Frames, in an order where each parent comes first (the spec may list them in any order).
     name_ok("ground", &spec.ground)?;
@@ -194,7 +209,11 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                 .map_err(|e| expr_err(&path, e))?;
             let mut v = Vector::zero();
             for (f, c) in parts {
-                v.add_part(f, c);
+                let [x, y, z] = c;
+                v.add_part(
+                    f,
+                    [bounded(&path, x)?, bounded(&path, y)?, bounded(&path, z)?],
+                );
             }
             points.add(&p.name, parent, v);
             done[i] = true;
@@ -243,7 +262,8 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         })?;
         let mass = reg
             .parse(&s.mass)
-            .map_err(|e| expr_err(&format!("{path}.mass"), e))?;
+            .map_err(|e| expr_err(&format!("{path}.mass"), e))
+            .and_then(|e| bounded(&format!("{path}.mass"), e))?;
         if !mass.is_time_independent() {
             return Err(at(
                 format!("{path}.mass"),
@@ -268,7 +288,8 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                     for (c, cell) in row.iter().enumerate() {
                         let e = reg
                             .parse(cell)
-                            .map_err(|e| expr_err(&format!("{ip}.matrix[{r}][{c}]"), e))?;
+                            .map_err(|e| expr_err(&format!("{ip}.matrix[{r}][{c}]"), e))
+                            .and_then(|e| bounded(&format!("{ip}.matrix[{r}][{c}]"), e))?;
                         if !e.is_time_independent() {
                             return Err(at(
                                 format!("{ip}.matrix[{r}][{c}]"),
@@ -467,7 +488,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         }
     }
 
-    let m = Mechanism {
+    let mut m = Mechanism {
         title: spec.title.clone(),
         description: spec.description.clone(),
         reg,
@@ -479,8 +500,10 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         hypotheses,
         default_basis,
         quantities,
+        dynamics: Default::default(),
         spec: spec.clone(),
     };
+    m.dynamics = super::dynamics::build(&m, spec)?;
     // Each requested quantity must refer to known objects.
     for (i, q) in m.quantities.iter().enumerate() {
         crate::derivation::resolve(&m, q)

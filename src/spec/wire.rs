@@ -49,6 +49,194 @@ pub struct SpecFile {
     /// lists the requested quantities).
     #[serde(default)]
     pub questions: Vec<QuestionSpec>,
+    /// Acceleration of gravity as a vector expression in the ground's terms (`-g*z0`); none
+    /// means gravity is neglected.
+    #[serde(default)]
+    pub gravity: Option<String>,
+    /// Perfect links between solids (and the ground), with optional viscous friction and
+    /// torsion spring.
+    #[serde(default)]
+    pub links: Vec<LinkSpec>,
+    /// Other actions: given or unknown forces and torques (a motor torque).
+    #[serde(default)]
+    pub actions: Vec<ActionSpec>,
+    /// The Fundamental Principle of Dynamics as applied: which system is isolated, which
+    /// theorem, at which point, projected on which vector.
+    #[serde(default)]
+    pub pfd: Vec<TheoremSpec>,
+    /// Numerical scenarios for `simulate`.
+    #[serde(default)]
+    pub scenarios: Vec<ScenarioSpec>,
+}
+
+/// Kind of a perfect link, with the course's names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LinkKind {
+    /// Encastrement: the six components.
+    Fixed,
+    /// Pivot of axis (P, u): no moment along u.
+    Pivot,
+    /// Glissière of direction u: no resultant along u.
+    Slider,
+    /// Pivot glissant of axis (P, u): no resultant and no moment along u.
+    PivotSlider,
+    /// Rotule (sphérique) at P: no moment.
+    Ball,
+    /// Appui plan of normal n: resultant along n, moment in the plane.
+    Plane,
+    /// Linéaire annulaire (sphère-cylindre) of axis (P, u): resultant normal to u, no moment.
+    Annular,
+    /// Linéaire rectiligne of normal n and line direction u: resultant along n, moment along
+    /// n ∧ u.
+    Line,
+    /// Ponctuelle (sphère-plan) of normal n at P: resultant along n.
+    Point,
+}
+
+/// A perfect link between two solids: its action torsor {T(first→second)} at `point` carries
+/// the unknowns X, Y, Z (resultant) and L, M, N (moment) suffixed by the link's name, as
+/// components in the basis of its axis vector; those it cannot transmit are zero.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct LinkSpec {
+    /// Suffix of the unknowns (`01` gives X01, Y01, ...), usually the two solids' numbers.
+    pub name: String,
+    /// Kind of link.
+    pub kind: LinkKind,
+    /// The two solids (a solid or the ground frame): the torsor is the action of the first on
+    /// the second.
+    pub between: [String; 2],
+    /// Centre of the link (a point on its axis).
+    pub point: String,
+    /// Axis direction (pivot, slider, pivot slider, annular) or normal (plane, line, point):
+    /// a basis vector such as `z0`, whose basis the components are written in.
+    #[serde(default)]
+    pub axis: Option<String>,
+    /// Line direction of a line contact (a basis vector of the axis' basis).
+    #[serde(default)]
+    pub direction: Option<String>,
+    /// Viscous friction coefficient of a pivot or slider: the action on the second solid
+    /// opposes the relative rate, -f q̇ along the axis.
+    #[serde(default)]
+    pub friction: Option<String>,
+    /// Torsion (pivot) or linear (slider) spring: -k (q - q0) along the axis.
+    #[serde(default)]
+    pub spring: Option<SpringSpec>,
+}
+
+/// A spring in a pivot or a slider: the action on the link's second solid is
+/// -k (q - q0) along the axis (a torque for a pivot, a force for a slider).
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpringSpec {
+    /// The coordinate the spring measures: the relative angle (or length) of the link.
+    pub coordinate: String,
+    /// Stiffness k.
+    pub stiffness: String,
+    /// Value of the link's coordinate where the spring is free (q0), `0` unless given.
+    #[serde(default)]
+    pub free: Option<String>,
+}
+
+/// A given or unknown action {T(from→on)} written at a point.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ActionSpec {
+    /// Name (`moteur`), for the answer key.
+    pub name: String,
+    /// The solid (or ground frame) that exerts it.
+    pub from: String,
+    /// The solid that receives it.
+    pub on: String,
+    /// Point where the moment is given.
+    pub point: String,
+    /// Resultant, a vector expression (`0` unless given).
+    #[serde(default)]
+    pub resultant: Option<String>,
+    /// Moment at `point`, a vector expression (`C_m*z0`).
+    #[serde(default)]
+    pub moment: Option<String>,
+    /// Scalars of these expressions that are unknowns to solve for (`C_m`), not parameters.
+    #[serde(default)]
+    pub unknowns: Vec<String>,
+}
+
+/// Which theorem of the PFD.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TheoremKind {
+    /// Théorème de la résultante dynamique: Rd(S/R0)·u = R(S̄→S)·u.
+    Resultant,
+    /// Théorème du moment dynamique: δ(P,S/R0)·u = M(P,S̄→S)·u.
+    Moment,
+}
+
+/// One scalar equation of the PFD.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct TheoremSpec {
+    /// The isolated solid or set.
+    pub isolate: String,
+    /// Resultant or moment theorem.
+    pub theorem: TheoremKind,
+    /// Point of the moment theorem.
+    #[serde(default)]
+    pub point: Option<String>,
+    /// Basis vector it is projected on.
+    pub on: String,
+    /// When this equation is the equation of motion of a coordinate (`theta2`): it is then
+    /// `eom(theta2)`; otherwise it determines unknowns.
+    #[serde(default)]
+    pub eom: Option<String>,
+}
+
+/// A numerical scenario: parameter values, initial state, imposed motions.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScenarioSpec {
+    /// Name given to `simulate --scenario`.
+    pub name: String,
+    /// What it shows.
+    #[serde(default)]
+    pub description: Option<String>,
+    /// Duration in seconds.
+    pub duration: f64,
+    /// Value of every parameter (SI units).
+    pub values: BTreeMap<String, f64>,
+    /// Initial value and rate of the free coordinates: `[q, q̇]`.
+    #[serde(default)]
+    pub initial: BTreeMap<String, [f64; 2]>,
+    /// Coordinates whose motion is imposed: their rate as a function of `t`, piece by piece.
+    #[serde(default)]
+    pub imposed: Vec<ImposedSpec>,
+    /// Unknowns and coordinates to record (`C_m`, `theta2`), in output order.
+    #[serde(default)]
+    pub record: Vec<String>,
+}
+
+/// An imposed motion: the rate of a coordinate as pieces `until` successive times.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ImposedSpec {
+    /// The coordinate.
+    pub coordinate: String,
+    /// Initial value of the coordinate.
+    #[serde(default)]
+    pub initial: f64,
+    /// Successive pieces of the rate law; the last one holds until the end.
+    pub rate: Vec<RatePiece>,
+}
+
+/// One piece of an imposed rate law.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct RatePiece {
+    /// End of the piece in seconds (none for the last one).
+    #[serde(default)]
+    pub until: Option<f64>,
+    /// The rate, an expression of `t` and the parameters (`2000*2*pi/60*t/0.5`).
+    pub value: String,
 }
 
 /// One question of the statement and what its answer shows.
@@ -73,6 +261,26 @@ pub struct QuestionSpec {
     /// Equations `lhs = quantity` written out (a theorem applied, e.g. the motor torque).
     #[serde(default)]
     pub equations: Vec<EquationSpec>,
+    /// Simulations whose curves and maxima the answer shows.
+    #[serde(default)]
+    pub simulation: Option<SimulationSpec>,
+}
+
+/// Simulations shown in an answer: scenarios run, curves plotted, a maximum compared with the
+/// statement's figures.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SimulationSpec {
+    /// Scenario names (the spec's `scenarios`), one curve each.
+    pub scenarios: Vec<String>,
+    /// Columns plotted against time, one panel each (`theta2`, `C_m`).
+    pub plot: Vec<String>,
+    /// Column whose largest absolute value is compared with the statement's.
+    #[serde(default)]
+    pub maximum: Option<String>,
+    /// The statement's value of that maximum for each scenario.
+    #[serde(default)]
+    pub reference: BTreeMap<String, f64>,
 }
 
 /// An equation of an answer: a named unknown equal to a derived quantity.

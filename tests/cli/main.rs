@@ -58,7 +58,7 @@ fn derive_writes_json_with_canonical_forms_and_steps() {
     assert!(o.status.success(), "{}", stderr(&o));
     let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&j).unwrap()).unwrap();
     let qs = v["quantities"].as_array().unwrap();
-    assert_eq!(qs.len(), 9);
+    assert_eq!(qs.len(), 12);
     let d2 = qs.iter().find(|q| q["id"] == "{D(2/0)}_O2 in B2").unwrap();
     assert_eq!(d2["value"]["kind"], "torsor");
     assert_eq!(d2["value"]["point"], "O2");
@@ -76,7 +76,8 @@ fn eval_follows_the_json_contract() {
     std::fs::write(
         &at,
         r#"{"parameters":{"h1":0.1,"d1":0.2,"L1":0.3,"L2":0.5,"m1":1,"m2":2,
-            "A1":1,"B1":1,"C1":1,"D1":0,"E1":0,"F1":0,"A2":1,"B2":1,"C2":1,"D2":0,"E2":0,"F2":0},
+            "A1":1,"B1":1,"C1":1,"D1":0,"E1":0,"F1":0,"A2":1,"B2":1,"C2":1,"D2":0,"E2":0,"F2":0,
+            "g":9.81,"f":0},
             "coordinates":{"theta1":[0.4,1,0],"theta2":[0,0,0]}}"#,
     )
     .unwrap();
@@ -275,7 +276,8 @@ fn check_reports_agreement_with_the_float_backend() {
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["passed"], true);
     assert_eq!(v["seed"], 9);
-    assert_eq!(v["quantities"].as_array().unwrap().len(), 27);
+    // 12 quantities (C_m, eom(theta2) and Ec(E/0) included), general and under Q1 and Q2.
+    assert_eq!(v["quantities"].as_array().unwrap().len(), 36);
 }
 
 #[test]
@@ -331,4 +333,99 @@ fn a_time_limit_stops_long_work_cleanly() {
     );
     let o = run(&["derive", spec().to_str().unwrap(), "--timeout", "-1"]);
     assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn simulate_writes_csv_and_plots_and_refuses_unknown_scenarios() {
+    let d = tmp();
+    let (csv, svg, png) = (
+        d.path().join("run.csv"),
+        d.path().join("run.svg"),
+        d.path().join("run.png"),
+    );
+    let o = run(&[
+        "simulate",
+        spec().to_str().unwrap(),
+        "--scenario",
+        "avec_frottement",
+        "-o",
+        csv.to_str().unwrap(),
+        "--plot",
+        svg.to_str().unwrap(),
+        "--png",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let header = text.lines().next().unwrap();
+    assert_eq!(
+        header,
+        "t (s),theta1 (rad),dot(theta1) (rad/s),theta2 (rad),dot(theta2) (rad/s),C_m (N m)"
+    );
+    assert_eq!(text.lines().count(), 1 + 1001, "1 ms output over 1 s");
+    assert!(std::fs::read_to_string(&svg).unwrap().starts_with("<svg"));
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
+
+    let bad = d.path().join("bad.csv");
+    let o = run(&[
+        "simulate",
+        spec().to_str().unwrap(),
+        "--scenario",
+        "nope",
+        "-o",
+        bad.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("no scenario `nope`"), "{}", stderr(&o));
+    assert!(!bad.exists());
+}
+
+#[test]
+fn verify_accepts_an_equation_of_motion_up_to_a_factor() {
+    let eq = "A2*ddot(theta2) + m2*L2^2*ddot(theta2) \
+              + (C2 - B2)*sin(theta2)*cos(theta2)*dot(theta1)^2 \
+              + m2*L1*L2*sin(theta2)*dot(theta1)^2 + m2*L2^2*sin(theta2)*cos(theta2)*dot(theta1)^2 \
+              = -m2*g*L2*cos(theta2) - f*dot(theta2)";
+    let o = run(&[
+        "verify",
+        spec().to_str().unwrap(),
+        "-q",
+        "eom(theta2)",
+        "--hypothesis",
+        "Q1",
+        "-e",
+        eq,
+    ]);
+    assert!(o.status.success(), "{}{}", stdout(&o), stderr(&o));
+    // Twice the equation, sides swapped: the same equation.
+    let (lhs, rhs) = eq.split_once('=').unwrap();
+    let doubled = format!("2*({rhs}) = 2*({lhs})");
+    let o = run(&[
+        "verify",
+        spec().to_str().unwrap(),
+        "-q",
+        "eom(theta2)",
+        "--hypothesis",
+        "Q1",
+        "-e",
+        &doubled,
+    ]);
+    assert!(
+        o.status.success(),
+        "{doubled}: {}{}",
+        stdout(&o),
+        stderr(&o)
+    );
+    // Without friction it is another equation.
+    let o = run(&[
+        "verify",
+        spec().to_str().unwrap(),
+        "-q",
+        "eom(theta2)",
+        "--hypothesis",
+        "Q1",
+        "-e",
+        &eq.replace(" - f*dot(theta2)", ""),
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
 }

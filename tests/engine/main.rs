@@ -9,8 +9,10 @@ mod chain;
 mod check;
 mod kinematics;
 mod latex;
+mod pfd;
 mod properties;
 mod regulator;
+mod simulate;
 mod spec_errors;
 mod threads;
 

@@ -36,6 +36,7 @@ fn sample(values: &[f64]) -> Sample {
     }
     for n in [
         "h1", "d1", "L2", "m1", "A1", "B1", "C1", "D1", "E1", "F1", "B2", "C2", "D2", "E2", "F2",
+        "g", "f",
     ] {
         s.parameters.insert(n.to_string(), 0.5);
     }

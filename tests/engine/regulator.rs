@@ -15,7 +15,7 @@ fn components(v: &Value) -> Vec<Expr> {
 #[test]
 fn every_requested_quantity_derives() {
     let m = regulator();
-    assert_eq!(m.quantities.len(), 9);
+    assert_eq!(m.quantities.len(), 12);
     for q in &m.quantities {
         derive(&m, q).unwrap_or_else(|e| panic!("{q}: {e}"));
     }

@@ -92,7 +92,7 @@ fn structural_errors_carry_line_and_column() {
 
 #[test]
 fn names_that_could_inject_latex_or_operators_are_refused() {
-    for bad in ["\\input{x}", "m2}", "a b", "x^2", "m-1", "_x"] {
+    for bad in ["\\input{x}", "m2}", "a b", "x^2", "m-1", "_x", "21", "2D1"] {
         let mut v = base();
         v["parameters"][0]["name"] = bad.into();
         let e = refused(v);
@@ -148,4 +148,13 @@ fn content_errors_point_at_line_and_column_in_the_file() {
         }
         other => panic!("{other:?}"),
     }
+}
+
+#[test]
+fn spec_expressions_of_absurd_degree_are_refused() {
+    let mut v = base();
+    v["points"][3]["position"] = "L2^40*y2".into();
+    let e = refused(v);
+    assert_eq!(path_of(&e), "points[3].position");
+    assert!(e.to_string().contains("degree over 32"), "{e}");
 }

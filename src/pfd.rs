@@ -1,0 +1,671 @@
+//! The Fundamental Principle of Dynamics: action torsors, isolation, the resultant and moment
+//! theorems projected on chosen vectors, the linear solve for the unknowns, the equations of
+//! motion, the kinetic energy, and Lagrange's equations as a second route.
+//!
+//! The course's statement: for a system E isolated in a Galilean frame R0,
+//! {D(E/R0)} = {T(Ē→E)}, the sum of the torsors of the actions exterior to E. Each scalar
+//! equation is kept as a residual, dynamic side minus actions, equal to zero; the unknowns of
+//! perfect links (X01, …, N01) and of actions such as a motor torque enter it linearly.
+//!
+//! ```
+//! use torseur::{derivation::{derive, Value}, quantity::Quantity, spec};
+//! let m = spec::load("derivations/regulateur_centrifuge.json").unwrap();
+//! // The motor torque, from the moment theorem on E = {1, 2} at O1 projected on z0.
+//! let cm = derive(&m, &Quantity::parse("C_m").unwrap()).unwrap();
+//! let delta = derive(&m, &Quantity::parse("delta(O1,E/0).z0").unwrap()).unwrap();
+//! assert_eq!(cm.value.exprs(), delta.value.exprs());
+//! ```
+
+use crate::derivation::{Derivation, ResolveError, Step, StepKind, Value, derive_values};
+use crate::expr::{CoordId, Expr};
+use crate::frame::{Axis, FrameId};
+use crate::kinematics::{omega, position, velocity};
+use crate::mechanism::{BodyId, Mechanism};
+use crate::point::PointId;
+use crate::quantity::{Motion, Quantity, QuantityKind};
+use crate::spec::wire::{LinkKind, TheoremKind};
+use crate::torsor::{self, Torsor};
+use crate::vector::Vector;
+use std::collections::BTreeMap;
+
+/// What exerts an action.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Source {
+    /// A solid of the spec.
+    Body(BodyId),
+    /// The ground, or anything outside the solids (gravity).
+    Outside,
+}
+
+/// The part of a link's action due to its spring (kept apart for the potential energy).
+#[derive(Debug, Clone)]
+pub struct SpringPart {
+    /// ½ k (q − q0)².
+    pub potential: Expr,
+    /// Its torsor at the link's point (on the second solid).
+    pub resultant: Vector,
+    /// Its moment at the link's point.
+    pub moment: Vector,
+}
+
+/// An action {T(from→on)} at a point, as the course writes it in the « bilan des actions
+/// mécaniques extérieures ».
+#[derive(Debug, Clone)]
+pub struct Action {
+    /// What exerts it, as written in {T(from→on)}: a solid or frame name, `pes` for gravity,
+    /// the action's name for a given action.
+    pub from_label: String,
+    /// The solid that receives it, as written.
+    pub on_label: String,
+    /// The solid that exerts it, if it is one.
+    pub from: Source,
+    /// The solid that receives it.
+    pub on: BodyId,
+    /// Point of reduction.
+    pub point: PointId,
+    /// Resultant.
+    pub resultant: Vector,
+    /// Moment at `point`.
+    pub moment: Vector,
+    /// Basis the torsor is written in.
+    pub basis: FrameId,
+    /// How the course describes it (« liaison pivot d'axe (O1, z0) »).
+    pub description: String,
+    /// The spring's part, when the link has one.
+    pub spring: Option<SpringPart>,
+}
+
+impl Action {
+    /// The torsor at its point.
+    pub fn torsor(&self) -> Torsor {
+        Torsor {
+            point: self.point,
+            resultant: self.resultant.clone(),
+            moment: self.moment.clone(),
+        }
+    }
+
+    /// The mutual action {T(on→from)} = −{T(from→on)} (only for a solid source).
+    fn reversed(&self) -> Option<Action> {
+        let Source::Body(b) = self.from else {
+            return None;
+        };
+        Some(Action {
+            from_label: self.on_label.clone(),
+            on_label: self.from_label.clone(),
+            from: Source::Body(self.on),
+            on: b,
+            point: self.point,
+            resultant: self.resultant.neg(),
+            moment: self.moment.neg(),
+            basis: self.basis,
+            description: self.description.clone(),
+            spring: self.spring.as_ref().map(|s| SpringPart {
+                potential: s.potential.clone(),
+                resultant: s.resultant.neg(),
+                moment: s.moment.neg(),
+            }),
+        })
+    }
+}
+
+/// One scalar equation of the PFD, as declared.
+#[derive(Debug, Clone)]
+pub struct Theorem {
+    /// Name of the isolated solid or set.
+    pub isolate: String,
+    /// Its solids.
+    pub solids: Vec<BodyId>,
+    /// Resultant or moment theorem.
+    pub kind: TheoremKind,
+    /// Point of the moment theorem (unused for the resultant).
+    pub point: PointId,
+    /// Projection vector.
+    pub on: (FrameId, Axis),
+    /// The coordinate whose equation of motion this is, if any.
+    pub eom: Option<CoordId>,
+}
+
+/// The actions and theorems of a mechanism.
+#[derive(Debug, Clone, Default)]
+pub struct Dynamics {
+    /// Gravity g⃗ (constant in the ground frame), if not neglected.
+    pub gravity: Option<Vector>,
+    /// Links and given actions, each as the action of its first solid on its second.
+    pub actions: Vec<Action>,
+    /// The declared equations, in order.
+    pub theorems: Vec<Theorem>,
+}
+
+/// The solved PFD: each unknown in closed form, each equation of motion as a residual.
+#[derive(Debug, Clone)]
+pub struct Solution {
+    /// Unknown name → value.
+    pub unknowns: BTreeMap<String, Expr>,
+    /// Coordinate name → residual of its equation of motion (= 0), unknowns eliminated.
+    pub eom: BTreeMap<String, Expr>,
+}
+
+/// Why the PFD cannot be solved as declared.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct PfdError(pub String);
+
+/// The actions exterior to the solids `s`: the declared actions received by a member from a
+/// non-member (an action exerted by a member on a non-member is received as its opposite),
+/// and gravity on every member.
+pub fn external_actions(m: &Mechanism, s: &[BodyId]) -> Vec<Action> {
+    let inside = |src: &Source| matches!(src, Source::Body(b) if s.contains(b));
+    let mut out = Vec::new();
+    for a in &m.dynamics.actions {
+        let on_in = s.contains(&a.on);
+        let from_in = inside(&a.from);
+        if on_in && !from_in {
+            out.push(a.clone());
+        } else if from_in
+            && !on_in
+            && let Some(r) = a.reversed()
+        {
+            out.push(r);
+        }
+    }
+    if let Some(g) = &m.dynamics.gravity {
+        for &b in s {
+            let body = m.body(b);
+            out.push(Action {
+                from_label: "pes".to_string(),
+                on_label: body.name.clone(),
+                from: Source::Outside,
+                on: b,
+                point: body.centre,
+                resultant: g.scale(&body.mass),
+                moment: Vector::zero(),
+                basis: m.frames.ground(),
+                description: "pesanteur, au centre d'inertie".to_string(),
+                spring: None,
+            });
+        }
+    }
+    out
+}
+
+/// The two sides of a theorem: the dynamic side (Rd·u or δ(P)·u) and each action's
+/// contribution (R·u or M(P)·u, moved to P by M(P) = M(A) + PA ∧ R).
+pub fn theorem_sides(
+    m: &Mechanism,
+    th: &Theorem,
+) -> Result<(Expr, Vec<(Action, Expr)>), ResolveError> {
+    let dynamic = derive_values(m, &[dynamic_quantity(m, th)])?
+        .pop()
+        .and_then(|d| match d.value {
+            Value::Scalar(e) => Some(e),
+            _ => None,
+        })
+        .ok_or_else(|| ResolveError {
+            quantity: theorem_label(m, th),
+            message: "the dynamic side is not a scalar".to_string(),
+        })?;
+    let u = Vector::along(th.on.0, th.on.1, m.reg.one());
+    let parts = external_actions(m, &th.solids)
+        .into_iter()
+        .map(|a| {
+            let v = match th.kind {
+                TheoremKind::Resultant => a.resultant.dot(&m.frames, &u),
+                TheoremKind::Moment => a.torsor().at(m, th.point).moment.dot(&m.frames, &u),
+            };
+            (a, v)
+        })
+        .collect();
+    Ok((dynamic, parts))
+}
+
+/// The quantity of the dynamic side of a theorem (`delta(O1,E/0).z0`, `Rd(2/0).x0`).
+pub fn dynamic_quantity(m: &Mechanism, th: &Theorem) -> Quantity {
+    let motion = Motion {
+        moving: th.isolate.clone(),
+        reference: m.frame_name(m.frames.ground()).to_string(),
+    };
+    let kind = match th.kind {
+        TheoremKind::Resultant => QuantityKind::DynamicResultant(motion),
+        TheoremKind::Moment => QuantityKind::DynamicMoment {
+            point: m.point_name(th.point).to_string(),
+            motion,
+        },
+    };
+    Quantity {
+        kind,
+        basis: None,
+        projection: Some((m.frame_name(th.on.0).to_string(), th.on.1.letter())),
+    }
+}
+
+fn theorem_label(m: &Mechanism, th: &Theorem) -> String {
+    format!("{} = actions", dynamic_quantity(m, th))
+}
+
+/// The residual of a theorem: dynamic side minus the actions.
+pub fn residual(m: &Mechanism, th: &Theorem) -> Result<Expr, ResolveError> {
+    let (d, parts) = theorem_sides(m, th)?;
+    Ok(parts.iter().fold(d, |acc, (_, v)| &acc - v))
+}
+
+/// Variable indices of the unknowns that occur in `e`.
+fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<usize> {
+    unknown_vars(m)
+        .into_iter()
+        .filter(|&(_, v)| !e.derivative(v).is_zero())
+        .map(|(_, v)| v)
+        .collect()
+}
+
+/// (unknown name, variable index) of every unknown.
+fn unknown_vars(m: &Mechanism) -> Vec<(String, usize)> {
+    let reg = &m.reg;
+    let np = reg.parameters().len();
+    reg.unknowns()
+        .iter()
+        .enumerate()
+        .filter_map(|(k, n)| {
+            reg.index_of(crate::expr::VarRole::Parameter(np + k))
+                .map(|v| (n.clone(), v))
+        })
+        .collect()
+}
+
+/// Replaces the unknown variable `v`, which enters `e` linearly, by `value`.
+fn replace_linear(e: &Expr, v: usize, value: &Expr) -> Expr {
+    let c = e.derivative(v);
+    if c.is_zero() {
+        return e.clone();
+    }
+    let x = e.registry().variable(v);
+    &(e - &(&c * &x)) + &(&c * value)
+}
+
+/// Solves the declared PFD: the equations without `eom` determine the unknowns that occur in
+/// them (a square system; pivots must be nonzero numbers, which projecting on the links'
+/// own bases gives), then each equation of motion has them substituted.
+pub fn solve(m: &Mechanism) -> Result<Solution, PfdError> {
+    let err = |e: ResolveError| PfdError(e.to_string());
+    let mut rows: Vec<(usize, Expr)> = Vec::new();
+    let mut eoms: Vec<(usize, Expr)> = Vec::new();
+    for (i, th) in m.dynamics.theorems.iter().enumerate() {
+        let r = residual(m, th).map_err(err)?;
+        check_linear(m, &r).map_err(|msg| PfdError(format!("pfd[{i}]: {msg}")))?;
+        if th.eom.is_some() {
+            eoms.push((i, r));
+        } else {
+            rows.push((i, r));
+        }
+    }
+    let mut cols: Vec<usize> = Vec::new();
+    for (_, r) in &rows {
+        for v in unknowns_in(m, r) {
+            if !cols.contains(&v) {
+                cols.push(v);
+            }
+        }
+    }
+    let names: BTreeMap<usize, String> = unknown_vars(m).into_iter().map(|(n, v)| (v, n)).collect();
+    if cols.len() != rows.len() {
+        let listed: Vec<&str> = cols.iter().map(|v| names[v].as_str()).collect();
+        return Err(PfdError(format!(
+            "{} equation(s) without `eom` for {} unknown(s) ({}): the system to solve must be \
+             square",
+            rows.len(),
+            cols.len(),
+            listed.join(", ")
+        )));
+    }
+    // Gauss–Jordan elimination with numeric pivots.
+    let mut solved: Vec<(usize, Expr)> = Vec::new();
+    let mut pending = rows;
+    for &v in &cols {
+        let pos = pending
+            .iter()
+            .position(|(_, r)| r.derivative(v).is_nonzero_constant());
+        let Some(pos) = pos else {
+            return Err(PfdError(format!(
+                "cannot solve for {}: its coefficient is not a number in any remaining \
+                 equation (project the theorems on the basis of the link's axis)",
+                names[&v]
+            )));
+        };
+        let (_, row) = pending.remove(pos);
+        let c = row.derivative(v);
+        let x = m.reg.variable(v);
+        // row = c x + rest = 0  =>  x = −rest / c.
+        let rest = &row - &(&c * &x);
+        let value = (-&rest)
+            .div_constant(&c)
+            .ok_or_else(|| PfdError("zero pivot".into()))?;
+        for (_, r) in pending.iter_mut() {
+            *r = replace_linear(r, v, &value);
+        }
+        for (_, s) in solved.iter_mut() {
+            *s = replace_linear(s, v, &value);
+        }
+        solved.push((v, value));
+    }
+    let mut unknowns = BTreeMap::new();
+    for (v, value) in &solved {
+        unknowns.insert(names[v].clone(), value.clone());
+    }
+    let mut eom = BTreeMap::new();
+    for (i, mut r) in eoms {
+        for (v, value) in &solved {
+            r = replace_linear(&r, *v, value);
+        }
+        let left = unknowns_in(m, &r);
+        if let Some(v) = left.first() {
+            return Err(PfdError(format!(
+                "pfd[{i}]: the equation of motion still contains the unknown {}, which the \
+                 other equations do not determine",
+                names[v]
+            )));
+        }
+        let th = &m.dynamics.theorems[i];
+        let q = th.eom.expect("eom equation");
+        eom.insert(m.reg.coord_info(q).name.clone(), r);
+    }
+    Ok(Solution { unknowns, eom })
+}
+
+/// Unknowns must enter linearly: no term with two unknown factors.
+fn check_linear(m: &Mechanism, r: &Expr) -> Result<(), String> {
+    let vars = unknown_vars(m);
+    for (n1, v1) in &vars {
+        let d = r.derivative(*v1);
+        for (n2, v2) in &vars {
+            if !d.derivative(*v2).is_zero() {
+                return Err(format!("the unknowns {n1} and {n2} multiply each other"));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Kinetic energy Ec(S/R0) = Σ ½ (m V(G/R0)² + Ω(S/R0)·I_G(S) Ω(S/R0)).
+pub fn kinetic_energy(m: &Mechanism, solids: &[BodyId]) -> Expr {
+    let g0 = m.frames.ground();
+    let half = m.reg.rational(1, 2);
+    let mut acc = m.reg.zero();
+    for &s in solids {
+        let b = m.body(s);
+        let v = velocity(m, b.centre, b.frame, g0);
+        let mut twice = &b.mass * &v.dot(&m.frames, &v);
+        if let Some(i) = torsor::inertia_at_centre(m, s) {
+            let w = omega(m, b.frame, g0);
+            twice = &twice + &w.dot(&m.frames, &i.apply(&m.frames, &w));
+        }
+        acc = &acc + &(&half * &twice);
+    }
+    acc
+}
+
+/// Potential energy of gravity (−Σ m g⃗·O0G) and of the springs (½ k (q − q0)²).
+pub fn potential_energy(m: &Mechanism) -> Expr {
+    let mut acc = m.reg.zero();
+    if let Some(g) = &m.dynamics.gravity {
+        for b in &m.bodies {
+            let og = position(m, m.points.origin(), b.centre);
+            acc = &acc - &(&b.mass * &og.dot(&m.frames, g));
+        }
+    }
+    for a in &m.dynamics.actions {
+        if let Some(s) = &a.spring {
+            acc = &acc + &s.potential;
+        }
+    }
+    acc
+}
+
+/// Lagrange's equation of coordinate q as a residual:
+/// d/dt ∂Ec/∂q̇ − ∂Ec/∂q + ∂Ep/∂q − Q_q = 0, with Ec the kinetic energy of all the solids,
+/// Ep the potential of gravity and springs, and Q_q the generalised force of every other
+/// action (links' unknowns, friction, given actions) by virtual power:
+/// Q_q = Σ R·∂V(A∈S/R0)/∂q̇ + M(A)·∂Ω(S/R0)/∂q̇ over the receiving solid and, with opposite
+/// sign, the solid that exerts it.
+pub fn lagrange(m: &Mechanism, q: CoordId) -> Expr {
+    let all: Vec<BodyId> = (0..m.bodies.len()).map(BodyId).collect();
+    let t = kinetic_energy(m, &all);
+    let ep = potential_energy(m);
+    let mut r =
+        &(&t.partial_rate(q, 1).dt() - &t.partial_coordinate(q)) + &ep.partial_coordinate(q);
+    let g0 = m.frames.ground();
+    let coefficient = |body: BodyId, a: &Action, res: &Vector, mom: &Vector| -> Expr {
+        let f = m.body(body).frame;
+        let dv = velocity(m, a.point, f, g0).map(|e| e.partial_rate(q, 1));
+        let dw = omega(m, f, g0).map(|e| e.partial_rate(q, 1));
+        &res.dot(&m.frames, &dv) + &mom.dot(&m.frames, &dw)
+    };
+    for a in &m.dynamics.actions {
+        let (res, mom) = match &a.spring {
+            Some(s) => (a.resultant.sub(&s.resultant), a.moment.sub(&s.moment)),
+            None => (a.resultant.clone(), a.moment.clone()),
+        };
+        r = &r - &coefficient(a.on, a, &res, &mom);
+        if let Source::Body(b) = a.from {
+            r = &r + &coefficient(b, a, &res, &mom);
+        }
+    }
+    r
+}
+
+fn resolve_err(q: &Quantity, message: String) -> ResolveError {
+    ResolveError {
+        quantity: q.to_string(),
+        message,
+    }
+}
+
+/// The steps of one theorem: each exterior action's torsor, the dynamic side, the actions'
+/// side.
+fn theorem_steps(m: &Mechanism, th: &Theorem, steps: &mut Vec<Step>) -> Result<(), ResolveError> {
+    let (dynamic, parts) = theorem_sides(m, th)?;
+    for (a, _) in &parts {
+        steps.push(Step {
+            label: format!("T({}->{})", a.from_label, a.on_label),
+            kind: StepKind::Action {
+                from: a.from_label.clone(),
+                on: a.on_label.clone(),
+                point: m.point_name(a.point).to_string(),
+            },
+            theorem: format!(
+                "Action de {} sur {} ({})",
+                a.from_label, a.on_label, a.description
+            ),
+            value: Value::Torsor {
+                point: a.point,
+                basis: a.basis,
+                resultant: a.resultant.express_in(&m.frames, a.basis),
+                moment: a.moment.express_in(&m.frames, a.basis),
+            },
+        });
+    }
+    let on = (m.frame_name(th.on.0).to_string(), th.on.1.letter());
+    let dq = dynamic_quantity(m, th);
+    let (theorem_name, at) = match th.kind {
+        TheoremKind::Resultant => (
+            "Théorème de la résultante dynamique".to_string(),
+            String::new(),
+        ),
+        TheoremKind::Moment => (
+            "Théorème du moment dynamique".to_string(),
+            format!(" en {}", m.point_name(th.point)),
+        ),
+    };
+    steps.push(Step {
+        label: dq.to_string(),
+        kind: StepKind::Projected(dq.kind.clone(), on.clone()),
+        theorem: format!(
+            "{theorem_name} appliqué à {}{at}, en projection sur {}{} : côté dynamique",
+            th.isolate, on.1, on.0
+        ),
+        value: Value::Scalar(dynamic),
+    });
+    let total = parts.iter().fold(m.reg.zero(), |acc, (_, v)| &acc + v);
+    steps.push(Step {
+        label: format!("actions on {}", th.isolate),
+        kind: StepKind::External {
+            isolate: th.isolate.clone(),
+            point: match th.kind {
+                TheoremKind::Resultant => None,
+                TheoremKind::Moment => Some(m.point_name(th.point).to_string()),
+            },
+            on,
+        },
+        theorem: "Somme des actions mécaniques extérieures, projetée".to_string(),
+        value: Value::Scalar(total),
+    });
+    Ok(())
+}
+
+/// Derives `Ec(S/0)`, an unknown (`C_m`) or `eom(q)`, with the steps of the PFD.
+pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
+    let mut steps = Vec::new();
+    let value = match &q.kind {
+        QuantityKind::KineticEnergy(mo) => {
+            let solids = m
+                .solids_of(&mo.moving)
+                .ok_or_else(|| resolve_err(q, format!("unknown solid or set `{}`", mo.moving)))?;
+            if m.frames.find(&mo.reference) != Some(m.frames.ground()) {
+                return Err(resolve_err(
+                    q,
+                    format!(
+                        "the kinetic energy is taken relative to the ground `{}`",
+                        m.frame_name(m.frames.ground())
+                    ),
+                ));
+            }
+            kinetic_energy(m, &solids)
+        }
+        QuantityKind::Unknown(name) => {
+            if !m.reg.unknowns().contains(name) {
+                return Err(resolve_err(
+                    q,
+                    format!(
+                        "`{name}` is not an unknown of the PFD (links' components, actions' unknowns)"
+                    ),
+                ));
+            }
+            let sol = solve(m).map_err(|e| resolve_err(q, e.0))?;
+            let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
+                resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
+            })?;
+            for th in m.dynamics.theorems.iter().filter(|t| t.eom.is_none()) {
+                let r = residual(m, th)?;
+                let occurs = m
+                    .reg
+                    .unknowns()
+                    .iter()
+                    .position(|n| n == name)
+                    .and_then(|k| {
+                        m.reg.index_of(crate::expr::VarRole::Parameter(
+                            m.reg.parameters().len() + k,
+                        ))
+                    })
+                    .is_some_and(|v| !r.derivative(v).is_zero());
+                if occurs {
+                    theorem_steps(m, th, &mut steps)?;
+                }
+            }
+            v
+        }
+        QuantityKind::Eom(c) => {
+            let coord = m
+                .reg
+                .coord(c)
+                .ok_or_else(|| resolve_err(q, format!("unknown coordinate `{c}`")))?;
+            let th = m
+                .dynamics
+                .theorems
+                .iter()
+                .find(|t| t.eom == Some(coord))
+                .ok_or_else(|| {
+                    resolve_err(
+                        q,
+                        format!("no equation of `pfd` is marked `\"eom\": \"{c}\"`"),
+                    )
+                })?;
+            let sol = solve(m).map_err(|e| resolve_err(q, e.0))?;
+            theorem_steps(m, th, &mut steps)?;
+            sol.eom
+                .get(c)
+                .cloned()
+                .ok_or_else(|| resolve_err(q, format!("no equation of motion for `{c}`")))?
+        }
+        _ => return Err(resolve_err(q, "not a PFD quantity".to_string())),
+    };
+    Ok(Derivation {
+        quantity: q.clone(),
+        steps,
+        value: Value::Scalar(value),
+    })
+}
+
+/// Course name of a link kind (« pivot », « glissière »...).
+pub fn link_name(k: LinkKind) -> &'static str {
+    match k {
+        LinkKind::Fixed => "encastrement",
+        LinkKind::Pivot => "liaison pivot",
+        LinkKind::Slider => "liaison glissière",
+        LinkKind::PivotSlider => "liaison pivot glissant",
+        LinkKind::Ball => "liaison sphérique (rotule)",
+        LinkKind::Plane => "liaison appui plan",
+        LinkKind::Annular => "liaison sphère-cylindre (linéaire annulaire)",
+        LinkKind::Line => "liaison cylindre-plan (linéaire rectiligne)",
+        LinkKind::Point => "liaison sphère-plan (ponctuelle)",
+    }
+}
+
+/// Which of the six components (X, Y, Z, L, M, N in the link's basis) a perfect link
+/// transmits, given its axis (or normal) `a` and, for a line contact, its direction `d`.
+pub fn transmitted(k: LinkKind, a: Axis, d: Option<Axis>) -> [bool; 6] {
+    let i = a.index();
+    let mut t = [true; 6];
+    match k {
+        LinkKind::Fixed => {}
+        LinkKind::Pivot => t[3 + i] = false,
+        LinkKind::Slider => t[i] = false,
+        LinkKind::PivotSlider => {
+            t[i] = false;
+            t[3 + i] = false;
+        }
+        LinkKind::Ball => t[3..].iter_mut().for_each(|x| *x = false),
+        LinkKind::Plane => {
+            for k in 0..3 {
+                t[k] = k == i;
+            }
+            t[3 + i] = false;
+        }
+        LinkKind::Annular => {
+            t[i] = false;
+            t[3..].iter_mut().for_each(|x| *x = false);
+        }
+        LinkKind::Line => {
+            let d = d.map(|d| d.index()).unwrap_or((i + 1) % 3);
+            let third = 3 - i - d;
+            for k in 0..3 {
+                t[k] = k == i;
+                t[3 + k] = k == third;
+            }
+        }
+        LinkKind::Point => {
+            for k in 0..6 {
+                t[k] = k == i;
+            }
+        }
+    }
+    t
+}
+
+/// Names of the unknowns of a link: X, Y, Z, L, M, N followed by its name, where transmitted.
+pub fn link_unknowns(name: &str, t: [bool; 6]) -> Vec<String> {
+    ["X", "Y", "Z", "L", "M", "N"]
+        .iter()
+        .zip(t)
+        .filter(|(_, on)| *on)
+        .map(|(l, _)| format!("{l}{name}"))
+        .collect()
+}

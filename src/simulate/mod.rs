@@ -1,0 +1,270 @@
+//! `simulate`: the equations of motion of the PFD integrated for a scenario of the spec (an
+//! imposed rate law, initial conditions, parameter values), with the unknowns (a motor torque)
+//! recorded along the way; CSV and plots.
+//!
+//! The right-hand side comes from the engine's exact results: each `eom(q)` is linear in the
+//! accelerations, M(q, q̇) q̈ + h(q, q̇, t) = 0, with M and h compiled once; at every call the
+//! free accelerations are solved for (LU), then the recorded unknowns are evaluated.
+//!
+//! ```no_run
+//! let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+//! let run = torseur::simulate::simulate(&m, "sans_frottement").unwrap();
+//! let cm = run.column("C_m").unwrap();
+//! println!("max |C_m| = {}", cm.iter().fold(0.0f64, |a, v| a.max(v.abs())));
+//! ```
+
+mod error;
+mod law;
+mod ode;
+mod plot;
+mod raster;
+mod scenario;
+mod table;
+#[cfg(test)]
+mod tests;
+
+pub use error::SimError;
+pub use law::TimeLaw;
+pub use ode::{MAX_OUTPUT_POINTS, Options, Output, Stats, Trajectory, integrate};
+pub use plot::{FONT_DEJAVU_SANS, Figure, Panel, Series, plot};
+pub use table::{NumberFormat, Table, write_atomic};
+
+use crate::expr::Expr;
+use crate::mechanism::Mechanism;
+use crate::spec::wire::{CoordinateKind, ScenarioSpec};
+use scenario::Plan;
+
+/// Why a simulation could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum SimulateError {
+    /// The scenario does not fit the spec.
+    #[error("{0}")]
+    Scenario(String),
+    /// The integrator, the output or the plot failed.
+    #[error(transparent)]
+    Sim(#[from] SimError),
+}
+
+/// A column of a run: its id, its unit, its values at the output instants.
+#[derive(Debug, Clone)]
+pub struct Column {
+    /// `theta2`, `dot(theta1)`, `C_m`.
+    pub id: String,
+    /// SI unit (`rad`, `rad/s`, `N m`).
+    pub unit: String,
+    /// One value per output instant.
+    pub values: Vec<f64>,
+}
+
+/// The result of a simulation.
+#[derive(Debug, Clone)]
+pub struct Run {
+    /// Scenario name.
+    pub scenario: String,
+    /// Output instants (s).
+    pub times: Vec<f64>,
+    /// Columns: each coordinate and its rate, then the recorded unknowns and integrals.
+    pub columns: Vec<Column>,
+    /// Right-hand side evaluations and accepted steps.
+    pub stats: Stats,
+}
+
+impl Run {
+    /// The values of a column by id.
+    pub fn column(&self, id: &str) -> Option<&[f64]> {
+        self.columns
+            .iter()
+            .find(|c| c.id == id)
+            .map(|c| c.values.as_slice())
+    }
+
+    /// Largest absolute value of a column and when it occurs.
+    pub fn max_abs(&self, id: &str) -> Option<(f64, f64)> {
+        let v = self.column(id)?;
+        v.iter()
+            .zip(&self.times)
+            .fold(None, |best: Option<(f64, f64)>, (x, t)| match best {
+                Some((b, _)) if b >= x.abs() => best,
+                _ => Some((x.abs(), *t)),
+            })
+    }
+
+    /// The run as a CSV table, headers with units.
+    pub fn table(&self) -> Result<Table, SimError> {
+        let mut headers = vec!["t (s)".to_string()];
+        headers.extend(
+            self.columns
+                .iter()
+                .map(|c| format!("{} ({})", c.id, c.unit)),
+        );
+        let refs: Vec<&str> = headers.iter().map(String::as_str).collect();
+        let mut t = Table::new(&refs);
+        for (k, time) in self.times.iter().enumerate() {
+            let mut row = vec![*time];
+            row.extend(self.columns.iter().map(|c| c.values[k]));
+            t.push_row(&row)?;
+        }
+        Ok(t)
+    }
+}
+
+/// Unit of a recorded unknown: a moment component or a force.
+fn unknown_unit(m: &Mechanism, id: &str) -> String {
+    let moment = m.spec.actions.iter().any(|a| {
+        a.unknowns.iter().any(|u| u == id) && a.moment.as_deref().is_some_and(|t| t.contains(id))
+    }) || (id.starts_with(['L', 'M', 'N'])
+        && m.spec.links.iter().any(|l| id[1..] == l.name));
+    if moment { "N m" } else { "N" }.to_string()
+}
+
+/// Runs the scenario `name` of the spec.
+pub fn simulate(m: &Mechanism, name: &str) -> Result<Run, SimulateError> {
+    let sc = m
+        .spec
+        .scenarios
+        .iter()
+        .find(|s| s.name == name)
+        .ok_or_else(|| {
+            let known: Vec<&str> = m.spec.scenarios.iter().map(|s| s.name.as_str()).collect();
+            SimulateError::Scenario(format!(
+                "no scenario `{name}` in the spec (scenarios: {})",
+                if known.is_empty() {
+                    "none".to_string()
+                } else {
+                    known.join(", ")
+                }
+            ))
+        })?;
+    simulate_with(m, sc, &[])
+}
+
+/// Runs a scenario, also integrating each expression of `integrals` over time (a power, to
+/// get a work): its integral is recorded as a column named after it.
+pub fn simulate_with(
+    m: &Mechanism,
+    sc: &ScenarioSpec,
+    integrals: &[(String, Expr)],
+) -> Result<Run, SimulateError> {
+    if !(sc.duration.is_finite() && sc.duration > 0.0 && sc.duration <= 1e6) {
+        return Err(SimulateError::Scenario(format!(
+            "scenario `{}`: the duration must be positive (seconds)",
+            sc.name
+        )));
+    }
+    let mut plan = Plan::new(m, sc, &sc.record, integrals)?;
+    let opts = Options {
+        rtol: 1e-10,
+        atol: 1e-12,
+        output: Output::Interval((sc.duration / 1000.0).min(1e-3)),
+        breakpoints: plan.breakpoints.clone(),
+        ..Options::default()
+    };
+    let y0 = plan.initial_state();
+    let traj = integrate(|t, y, dy| plan.rhs(m, t, y, dy), &y0, sc.duration, &opts)?;
+    let reg = &m.reg;
+    let unit = |q: crate::expr::CoordId, rate: bool| {
+        let base = match reg.coord_info(q).kind {
+            CoordinateKind::Angle => "rad",
+            CoordinateKind::Length => "m",
+        };
+        if rate {
+            format!("{base}/s")
+        } else {
+            base.to_string()
+        }
+    };
+    let mut columns: Vec<Column> = Vec::new();
+    let mut push = |id: String, unit: String| {
+        columns.push(Column {
+            id,
+            unit,
+            values: Vec::with_capacity(traj.len()),
+        })
+    };
+    for im in &plan.imposed {
+        let n = &reg.coord_info(im.coord).name;
+        push(n.clone(), unit(im.coord, false));
+        push(format!("dot({n})"), unit(im.coord, true));
+    }
+    for &q in &plan.free {
+        let n = &reg.coord_info(q).name;
+        push(n.clone(), unit(q, false));
+        push(format!("dot({n})"), unit(q, true));
+    }
+    for id in &sc.record {
+        push(id.clone(), unknown_unit(m, id));
+    }
+    for (name, _) in integrals {
+        push(format!("int({name})"), "SI".to_string());
+    }
+    let ni = plan.imposed.len();
+    let nf = plan.free.len();
+    for (k, y) in traj.states().enumerate() {
+        let t = traj.times()[k];
+        let (_, rec) = plan
+            .evaluate(m, t, y)
+            .map_err(|e| SimulateError::Scenario(format!("at t = {t}: {e}")))?;
+        let mut c = 0;
+        let mut put = |v: f64, c: &mut usize| {
+            columns[*c].values.push(v);
+            *c += 1;
+        };
+        for (i, im) in plan.imposed.iter().enumerate() {
+            put(y[i], &mut c);
+            let w = im.law.at(t).map_err(SimulateError::Scenario)?.0;
+            put(w, &mut c);
+        }
+        for i in 0..nf {
+            put(y[ni + i], &mut c);
+            put(y[ni + nf + i], &mut c);
+        }
+        for v in rec.iter().take(sc.record.len()) {
+            put(*v, &mut c);
+        }
+        for i in 0..plan.integrals {
+            put(y[ni + 2 * nf + i], &mut c);
+        }
+    }
+    Ok(Run {
+        scenario: sc.name.clone(),
+        times: traj.times().to_vec(),
+        columns,
+        stats: traj.stats(),
+    })
+}
+
+/// A figure comparing runs: one panel per column id, one curve per run. Angles are drawn in
+/// degrees and rates in rpm when `course_units` is set, as the seed's curves are.
+pub fn figure(title: &str, runs: &[(&str, &Run)], ids: &[&str], course_units: bool) -> Figure {
+    let mut fig = Figure::new(title, "t (s)");
+    for id in ids {
+        let mut label = None;
+        let mut panel_series = Vec::new();
+        for (name, run) in runs {
+            let Some(col) = run.columns.iter().find(|c| c.id == *id) else {
+                continue;
+            };
+            let (scale, unit) = match (course_units, col.unit.as_str()) {
+                (true, "rad") => (180.0 / std::f64::consts::PI, "°".to_string()),
+                (true, "rad/s") => (30.0 / std::f64::consts::PI, "tr/min".to_string()),
+                (_, u) => (1.0, u.to_string()),
+            };
+            label.get_or_insert(format!("{id} ({unit})"));
+            let pts = run
+                .times
+                .iter()
+                .zip(&col.values)
+                .map(|(t, v)| (*t, v * scale))
+                .collect();
+            panel_series.push(Series::new(*name, pts));
+        }
+        if let Some(l) = label {
+            let mut p = Panel::new(l);
+            for s in panel_series {
+                p = p.series(s);
+            }
+            fig = fig.panel(p);
+        }
+    }
+    fig
+}

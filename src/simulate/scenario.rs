@@ -1,0 +1,274 @@
+//! A scenario of the spec made ready to integrate: the equations of motion solved for the
+//! accelerations, imposed rate laws, and the quantities to record.
+
+use super::SimulateError;
+use super::law::TimeLaw;
+use crate::expr::{Compiled, CoordId, Expr, VarRole};
+use crate::mechanism::Mechanism;
+use crate::pfd;
+use crate::spec::wire::ScenarioSpec;
+use nalgebra::{DMatrix, DVector};
+
+/// A coordinate whose motion is imposed: its rate law (and value by integration).
+pub(super) struct Imposed {
+    pub coord: CoordId,
+    pub initial: f64,
+    pub law: ImposedLaw,
+}
+
+/// An imposed rate: a piecewise law of t, or the spec's constant rate.
+pub(super) enum ImposedLaw {
+    Law(TimeLaw),
+    Constant(f64),
+}
+
+impl ImposedLaw {
+    /// Rate and its time derivative at t.
+    pub fn at(&self, t: f64) -> Result<(f64, f64), String> {
+        match self {
+            ImposedLaw::Law(l) => l.rate(t),
+            ImposedLaw::Constant(w) => Ok((*w, 0.0)),
+        }
+    }
+}
+
+/// Everything the right-hand side needs.
+pub(super) struct Plan {
+    /// Free coordinates (integrated through their equation of motion).
+    pub free: Vec<CoordId>,
+    /// Imposed coordinates.
+    pub imposed: Vec<Imposed>,
+    /// Registry variable values that do not change (parameters); the rest is filled per call.
+    pub base: Vec<f64>,
+    /// M (row-major, n×n) then h: M q̈ + h = 0 over the free coordinates.
+    pub dynamics: Compiled,
+    /// The recorded expressions (unknowns, integrands), evaluated once q̈ is known.
+    pub recorded: Compiled,
+    /// Number of recorded expressions that are integrated (the last ones).
+    pub integrals: usize,
+    /// Initial [q, q̇] of the free coordinates.
+    pub initial: Vec<[f64; 2]>,
+    /// Breakpoints of the imposed laws.
+    pub breakpoints: Vec<f64>,
+}
+
+impl Plan {
+    /// Builds the plan of a scenario. `record` are quantity ids of unknowns to record;
+    /// `integrate` are extra expressions whose time integral is tracked (a power, for work).
+    pub fn new(
+        m: &Mechanism,
+        sc: &ScenarioSpec,
+        record: &[String],
+        integrate: &[(String, Expr)],
+    ) -> Result<Plan, SimulateError> {
+        let err = |s: String| SimulateError::Scenario(format!("scenario `{}`: {s}", sc.name));
+        let reg = &m.reg;
+        let sol = pfd::solve(m).map_err(|e| err(e.0))?;
+        for p in reg.parameters() {
+            if !sc.values.contains_key(p) {
+                return Err(err(format!("no value for the parameter `{p}`")));
+            }
+        }
+        for (k, v) in &sc.values {
+            if !reg.parameters().contains(k) {
+                return Err(err(format!("`{k}` is not a parameter")));
+            }
+            if !v.is_finite() {
+                return Err(err(format!("the value of `{k}` is not finite")));
+            }
+        }
+        let mut base = vec![0.0; reg.nvars()];
+        for i in 0..reg.nvars() {
+            if let VarRole::Parameter(k) = reg.role(i)
+                && !reg.is_unknown(k)
+            {
+                base[i] = sc.values[&reg.parameters()[k]];
+            }
+        }
+        let params: Vec<f64> = reg.parameters().iter().map(|p| sc.values[p]).collect();
+        let mut imposed = Vec::new();
+        let mut breakpoints = Vec::new();
+        for (k, im) in sc.imposed.iter().enumerate() {
+            let q = reg.coord(&im.coordinate).ok_or_else(|| {
+                err(format!(
+                    "imposed[{k}]: unknown coordinate `{}`",
+                    im.coordinate
+                ))
+            })?;
+            let law = TimeLaw::new(&im.rate, reg.parameters(), &params)
+                .map_err(|e| err(format!("imposed[{k}].rate: {e}")))?;
+            breakpoints.extend(law.breakpoints());
+            imposed.push(Imposed {
+                coord: q,
+                initial: im.initial,
+                law: ImposedLaw::Law(law),
+            });
+        }
+        let mut free = Vec::new();
+        for (i, c) in reg.coordinates().iter().enumerate() {
+            let q = CoordId(i);
+            if imposed.iter().any(|x| x.coord == q) {
+                continue;
+            }
+            if c.has_imposed_rate() {
+                let w = reg.rate(q, 1).eval(&base);
+                imposed.push(Imposed {
+                    coord: q,
+                    initial: sc.initial.get(&c.name).map(|v| v[0]).unwrap_or(0.0),
+                    law: ImposedLaw::Constant(w),
+                });
+                continue;
+            }
+            free.push(q);
+        }
+        let mut initial = Vec::new();
+        for &q in &free {
+            let name = &reg.coord_info(q).name;
+            if !sol.eom.contains_key(name) {
+                return Err(err(format!(
+                    "the coordinate `{name}` is neither imposed nor given an equation of motion \
+                     (mark one equation of `pfd` with \"eom\": \"{name}\")"
+                )));
+            }
+            initial.push(sc.initial.get(name).copied().unwrap_or([0.0, 0.0]));
+        }
+        for name in sc.initial.keys() {
+            if reg.coord(name).is_none() {
+                return Err(err(format!("initial: unknown coordinate `{name}`")));
+            }
+        }
+        // M q̈ + h = 0 over the free coordinates; every eom is linear in the q̈.
+        let n = free.len();
+        let mut exprs: Vec<Expr> = Vec::with_capacity(n * n + n);
+        let mut hs = Vec::with_capacity(n);
+        for &qi in &free {
+            let e = &sol.eom[&reg.coord_info(qi).name];
+            let mut h = e.clone();
+            for &qj in &free {
+                let mij = e.partial_rate(qj, 2);
+                if !mij.partial_rate(qj, 2).is_zero() {
+                    return Err(err(
+                        "an equation of motion is not linear in the accelerations".into(),
+                    ));
+                }
+                let x = reg.ddot(qj);
+                h = &h - &(&mij * &x);
+                exprs.push(mij);
+            }
+            hs.push(h);
+        }
+        exprs.extend(hs);
+        let refs: Vec<&Expr> = exprs.iter().collect();
+        let dynamics = reg
+            .compile(&refs)
+            .map_err(|e| err(format!("compiling the equations of motion: {e}")))?;
+        let mut rec: Vec<Expr> = Vec::new();
+        for id in record {
+            let v = sol
+                .unknowns
+                .get(id)
+                .ok_or_else(|| err(format!("record: `{id}` is not a solved unknown")))?;
+            rec.push(v.clone());
+        }
+        for (_, e) in integrate {
+            rec.push(e.clone());
+        }
+        if rec.is_empty() {
+            rec.push(reg.zero());
+        }
+        let refs: Vec<&Expr> = rec.iter().collect();
+        let recorded = reg
+            .compile(&refs)
+            .map_err(|e| err(format!("compiling the recorded quantities: {e}")))?;
+        breakpoints.sort_by(f64::total_cmp);
+        breakpoints.dedup();
+        Ok(Plan {
+            free,
+            imposed,
+            base,
+            dynamics,
+            recorded,
+            integrals: integrate.len(),
+            initial,
+            breakpoints,
+        })
+    }
+
+    /// The initial state.
+    pub fn initial_state(&self) -> Vec<f64> {
+        let mut y: Vec<f64> = self.imposed.iter().map(|i| i.initial).collect();
+        y.extend(self.initial.iter().map(|v| v[0]));
+        y.extend(self.initial.iter().map(|v| v[1]));
+        y.extend(std::iter::repeat_n(0.0, self.integrals));
+        y
+    }
+
+    /// Fills the registry point from the state at t and solves for the free accelerations.
+    /// Returns the free accelerations and the recorded values.
+    pub fn evaluate(
+        &mut self,
+        m: &Mechanism,
+        t: f64,
+        y: &[f64],
+    ) -> Result<(Vec<f64>, Vec<f64>), String> {
+        let reg = &m.reg;
+        let ni = self.imposed.len();
+        let n = self.free.len();
+        let mut point = self.base.clone();
+        let set = |q: CoordId, v: [f64; 3], point: &mut Vec<f64>| {
+            let put = |role: VarRole, x: f64, point: &mut Vec<f64>| {
+                if let Some(i) = reg.index_of(role) {
+                    point[i] = x;
+                }
+            };
+            put(VarRole::Cos(q), v[0].cos(), point);
+            put(VarRole::Sin(q), v[0].sin(), point);
+            put(VarRole::Value(q), v[0], point);
+            put(VarRole::Rate(q, 1), v[1], point);
+            put(VarRole::Rate(q, 2), v[2], point);
+        };
+        for (k, im) in self.imposed.iter().enumerate() {
+            let (w, a) = im.law.at(t)?;
+            set(im.coord, [y[k], w, a], &mut point);
+        }
+        for (k, &q) in self.free.iter().enumerate() {
+            set(q, [y[ni + k], y[ni + n + k], 0.0], &mut point);
+        }
+        let mut out = vec![0.0; n * n + n];
+        self.dynamics.evaluate(&point, &mut out);
+        let mass = DMatrix::from_row_slice(n, n, &out[..n * n]);
+        let h = DVector::from_column_slice(&out[n * n..]);
+        let acc = mass
+            .lu()
+            .solve(&(-h))
+            .ok_or_else(|| format!("the mass matrix is singular at t = {t}"))?;
+        for (k, &q) in self.free.iter().enumerate() {
+            set(q, [y[ni + k], y[ni + n + k], acc[k]], &mut point);
+        }
+        let mut rec = vec![0.0; self.recorded.outputs()];
+        self.recorded.evaluate(&point, &mut rec);
+        if let Some(bad) = out.iter().chain(&rec).find(|v| !v.is_finite()) {
+            return Err(format!("non-finite value {bad} at t = {t}"));
+        }
+        Ok((acc.iter().copied().collect(), rec))
+    }
+
+    /// The right-hand side y' = f(t, y).
+    pub fn rhs(&mut self, m: &Mechanism, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), String> {
+        let ni = self.imposed.len();
+        let n = self.free.len();
+        let (acc, rec) = self.evaluate(m, t, y)?;
+        for (k, im) in self.imposed.iter().enumerate() {
+            dy[k] = im.law.at(t)?.0;
+        }
+        for k in 0..n {
+            dy[ni + k] = y[ni + n + k];
+            dy[ni + n + k] = acc[k];
+        }
+        let first = rec.len() - self.integrals;
+        for k in 0..self.integrals {
+            dy[ni + 2 * n + k] = rec[first + k];
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,411 @@
+//! Validation of the PFD sections of a spec (`gravity`, `links`, `actions`, `pfd`) into
+//! [`Dynamics`], every error naming the JSON path.
+
+use super::SpecError;
+use super::validate::{at, expr_err};
+use super::wire::{CoordinateKind, LinkKind, SpecFile, TheoremKind};
+use crate::expr::{Expr, Registry};
+use crate::frame::{Axis, FrameId};
+use crate::kinematics::{omega, velocity};
+use crate::mechanism::{BodyId, Mechanism};
+use crate::pfd::{
+    Action, Dynamics, Source, SpringPart, Theorem, link_name, link_unknowns, transmitted,
+};
+use crate::vector::Vector;
+use std::collections::HashSet;
+use std::rc::Rc;
+
+/// The axis letter of a basis vector text (`z0` → z), before frames exist.
+fn axis_letter(s: &str) -> Option<Axis> {
+    Axis::parse(&s.chars().next()?.to_string())
+}
+
+/// Names the PFD adds to the registry: the unknowns (links' components, then the actions'),
+/// and the angles that enter as themselves (torsion springs).
+pub(super) fn pfd_names(
+    spec: &SpecFile,
+    taken: &HashSet<String>,
+) -> Result<(Vec<String>, Vec<String>), SpecError> {
+    let mut unknowns: Vec<String> = Vec::new();
+    let mut seen: HashSet<String> = HashSet::new();
+    let mut add = |path: String, n: String, unknowns: &mut Vec<String>| {
+        crate::expr::check_identifier(&n).map_err(|m| at(&path, m))?;
+        if taken.contains(&n) {
+            return Err(at(
+                path,
+                format!("the unknown `{n}` is already a parameter or coordinate"),
+            ));
+        }
+        if !seen.insert(n.clone()) {
+            return Err(at(path, format!("the unknown `{n}` is declared twice")));
+        }
+        unknowns.push(n);
+        Ok(())
+    };
+    for (i, l) in spec.links.iter().enumerate() {
+        let path = format!("links[{i}]");
+        let axis = match (&l.axis, l.kind) {
+            (Some(a), _) => axis_letter(a).ok_or_else(|| {
+                at(
+                    format!("{path}.axis"),
+                    format!("`{a}` is not a basis vector such as z0"),
+                )
+            })?,
+            (None, LinkKind::Ball | LinkKind::Fixed) => Axis::Z,
+            (None, _) => {
+                return Err(at(
+                    format!("{path}.axis"),
+                    format!("a {} needs its axis (or normal)", link_name(l.kind)),
+                ));
+            }
+        };
+        let direction = match (&l.direction, l.kind) {
+            (Some(d), LinkKind::Line) => {
+                let d = axis_letter(d).ok_or_else(|| {
+                    at(
+                        format!("{path}.direction"),
+                        format!("`{d}` is not a basis vector"),
+                    )
+                })?;
+                if d == axis {
+                    return Err(at(
+                        format!("{path}.direction"),
+                        "the line's direction must differ from the normal",
+                    ));
+                }
+                Some(d)
+            }
+            (Some(_), _) => {
+                return Err(at(
+                    format!("{path}.direction"),
+                    "only a line contact (`line`) has a direction",
+                ));
+            }
+            (None, LinkKind::Line) => {
+                return Err(at(
+                    format!("{path}.direction"),
+                    "a line contact needs the direction of its line",
+                ));
+            }
+            (None, _) => None,
+        };
+        for n in link_unknowns(&l.name, transmitted(l.kind, axis, direction)) {
+            add(format!("{path}.name"), n, &mut unknowns)?;
+        }
+    }
+    for (i, a) in spec.actions.iter().enumerate() {
+        for (k, n) in a.unknowns.iter().enumerate() {
+            add(
+                format!("actions[{i}].unknowns[{k}]"),
+                n.clone(),
+                &mut unknowns,
+            )?;
+        }
+    }
+    let mut raw = Vec::new();
+    for l in &spec.links {
+        if let Some(s) = &l.spring
+            && spec
+                .coordinates
+                .iter()
+                .any(|c| c.name == s.coordinate && c.kind == CoordinateKind::Angle)
+            && !raw.contains(&s.coordinate)
+        {
+            raw.push(s.coordinate.clone());
+        }
+    }
+    Ok((unknowns, raw))
+}
+
+fn basis_vector(m: &Mechanism, path: &str, s: &str) -> Result<(FrameId, Axis), SpecError> {
+    let mut c = s.chars();
+    let axis = c.next().and_then(|a| Axis::parse(&a.to_string()));
+    let frame = m.frames.find(c.as_str());
+    match (axis, frame) {
+        (Some(a), Some(f)) => Ok((f, a)),
+        _ => Err(at(
+            path,
+            format!("`{s}` is not a basis vector (x, y or z followed by a frame name)"),
+        )),
+    }
+}
+
+fn vector(m: &Mechanism, path: &str, text: &str) -> Result<(Vector, FrameId), SpecError> {
+    let bv = |s: &str| {
+        let mut c = s.chars();
+        let axis = Axis::parse(&c.next()?.to_string())?;
+        Some((m.frames.find(c.as_str())?, axis.index()))
+    };
+    let parts = m
+        .reg
+        .parse_vector(text, &bv)
+        .map_err(|e| expr_err(path, e))?;
+    let mut v = Vector::zero();
+    let mut basis = None;
+    for (f, c) in parts {
+        basis.get_or_insert(f);
+        v.add_part(f, c);
+    }
+    Ok((v, basis.unwrap_or(m.frames.ground())))
+}
+
+fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecError> {
+    let e = reg.parse(text).map_err(|e| expr_err(path, e))?;
+    if !e.is_time_independent() {
+        return Err(at(path, "a constant is expected (parameters only)"));
+    }
+    Ok(e)
+}
+
+/// A solid, or the ground (or a frame of no solid) as `Outside`; `on` must be a solid.
+fn side(m: &Mechanism, path: &str, n: &str) -> Result<Source, SpecError> {
+    if let Some(b) = m.find_body(n) {
+        return Ok(Source::Body(b));
+    }
+    if m.frames.find(n) == Some(m.frames.ground()) {
+        return Ok(Source::Outside);
+    }
+    Err(at(
+        path,
+        format!(
+            "`{n}` is neither a solid nor the ground `{}`",
+            m.frame_name(m.frames.ground())
+        ),
+    ))
+}
+
+fn frame_of_side(m: &Mechanism, s: &Source) -> FrameId {
+    match s {
+        Source::Body(b) => m.body(*b).frame,
+        Source::Outside => m.frames.ground(),
+    }
+}
+
+/// Builds the actions and theorems of the spec on the validated mechanism.
+pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecError> {
+    let reg = &m.reg;
+    let mut d = Dynamics::default();
+    if let Some(g) = &spec.gravity {
+        let (v, _) = vector(m, "gravity", g)?;
+        for (f, c) in v.parts() {
+            if f != m.frames.ground() || c.iter().any(|e| !e.is_time_independent()) {
+                return Err(at(
+                    "gravity",
+                    format!(
+                        "gravity is a constant vector of the ground's basis ({}0, …)",
+                        'z'
+                    ),
+                ));
+            }
+        }
+        d.gravity = Some(v);
+    }
+    let mut unknown_iter = reg.unknowns().iter();
+    for (i, l) in spec.links.iter().enumerate() {
+        let path = format!("links[{i}]");
+        let from = side(m, &format!("{path}.between[0]"), &l.between[0])?;
+        let on = match side(m, &format!("{path}.between[1]"), &l.between[1])? {
+            Source::Body(b) => b,
+            Source::Outside => {
+                return Err(at(
+                    format!("{path}.between[1]"),
+                    "the second solid of a link receives its action: it cannot be the ground",
+                ));
+            }
+        };
+        if from == Source::Body(on) {
+            return Err(at(
+                format!("{path}.between"),
+                "a link joins two different solids",
+            ));
+        }
+        let point = m.point(&l.point).ok_or_else(|| {
+            at(
+                format!("{path}.point"),
+                format!("unknown point `{}`", l.point),
+            )
+        })?;
+        let (basis, axis) = match &l.axis {
+            Some(a) => basis_vector(m, &format!("{path}.axis"), a)?,
+            None => (m.frames.ground(), Axis::Z),
+        };
+        let direction = l.direction.as_ref().and_then(|s| axis_letter(s));
+        let t = transmitted(l.kind, axis, direction);
+        let mut comps: [Expr; 6] = std::array::from_fn(|_| reg.zero());
+        for (k, on_k) in t.iter().enumerate() {
+            if *on_k {
+                let n = unknown_iter.next().expect("unknowns declared in order");
+                comps[k] = reg.param(n).expect("unknown registered");
+            }
+        }
+        let [x, y, z, ll, mm, nn] = comps;
+        let mut resultant = Vector::new(basis, [x, y, z]);
+        let mut moment = Vector::new(basis, [ll, mm, nn]);
+        let u = Vector::along(basis, axis, reg.one());
+        let (fa, fb) = (frame_of_side(m, &from), m.body(on).frame);
+        let mut description = format!("{} ", link_name(l.kind));
+        description.push_str(&match (l.kind, &l.axis) {
+            (LinkKind::Ball, _) | (_, None) => format!("de centre {}", l.point),
+            (LinkKind::Plane | LinkKind::Point | LinkKind::Line, Some(a)) => {
+                format!("de normale ({}, {a})", l.point)
+            }
+            (_, Some(a)) => format!("d'axe ({}, {a})", l.point),
+        });
+        if let Some(f) = &l.friction {
+            let fpath = format!("{path}.friction");
+            let f = constant(reg, &fpath, f)?;
+            match l.kind {
+                LinkKind::Pivot => {
+                    let rate = omega(m, fb, fa).dot(&m.frames, &u);
+                    moment = moment.sub(&u.scale(&(&f * &rate)));
+                }
+                LinkKind::Slider => {
+                    let rate = velocity(m, point, fb, fa).dot(&m.frames, &u);
+                    resultant = resultant.sub(&u.scale(&(&f * &rate)));
+                }
+                _ => {
+                    return Err(at(
+                        fpath,
+                        "viscous friction is declared on a pivot or a slider",
+                    ));
+                }
+            }
+            description.push_str(", avec frottement visqueux");
+        }
+        let mut spring = None;
+        if let Some(s) = &l.spring {
+            let spath = format!("{path}.spring");
+            let q = reg.coord(&s.coordinate).ok_or_else(|| {
+                at(
+                    format!("{spath}.coordinate"),
+                    format!("unknown coordinate `{}`", s.coordinate),
+                )
+            })?;
+            let k = constant(reg, &format!("{spath}.stiffness"), &s.stiffness)?;
+            let q0 = match &s.free {
+                Some(t) => constant(reg, &format!("{spath}.free"), t)?,
+                None => reg.zero(),
+            };
+            let value = reg.value(q).ok_or_else(|| {
+                at(
+                    format!("{spath}.coordinate"),
+                    "the coordinate has no value variable",
+                )
+            })?;
+            let stretch = &value - &q0;
+            let force = u.scale(&(&k * &stretch)).neg();
+            let potential = &(&reg.rational(1, 2) * &k) * &(&stretch * &stretch);
+            let (sr, sm) = match l.kind {
+                LinkKind::Pivot => (Vector::zero(), force),
+                LinkKind::Slider => (force, Vector::zero()),
+                _ => {
+                    return Err(at(spath, "a spring is declared on a pivot or a slider"));
+                }
+            };
+            resultant = resultant.add(&sr);
+            moment = moment.add(&sm);
+            spring = Some(SpringPart {
+                potential,
+                resultant: sr,
+                moment: sm,
+            });
+            description.push_str(", avec ressort");
+        }
+        d.actions.push(Action {
+            from_label: l.between[0].clone(),
+            on_label: l.between[1].clone(),
+            from,
+            on,
+            point,
+            resultant,
+            moment,
+            basis,
+            description,
+            spring,
+        });
+    }
+    for (i, a) in spec.actions.iter().enumerate() {
+        let path = format!("actions[{i}]");
+        crate::expr::check_identifier(&a.name).map_err(|e| at(format!("{path}.name"), e))?;
+        let from = side(m, &format!("{path}.from"), &a.from)?;
+        let on: BodyId = match side(m, &format!("{path}.on"), &a.on)? {
+            Source::Body(b) => b,
+            Source::Outside => {
+                return Err(at(format!("{path}.on"), "an action is received by a solid"));
+            }
+        };
+        let point = m.point(&a.point).ok_or_else(|| {
+            at(
+                format!("{path}.point"),
+                format!("unknown point `{}`", a.point),
+            )
+        })?;
+        let (resultant, b1) = match &a.resultant {
+            Some(t) => vector(m, &format!("{path}.resultant"), t)?,
+            None => (Vector::zero(), m.frames.ground()),
+        };
+        let (moment, b2) = match &a.moment {
+            Some(t) => vector(m, &format!("{path}.moment"), t)?,
+            None => (Vector::zero(), b1),
+        };
+        let basis = if a.resultant.is_some() { b1 } else { b2 };
+        d.actions.push(Action {
+            from_label: a.name.clone(),
+            on_label: a.on.clone(),
+            from,
+            on,
+            point,
+            resultant,
+            moment,
+            basis,
+            description: format!("action {} de {} sur {}", a.name, a.from, a.on),
+            spring: None,
+        });
+    }
+    for (i, t) in spec.pfd.iter().enumerate() {
+        let path = format!("pfd[{i}]");
+        let solids = m.solids_of(&t.isolate).ok_or_else(|| {
+            at(
+                format!("{path}.isolate"),
+                format!("unknown solid or set `{}`", t.isolate),
+            )
+        })?;
+        let point = match (t.theorem, &t.point) {
+            (_, Some(p)) => m
+                .point(p)
+                .ok_or_else(|| at(format!("{path}.point"), format!("unknown point `{p}`")))?,
+            (TheoremKind::Moment, None) => {
+                return Err(at(
+                    format!("{path}.point"),
+                    "the moment theorem is written at a point",
+                ));
+            }
+            (TheoremKind::Resultant, None) => m.points.origin(),
+        };
+        let on = basis_vector(m, &format!("{path}.on"), &t.on)?;
+        let eom =
+            match &t.eom {
+                None => None,
+                Some(c) => Some(reg.coord(c).ok_or_else(|| {
+                    at(format!("{path}.eom"), format!("unknown coordinate `{c}`"))
+                })?),
+            };
+        if let Some(q) = eom
+            && d.theorems.iter().any(|x: &Theorem| x.eom == Some(q))
+        {
+            return Err(at(
+                format!("{path}.eom"),
+                "two equations of motion for the same coordinate",
+            ));
+        }
+        d.theorems.push(Theorem {
+            isolate: t.isolate.clone(),
+            solids,
+            kind: t.theorem,
+            point,
+            on,
+            eom,
+        });
+    }
+    Ok(d)
+}

@@ -1,0 +1,191 @@
+//! The Fundamental Principle of Dynamics against hand derivations, Lagrange's equations and
+//! the kinetic energy by the comoment of torsors.
+
+use super::*;
+use torseur::derivation::{Value, derive};
+use torseur::pfd;
+use torseur::quantity::Quantity;
+
+fn scalar(m: &Mechanism, q: &str) -> Expr {
+    match derive(m, &Quantity::parse(q).unwrap())
+        .unwrap_or_else(|e| panic!("{q}: {e}"))
+        .value
+    {
+        Value::Scalar(e) => e,
+        other => panic!("{q} is not a scalar: {other:?}"),
+    }
+}
+
+fn load(text: &str) -> Mechanism {
+    let spec = torseur::spec::parse_spec(text).unwrap();
+    torseur::spec::build(&spec).unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn motor_torque_of_the_regulator_by_hand() {
+    // Under Q1 (D = E = F = 0): δ(O1,1/0)·z0 = C1 θ̈1, and with O1 fixed and z0 fixed,
+    // δ(O1,2/0)·z0 = d/dt σ(O1,2/0)·z0 where σ(G2)·z0 = (B2 s² + C2 c²) θ̇1 (z0 = s y2 + c z2)
+    // and (O1G2 ∧ m2 V(G2))·z0 = m2 r² θ̇1 with r = L1 + L2 c. So C_m = C1 θ̈1 + d/dt(K θ̇1),
+    // K = B2 s² + C2 c² + m2 r², K' = 2 (B2 − C2) s c − 2 m2 r L2 s. Gravity has no moment on z0
+    // at O1 (axis vertical); friction in the 1–2 pivot is internal to E.
+    let m = regulator();
+    let q1 = m.hypotheses.iter().find(|h| h.name == "Q1").unwrap();
+    let cm = q1.apply(&scalar(&m, "C_m"));
+    let (s, c) = ("sin(theta2)", "cos(theta2)");
+    let k = format!("(B2*{s}^2 + C2*{c}^2 + m2*(L1 + L2*{c})^2)");
+    let kp = format!("(2*(B2 - C2)*{s}*{c} - 2*m2*(L1 + L2*{c})*L2*{s})");
+    let by_hand = format!("C1*ddot(theta1) + {k}*ddot(theta1) + {kp}*dot(theta2)*dot(theta1)");
+    assert_eq!(cm, ex(&m, &by_hand));
+}
+
+#[test]
+fn motor_torque_equals_the_dynamic_moment_of_e_on_z0() {
+    // The course's answer to Q6, with the general inertia operators.
+    let m = regulator();
+    assert_eq!(scalar(&m, "C_m"), scalar(&m, "delta(O1,E/0).z0"));
+}
+
+#[test]
+fn flyweight_equation_of_motion_by_hand() {
+    // Moment theorem on 2 at O2 on x2: δ(O2,2/0)·x2 = M(O2, pes→2)·x2 + M(O2, 1→2)·x2, where
+    // the pivot of axis (O2, x1) transmits no moment on x1 = x2 except friction −f θ̇2, and
+    // O2G2 ∧ (−m2 g z0) = −m2 g L2 (y2 ∧ z0) = −m2 g L2 cos θ2 x2.
+    // Under Q1, δ(O2,2/0)·x2 is Euler's equation plus transport (see regulator.rs).
+    let m = regulator();
+    let q1 = m.hypotheses.iter().find(|h| h.name == "Q1").unwrap();
+    let eom = q1.apply(&scalar(&m, "eom(theta2)"));
+    let by_hand = ex(
+        &m,
+        "A2*ddot(theta2) + (C2 - B2)*sin(theta2)*cos(theta2)*dot(theta1)^2 \
+         + m2*L2*(L2*ddot(theta2) + sin(theta2)*(L1 + L2*cos(theta2))*dot(theta1)^2) \
+         + m2*g*L2*cos(theta2) + f*dot(theta2)",
+    );
+    assert_eq!(eom, by_hand);
+}
+
+#[test]
+fn lagrange_gives_the_same_equations_as_the_pfd() {
+    let m = regulator();
+    let t2 = m.reg.coord("theta2").unwrap();
+    let t1 = m.reg.coord("theta1").unwrap();
+    // θ2: the pivot's unknowns do no virtual work, friction is −f θ̇2, gravity by its potential.
+    assert_eq!(pfd::lagrange(&m, t2), scalar(&m, "eom(theta2)"));
+    // θ1: the generalised force is C_m itself, so the residual is C_m(solved) − C_m.
+    let cm_var = m.reg.param("C_m").unwrap();
+    assert_eq!(pfd::lagrange(&m, t1), &scalar(&m, "C_m") - &cm_var);
+}
+
+#[test]
+fn kinetic_energy_is_half_the_comoment_of_the_kinetic_and_kinematic_torsors() {
+    // 2 Ec(S/R0) = Rc(S/R0)·V(A∈S/R0) + σ(A,S/R0)·Ω(S/R0), at any point A.
+    let m = regulator();
+    let torsor = |q: &str| match derive(&m, &Quantity::parse(q).unwrap()).unwrap().value {
+        Value::Torsor {
+            resultant, moment, ..
+        } => (resultant, moment),
+        other => panic!("{other:?}"),
+    };
+    let mut twice = m.reg.zero();
+    for (s, a) in [("1", "O1"), ("2", "O2")] {
+        let (rc, sigma) = torsor(&format!("{{C({s}/0)}}_{a} in B1"));
+        let (omega, v) = torsor(&format!("{{V({s}/0)}}_{a} in B1"));
+        for k in 0..3 {
+            twice = &(&twice + &(&rc[k] * &v[k])) + &(&sigma[k] * &omega[k]);
+        }
+    }
+    let ec = scalar(&m, "Ec(E/0)");
+    assert_eq!(&ec + &ec, twice);
+}
+
+const SLIDER: &str = r#"{
+  "title": "masse sur glissière",
+  "parameters": [{"name": "m"}, {"name": "g"}, {"name": "F"}, {"name": "c"},
+                 {"name": "k"}, {"name": "l0"}],
+  "coordinates": [{"name": "x", "kind": "length"}],
+  "frames": [{"name": "1", "parent": "0", "origin": "P"}],
+  "points": [{"name": "P", "position": "x*x0"}],
+  "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "P"}],
+  "gravity": "-g*y0",
+  "links": [{"name": "01", "kind": "slider", "between": ["0", "1"], "point": "P",
+             "axis": "x0", "friction": "c",
+             "spring": {"coordinate": "x", "stiffness": "k", "free": "l0"}}],
+  "actions": [{"name": "poussee", "from": "0", "on": "1", "point": "P", "resultant": "F*x0"}],
+  "pfd": [
+    {"isolate": "1", "theorem": "resultant", "on": "y0"},
+    {"isolate": "1", "theorem": "resultant", "on": "z0"},
+    {"isolate": "1", "theorem": "moment", "point": "P", "on": "x0"},
+    {"isolate": "1", "theorem": "moment", "point": "P", "on": "y0"},
+    {"isolate": "1", "theorem": "moment", "point": "P", "on": "z0"},
+    {"isolate": "1", "theorem": "resultant", "on": "x0", "eom": "x"}
+  ]
+}"#;
+
+#[test]
+fn slider_unknowns_friction_and_spring_by_hand() {
+    // A point mass on a slider along x0, pushed by F x0, with gravity −g y0, viscous friction
+    // −c ẋ and a spring −k (x − l0): the link carries Y01 = m g, Z01 = 0 and no moment; the
+    // equation of motion is m ẍ + c ẋ + k (x − l0) − F = 0.
+    let m = load(SLIDER);
+    assert_eq!(m.reg.unknowns(), ["Y01", "Z01", "L01", "M01", "N01"]);
+    assert_eq!(scalar(&m, "Y01"), ex(&m, "m*g"));
+    for z in ["Z01", "L01", "M01", "N01"] {
+        assert!(scalar(&m, z).is_zero(), "{z}");
+    }
+    let eom = ex(&m, "m*ddot(x) + c*dot(x) + k*(x - l0) - F");
+    assert_eq!(scalar(&m, "eom(x)"), eom);
+    assert_eq!(pfd::lagrange(&m, m.reg.coord("x").unwrap()), eom);
+}
+
+const PENDULUM: &str = r#"{
+  "title": "pendule avec ressort de torsion",
+  "parameters": [{"name": "m"}, {"name": "l"}, {"name": "A"}, {"name": "B"}, {"name": "C"},
+                 {"name": "g"}, {"name": "k"}, {"name": "a0"}],
+  "coordinates": [{"name": "theta", "kind": "angle"}],
+  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "theta"}}],
+  "points": [{"name": "G", "position": "-l*y1"}],
+  "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "G",
+              "inertia": {"point": "G", "basis": "1",
+                          "matrix": [["A", "0", "0"], ["0", "B", "0"], ["0", "0", "C"]]}}],
+  "gravity": "-g*y0",
+  "links": [{"name": "01", "kind": "pivot", "between": ["0", "1"], "point": "O0", "axis": "z0",
+             "spring": {"coordinate": "theta", "stiffness": "k", "free": "a0"}}],
+  "pfd": [{"isolate": "1", "theorem": "moment", "point": "O0", "on": "z0", "eom": "theta"},
+          {"isolate": "1", "theorem": "resultant", "on": "x0"},
+          {"isolate": "1", "theorem": "resultant", "on": "y0"}]
+}"#;
+
+#[test]
+fn pendulum_with_torsion_spring_by_hand() {
+    // (C + m l²) θ̈ + m g l sin θ + k (θ − a0) = 0; the pivot's X01 = m l (θ̈ cos θ − θ̇² sin θ)
+    // from m ẍ_G with x_G = l sin θ, and Y01 = m g + m l (θ̈ sin θ + θ̇² cos θ) from
+    // y_G = −l cos θ.
+    let m = load(PENDULUM);
+    let eom = ex(
+        &m,
+        "(C + m*l^2)*ddot(theta) + m*g*l*sin(theta) + k*(theta - a0)",
+    );
+    assert_eq!(scalar(&m, "eom(theta)"), eom);
+    assert_eq!(pfd::lagrange(&m, m.reg.coord("theta").unwrap()), eom);
+    assert_eq!(
+        scalar(&m, "X01"),
+        ex(&m, "m*l*(ddot(theta)*cos(theta) - dot(theta)^2*sin(theta))")
+    );
+    assert_eq!(
+        scalar(&m, "Y01"),
+        ex(
+            &m,
+            "m*g + m*l*(ddot(theta)*sin(theta) + dot(theta)^2*cos(theta))"
+        )
+    );
+}
+
+#[test]
+fn a_system_that_does_not_determine_its_unknowns_is_refused() {
+    let text = PENDULUM.replace(
+        r#"{"isolate": "1", "theorem": "resultant", "on": "y0"}"#,
+        r#"{"isolate": "1", "theorem": "resultant", "on": "x0"}"#,
+    );
+    let m = load(&text);
+    let err = derive(&m, &Quantity::parse("X01").unwrap()).unwrap_err();
+    assert!(err.message.contains("square"), "{err}");
+}
