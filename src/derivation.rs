@@ -279,6 +279,19 @@ fn vec_value(m: &Mechanism, v: &Vector, b: FrameId) -> Value {
 /// match d.value { torseur::derivation::Value::Vector { components, .. } => assert_eq!(components, expected), _ => unreachable!() }
 /// ```
 pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
+    if q.linear {
+        return linearised(
+            m,
+            q,
+            derive(
+                m,
+                &Quantity {
+                    linear: false,
+                    ..q.clone()
+                },
+            )?,
+        );
+    }
     let r = resolve(m, q)?;
     let b = r.basis;
     let mut steps = Vec::new();
@@ -661,11 +674,34 @@ pub fn derive_values_with(
     Ok(out)
 }
 
+/// The linearised value of a derivation (its steps are kept as derived).
+fn linearised(m: &Mechanism, q: &Quantity, d: Derivation) -> Result<Derivation, ResolveError> {
+    if m.dynamics.small.is_empty() {
+        return Err(ResolveError {
+            quantity: q.to_string(),
+            message: "the spec declares no small coordinates (`small`) to linearise around"
+                .to_string(),
+        });
+    }
+    Ok(Derivation {
+        quantity: q.clone(),
+        steps: d.steps,
+        value: d.value.map(&|e| crate::pfd::linearise(m, e)),
+    })
+}
+
 fn derive_value(
     m: &Mechanism,
     q: &Quantity,
     cache: &mut Cache,
 ) -> Result<Derivation, ResolveError> {
+    if q.linear {
+        let inner = Quantity {
+            linear: false,
+            ..q.clone()
+        };
+        return linearised(m, q, derive_value(m, &inner, cache)?);
+    }
     use QuantityKind::*;
     let r = resolve(m, q)?;
     let reference = r.reference.unwrap_or(m.frames.ground());

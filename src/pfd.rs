@@ -135,6 +135,8 @@ pub struct Dynamics {
     pub actions: Vec<Action>,
     /// The declared equations, in order.
     pub theorems: Vec<Theorem>,
+    /// Coordinates declared small, for `lin(...)`.
+    pub small: Vec<Small>,
 }
 
 /// The solved PFD: each unknown in closed form, each equation of motion as a residual.
@@ -236,6 +238,7 @@ pub fn dynamic_quantity(m: &Mechanism, th: &Theorem) -> Quantity {
         kind,
         basis: None,
         projection: Some((m.frame_name(th.on.0).to_string(), th.on.1.letter())),
+        linear: false,
     }
 }
 
@@ -668,4 +671,57 @@ pub fn link_unknowns(name: &str, t: [bool; 6]) -> Vec<String> {
         .filter(|(_, on)| *on)
         .map(|(l, _)| format!("{l}{name}"))
         .collect()
+}
+
+/// A coordinate declared small, and the equilibrium value it moves around.
+#[derive(Debug, Clone)]
+pub struct Small {
+    /// The coordinate.
+    pub coord: CoordId,
+    /// Its equilibrium value (0 for an angle).
+    pub around: Expr,
+}
+
+/// The small-motion linearisation of `e` around the equilibrium of the `small` coordinates
+/// (their rates and accelerations small too): f(x0) + Σ ∂f/∂xᵢ(x0)·(xᵢ − xᵢ0), exactly, with
+/// sin q ≈ q and cos q ≈ 1 for a small angle. The other coordinates keep their full form.
+pub fn linearise(m: &Mechanism, e: &Expr) -> Expr {
+    let reg = &m.reg;
+    let small = &m.dynamics.small;
+    let at_equilibrium = |f: &Expr| -> Expr {
+        let mut r = f.clone();
+        for s in small {
+            let q = s.coord;
+            if let Some(si) = reg.index_of(crate::expr::VarRole::Sin(q)) {
+                r = r.substitute(si, &reg.zero());
+            }
+            if let Some(c) = reg.index_of(crate::expr::VarRole::Cos(q)) {
+                r = r.substitute(c, &reg.one());
+            }
+            if let Some(v) = reg.coordinates()[q.0].value_var() {
+                r = r.substitute(v, &s.around);
+            }
+            for order in 1..=3u8 {
+                if let Some(i) = reg.index_of(crate::expr::VarRole::Rate(q, order)) {
+                    r = r.substitute(i, &reg.zero());
+                }
+            }
+        }
+        r
+    };
+    let mut out = at_equilibrium(e);
+    for s in small {
+        let q = s.coord;
+        if let Some(value) = reg.value(q) {
+            let deviation = &value - &s.around;
+            out = &out + &(&at_equilibrium(&e.partial_coordinate(q)) * &deviation);
+        }
+        for order in 1..=2u8 {
+            let d = e.partial_rate(q, order);
+            if !d.is_zero() {
+                out = &out + &(&at_equilibrium(&d) * &reg.rate(q, order));
+            }
+        }
+    }
+    out
 }

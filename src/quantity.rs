@@ -62,6 +62,8 @@ pub struct Quantity {
     pub basis: Option<String>,
     /// `.x2`: scalar projection on a basis vector (frame name, axis letter).
     pub projection: Option<(String, char)>,
+    /// `lin(...)`: linearised for small motions around the spec's equilibrium (`small`).
+    pub linear: bool,
 }
 
 /// Why a quantity string is not in the notation.
@@ -96,6 +98,18 @@ impl Quantity {
             return Err(err("longer than 200 characters"));
         }
         let s: String = input.trim().to_string();
+        // lin(Q): the small-motion linearisation of Q.
+        if let Some(inner) = s.strip_prefix("lin(").and_then(|r| r.strip_suffix(')')) {
+            let mut q = Quantity::parse(inner).map_err(|e| err(&e.reason))?;
+            if q.linear {
+                return Err(err("lin(...) is not nested"));
+            }
+            if matches!(q.kind, QuantityKind::Inertia { .. }) || q.kind.is_torsor() {
+                return Err(err("lin(...) takes a vector or a scalar quantity"));
+            }
+            q.linear = true;
+            return Ok(q);
+        }
         // Optional " in B.." suffix.
         let (body, basis) = match s.rsplit_once(" in ") {
             Some((b, basis)) => {
@@ -207,6 +221,7 @@ impl Quantity {
             kind,
             basis,
             projection,
+            linear: false,
         })
     }
 
@@ -216,6 +231,7 @@ impl Quantity {
             kind: self.kind.clone(),
             basis: Some(b.to_string()),
             projection: None,
+            linear: self.linear,
         }
     }
 
@@ -286,6 +302,13 @@ impl fmt::Display for QuantityKind {
 
 impl fmt::Display for Quantity {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.linear {
+            let inner = Quantity {
+                linear: false,
+                ..self.clone()
+            };
+            return write!(f, "lin({inner})");
+        }
         write!(f, "{}", self.kind)?;
         if let Some((frame, axis)) = &self.projection {
             write!(f, ".{axis}{frame}")?;

@@ -90,6 +90,12 @@ pub struct CoordInfo {
 }
 
 impl CoordInfo {
+    /// The polynomial variable holding q itself, if the coordinate has one (a length, or an
+    /// angle that enters as itself).
+    pub fn value_var(&self) -> Option<usize> {
+        self.value
+    }
+
     /// Whether the rate is imposed (q̇ given, q̈ = 0).
     pub fn has_imposed_rate(&self) -> bool {
         self.imposed_rate.is_some()

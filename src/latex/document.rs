@@ -260,6 +260,13 @@ fn question_block(
 
 /// A quantity as a heading: \\overrightarrow{\\delta(O_2,2/0)}\\cdot\\vec{x}_2 for a projection.
 fn quantity_title(q: &Quantity) -> String {
+    if q.linear {
+        let inner = Quantity {
+            linear: false,
+            ..q.clone()
+        };
+        return format!("{} \\text{{ (linéarisé)}}", quantity_title(&inner));
+    }
     match &q.projection {
         Some((f, axis)) => format!("{} \\cdot {}", quantity(&q.kind), basis_vector(*axis, f)),
         None => quantity(&q.kind),

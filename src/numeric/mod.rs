@@ -311,6 +311,12 @@ impl NumericModel {
         sample: &Sample,
         default_basis: &str,
     ) -> Result<NumValue, NumericError> {
+        if q.linear {
+            return Err(NumericError::Quantity {
+                quantity: q.to_string(),
+                message: "the float backend computes full motions, not linearisations".into(),
+            });
+        }
         kin::evaluate(self, q, sample, default_basis)
     }
 

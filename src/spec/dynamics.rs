@@ -103,6 +103,16 @@ pub(super) fn pfd_names(
         }
     }
     let mut raw = Vec::new();
+    for s in &spec.small {
+        if spec
+            .coordinates
+            .iter()
+            .any(|c| c.name == s.coordinate && c.kind == CoordinateKind::Angle)
+            && !raw.contains(&s.coordinate)
+        {
+            raw.push(s.coordinate.clone());
+        }
+    }
     for l in &spec.links {
         if let Some(s) = &l.spring
             && spec
@@ -406,6 +416,29 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
             on,
             eom,
         });
+    }
+    for (i, s) in spec.small.iter().enumerate() {
+        let path = format!("small[{i}]");
+        let q = reg.coord(&s.coordinate).ok_or_else(|| {
+            at(
+                format!("{path}.coordinate"),
+                format!("unknown coordinate `{}`", s.coordinate),
+            )
+        })?;
+        if d.small.iter().any(|x| x.coord == q) {
+            return Err(at(format!("{path}.coordinate"), "declared small twice"));
+        }
+        let around = match &s.around {
+            Some(t) => constant(reg, &format!("{path}.around"), t)?,
+            None => reg.zero(),
+        };
+        if reg.coord_info(q).kind == CoordinateKind::Angle && !around.is_zero() {
+            return Err(at(
+                format!("{path}.around"),
+                "a small angle moves around 0: write the angle from the equilibrium position",
+            ));
+        }
+        d.small.push(crate::pfd::Small { coord: q, around });
     }
     Ok(d)
 }

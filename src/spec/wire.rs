@@ -67,6 +67,21 @@ pub struct SpecFile {
     /// Numerical scenarios for `simulate`.
     #[serde(default)]
     pub scenarios: Vec<ScenarioSpec>,
+    /// Coordinates declared small for `lin(...)` (small motions around an equilibrium).
+    #[serde(default)]
+    pub small: Vec<SmallSpec>,
+}
+
+/// A coordinate that stays close to an equilibrium value.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SmallSpec {
+    /// The coordinate.
+    pub coordinate: String,
+    /// Its equilibrium value: `0` for an angle (write the angle from the equilibrium), a
+    /// constant expression for a length (`l0`).
+    #[serde(default)]
+    pub around: Option<String>,
 }
 
 /// Kind of a perfect link, with the course's names.

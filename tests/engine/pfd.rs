@@ -189,3 +189,33 @@ fn a_system_that_does_not_determine_its_unknowns_is_refused() {
     let err = derive(&m, &Quantity::parse("X01").unwrap()).unwrap_err();
     assert!(err.message.contains("square"), "{err}");
 }
+
+#[test]
+fn small_motions_linearise_the_equation_of_motion() {
+    // Around θ = 0 with θ, θ̇, θ̈ small: sin θ ≈ θ, so the pendulum's equation becomes
+    // (C + m l²) θ̈ + m g l θ + k (θ − a0) = 0; its reaction Y01 = m g + m l (θ̈ sin θ + θ̇² cos θ)
+    // keeps only m g (θ̈ θ and θ̇² are of second order).
+    let text = PENDULUM.replace(r#""pfd":"#, r#""small": [{"coordinate": "theta"}], "pfd":"#);
+    let m = load(&text);
+    assert_eq!(
+        scalar(&m, "lin(eom(theta))"),
+        ex(&m, "(C + m*l^2)*ddot(theta) + m*g*l*theta + k*(theta - a0)")
+    );
+    assert_eq!(scalar(&m, "lin(Y01)"), ex(&m, "m*g"));
+    assert_eq!(scalar(&m, "lin(X01)"), ex(&m, "m*l*ddot(theta)"));
+    // A length moves around its equilibrium value: the slider's equation is already linear.
+    let text = SLIDER.replace(
+        r#""pfd":"#,
+        r#""small": [{"coordinate": "x", "around": "l0"}], "pfd":"#,
+    );
+    let m = load(&text);
+    assert_eq!(scalar(&m, "lin(eom(x))"), scalar(&m, "eom(x)"));
+    // A small angle is measured from its equilibrium.
+    let bad = PENDULUM.replace(
+        r#""pfd":"#,
+        r#""small": [{"coordinate": "theta", "around": "1"}], "pfd":"#,
+    );
+    let spec = torseur::spec::parse_spec(&bad).unwrap();
+    let err = torseur::spec::build(&spec).unwrap_err().to_string();
+    assert!(err.contains("small[0].around"), "{err}");
+}
