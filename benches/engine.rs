@@ -1,5 +1,6 @@
 //! In-process timings on the regulator: loading, deriving every quantity, and evaluating
-//! δ(O2,2/0) numerically, compiled (symbolica's evaluator) versus the float backend.
+//! δ(O2,2/0) numerically: compiled (symbolica's evaluator), flat (`FlatEval`), the canonical
+//! polynomial, and the float backend.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rand::SeedableRng;
@@ -52,6 +53,18 @@ fn regulator(c: &mut Criterion) {
         b.iter(|| {
             compiled.evaluate(black_box(&point), &mut out);
             out[0]
+        })
+    });
+    let mut flat = torseur::expr::FlatEval::new(&exprs).unwrap();
+    let mut out_flat = [0.0; 3];
+    flat.evaluate(&point, &mut out_flat);
+    for k in 0..3 {
+        assert!((out_flat[k] - reference[k]).abs() <= 1e-9 * (1.0 + reference[k].abs()));
+    }
+    c.bench_function("delta(O2,2/0) flat evaluation (per point)", |b| {
+        b.iter(|| {
+            flat.evaluate(black_box(&point), &mut out_flat);
+            out_flat[0]
         })
     });
     c.bench_function(

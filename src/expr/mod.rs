@@ -8,9 +8,11 @@
 //! expressions are equal as functions iff their canonical forms are identical, so the zero
 //! test is exact and costs nothing.
 
+mod flat;
 mod parse;
 pub(crate) mod print;
 
+pub use flat::FlatEval;
 pub use print::{Presentation, PresentationGroup};
 
 use crate::spec::wire::CoordinateKind;

@@ -270,3 +270,34 @@ fn regression_fuzz_scientific_notation_never_reaches_symbolica() {
     }
     assert!(r.parse("2*m + L").is_ok());
 }
+
+#[test]
+fn flat_evaluation_agrees_with_the_canonical_polynomial() {
+    // Two routes to the same numbers: symbolica's polynomial evaluation and the flat table.
+    let r = reg();
+    let exprs: Vec<Expr> = [
+        "m*L^2*cos(a)^3*dot(b)^2 - 3/7*sin(a)*ddot(a)*k",
+        "(m + L)^5 - 2",
+        "0",
+        "x^3*m - 1/3",
+    ]
+    .iter()
+    .map(|s| r.parse(s).unwrap())
+    .collect();
+    let refs: Vec<&Expr> = exprs.iter().collect();
+    let mut f = crate::expr::FlatEval::new(&refs).unwrap();
+    for k in 0..20 {
+        let point: Vec<f64> = (0..r.nvars())
+            .map(|i| ((i * 7 + k * 13) % 11) as f64 / 5.0 - 1.0)
+            .collect();
+        let mut out = vec![0.0; 4];
+        f.evaluate(&point, &mut out);
+        for (e, v) in exprs.iter().zip(&out) {
+            let want = e.eval(&point);
+            assert!(
+                (v - want).abs() <= 1e-12 * (1.0 + want.abs()),
+                "{e}: {v} vs {want}"
+            );
+        }
+    }
+}
