@@ -315,6 +315,35 @@ fn default_ground() -> String {
     "0".to_string()
 }
 
+/// An empty problem with the ground `0`: start here to build a spec in code
+/// (`SpecFile { title: ..., ..SpecFile::default() }`).
+impl Default for SpecFile {
+    fn default() -> Self {
+        SpecFile {
+            title: String::new(),
+            description: None,
+            parameters: vec![],
+            coordinates: vec![],
+            ground: default_ground(),
+            ground_origin: None,
+            frames: vec![],
+            points: vec![],
+            solids: vec![],
+            sets: BTreeMap::new(),
+            hypotheses: vec![],
+            default_basis: None,
+            quantities: vec![],
+            questions: vec![],
+            gravity: None,
+            links: vec![],
+            actions: vec![],
+            pfd: vec![],
+            scenarios: vec![],
+            small: vec![],
+        }
+    }
+}
+
 /// A constant parameter.
 #[derive(Debug, Clone, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
