@@ -114,7 +114,7 @@ enum Command {
         quantity: String,
         /// The hand-written value: a scalar, `[x, y, z]` in the quantity's basis, or
         /// `[[Rx, Ry, Rz], [Mx, My, Mz]]` for a torsor.
-        #[arg(long = "expr", short = 'e')]
+        #[arg(long = "expr", short = 'e', allow_hyphen_values = true)]
         expr: String,
         /// Compare with the derived value under this hypothesis of the spec.
         #[arg(long)]

@@ -13,6 +13,7 @@ use crate::expr::print::TermParts;
 use crate::expr::{CoordId, Expr, Presentation, Registry};
 use crate::mechanism::Mechanism;
 use crate::quantity::{Motion, QuantityKind};
+use std::fmt::Write as _;
 use std::rc::Rc;
 
 const GREEK: &[&str] = &[
@@ -59,10 +60,53 @@ pub fn name(n: &str) -> String {
     }
 }
 
+/// The LaTeX name of a Greek letter, without its backslash.
+fn greek(c: char) -> Option<&'static str> {
+    const LOWER: [&str; 25] = [
+        "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+        "lambda", "mu", "nu", "xi", "o", "pi", "rho", "varsigma", "sigma", "tau", "upsilon",
+        "varphi", "chi", "psi", "omega",
+    ];
+    const UPPER: [Option<&str>; 25] = [
+        None,
+        None,
+        Some("Gamma"),
+        Some("Delta"),
+        None,
+        None,
+        None,
+        Some("Theta"),
+        None,
+        None,
+        Some("Lambda"),
+        None,
+        None,
+        Some("Xi"),
+        None,
+        Some("Pi"),
+        None,
+        None,
+        Some("Sigma"),
+        None,
+        Some("Upsilon"),
+        Some("Phi"),
+        None,
+        Some("Psi"),
+        Some("Omega"),
+    ];
+    match c {
+        'α'..='ω' if c != 'ο' => Some(LOWER[c as usize - 'α' as usize]),
+        'Α'..='Ω' => UPPER.get(c as usize - 'Α' as usize).copied().flatten(),
+        _ => None,
+    }
+}
+
 /// Escapes free text (titles, statements) for LaTeX: every special character is neutralised,
-/// so `\input`, `\write18` or unbalanced braces print as text and execute nothing.
+/// so `\input`, `\write18` or unbalanced braces print as text and execute nothing. Greek
+/// letters and the dots of θ̇, θ̈ become math.
 ///
 /// ```
+/// assert_eq!(torseur::latex::escape_text("ω, θ̇"), "$\\omega$, $\\dot{\\theta}$");
 /// assert_eq!(torseur::latex::escape_text("\\input{x} 50% & $"),
 ///            "\\textbackslash{}input\\{x\\} 50\\% \\& \\$");
 /// ```
@@ -87,14 +131,28 @@ pub fn escape_text(s: &str) -> String {
             c if (c as u32) <= 0xFF => o.push(c),
             '’' => o.push('\''),
             '«' | '»' => o.push('"'),
-            'θ' => o.push_str("$\\theta$"),
             '∧' => o.push_str("$\\wedge$"),
             '·' => o.push_str("$\\cdot$"),
-            'Γ' => o.push_str("$\\Gamma$"),
             '−' => o.push('-'),
-            'Ω' => o.push_str("$\\Omega$"),
-            'σ' => o.push_str("$\\sigma$"),
-            'δ' => o.push_str("$\\delta$"),
+            c if greek(c).is_some() => {
+                let _ = write!(o, "$\\{}$", greek(c).unwrap_or_default());
+            }
+            // A combining dot above or two dots (θ̇, θ̈) over the previous letter.
+            '\u{307}' | '\u{308}' => {
+                let accent = if c == '\u{307}' { "dot" } else { "ddot" };
+                match o.pop() {
+                    Some('$') => {
+                        // The previous letter was a Greek one: $\theta$ → $\dot{\theta}$.
+                        let start = o.rfind('$').unwrap_or(o.len());
+                        let inner = o.split_off(start + 1);
+                        let _ = write!(o, "\\{accent}{{{inner}}}$");
+                    }
+                    Some(prev) => {
+                        let _ = write!(o, "$\\{accent}{{\\mathrm{{{prev}}}}}$");
+                    }
+                    None => {}
+                }
+            }
             _ => o.push('?'),
         }
     }

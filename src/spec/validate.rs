@@ -314,6 +314,8 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                         }
                     }
                 }
+                invariant_in_solid(&frames, frame, basis, &m)
+                    .map_err(|msg| at(format!("{ip}.basis"), msg))?;
                 let matrix = std::array::from_fn(|r| std::array::from_fn(|c| m[r][c].clone()));
                 Some(Inertia {
                     point,
@@ -525,6 +527,37 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         }
     }
     Ok(m)
+}
+
+/// An inertia matrix is constant in the solid's basis. Given in another basis, that basis
+/// must be fixed in the solid, or turn relative to it about one of its own axes around which
+/// the matrix is of revolution (then it is the same in every such basis); anything else would
+/// be a matrix the engine takes as constant while it is not.
+fn invariant_in_solid(
+    frames: &Frames,
+    solid: FrameId,
+    basis: FrameId,
+    m: &[Vec<crate::expr::Expr>],
+) -> Result<(), String> {
+    let w = crate::vector::omega(frames, solid, basis).express_in(frames, basis);
+    let turning: Vec<usize> = (0..3).filter(|&k| !w[k].is_zero()).collect();
+    let ok = match turning.as_slice() {
+        [] => true,
+        [k] => {
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            m[i][*k].is_zero() && m[j][*k].is_zero() && m[i][j].is_zero() && m[i][i] == m[j][j]
+        }
+        _ => false,
+    };
+    if ok {
+        Ok(())
+    } else {
+        Err(format!(
+            "the inertia matrix is given in basis {} which turns relative to the solid's frame              {}: give it in the solid's basis (or in a basis where it is of revolution about              the relative rotation axis)",
+            frames.get(basis).name,
+            frames.get(solid).name
+        ))
+    }
 }
 
 /// The variable index if the expression is exactly one variable with coefficient 1.

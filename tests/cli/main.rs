@@ -429,3 +429,17 @@ fn verify_accepts_an_equation_of_motion_up_to_a_factor() {
     ]);
     assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
 }
+
+#[test]
+fn verify_takes_an_expression_that_starts_with_a_minus() {
+    // Found while writing the library: `-e "-m..."` was read as an option.
+    let o = run(&[
+        "verify",
+        spec().to_str().unwrap(),
+        "-q",
+        "Omega(2/1) in B1",
+        "-e",
+        "[-(-dot(theta2)), 0, 0]",
+    ]);
+    assert!(o.status.success(), "{}{}", stdout(&o), stderr(&o));
+}

@@ -219,3 +219,28 @@ fn small_motions_linearise_the_equation_of_motion() {
     let err = torseur::spec::build(&spec).unwrap_err().to_string();
     assert!(err.contains("small[0].around"), "{err}");
 }
+
+#[test]
+fn inertia_in_a_basis_turning_relative_to_the_solid_is_refused_unless_of_revolution() {
+    // Found while writing the library: diag(A, B, C) of solid 2 given in B1, while 2 turns
+    // about x1 relative to 1, was taken as constant in B1 (the float backend disagreed).
+    let spec = |matrix: &str| {
+        format!(
+            r#"{{"title": "t", "parameters": [{{"name": "A"}}, {{"name": "B"}}, {{"name": "C"}}],
+            "coordinates": [{{"name": "q1", "kind": "angle"}}, {{"name": "q2", "kind": "angle"}}],
+            "frames": [{{"name": "1", "parent": "0", "rotation": {{"axis": "z", "angle": "q1"}}}},
+                       {{"name": "2", "parent": "1", "rotation": {{"axis": "x", "angle": "q2"}}}}],
+            "solids": [{{"name": "2", "frame": "2", "mass": "1", "centre": "O0",
+                "inertia": {{"point": "O0", "basis": "1", "matrix": {matrix}}}}}]}}"#
+        )
+    };
+    let general = spec(r#"[["A", "0", "0"], ["0", "B", "0"], ["0", "0", "C"]]"#);
+    let err = torseur::spec::build(&torseur::spec::parse_spec(&general).unwrap())
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("solids[0].inertia.basis"), "{err}");
+    // Of revolution about x1, the axis of the relative rotation: the same in B1 and B2.
+    let revolution = spec(r#"[["A", "0", "0"], ["0", "B", "0"], ["0", "0", "B"]]"#);
+    let m = load(&revolution);
+    assert_eq!(scalar(&m, "delta(O0,2/0).x1"), ex(&m, "A*ddot(q2)"));
+}
