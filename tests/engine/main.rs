@@ -9,6 +9,7 @@ mod chain;
 mod check;
 mod kinematics;
 mod latex;
+mod library;
 mod pfd;
 mod properties;
 mod regulator;

@@ -1,0 +1,423 @@
+//! The library of classic problems (`derivations/*.json`, besides the regulator) against hand
+//! derivations in the course's notation, and against the independent float backend.
+//!
+//! Every expected value below was derived by hand from the course's theorems (written out in
+//! the comment of each test) and confirmed with `torseur verify`, which uses the same function
+//! as `assert_equivalent!`: exact equality of canonical forms (an equation of motion may be
+//! written `lhs = rhs` and is compared up to a numeric factor).
+
+/// Loads `derivations/<name>.json`.
+macro_rules! problem {
+    ($name:literal) => {
+        torseur::spec::load(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/derivations/",
+            $name,
+            ".json"
+        ))
+        .expect($name)
+    };
+}
+
+/// Every requested quantity of the spec agrees with the float backend (10 samples, seed 1).
+fn assert_checked(m: &torseur::mechanism::Mechanism) {
+    let report = torseur::check::check(m, 10, 1).unwrap_or_else(|e| panic!("{e}"));
+    assert!(report.passed(), "{report}");
+}
+
+#[test]
+fn cart_pendulum_equations_of_motion_by_hand() {
+    // OG = (x + l sin θ) x0 − l cos θ y0, so V(G,2/0) = (ẋ + l θ̇ cos θ) x0 + l θ̇ sin θ y0 and
+    // Γ(G,2/0) = (ẍ + l θ̈ cos θ − l θ̇² sin θ) x0 + l (θ̈ sin θ + θ̇² cos θ) y0.
+    // Isolate E = {1, 2}, resultant theorem on x0: the slider transmits nothing on x0 and the
+    // weight is vertical, so M ẍ + m Γ(G,2/0)·x0 = F.
+    // Isolate 2, moment theorem at A on z0: δ(A,2/0)·z0 = C2 θ̈ + (AG ∧ m Γ(G,2/0))·z0
+    // = (C2 + m l²) θ̈ + m l cos θ ẍ; the pivot transmits no moment on z0 and the weight gives
+    // (AG ∧ −m g y0)·z0 = −m g l sin θ.
+    // Resultant theorem on 2 on x1 = x0 and y1 = y0: X12 = m Γ(G)·x0, Y12 − m g = m Γ(G)·y0.
+    // Ec = ½ M ẋ² + ½ m V(G)² + ½ C2 θ̇² (König).
+    let m = problem!("pendule_sur_chariot");
+    torseur::assert_equivalent!(
+        m,
+        "V(G,2/0) in B0",
+        "[dot(x) + l*dot(theta)*cos(theta), l*dot(theta)*sin(theta), 0]"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(x)",
+        "(M + m)*ddot(x) + m*l*(ddot(theta)*cos(theta) - \
+            dot(theta)^2*sin(theta)) = F"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta)",
+        "(C2 + m*l^2)*ddot(theta) + m*l*cos(theta)*ddot(x) = -m*g*l*sin(theta)"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "X12",
+        "m*(ddot(x) + l*ddot(theta)*cos(theta) - l*dot(theta)^2*sin(theta))"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Y12",
+        "m*g + m*l*(ddot(theta)*sin(theta) + dot(theta)^2*cos(theta))"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Ec(E/0)",
+        "1/2*M*dot(x)^2 + 1/2*m*((dot(x) + l*dot(theta)*cos(theta))^2 + \
+            (l*dot(theta)*sin(theta))^2) + 1/2*C2*dot(theta)^2"
+    );
+}
+
+#[test]
+fn double_pendulum_equations_of_motion_by_hand() {
+    // Absolute angles from the downward vertical; homogeneous rods, G at the middle, C = m L²/12.
+    // OA = L1 (sin θ1, −cos θ1), AG2 = L2/2 (sin θ2, −cos θ2), so
+    // Γ(G2) = L1 θ̈1 (c1, s1) + L1 θ̇1² (−s1, c1) + L2/2 θ̈2 (c2, s2) + L2/2 θ̇2² (−s2, c2).
+    // Isolate 2, moment at A on z0: δ(A,2/0)·z0 = m2 L2²/12 θ̈2 + (AG2 ∧ m2 Γ(G2))·z0
+    // = m2 L2²/3 θ̈2 + m2 L1 L2/2 (θ̈1 cos(θ2 − θ1) + θ̇1² sin(θ2 − θ1)); weight −m2 g L2/2 sin θ2.
+    // Isolate E = {1, 2}, moment at O on z0: δ(O,1/0)·z0 = m1 L1²/3 θ̈1, and
+    // δ(O,2/0)·z0 = δ(A,2/0)·z0 + (OA ∧ m2 Γ(G2))·z0 adds m2 L1² θ̈1
+    // + m2 L1 L2/2 (θ̈2 cos(θ2 − θ1) − θ̇2² sin(θ2 − θ1)); weights −g (m1 L1/2 s1 + m2 L1 s1 + m2
+    // L2/2 s2).
+    // cos(θ2 − θ1) and sin(θ2 − θ1) are written expanded (the canonical form has no sums of
+    // angles).
+    let m = problem!("double_pendule");
+    let c21 = "(cos(theta2)*cos(theta1) + sin(theta2)*sin(theta1))";
+    let s21 = "(sin(theta2)*cos(theta1) - cos(theta2)*sin(theta1))";
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta2)",
+        &format!(
+            "m2*L2^2/3*ddot(theta2) + m2*L1*L2/2*(ddot(theta1)*{c21} + \
+            dot(theta1)^2*{s21}) + m2*g*L2/2*sin(theta2) = 0"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta1)",
+        &format!(
+            "(m1*L1^2/3 + m2*L1^2)*ddot(theta1) + m2*L1*L2/2*(ddot(theta2)*{c21} - \
+            dot(theta2)^2*{s21}) + m2*L2^2/3*ddot(theta2) + \
+            m2*L1*L2/2*(ddot(theta1)*{c21} + dot(theta1)^2*{s21}) = \
+            -g*(m1*L1/2*sin(theta1) + m2*L1*sin(theta1) + m2*L2/2*sin(theta2))"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Ec(E/0)",
+        &format!(
+            "1/2*m1*L1^2/3*dot(theta1)^2 + 1/2*m2*(L1^2*dot(theta1)^2 + \
+            L2^2/4*dot(theta2)^2 + L1*L2*dot(theta1)*dot(theta2)*{c21}) + \
+            1/2*m2*L2^2/12*dot(theta2)^2"
+        )
+    );
+}
+
+#[test]
+fn spinning_top_euler_equations_by_hand() {
+    // In the nutation basis B2: Ω(3/0) = θ̇ x2 + ψ̇ sin θ y2 + (φ̇ + ψ̇ cos θ) z2; by Huygens
+    // I(O,3) = diag(A', A', C) with A' = A + m h², the same in B2 (revolution about z3 = z2), so
+    // σ(O,3/0) = A' θ̇ x2 + A' ψ̇ sin θ y2 + C r z2 with r = φ̇ + ψ̇ cos θ.
+    // O is fixed: δ(O,3/0) = d/dt σ|B2 + Ω(2/0) ∧ σ, Ω(2/0) = θ̇ x2 + ψ̇ sin θ y2 + ψ̇ cos θ z2:
+    // δ·x2 = A' θ̈ + ψ̇ sin θ (C r − A' ψ̇ cos θ), δ·y2 = A' (ψ̈ sin θ + 2 ψ̇ θ̇ cos θ) − C θ̇ r,
+    // δ·z2 = δ·z3 = C (φ̈ + ψ̈ cos θ − ψ̇ θ̇ sin θ).
+    // The ball joint has no moment at O; the weight's moment is h z3 ∧ (−m g z0) = m g h sin θ x2.
+    // So eom(θ): δ·x2 = m g h sin θ; eom(ψ): δ·z0 = sin θ δ·y2 + cos θ δ·z2 = 0; eom(φ): δ·z3 = 0.
+    // Resultant on z0: Z03 − m g = m d²/dt²(h cos θ).
+    let m = problem!("toupie");
+    let ap = "(A + m*h^2)";
+    torseur::assert_equivalent!(
+        m,
+        "delta(O,3/0).z3",
+        "C*(ddot(phi) + ddot(psi)*cos(theta) - dot(psi)*dot(theta)*sin(theta))"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "sigma(O,3/0) in B2",
+        &format!(
+            "[{ap}*dot(theta), {ap}*dot(psi)*sin(theta), C*(dot(phi) + \
+            dot(psi)*cos(theta))]"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "delta(O,3/0) in B2",
+        &format!(
+            "[{ap}*ddot(theta) + dot(psi)*sin(theta)*(C*(dot(phi) + \
+            dot(psi)*cos(theta)) - {ap}*dot(psi)*cos(theta)), \
+            {ap}*(ddot(psi)*sin(theta) + 2*dot(psi)*dot(theta)*cos(theta)) - \
+            C*dot(theta)*(dot(phi) + dot(psi)*cos(theta)), C*(ddot(phi) + \
+            ddot(psi)*cos(theta) - dot(psi)*dot(theta)*sin(theta))]"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta)",
+        &format!(
+            "{ap}*ddot(theta) + dot(psi)*sin(theta)*(C*(dot(phi) + \
+            dot(psi)*cos(theta)) - {ap}*dot(psi)*cos(theta)) = m*g*h*sin(theta)"
+        )
+    );
+    torseur::assert_equivalent!(m, "eom(theta)", under "H1", &format!("dot(psi)*sin(theta)*(C*(dot(phi) + dot(psi)*cos(theta)) - \
+            {ap}*dot(psi)*cos(theta)) = m*g*h*sin(theta)"));
+    torseur::assert_equivalent!(
+        m,
+        "eom(psi)",
+        &format!(
+            "sin(theta)*({ap}*(ddot(psi)*sin(theta) + \
+            2*dot(psi)*dot(theta)*cos(theta)) - C*dot(theta)*(dot(phi) + \
+            dot(psi)*cos(theta))) + cos(theta)*C*(ddot(phi) + ddot(psi)*cos(theta) \
+            - dot(psi)*dot(theta)*sin(theta)) = 0"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(phi)",
+        "C*(ddot(phi) + ddot(psi)*cos(theta) - dot(psi)*dot(theta)*sin(theta)) \
+            = 0"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Z03",
+        "m*g - m*h*(ddot(theta)*sin(theta) + dot(theta)^2*cos(theta))"
+    );
+}
+
+#[test]
+fn unbalanced_rotor_bearing_reactions_by_hand() {
+    // θ̇ = ω constant: Γ(P,2/0) = −e ω² x1. The rotor turns at constant rate about a principal axis
+    // through G1: {D(1/0)} = 0. At A: Rd(E/0) = −m e ω² x1 and
+    // δ(A,E/0) = AP ∧ m Γ(P) = (a z0 + e x1) ∧ (−m e ω² x1) = −m e a ω² y1.
+    // Isolate E, PFD at A in B0 (x1 = cos θ x0 + sin θ y0, y1 = −sin θ x0 + cos θ y0), with the
+    // weights −M g y0 at G1 = c z0 and −m g y0 at P:
+    // X01 = −m e ω² cos θ, Y01 = (M + m) g − m e ω² sin θ, Z01 = 0,
+    // L01 + M g c + m g a = m e a ω² sin θ, M01 = −m e a ω² cos θ,
+    // C_m − m g e cos θ = 0 (moment of the unbalance's weight on z0).
+    let m = problem!("rotor_balourd");
+    torseur::assert_equivalent!(m, "Gamma(P,2/0) in B1", "[-e*omega^2, 0, 0]");
+    torseur::assert_equivalent!(
+        m,
+        "{D(E/0)}_A in B1",
+        "[[-m*e*omega^2, 0, 0], [0, -m*e*a*omega^2, 0]]"
+    );
+    torseur::assert_equivalent!(m, "X01", "-m*e*omega^2*cos(theta)");
+    torseur::assert_equivalent!(m, "Y01", "(M + m)*g - m*e*omega^2*sin(theta)");
+    torseur::assert_equivalent!(m, "Z01", "0");
+    torseur::assert_equivalent!(m, "L01", "m*e*a*omega^2*sin(theta) - (M*c + m*a)*g");
+    torseur::assert_equivalent!(m, "M01", "-m*e*a*omega^2*cos(theta)");
+    torseur::assert_equivalent!(m, "C_m", "m*g*e*cos(theta)");
+}
+
+#[test]
+fn two_axis_robot_motor_torques_by_hand() {
+    // A = h z0 is fixed. In B2: Ω(2/0) = θ̇2 x2 + θ̇1 sin θ2 y2 + θ̇1 cos θ2 z2 = (p, q, r), and by
+    // Huygens (AG2 = L2 y2) I(A,2) has A2 + m2 L2² and C' = C2 + m2 L2² on its diagonal, the
+    // products unchanged. δ(A,2/0)·x2 = σ̇x + q σz − r σy with σ = I(A,2) Ω:
+    // = (A2 + m2 L2²) θ̈2 − (F2 s + E2 c) θ̈1 + ((C' − B2) s c + D2 (c² − s²)) θ̇1².
+    // Isolate 2, moment at A on x1: C_m2 − m2 g L2 cos θ2 = δ(A,2/0)·x2 (weight: L2 y2 ∧ −m2 g z0).
+    // Isolate E, moment at O on z0 (O and z0 fixed; weight vertical; motor 2 internal):
+    // σ(O,E/0)·z0 = (C1 + K) θ̇1 − (F2 s + E2 c) θ̇2, K = B2 s² + C' c² − 2 D2 s c,
+    // so C_m1 = (C1 + K) θ̈1 + K' θ̇1 − (F2 s + E2 c) θ̈2 − (F2 c − E2 s) θ̇2², with
+    // K' = (2 (B2 − C') s c − 2 D2 (c² − s²)) θ̇2. Under H1 (E2 = F2 = 0) the θ̈2, θ̇2² terms
+    // vanish.
+    let m = problem!("bras_robot_deux_axes");
+    let s = "sin(theta2)";
+    let c = "cos(theta2)";
+    let cp = "(C2 + m2*L2^2)";
+    let k = "(B2*sin(theta2)^2 + (C2 + m2*L2^2)*cos(theta2)^2 - \
+            2*D2*sin(theta2)*cos(theta2))";
+    let kp = "(2*(B2 - (C2 + m2*L2^2))*sin(theta2)*cos(theta2) - 2*D2*(cos(theta2)^2 \
+            - sin(theta2)^2))";
+    torseur::assert_equivalent!(
+        m,
+        "delta(A,2/0).x2",
+        &format!(
+            "(A2 + m2*L2^2)*ddot(theta2) - (F2*{s} + E2*{c})*ddot(theta1) + (({cp} \
+            - B2)*{s}*{c} + D2*({c}^2 - {s}^2))*dot(theta1)^2"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "C_m2",
+        &format!(
+            "(A2 + m2*L2^2)*ddot(theta2) - (F2*{s} + E2*{c})*ddot(theta1) + (({cp} \
+            - B2)*{s}*{c} + D2*({c}^2 - {s}^2))*dot(theta1)^2 + m2*g*L2*{c}"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "sigma(O,E/0).z0",
+        &format!("(C1 + {k})*dot(theta1) - (F2*{s} + E2*{c})*dot(theta2)")
+    );
+    torseur::assert_equivalent!(
+        m,
+        "C_m1",
+        &format!(
+            "(C1 + {k})*ddot(theta1) + {kp}*dot(theta2)*dot(theta1) - (F2*{s} + \
+            E2*{c})*ddot(theta2) - (F2*{c} - E2*{s})*dot(theta2)^2"
+        )
+    );
+    torseur::assert_equivalent!(m, "C_m1", under "H1", &format!("(C1 + {k})*ddot(theta1) + {kp}*dot(theta2)*dot(theta1)"));
+}
+
+#[test]
+fn tilted_rotor_dynamic_moment_by_hand() {
+    // Ω(2/0) = ω z1 = ω (sin α y2 + cos α z2), constant in B2 where I(O,2) is constant, so
+    // σ(O,2/0) = ω (−F s − E c, B s − D c, C c − D s) in B2 (s = sin α, c = cos α) and, O fixed,
+    // δ(O,2/0) = Ω(2/0) ∧ σ(O,2/0)
+    // = ω² [((C − B) s c + D (c² − s²)) x2 − c (F s + E c) y2 + s (F s + E c) z2].
+    // In B1 (y1 = c y2 − s z2, z1 = s y2 + c z2): δ = ω² [((C − B) s c + D (c² − s²)) x1 − (F s + E
+    // c) y1],
+    // constant in the shaft's frame and normal to the axis. Isolate 2, PFD at O in B1: L01 = δ·x1,
+    // M01 = δ·y1, C_m = δ·z1 = 0 (the weight is along the axis through O). Disc of revolution (H1):
+    // δ = (C − A) ω² sin α cos α x1.
+    let m = problem!("rotor_vitesse_imposee");
+    let s = "sin(alpha)";
+    let c = "cos(alpha)";
+    torseur::assert_equivalent!(
+        m,
+        "sigma(O,2/0) in B2",
+        &format!("[-omega*(F*{s} + E*{c}), omega*(B*{s} - D*{c}), omega*(C*{c} - D*{s})]")
+    );
+    torseur::assert_equivalent!(
+        m,
+        "delta(O,2/0) in B2",
+        &format!(
+            "[omega^2*((C - B)*{s}*{c} + D*({c}^2 - {s}^2)), -omega^2*{c}*(F*{s} + \
+            E*{c}), omega^2*{s}*(F*{s} + E*{c})]"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "delta(O,2/0) in B1",
+        &format!(
+            "[omega^2*((C - B)*{s}*{c} + D*({c}^2 - {s}^2)), -omega^2*(F*{s} + \
+            E*{c}), 0]"
+        )
+    );
+    torseur::assert_equivalent!(m, "delta(O,2/0) in B1", under "H1", &format!("[(C - A)*omega^2*{s}*{c}, 0, 0]"));
+    torseur::assert_equivalent!(
+        m,
+        "L01",
+        &format!("omega^2*((C - B)*{s}*{c} + D*({c}^2 - {s}^2))")
+    );
+    torseur::assert_equivalent!(m, "M01", &format!("-omega^2*(F*{s} + E*{c})"));
+    torseur::assert_equivalent!(m, "Z01", "m*g");
+    torseur::assert_equivalent!(m, "C_m", "0");
+}
+
+#[test]
+fn mass_spring_damper_on_a_slope_by_hand() {
+    // Isolate 2, resultant theorem on x1: m ẍ = −k (x − l0) − c ẋ + (−m g y0)·x1, with
+    // y0·x1 = sin β; the slider transmits nothing along x1. On y1: Y02 − m g cos β = 0.
+    let m = problem!("systeme_masse_ressort");
+    torseur::assert_equivalent!(
+        m,
+        "eom(x)",
+        "m*ddot(x) + c*dot(x) + k*(x - l0) = -m*g*sin(beta)"
+    );
+    torseur::assert_equivalent!(m, "Y02", "m*g*cos(beta)");
+    torseur::assert_equivalent!(m, "Ec(2/0)", "1/2*m*dot(x)^2");
+}
+
+#[test]
+fn ball_in_a_rotating_tube_by_hand() {
+    // OP = r x1 with θ̇ = ω: V(P,2/0) = ṙ x1 + r ω y1, Γ(P,2/0) = (r̈ − r ω²) x1 + 2 ω ṙ y1
+    // (centripetal and Coriolis terms). Isolate the ball: the annular link transmits nothing on
+    // x1, so m (r̈ − r ω²) = 0; on y1, Y12 = 2 m ω ṙ; on z1, Z12 − m g = 0.
+    // Isolate E, moment at O on z0: δ(O,1/0)·z0 = C1 θ̈ = 0 and (OP ∧ m Γ(P))·z0 = 2 m ω r ṙ,
+    // so C_m = 2 m ω r ṙ. Ec = ½ C1 ω² + ½ m (ṙ² + r² ω²).
+    let m = problem!("bille_tube_tournant");
+    torseur::assert_equivalent!(
+        m,
+        "Gamma(P,2/0) in B1",
+        "[ddot(r) - r*omega^2, 2*omega*dot(r), 0]"
+    );
+    torseur::assert_equivalent!(m, "eom(r)", "m*(ddot(r) - omega^2*r) = 0");
+    torseur::assert_equivalent!(m, "Y12", "2*m*omega*dot(r)");
+    torseur::assert_equivalent!(m, "Z12", "m*g");
+    torseur::assert_equivalent!(m, "C_m", "2*m*omega*r*dot(r)");
+    torseur::assert_equivalent!(
+        m,
+        "Ec(E/0)",
+        "1/2*C1*omega^2 + 1/2*m*(dot(r)^2 + r^2*omega^2)"
+    );
+}
+
+#[test]
+fn inverted_pendulum_with_torsion_spring_by_hand() {
+    // OG = l y1 = l (−sin θ, cos θ): the weight's moment at O is (OG ∧ −m g y0)·z0 = m g l sin θ.
+    // Isolate 1, moment at O on z0 (O fixed): (C + m l²) θ̈ = −k θ − f θ̇ + m g l sin θ.
+    // Linearised about θ = 0 (sin θ ≈ θ): (C + m l²) θ̈ + f θ̇ + (k − m g l) θ = 0.
+    // Resultant on x0 and y0: X01 = m Γ(G)·x0, Y01 − m g = m Γ(G)·y0 with
+    // Γ(G) = l (−θ̈ cos θ + θ̇² sin θ) x0 − l (θ̈ sin θ + θ̇² cos θ) y0.
+    let m = problem!("pendule_inverse_ressort");
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta)",
+        "(C + m*l^2)*ddot(theta) + f*dot(theta) + k*theta = m*g*l*sin(theta)"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "lin(eom(theta))",
+        "(C + m*l^2)*ddot(theta) + f*dot(theta) + (k - m*g*l)*theta = 0"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "X01",
+        "m*l*(dot(theta)^2*sin(theta) - ddot(theta)*cos(theta))"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Y01",
+        "m*g - m*l*(ddot(theta)*sin(theta) + dot(theta)^2*cos(theta))"
+    );
+}
+
+#[test]
+fn pendule_sur_chariot_agrees_with_the_float_backend() {
+    assert_checked(&problem!("pendule_sur_chariot"));
+}
+
+#[test]
+fn double_pendule_agrees_with_the_float_backend() {
+    assert_checked(&problem!("double_pendule"));
+}
+
+#[test]
+fn toupie_agrees_with_the_float_backend() {
+    assert_checked(&problem!("toupie"));
+}
+
+#[test]
+fn rotor_balourd_agrees_with_the_float_backend() {
+    assert_checked(&problem!("rotor_balourd"));
+}
+
+#[test]
+fn bras_robot_deux_axes_agrees_with_the_float_backend() {
+    assert_checked(&problem!("bras_robot_deux_axes"));
+}
+
+#[test]
+fn rotor_vitesse_imposee_agrees_with_the_float_backend() {
+    assert_checked(&problem!("rotor_vitesse_imposee"));
+}
+
+#[test]
+fn systeme_masse_ressort_agrees_with_the_float_backend() {
+    assert_checked(&problem!("systeme_masse_ressort"));
+}
+
+#[test]
+fn bille_tube_tournant_agrees_with_the_float_backend() {
+    assert_checked(&problem!("bille_tube_tournant"));
+}
+
+#[test]
+fn pendule_inverse_ressort_agrees_with_the_float_backend() {
+    assert_checked(&problem!("pendule_inverse_ressort"));
+}
