@@ -431,7 +431,14 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                     }
                 }
                 if let Some((a, bb)) = sym.equal_moments() {
-                    let (ea, eb) = (&ine.matrix[a][a], &ine.matrix[bb][bb]);
+                    // Through the substitutions already made: two axes of revolution (a
+                    // sphere-like solid) chain B = A then C = B into C = A.
+                    let resolve = |e: &crate::expr::Expr| {
+                        subs.iter()
+                            .fold(e.clone(), |acc, (x, val)| acc.substitute(*x, val))
+                    };
+                    let (ea, eb) = (resolve(&ine.matrix[a][a]), resolve(&ine.matrix[bb][bb]));
+                    let (ea, eb) = (&ea, &eb);
                     if ea != eb {
                         let v = single_var(eb).ok_or_else(|| {
                             at(
@@ -443,6 +450,9 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                                 ),
                             )
                         })?;
+                        for (_, val) in subs.iter_mut() {
+                            *val = val.substitute(v, ea);
+                        }
                         subs.push((v, ea.clone()));
                         effects.push(format!("{eb} = {ea}"));
                     }

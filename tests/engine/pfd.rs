@@ -244,3 +244,50 @@ fn inertia_in_a_basis_turning_relative_to_the_solid_is_refused_unless_of_revolut
     let m = load(&revolution);
     assert_eq!(scalar(&m, "delta(O0,2/0).x1"), ex(&m, "A*ddot(q2)"));
 }
+
+#[test]
+fn sphere_like_symmetry_and_a_massless_solid() {
+    // A sphere-like solid is declared by two axes of revolution: under the hypothesis that
+    // applies its symmetries, I_G = A·Id (the two equalities chain: B = A, then C = B = A). A
+    // massless arm (mass 0, no inertia) carries it.
+    let text = r#"{
+      "title": "sphere au bout d'un bras sans masse",
+      "parameters": [{"name": "m"}, {"name": "l"}, {"name": "A"}, {"name": "B"}, {"name": "C"},
+                     {"name": "D"}, {"name": "E"}, {"name": "F"}, {"name": "g"}],
+      "coordinates": [{"name": "q", "kind": "angle"}, {"name": "p", "kind": "angle"}],
+      "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "q"}},
+                 {"name": "2", "parent": "1", "rotation": {"axis": "x", "angle": "p"}, "origin": "G"}],
+      "points": [{"name": "G", "position": "l*x1"}],
+      "solids": [
+        {"name": "1", "frame": "1", "mass": "0", "centre": "O0"},
+        {"name": "2", "frame": "2", "mass": "m", "centre": "G",
+         "inertia": {"point": "G", "basis": "2",
+                     "matrix": [["A", "-F", "-E"], ["-F", "B", "-D"], ["-E", "-D", "C"]]},
+         "symmetries": [{"kind": "revolution", "axis": "z2"}, {"kind": "revolution", "axis": "x2"}]}],
+      "sets": {"E": ["1", "2"]},
+      "hypotheses": [{"name": "S", "symmetric_solids": ["2"]}],
+      "gravity": "-g*z0",
+      "quantities": ["I(G,2)", "delta(O0,E/0) in B1", "{D(2/0)}_G in B2", "Ec(E/0)"]
+    }"#;
+    let m = load(text);
+    let s = m.hypotheses.iter().find(|h| h.name == "S").unwrap();
+    let i = derive(&m, &Quantity::parse("I(G,2)").unwrap())
+        .unwrap()
+        .value
+        .under(s);
+    let a = ex(&m, "A");
+    let zero = m.reg.zero();
+    let expected = [&a, &zero, &zero, &zero, &a, &zero, &zero, &zero, &a];
+    for (k, e) in i.exprs().into_iter().enumerate() {
+        assert_eq!(e, expected[k], "entry {k}");
+    }
+    // The massless arm with the general inertia: the float backend agrees. (Its sampler
+    // symmetrises a random cloud by quarter turns about one axis at a time, which cannot make
+    // the three moments equal, so the hypothesis' rows are left out here.)
+    let general = load(&text.replace(
+        r#""hypotheses": [{"name": "S", "symmetric_solids": ["2"]}],"#,
+        "",
+    ));
+    let report = torseur::check::check(&general, 10, 1).unwrap();
+    assert!(report.passed(), "{report}");
+}
