@@ -114,7 +114,55 @@ fn symmetrize(base: &[(f64, Vector3<f64>)], mask: usize) -> Vec<(f64, Vector3<f6
             }
         };
     }
+    // Axes of revolution about two different axes: the body has the symmetries of a cube
+    // (quarter turns about two axes generate them), so its inertia is isotropic. Averaging
+    // over the 24 rotations of the cube gives exactly that.
+    let turned: std::collections::BTreeSet<usize> = chosen
+        .iter()
+        .filter_map(|op| match op {
+            Op::Turn(a) => Some(*a),
+            _ => None,
+        })
+        .collect();
+    if turned.len() >= 2 {
+        let rotations = cube_rotations();
+        let n = rotations.len() as f64;
+        cloud = cloud
+            .into_iter()
+            .flat_map(|(m, r)| {
+                rotations
+                    .iter()
+                    .map(move |q| (m / n, q * r))
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+    }
     cloud
+}
+
+/// The 24 rotations of the cube: signed permutation matrices of determinant 1.
+fn cube_rotations() -> Vec<nalgebra::Matrix3<f64>> {
+    let perms = [
+        [0, 1, 2],
+        [0, 2, 1],
+        [1, 0, 2],
+        [1, 2, 0],
+        [2, 0, 1],
+        [2, 1, 0],
+    ];
+    let mut out = Vec::new();
+    for p in perms {
+        for signs in 0..8u8 {
+            let mut q = nalgebra::Matrix3::zeros();
+            for (row, &col) in p.iter().enumerate() {
+                q[(row, col)] = if signs & (1 << row) != 0 { -1.0 } else { 1.0 };
+            }
+            if q.determinant() > 0.0 {
+                out.push(q);
+            }
+        }
+    }
+    out
 }
 
 /// Random point masses of total `mass`, centroid at the origin.
