@@ -289,12 +289,19 @@ fn replace_linear(e: &Expr, v: usize, value: &Expr) -> Expr {
 /// them (a square system; pivots must be nonzero numbers, which projecting on the links'
 /// own bases gives), then each equation of motion has them substituted.
 pub fn solve(m: &Mechanism) -> Result<Solution, PfdError> {
+    solve_with_residuals(m).map(|(s, _)| s)
+}
+
+/// [`solve`], also returning each declared theorem's residual (in the spec's order).
+fn solve_with_residuals(m: &Mechanism) -> Result<(Solution, Vec<Expr>), PfdError> {
     let err = |e: ResolveError| PfdError(e.to_string());
+    let mut residuals = Vec::with_capacity(m.dynamics.theorems.len());
     let mut rows: Vec<(usize, Expr)> = Vec::new();
     let mut eoms: Vec<(usize, Expr)> = Vec::new();
     for (i, th) in m.dynamics.theorems.iter().enumerate() {
         let r = residual(m, th).map_err(err)?;
         check_linear(m, &r).map_err(|msg| PfdError(format!("pfd[{i}]: {msg}")))?;
+        residuals.push(r.clone());
         if th.eom.is_some() {
             eoms.push((i, r));
         } else {
@@ -371,7 +378,7 @@ pub fn solve(m: &Mechanism) -> Result<Solution, PfdError> {
         let q = th.eom.expect("eom equation");
         eom.insert(m.reg.coord_info(q).name.clone(), r);
     }
-    Ok(Solution { unknowns, eom })
+    Ok((Solution { unknowns, eom }, residuals))
 }
 
 /// Unknowns must enter linearly: no term with two unknown factors.
@@ -552,24 +559,17 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
                     ),
                 ));
             }
-            let sol = solve(m).map_err(|e| resolve_err(q, e.0))?;
+            let (sol, residuals) = solve_with_residuals(m).map_err(|e| resolve_err(q, e.0))?;
             let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
                 resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
             })?;
-            for th in m.dynamics.theorems.iter().filter(|t| t.eom.is_none()) {
-                let r = residual(m, th)?;
-                let occurs = m
-                    .reg
-                    .unknowns()
-                    .iter()
-                    .position(|n| n == name)
-                    .and_then(|k| {
-                        m.reg.index_of(crate::expr::VarRole::Parameter(
-                            m.reg.parameters().len() + k,
-                        ))
-                    })
-                    .is_some_and(|v| !r.derivative(v).is_zero());
-                if occurs {
+            let var = unknown_vars(m)
+                .into_iter()
+                .find(|(n, _)| n == name)
+                .map(|(_, v)| v);
+            // The steps of the theorems that involve the unknown.
+            for (th, r) in m.dynamics.theorems.iter().zip(&residuals) {
+                if th.eom.is_none() && var.is_some_and(|v| !r.derivative(v).is_zero()) {
                     theorem_steps(m, th, &mut steps)?;
                 }
             }

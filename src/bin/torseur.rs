@@ -232,33 +232,26 @@ fn watchdog(limit: f64) -> Result<(), Failure> {
     Ok(())
 }
 
-/// Writes a file atomically: a temporary file in the same directory, renamed over the target.
-fn write_atomic(path: &Path, content: &[u8]) -> Result<(), Failure> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let mut tmp = tempfile::NamedTempFile::new_in(&dir)
-        .with_context(|| format!("cannot write in {}", dir.display()))
-        .map_err(bad_input)?;
-    tmp.write_all(content)
-        .and_then(|_| tmp.flush())
-        .with_context(|| format!("cannot write {}", path.display()))
-        .map_err(bad_input)?;
-    {
-        use std::os::unix::fs::PermissionsExt;
-        // Keep an existing file's mode; a new one gets the usual rw-r--r--.
-        let mode = std::fs::metadata(path)
-            .map(|m| m.permissions().mode())
-            .unwrap_or(0o644);
-        let _ = tmp
-            .as_file()
-            .set_permissions(std::fs::Permissions::from_mode(mode));
+/// The answer key's figures as PNG, all rendered before anything is written.
+fn render_figures(key: &torseur::latex::AnswerKey) -> Result<Vec<(String, Vec<u8>)>, Failure> {
+    key.figures
+        .iter()
+        .map(|(name, fig)| Ok((name.clone(), fig.to_png(2).map_err(bad_input)?)))
+        .collect()
+}
+
+/// Writes the figures next to the .tex file, where `\includegraphics` finds them.
+fn write_figures(tex: &Path, figures: &[(String, Vec<u8>)]) -> Result<(), Failure> {
+    let dir = tex.parent().unwrap_or(Path::new(""));
+    for (name, bytes) in figures {
+        write_atomic(&dir.join(name), bytes)?;
     }
-    tmp.persist(path)
-        .map_err(|e| anyhow!("cannot write {}: {}", path.display(), e.error))
-        .map_err(bad_input)?;
     Ok(())
+}
+
+/// Writes a file atomically ([`torseur::output::write_atomic`]).
+fn write_atomic(path: &Path, content: &[u8]) -> Result<(), Failure> {
+    torseur::output::write_atomic(path, content).map_err(bad_input)
 }
 
 /// Compiles LaTeX with pdflatex in a temporary directory (no shell escape) and returns the PDF.
@@ -353,17 +346,8 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 let key =
                     torseur::latex::answer_key_document(&mq, torseur::latex::VectorStyle::Sum)
                         .map_err(bad_input)?;
-                let mut figures = Vec::new();
-                for (name, fig) in &key.figures {
-                    figures.push((name.clone(), fig.to_png(2).map_err(bad_input)?));
-                }
-                let dir = match path.parent() {
-                    Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-                    _ => PathBuf::from("."),
-                };
-                for (name, bytes) in &figures {
-                    write_atomic(&dir.join(name), bytes)?;
-                }
+                let figures = render_figures(&key)?;
+                write_figures(&path, &figures)?;
                 write_atomic(&path, key.tex.as_bytes())?;
             }
             if let Some(path) = json {
@@ -417,12 +401,8 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 Vectors::Column => torseur::latex::VectorStyle::Column,
             };
             let key = torseur::latex::answer_key_document(&m, style).map_err(bad_input)?;
+            let figures = render_figures(&key)?;
             let tex = key.tex;
-            // Every figure is rendered before anything is written.
-            let mut figures = Vec::new();
-            for (name, fig) in &key.figures {
-                figures.push((name.clone(), fig.to_png(2).map_err(bad_input)?));
-            }
             match output {
                 None => {
                     if !figures.is_empty() {
@@ -434,18 +414,12 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                     emit(&tex)
                 }
                 Some(path) => {
-                    let dir = match path.parent() {
-                        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-                        _ => PathBuf::from("."),
-                    };
                     let pdf_bytes = if pdf {
                         Some(compile_pdf(&tex, &figures)?)
                     } else {
                         None
                     };
-                    for (name, bytes) in &figures {
-                        write_atomic(&dir.join(name), bytes)?;
-                    }
+                    write_figures(&path, &figures)?;
                     write_atomic(&path, tex.as_bytes())?;
                     if let Some(bytes) = pdf_bytes {
                         write_atomic(&path.with_extension("pdf"), &bytes)?;

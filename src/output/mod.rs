@@ -1,7 +1,9 @@
-//! Outputs: plain text and JSON of derived quantities, and numeric evaluation.
+//! Outputs: plain text and JSON of derived quantities, numeric evaluation, atomic files.
 
+mod atomic;
 mod eval;
 
+pub use atomic::write_atomic;
 pub use eval::{Values, ValuesError, eval_value, numeric_point};
 
 use crate::derivation::{Derivation, Value};

@@ -108,12 +108,19 @@ impl Run {
     }
 }
 
-/// Unit of a recorded unknown: a moment component or a force.
+/// Unit of a recorded unknown: N m when it enters an action's moment, else N.
 fn unknown_unit(m: &Mechanism, id: &str) -> String {
-    let moment = m.spec.actions.iter().any(|a| {
-        a.unknowns.iter().any(|u| u == id) && a.moment.as_deref().is_some_and(|t| t.contains(id))
-    }) || (id.starts_with(['L', 'M', 'N'])
-        && m.spec.links.iter().any(|l| id[1..] == l.name));
+    let moment = m
+        .reg
+        .param(id)
+        .and_then(|x| x.single_variable())
+        .is_some_and(|v| {
+            m.dynamics.actions.iter().any(|a| {
+                a.moment
+                    .parts()
+                    .any(|(_, c)| c.iter().any(|e| !e.derivative(v).is_zero()))
+            })
+        });
     if moment { "N m" } else { "N" }.to_string()
 }
 
@@ -201,7 +208,7 @@ pub fn simulate_with(
     let nf = plan.free.len();
     for (k, y) in traj.states().enumerate() {
         let t = traj.times()[k];
-        let (_, rec) = plan
+        let e = plan
             .evaluate(m, t, y)
             .map_err(|e| SimulateError::Scenario(format!("at t = {t}: {e}")))?;
         let mut c = 0;
@@ -209,16 +216,15 @@ pub fn simulate_with(
             columns[*c].values.push(v);
             *c += 1;
         };
-        for (i, im) in plan.imposed.iter().enumerate() {
+        for (i, w) in e.rates.iter().enumerate() {
             put(y[i], &mut c);
-            let w = im.law.at(t).map_err(SimulateError::Scenario)?.0;
-            put(w, &mut c);
+            put(*w, &mut c);
         }
         for i in 0..nf {
             put(y[ni + i], &mut c);
             put(y[ni + nf + i], &mut c);
         }
-        for v in rec.iter().take(sc.record.len()) {
+        for v in e.recorded.iter().take(sc.record.len()) {
             put(*v, &mut c);
         }
         for i in 0..plan.integrals {

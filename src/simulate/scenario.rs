@@ -204,31 +204,30 @@ impl Plan {
     }
 
     /// Fills the registry point from the state at t and solves for the free accelerations.
-    /// Returns the free accelerations and the recorded values.
-    pub fn evaluate(
-        &mut self,
-        m: &Mechanism,
-        t: f64,
-        y: &[f64],
-    ) -> Result<(Vec<f64>, Vec<f64>), String> {
+    pub fn evaluate(&mut self, m: &Mechanism, t: f64, y: &[f64]) -> Result<Evaluation, String> {
         let reg = &m.reg;
         let ni = self.imposed.len();
         let n = self.free.len();
         let mut point = self.base.clone();
+        // Variable slots of a coordinate: cos, sin, value, q̇, q̈.
         let set = |q: CoordId, v: [f64; 3], point: &mut Vec<f64>| {
-            let put = |role: VarRole, x: f64, point: &mut Vec<f64>| {
+            let roles = [
+                (VarRole::Cos(q), v[0].cos()),
+                (VarRole::Sin(q), v[0].sin()),
+                (VarRole::Value(q), v[0]),
+                (VarRole::Rate(q, 1), v[1]),
+                (VarRole::Rate(q, 2), v[2]),
+            ];
+            for (role, x) in roles {
                 if let Some(i) = reg.index_of(role) {
                     point[i] = x;
                 }
-            };
-            put(VarRole::Cos(q), v[0].cos(), point);
-            put(VarRole::Sin(q), v[0].sin(), point);
-            put(VarRole::Value(q), v[0], point);
-            put(VarRole::Rate(q, 1), v[1], point);
-            put(VarRole::Rate(q, 2), v[2], point);
+            }
         };
+        let mut rates = Vec::with_capacity(ni);
         for (k, im) in self.imposed.iter().enumerate() {
             let (w, a) = im.law.at(t)?;
+            rates.push(w);
             set(im.coord, [y[k], w, a], &mut point);
         }
         for (k, &q) in self.free.iter().enumerate() {
@@ -245,30 +244,40 @@ impl Plan {
         for (k, &q) in self.free.iter().enumerate() {
             set(q, [y[ni + k], y[ni + n + k], acc[k]], &mut point);
         }
-        let mut rec = vec![0.0; self.recorded.outputs()];
-        self.recorded.evaluate(&point, &mut rec);
-        if let Some(bad) = out.iter().chain(&rec).find(|v| !v.is_finite()) {
+        let mut recorded = vec![0.0; self.recorded.outputs()];
+        self.recorded.evaluate(&point, &mut recorded);
+        if let Some(bad) = out.iter().chain(&recorded).find(|v| !v.is_finite()) {
             return Err(format!("non-finite value {bad} at t = {t}"));
         }
-        Ok((acc.iter().copied().collect(), rec))
+        Ok(Evaluation {
+            rates,
+            accelerations: acc.iter().copied().collect(),
+            recorded,
+        })
     }
 
     /// The right-hand side y' = f(t, y).
     pub fn rhs(&mut self, m: &Mechanism, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), String> {
         let ni = self.imposed.len();
         let n = self.free.len();
-        let (acc, rec) = self.evaluate(m, t, y)?;
-        for (k, im) in self.imposed.iter().enumerate() {
-            dy[k] = im.law.at(t)?.0;
-        }
+        let e = self.evaluate(m, t, y)?;
+        dy[..ni].copy_from_slice(&e.rates);
         for k in 0..n {
             dy[ni + k] = y[ni + n + k];
-            dy[ni + n + k] = acc[k];
+            dy[ni + n + k] = e.accelerations[k];
         }
-        let first = rec.len() - self.integrals;
-        for k in 0..self.integrals {
-            dy[ni + 2 * n + k] = rec[first + k];
-        }
+        let first = e.recorded.len() - self.integrals;
+        dy[ni + 2 * n..].copy_from_slice(&e.recorded[first..]);
         Ok(())
     }
+}
+
+/// One evaluation of the right-hand side's ingredients.
+pub(super) struct Evaluation {
+    /// q̇ of the imposed coordinates.
+    pub rates: Vec<f64>,
+    /// q̈ of the free coordinates.
+    pub accelerations: Vec<f64>,
+    /// The recorded expressions (unknowns, then integrands).
+    pub recorded: Vec<f64>,
 }

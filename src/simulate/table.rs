@@ -1,6 +1,5 @@
 //! Tables of numbers written as CSV, and the atomic file write shared with the plots.
 
-use std::io::Write;
 use std::path::Path;
 
 use super::SimError;
@@ -161,39 +160,14 @@ fn csv_field(s: &str) -> String {
     }
 }
 
-/// Writes `bytes` to `path` atomically: into a temporary file in the same directory, flushed
-/// to disk, then renamed over `path` ([`tempfile::NamedTempFile::persist`]). A reader sees the
-/// old file or the new one, never a partial one; on error the temporary file is removed. On
-/// Unix the file gets mode `0o644` (less the umask), like a file made by `File::create`.
+/// Writes `bytes` to `path` atomically ([`crate::output::write_atomic`]), as a [`SimError`].
 ///
 /// # Errors
 /// [`SimError::Io`] if the directory is not writable or the disk is full.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), SimError> {
-    let io = |op, source| SimError::Io {
-        op,
+    crate::output::write_atomic(path, bytes).map_err(|source| SimError::Io {
+        op: "write",
         path: path.to_path_buf(),
         source,
-    };
-    let dir = match path.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => dir,
-        _ => Path::new("."),
-    };
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(".tmp-");
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        builder.permissions(std::fs::Permissions::from_mode(0o644));
-    }
-    let mut file = builder
-        .tempfile_in(dir)
-        .map_err(|e| io("create a temporary file beside", e))?;
-    file.write_all(bytes)
-        .map_err(|e| io("write a temporary file for", e))?;
-    file.as_file()
-        .sync_all()
-        .map_err(|e| io("flush a temporary file for", e))?;
-    file.persist(path)
-        .map_err(|e| io("rename a temporary file to", e.error))?;
-    Ok(())
+    })
 }

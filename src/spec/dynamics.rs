@@ -128,24 +128,21 @@ pub(super) fn pfd_names(
 }
 
 fn basis_vector(m: &Mechanism, path: &str, s: &str) -> Result<(FrameId, Axis), SpecError> {
-    let mut c = s.chars();
-    let axis = c.next().and_then(|a| Axis::parse(&a.to_string()));
-    let frame = m.frames.find(c.as_str());
-    match (axis, frame) {
-        (Some(a), Some(f)) => Ok((f, a)),
-        _ => Err(at(
+    super::validate::basis_vector(&m.frames, s).ok_or_else(|| {
+        at(
             path,
             format!("`{s}` is not a basis vector (x, y or z followed by a frame name)"),
-        )),
-    }
+        )
+    })
+}
+
+fn point(m: &Mechanism, path: String, name: &str) -> Result<crate::point::PointId, SpecError> {
+    m.point(name)
+        .ok_or_else(|| at(path, format!("unknown point `{name}`")))
 }
 
 fn vector(m: &Mechanism, path: &str, text: &str) -> Result<(Vector, FrameId), SpecError> {
-    let bv = |s: &str| {
-        let mut c = s.chars();
-        let axis = Axis::parse(&c.next()?.to_string())?;
-        Some((m.frames.find(c.as_str())?, axis.index()))
-    };
+    let bv = |s: &str| super::validate::basis_vector(&m.frames, s).map(|(f, a)| (f, a.index()));
     let parts = m
         .reg
         .parse_vector(text, &bv)
@@ -229,12 +226,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
                 "a link joins two different solids",
             ));
         }
-        let point = m.point(&l.point).ok_or_else(|| {
-            at(
-                format!("{path}.point"),
-                format!("unknown point `{}`", l.point),
-            )
-        })?;
+        let point = point(m, format!("{path}.point"), &l.point)?;
         let (basis, axis) = match &l.axis {
             Some(a) => basis_vector(m, &format!("{path}.axis"), a)?,
             None => (m.frames.ground(), Axis::Z),
@@ -344,12 +336,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
                 return Err(at(format!("{path}.on"), "an action is received by a solid"));
             }
         };
-        let point = m.point(&a.point).ok_or_else(|| {
-            at(
-                format!("{path}.point"),
-                format!("unknown point `{}`", a.point),
-            )
-        })?;
+        let point = point(m, format!("{path}.point"), &a.point)?;
         let (resultant, b1) = match &a.resultant {
             Some(t) => vector(m, &format!("{path}.resultant"), t)?,
             None => (Vector::zero(), m.frames.ground()),
@@ -381,9 +368,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
             )
         })?;
         let point = match (t.theorem, &t.point) {
-            (_, Some(p)) => m
-                .point(p)
-                .ok_or_else(|| at(format!("{path}.point"), format!("unknown point `{p}`")))?,
+            (_, Some(p)) => point(m, format!("{path}.point"), p)?,
             (TheoremKind::Moment, None) => {
                 return Err(at(
                     format!("{path}.point"),
