@@ -14,6 +14,7 @@ fn param(name: &str, unit: &str) -> ParameterSpec {
         name: name.into(),
         description: None,
         unit: Some(unit.into()),
+        kind: ParameterKind::Scalar,
     }
 }
 

@@ -1,8 +1,8 @@
 //! Exact expressions: the only module that sees symbolica.
 //!
 //! Every quantity of rigid-body kinematics and dynamics is a polynomial in cos qᵢ, sin qᵢ (angle
-//! coordinates), qᵢ (length coordinates), q̇ᵢ, q̈ᵢ and the parameters, with rational
-//! coefficients. [`Expr`] stores exactly that, as a symbolica `MultivariatePolynomial` over ℚ
+//! coordinates, and constant angle parameters), qᵢ (length coordinates, and the angles a spec
+//! writes as themselves), q̇ᵢ, q̈ᵢ and the parameters, with rational coefficients. [`Expr`] stores exactly that, as a symbolica `MultivariatePolynomial` over ℚ
 //! whose variables are fixed once per mechanism by a [`Registry`], and keeps it in the
 //! **canonical form** of DESIGN.md: expanded, with every sin²qᵢ replaced by 1 − cos²qᵢ. Two
 //! expressions are equal as functions iff their canonical forms are identical, so the zero
@@ -13,6 +13,7 @@ mod parse;
 pub(crate) mod print;
 
 pub use flat::FlatEval;
+pub use parse::bare_names;
 pub use print::{Presentation, PresentationGroup};
 
 use crate::spec::wire::CoordinateKind;
@@ -89,6 +90,9 @@ pub struct CoordInfo {
     rates: Option<[usize; 3]>,
     /// Imposed constant rate q̇ (then q̈ = 0).
     imposed_rate: Option<Poly>,
+    /// A constant angle parameter (`"kind": "angle"` in `parameters`): cos and sin variables,
+    /// no rate; its value itself is the parameter's variable.
+    constant: bool,
 }
 
 impl CoordInfo {
@@ -102,6 +106,18 @@ impl CoordInfo {
     pub fn has_imposed_rate(&self) -> bool {
         self.imposed_rate.is_some()
     }
+
+    /// Whether this is a constant angle parameter, not a time coordinate: it has cos and sin
+    /// variables like an angle coordinate, and a zero rate.
+    pub fn is_constant(&self) -> bool {
+        self.constant
+    }
+
+    /// Whether the value never changes: a constant angle parameter, or a coordinate whose
+    /// imposed rate is 0.
+    fn is_fixed(&self) -> bool {
+        self.constant || self.imposed_rate.as_ref().is_some_and(|w| w.is_zero())
+    }
 }
 
 /// What a polynomial variable stands for.
@@ -110,9 +126,9 @@ pub enum VarRole {
     /// A constant parameter (index in [`Registry::parameters`]), or beyond them an unknown
     /// of the PFD (index − number of parameters in [`Registry::unknowns`]).
     Parameter(usize),
-    /// cos q of an angle coordinate.
+    /// cos q of an angle coordinate (or of a constant angle parameter).
     Cos(CoordId),
-    /// sin q of an angle coordinate.
+    /// sin q of an angle coordinate (or of a constant angle parameter).
     Sin(CoordId),
     /// q itself, for a length coordinate (or an angle that enters as itself).
     Value(CoordId),
@@ -144,7 +160,10 @@ pub struct Registry {
     parameters: Vec<String>,
     n_params: usize,
     param_var: HashMap<String, usize>,
+    /// The time coordinates, then the constant angle parameters.
     coords: Vec<CoordInfo>,
+    /// Number of time coordinates (the first entries of `coords`).
+    n_coords: usize,
     coord_by_name: HashMap<String, CoordId>,
 }
 
@@ -278,17 +297,21 @@ impl Registry {
         parameters: &[String],
         coords: &[(String, CoordinateKind, Option<String>)],
     ) -> Result<Rc<Registry>, ExprError> {
-        Registry::with_unknowns(parameters, coords, &[], &[])
+        Registry::with_unknowns(parameters, coords, &[], &[], &[])
     }
 
     /// [`Registry::with_rates`], plus the unknowns of the PFD (link components, a motor
-    /// torque: scalars that enter linearly and are solved for) and the angles that also enter
-    /// as themselves (a torsion spring's −k(θ − θ0)), not only through sin and cos.
+    /// torque: scalars that enter linearly and are solved for), the angles that also enter
+    /// as themselves (a torsion spring's −k(θ − θ0), a disc's centre at R θ x1), not only
+    /// through sin and cos, and the parameters that are constant angles (an incline α: it
+    /// gets cos α and sin α variables, with sin²α reduced like a coordinate's, and a zero
+    /// rate; α itself stays the parameter's variable).
     pub fn with_unknowns(
         parameters: &[String],
         coords: &[(String, CoordinateKind, Option<String>)],
         unknowns: &[String],
         raw_angles: &[String],
+        angle_parameters: &[String],
     ) -> Result<Rc<Registry>, ExprError> {
         // Before any symbolica call: a second thread using symbolica concurrently would abort
         // the process in its restricted mode.
@@ -320,6 +343,7 @@ impl Registry {
                 trig: None,
                 rates: None,
                 imposed_rate: None,
+                constant: false,
             };
             match kind {
                 CoordinateKind::Angle => {
@@ -363,6 +387,40 @@ impl Registry {
             }
             infos.push(info);
         }
+        let n_coords = infos.len();
+        for (k, name) in angle_parameters.iter().enumerate() {
+            if !parameters.contains(name) {
+                return Err(ExprError::Declaration(format!(
+                    "the angle parameter `{name}` is not a parameter"
+                )));
+            }
+            if angle_parameters[..k].contains(name) {
+                return Err(ExprError::Declaration(format!(
+                    "`{name}` is declared twice"
+                )));
+            }
+            let id = CoordId(infos.len());
+            let a = Atom::var(symbolica::symbol!(name.as_str()));
+            vars.push(PolyVariable::Function(
+                Symbol::SIN,
+                symbolica::function!(Symbol::SIN, a.clone()),
+            ));
+            roles.push(VarRole::Sin(id));
+            vars.push(PolyVariable::Function(
+                Symbol::COS,
+                symbolica::function!(Symbol::COS, a),
+            ));
+            roles.push(VarRole::Cos(id));
+            infos.push(CoordInfo {
+                name: name.clone(),
+                kind: CoordinateKind::Angle,
+                value: None,
+                trig: Some((vars.len() - 1, vars.len() - 2)),
+                rates: None,
+                imposed_rate: None,
+                constant: true,
+            });
+        }
         let mut param_var = HashMap::new();
         let n_params = parameters.len();
         let parameters: Vec<String> = parameters.iter().chain(unknowns).cloned().collect();
@@ -372,6 +430,7 @@ impl Registry {
             roles.push(VarRole::Parameter(i));
             param_var.insert(p.clone(), vars.len() - 1);
         }
+        // Constant angle parameters are found by `angle`, not by `coord`.
         let coord_by_name = infos
             .iter()
             .enumerate()
@@ -387,6 +446,7 @@ impl Registry {
             n_params,
             param_var,
             coords: infos,
+            n_coords,
             coord_by_name,
         };
         // Imposed rates are expressions in the parameters: parse them with a registry that
@@ -401,6 +461,7 @@ impl Registry {
                 n_params: reg.n_params,
                 param_var: reg.param_var.clone(),
                 coords: reg.coords.clone(),
+                n_coords: reg.n_coords,
                 coord_by_name: reg.coord_by_name.clone(),
             });
             for (i, (_, _, rate)) in coords.iter().enumerate() {
@@ -440,17 +501,30 @@ impl Registry {
         i >= self.n_params
     }
 
-    /// The coordinates, in declaration order.
+    /// The time coordinates, in declaration order (not the constant angle parameters).
     pub fn coordinates(&self) -> &[CoordInfo] {
-        &self.coords
+        &self.coords[..self.n_coords]
     }
 
-    /// Coordinate by name.
+    /// Time coordinate by name (not a constant angle parameter: it has no rate, no equation
+    /// of motion, no value in a sample's coordinates).
     pub fn coord(&self, name: &str) -> Option<CoordId> {
-        self.coord_by_name.get(name).copied()
+        self.coord_by_name
+            .get(name)
+            .copied()
+            .filter(|q| q.0 < self.n_coords)
     }
 
-    /// Coordinate information.
+    /// An angle by name: an angle coordinate or a constant angle parameter (what sin, cos and
+    /// a rotation take).
+    pub fn angle(&self, name: &str) -> Option<CoordId> {
+        self.coord_by_name
+            .get(name)
+            .copied()
+            .filter(|q| self.coords[q.0].kind == CoordinateKind::Angle)
+    }
+
+    /// Coordinate (or constant angle parameter) information.
     pub fn coord_info(&self, id: CoordId) -> &CoordInfo {
         &self.coords[id.0]
     }
@@ -540,7 +614,8 @@ impl Registry {
         }
     }
 
-    /// q for a length coordinate (None for an angle, which enters only by cos and sin).
+    /// q itself: a length coordinate, or an angle written as itself somewhere in the spec
+    /// (None for an angle that enters only by cos and sin).
     pub fn value(self: &Rc<Self>, q: CoordId) -> Option<Expr> {
         self.coords[q.0].value.map(|i| self.var(i))
     }
@@ -621,6 +696,24 @@ impl Registry {
         parse::parse_scalar(self, s)
     }
 
+    /// Parses an angle that is a sum of angles with integer coefficients and a multiple of
+    /// π/2 (`pi/2 - q1`, `theta - alpha`, `2*q`): its terms, offset and exact cos and sin,
+    /// by the angle-addition formulas. What a frame's rotation takes (the spec then allows one
+    /// time coordinate in it).
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&[], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let a = reg.parse_angle("pi/2 - q").unwrap();
+    /// assert_eq!(a.quarter_turns, 1);
+    /// assert_eq!(a.cos, reg.parse("sin(q)").unwrap());
+    /// assert_eq!(a.sin, reg.parse("cos(q)").unwrap());
+    /// ```
+    pub fn parse_angle(self: &Rc<Self>, s: &str) -> Result<LinearAngle, ExprError> {
+        parse::parse_angle(self, s)
+    }
+
     /// Parses a vector expression `d1*z0 + L1*y1`, where `basis_vector(name)` recognises the
     /// basis vector names (returning a basis key and an axis index). Returns, per basis key,
     /// the three components.
@@ -631,6 +724,20 @@ impl Registry {
     ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
         parse::parse_vector(self, s, basis_vector)
     }
+}
+
+/// An angle Σ nᵢ aᵢ + k π/2, read by [`Registry::parse_angle`].
+#[derive(Debug, Clone)]
+pub struct LinearAngle {
+    /// The angles (coordinates or constant angle parameters) with their nonzero integer
+    /// coefficients, in the order written.
+    pub terms: Vec<(CoordId, i64)>,
+    /// The constant offset k of k π/2, as written (not reduced modulo 4).
+    pub quarter_turns: i64,
+    /// Exact cosine of the angle.
+    pub cos: Expr,
+    /// Exact sine of the angle.
+    pub sin: Expr,
 }
 
 /// Default Horner-scheme iterations of [`Registry::compile`].
@@ -709,8 +816,15 @@ impl Expr {
 
     /// Whether the expression depends on no coordinate (a constant in time).
     pub fn is_time_independent(&self) -> bool {
-        (0..self.reg.nvars())
-            .all(|i| matches!(self.reg.roles[i], VarRole::Parameter(_)) || self.p.degree(i) == 0)
+        (0..self.reg.nvars()).all(|i| match self.reg.roles[i] {
+            VarRole::Parameter(_) => true,
+            VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q)
+                if self.reg.coords[q.0].is_fixed() =>
+            {
+                true
+            }
+            _ => self.p.degree(i) == 0,
+        })
     }
 
     /// The variable index if the expression is exactly one variable (coefficient 1).
@@ -800,6 +914,9 @@ impl Expr {
         let reg = &self.reg;
         let mut acc = self.p.zero();
         for (i, c) in reg.coords.iter().enumerate() {
+            if c.constant {
+                continue;
+            }
             let q = CoordId(i);
             let qdot = reg.rate(q, 1).p;
             if let Some((ci, si)) = c.trig {

@@ -4,8 +4,7 @@
 //! sin and cos of a sum or of a multiple angle expand first (angle-addition formulas), so
 //! `sin(2*theta)` and `2*sin(theta)*cos(theta)` have the same canonical form.
 
-use super::{CoordId, Expr, ExprError, Registry};
-use crate::spec::wire::CoordinateKind;
+use super::{CoordId, Expr, ExprError, LinearAngle, Registry};
 use std::rc::Rc;
 use symbolica::atom::{Atom, AtomCore, AtomView, Symbol};
 use symbolica::domains::rational::{Q, Rational, RationalField};
@@ -158,6 +157,68 @@ fn check_powers(s: &str) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// The names an expression writes as themselves, outside the arguments of sin, cos, dot and
+/// ddot (`R*theta*x1 + L*sin(theta)*y1` gives `R`, `theta`, `x1`, `L`, `y1`), in order, each
+/// once. A lexical scan: the text need not be valid.
+///
+/// ```
+/// assert_eq!(
+///     torseur::expr::bare_names("R*theta*x1 + L*sin(2*theta)*y1 - dot(q)*z0"),
+///     ["R", "theta", "x1", "L", "y1", "z0"]
+/// );
+/// ```
+pub fn bare_names(s: &str) -> Vec<String> {
+    let b = s.as_bytes();
+    let mut out: Vec<String> = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        let c = b[i];
+        if c.is_ascii_digit() {
+            // A number, and a name glued to it (`2x` is refused by the parser anyway).
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_' || b[i] == b'.') {
+                i += 1;
+            }
+            continue;
+        }
+        if !(c.is_ascii_alphabetic() || c == b'_') {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+            i += 1;
+        }
+        let word = &s[start..i];
+        let mut j = i;
+        while j < b.len() && b[j].is_ascii_whitespace() {
+            j += 1;
+        }
+        if FUNCTIONS.contains(&word) && j < b.len() && (b[j] == b'(' || b[j] == b'[') {
+            // Skip the whole argument.
+            let mut depth = 0usize;
+            while j < b.len() {
+                match b[j] {
+                    b'(' | b'[' => depth += 1,
+                    b')' | b']' => {
+                        depth -= 1;
+                        if depth == 0 {
+                            break;
+                        }
+                    }
+                    _ => {}
+                }
+                j += 1;
+            }
+            i = j + 1;
+            continue;
+        }
+        if !out.iter().any(|w| w == word) {
+            out.push(word.to_string());
+        }
+    }
+    out
 }
 
 /// The functions of the expression syntax.
@@ -356,7 +417,9 @@ impl Walker<'_> {
                 if let Some(q) = reg.coord(&name) {
                     return reg.value(q).ok_or_else(|| {
                         self.unsupported(&format!(
-                            "the angle `{name}` enters only through sin({name}) and cos({name})"
+                            "the angle `{name}` is written as itself in no expression of the \
+                             spec, so no result holds it: here it enters only through \
+                             sin({name}) and cos({name})"
                         ))
                     });
                 }
@@ -445,15 +508,22 @@ impl Walker<'_> {
         }
     }
 
-    /// (cos a, sin a) of an angle a = Σ nᵢ qᵢ + r π, by the angle-addition formulas.
+    /// (cos a, sin a) of an angle a = Σ nᵢ qᵢ + k π/2, by the angle-addition formulas.
     fn trig(&self, arg: AtomView) -> Result<(Expr, Expr), ExprError> {
-        let reg = self.reg;
+        let (terms, quarter_turns) = self.linear_angle(arg)?;
+        Ok(cos_sin(self.reg, &terms, quarter_turns))
+    }
+
+    /// An angle as Σ nᵢ aᵢ (angle coordinates and constant angle parameters, integer nᵢ, like
+    /// terms combined) and k π/2.
+    fn linear_angle(&self, arg: AtomView) -> Result<(Vec<(CoordId, i64)>, i64), ExprError> {
         let expanded = arg.expand();
         let terms: Vec<AtomView> = match expanded.as_view() {
             AtomView::Add(a) => a.iter().collect(),
+            AtomView::Num(n) if n.is_zero() => vec![],
             other => vec![other],
         };
-        let (mut c, mut s) = (reg.one(), reg.zero());
+        let mut out: Vec<(CoordId, i64)> = Vec::new();
         let mut pi_multiple = Rational::zero();
         for t in terms {
             let (coef, q) = self.angle_term(t)?;
@@ -462,36 +532,31 @@ impl Walker<'_> {
                 AngleTerm::Coord(q) => {
                     if !coef.is_integer() {
                         return Err(self.unsupported(
-                            "sin and cos take integer multiples of the angle coordinates",
+                            "an angle takes integer multiples of the angle coordinates and \
+                             angle parameters",
                         ));
                     }
                     let n = coef.to_f64() as i64;
                     if n.abs() > MAX_POWER {
                         return Err(self.unsupported("multiple angle too large"));
                     }
-                    let (cn, sn) = multiple_angle(reg, q, n);
-                    let nc = &(&c * &cn) - &(&s * &sn);
-                    let ns = &(&s * &cn) + &(&c * &sn);
-                    c = nc;
-                    s = ns;
+                    match out.iter_mut().find(|(x, _)| *x == q) {
+                        Some(slot) => slot.1 += n,
+                        None => out.push((q, n)),
+                    }
                 }
             }
         }
-        if !pi_multiple.is_zero() {
-            // Exact values for multiples of π/2 only.
-            let twice = &pi_multiple * &Rational::new(2, 1);
-            if !twice.is_integer() {
-                return Err(self.unsupported("constant angles must be multiples of pi/2"));
-            }
-            let k = (twice.to_f64() as i64).rem_euclid(4);
-            let (pc, ps) = [(1, 0), (0, 1), (-1, 0), (0, -1)][k as usize];
-            let (pc, ps) = (reg.integer(pc), reg.integer(ps));
-            let nc = &(&c * &pc) - &(&s * &ps);
-            let ns = &(&s * &pc) + &(&c * &ps);
-            c = nc;
-            s = ns;
+        out.retain(|(_, n)| *n != 0);
+        if out.iter().any(|(_, n)| n.abs() > MAX_POWER) {
+            return Err(self.unsupported("multiple angle too large"));
         }
-        Ok((c, s))
+        // Exact values for multiples of π/2 only.
+        let twice = &pi_multiple * &Rational::new(2, 1);
+        if !twice.is_integer() || twice.to_f64().abs() > 1e15 {
+            return Err(self.unsupported(NOT_QUARTER_TURNS));
+        }
+        Ok((out, twice.to_f64() as i64))
     }
 
     fn angle_term(&self, t: AtomView) -> Result<(Rational, AngleTerm), ExprError> {
@@ -510,14 +575,20 @@ impl Walker<'_> {
                     let this = if sym == Symbol::PI || name == "pi" {
                         AngleTerm::Pi
                     } else {
-                        match self.reg.coord(name) {
-                            Some(q) if self.reg.coord_info(q).kind == CoordinateKind::Angle => {
-                                AngleTerm::Coord(q)
+                        match self.reg.angle(name) {
+                            Some(q) => AngleTerm::Coord(q),
+                            None if self.reg.param(name).is_none()
+                                && self.reg.coord(name).is_none() =>
+                            {
+                                return Err(ExprError::UnknownName {
+                                    name: name.to_string(),
+                                    input: self.input.to_string(),
+                                });
                             }
-                            _ => {
+                            None => {
                                 return Err(self.unsupported(&format!(
-                                    "`{name}` in sin/cos is not an angle coordinate (declare \
-                                     constant angles as angle coordinates with rate 0)"
+                                    "`{name}` is not an angle: an angle is an angle coordinate \
+                                     or a parameter declared with \"kind\": \"angle\""
                                 )));
                             }
                         }
@@ -532,12 +603,46 @@ impl Walker<'_> {
         }
         match what {
             Some(w) => Ok((coef, w)),
-            None => Err(self.unsupported(
-                "a constant angle in sin/cos must be a multiple of pi/2 (declare other constant \
-                 angles as angle coordinates with rate 0)",
-            )),
+            None => Err(self.unsupported(NOT_QUARTER_TURNS)),
         }
     }
+}
+
+/// Why a constant angle is refused.
+const NOT_QUARTER_TURNS: &str = "a constant angle written with numbers must be a multiple of \
+     pi/2 (the only ones whose cos and sin are exact rationals): declare any other constant \
+     angle as a parameter with \"kind\": \"angle\"";
+
+/// (cos a, sin a) of a = Σ nᵢ aᵢ + k π/2.
+fn cos_sin(reg: &Rc<Registry>, terms: &[(CoordId, i64)], quarter_turns: i64) -> (Expr, Expr) {
+    let (mut c, mut s) = (reg.one(), reg.zero());
+    for &(q, n) in terms {
+        let (cn, sn) = multiple_angle(reg, q, n);
+        let nc = &(&c * &cn) - &(&s * &sn);
+        let ns = &(&s * &cn) + &(&c * &sn);
+        c = nc;
+        s = ns;
+    }
+    match quarter_turns.rem_euclid(4) {
+        0 => (c, s),
+        1 => (-s, c),
+        2 => (-c, -s),
+        _ => (s, -c),
+    }
+}
+
+/// Reads an angle `Σ nᵢ aᵢ + k π/2` (see [`Registry::parse_angle`]).
+pub(super) fn parse_angle(reg: &Rc<Registry>, s: &str) -> Result<LinearAngle, ExprError> {
+    let a = parse_atom(s)?;
+    let w = Walker { reg, input: s };
+    let (terms, quarter_turns) = w.linear_angle(a.as_view())?;
+    let (cos, sin) = cos_sin(reg, &terms, quarter_turns);
+    Ok(LinearAngle {
+        terms,
+        quarter_turns,
+        cos,
+        sin,
+    })
 }
 
 enum AngleTerm {

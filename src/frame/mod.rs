@@ -63,13 +63,88 @@ impl Axis {
     }
 }
 
-/// The angle of an elementary rotation: cos and sin of it as exact expressions, and its rate.
+/// The angle of an elementary rotation, `±q + c` counted positively about the (unsigned)
+/// axis: one time coordinate q, or none, plus constants (multiples of π/2, constant angle
+/// parameters). Its cos and sin are exact expressions; its rate is ±q̇.
 #[derive(Debug, Clone)]
 pub struct Angle {
-    /// The coordinate (or angle parameter) turning the frame.
+    /// The coordinate turning the frame; for a frame turned by constants only, the first
+    /// constant angle parameter (whose rate is 0).
     pub coord: CoordId,
-    /// +1 when the rotation is positive about the axis, -1 when drawn the other way.
+    /// Coefficient of `coord` in the angle: +1 when the rotation is positive about the
+    /// axis, -1 when drawn the other way (a negative axis, or `pi/2 - q`).
     pub sign: i32,
+    /// Every term of the angle with its integer coefficient, `coord` first (the others are
+    /// constant angle parameters).
+    pub terms: Vec<(CoordId, i64)>,
+    /// The constant offset k of k π/2 (`pi/2 - q` gives 1).
+    pub quarter_turns: i64,
+    /// cos of the angle.
+    pub cos: Expr,
+    /// sin of the angle.
+    pub sin: Expr,
+}
+
+impl Angle {
+    /// The angle in the spec syntax, counted about the unsigned axis (`pi/2 - q1`,
+    /// `theta - alpha`, `-q`): a positive offset first when the first angle is negative.
+    ///
+    /// ```
+    /// let m = torseur::spec::from_str(r#"{"title": "t",
+    ///   "parameters": [{"name": "alpha", "kind": "angle"}],
+    ///   "coordinates": [{"name": "q1", "kind": "angle"}],
+    ///   "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "pi/2 - q1"}},
+    ///              {"name": "2", "parent": "1", "rotation": {"axis": "-x", "angle": "q1 + alpha"}}]}"#
+    /// ).unwrap();
+    /// let text = |f: &str| {
+    ///     let r = m.frames.get(m.frames.find(f).unwrap()).rotation.clone().unwrap();
+    ///     r.angle.to_text(&m.reg)
+    /// };
+    /// assert_eq!(text("1"), "pi/2 - q1");
+    /// assert_eq!(text("2"), "-q1 - alpha");
+    /// ```
+    pub fn to_text(&self, reg: &Registry) -> String {
+        let mut out = String::new();
+        let mut push = |neg: bool, body: String| {
+            match (out.is_empty(), neg) {
+                (true, true) => out.push('-'),
+                (true, false) => {}
+                (false, true) => out.push_str(" - "),
+                (false, false) => out.push_str(" + "),
+            }
+            out.push_str(&body);
+        };
+        let k = self.quarter_turns;
+        let offset = (k != 0).then(|| {
+            let body = match k.abs() {
+                1 => "pi/2".to_string(),
+                2 => "pi".to_string(),
+                n if n % 2 == 0 => format!("{}*pi", n / 2),
+                n => format!("{n}*pi/2"),
+            };
+            (k < 0, body)
+        });
+        let offset_first = k > 0 && self.terms.first().is_some_and(|t| t.1 < 0);
+        if offset_first && let Some((neg, body)) = offset.clone() {
+            push(neg, body);
+        }
+        for &(q, n) in &self.terms {
+            let name = reg.coord_info(q).name.clone();
+            let body = if n.abs() == 1 {
+                name
+            } else {
+                format!("{}*{name}", n.abs())
+            };
+            push(n < 0, body);
+        }
+        if !offset_first && let Some((neg, body)) = offset {
+            push(neg, body);
+        }
+        if out.is_empty() {
+            out.push('0');
+        }
+        out
+    }
 }
 
 /// One elementary rotation from the parent basis.
@@ -190,11 +265,9 @@ impl Frames {
         (up, down)
     }
 
-    /// cos and sin of the (signed) angle of a frame's rotation.
+    /// cos and sin of the angle of a frame's rotation.
     fn cos_sin(&self, rot: &Rotation) -> (Expr, Expr) {
-        let c = self.reg.cos(rot.angle.coord);
-        let s = self.reg.sin(rot.angle.coord);
-        if rot.angle.sign < 0 { (c, -s) } else { (c, s) }
+        (rot.angle.cos.clone(), rot.angle.sin.clone())
     }
 
     /// Components in the parent basis of a vector given in the basis of `child`.
@@ -260,24 +333,33 @@ impl Frames {
         let (up_from_a, down_to_b) = self.path(a, b);
         let mut out = Vec::new();
         // Climbing from a: Ω(a/anc) = Σ Ω(k/parent(k)) for k on the way up, with + sign.
+        // A rotation by a constant angle adds nothing.
         for f in up_from_a.iter().rev() {
             if let Some(rot) = &self.frames[f.0].rotation {
                 let rate = self.rate(rot);
-                out.push((*f, rot.axis, rate));
+                if !rate.is_zero() {
+                    out.push((*f, rot.axis, rate));
+                }
             }
         }
         for f in down_to_b.iter() {
             if let Some(rot) = &self.frames[f.0].rotation {
                 let rate = self.rate(rot);
-                out.push((*f, rot.axis, -rate));
+                if !rate.is_zero() {
+                    out.push((*f, rot.axis, -rate));
+                }
             }
         }
         out
     }
 
+    /// The rate of a rotation's angle: Σ nᵢ q̇ᵢ (constant angles have none).
     fn rate(&self, rot: &Rotation) -> Expr {
-        let d = self.reg.dot(rot.angle.coord);
-        if rot.angle.sign < 0 { -d } else { d }
+        let mut r = self.reg.zero();
+        for &(q, n) in &rot.angle.terms {
+            r = &r + &(&self.reg.dot(q) * &self.reg.integer(n));
+        }
+        r
     }
 }
 

@@ -67,6 +67,19 @@ pub fn numeric_point(m: &Mechanism, values: &Values) -> Result<Vec<f64>, ValuesE
                     .get(name)
                     .ok_or_else(|| ValuesError(format!("missing parameter `{name}`")))?
             }
+            // A constant angle parameter: its value is among the parameters.
+            VarRole::Cos(q) | VarRole::Sin(q) if reg.coord_info(q).is_constant() => {
+                let name = &reg.coord_info(q).name;
+                let a = *values
+                    .parameters
+                    .get(name)
+                    .ok_or_else(|| ValuesError(format!("missing parameter `{name}`")))?;
+                if matches!(reg.role(i), VarRole::Cos(_)) {
+                    a.cos()
+                } else {
+                    a.sin()
+                }
+            }
             VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q) | VarRole::Rate(q, _) => {
                 let name = &reg.coord_info(q).name;
                 let c = values

@@ -79,10 +79,18 @@ impl Plan {
         }
         let mut base = vec![0.0; reg.nvars()];
         for i in 0..reg.nvars() {
-            if let VarRole::Parameter(k) = reg.role(i)
-                && !reg.is_unknown(k)
-            {
-                base[i] = sc.values[&reg.parameters()[k]];
+            match reg.role(i) {
+                VarRole::Parameter(k) if !reg.is_unknown(k) => {
+                    base[i] = sc.values[&reg.parameters()[k]];
+                }
+                // cos and sin of a constant angle parameter.
+                VarRole::Cos(q) if reg.coord_info(q).is_constant() => {
+                    base[i] = sc.values[&reg.coord_info(q).name].cos();
+                }
+                VarRole::Sin(q) if reg.coord_info(q).is_constant() => {
+                    base[i] = sc.values[&reg.coord_info(q).name].sin();
+                }
+                _ => {}
             }
         }
         let params: Vec<f64> = reg.parameters().iter().map(|p| sc.values[p]).collect();

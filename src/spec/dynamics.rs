@@ -30,6 +30,9 @@ pub(super) fn pfd_names(
     let mut seen: HashSet<String> = HashSet::new();
     let mut add = |path: String, n: String, unknowns: &mut Vec<String>| {
         crate::expr::check_identifier(&n).map_err(|m| at(&path, m))?;
+        if let Some(m) = super::validate::basis_vector_clash(spec, "unknown", &n) {
+            return Err(at(path, m));
+        }
         if taken.contains(&n) {
             return Err(at(
                 path,
@@ -188,6 +191,48 @@ fn frame_of_side(m: &Mechanism, s: &Source) -> FrameId {
     }
 }
 
+/// The links (indices) of a path from `a` to `b` in the graph of links, when a new link
+/// between them would close a loop. Links in parallel between the same two solids (two
+/// bearings of one shaft) make one connection, not a loop.
+fn closes_loop(graph: &[(usize, usize, usize)], a: usize, b: usize) -> Option<Vec<usize>> {
+    if graph
+        .iter()
+        .any(|&(x, y, _)| (x, y) == (a, b) || (x, y) == (b, a))
+    {
+        return None;
+    }
+    // Breadth-first search from a, remembering the link that reached each node.
+    let mut reached: std::collections::BTreeMap<usize, Option<(usize, usize)>> = [(a, None)].into();
+    let mut queue = std::collections::VecDeque::from([a]);
+    while let Some(n) = queue.pop_front() {
+        for &(x, y, k) in graph {
+            let other = if x == n {
+                y
+            } else if y == n {
+                x
+            } else {
+                continue;
+            };
+            if reached.contains_key(&other) {
+                continue;
+            }
+            reached.insert(other, Some((n, k)));
+            if other == b {
+                let mut chain = Vec::new();
+                let mut cur = b;
+                while let Some(Some((prev, k))) = reached.get(&cur) {
+                    chain.push(*k);
+                    cur = *prev;
+                }
+                chain.reverse();
+                return Some(chain);
+            }
+            queue.push_back(other);
+        }
+    }
+    None
+}
+
 /// Builds the actions and theorems of the spec on the validated mechanism.
 pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecError> {
     let reg = &m.reg;
@@ -208,6 +253,8 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
         d.gravity = Some(v);
     }
     let mut unknown_iter = reg.unknowns().iter();
+    // The graph of links so far: (node, node, link index), the ground being node 0.
+    let mut graph: Vec<(usize, usize, usize)> = Vec::new();
     for (i, l) in spec.links.iter().enumerate() {
         let path = format!("links[{i}]");
         let from = side(m, &format!("{path}.between[0]"), &l.between[0])?;
@@ -226,6 +273,28 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
                 "a link joins two different solids",
             ));
         }
+        let node = |s: &Source| match s {
+            Source::Outside => 0,
+            Source::Body(b) => b.0 + 1,
+        };
+        let (na, nb) = (node(&from), node(&Source::Body(on)));
+        if let Some(chain) = closes_loop(&graph, na, nb) {
+            let names: Vec<&str> = chain.iter().map(|&k| spec.links[k].name.as_str()).collect();
+            return Err(at(
+                format!("{path}.between"),
+                format!(
+                    "the link {} closes a kinematic loop: {} and {} are already connected by the \
+                     links {}. Closed kinematic loops are not supported yet (they need \
+                     constraint equations between the coordinates); keep the links of a tree, \
+                     from the ground to every solid",
+                    l.name,
+                    l.between[0],
+                    l.between[1],
+                    names.join(", ")
+                ),
+            ));
+        }
+        graph.push((na, nb, i));
         let point = point(m, format!("{path}.point"), &l.point)?;
         let (basis, axis) = match &l.axis {
             Some(a) => basis_vector(m, &format!("{path}.axis"), a)?,

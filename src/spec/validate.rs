@@ -2,7 +2,7 @@
 //! parsed, every error naming the JSON path of the offending value.
 
 use super::SpecError;
-use super::wire::{CoordinateKind, SpecFile, SymmetrySpec};
+use super::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
 use crate::expr::{ExprError, Registry};
 use crate::frame::{Angle, Axis, FrameId, Frames, Rotation};
 use crate::inertia::{Inertia, Symmetry};
@@ -50,6 +50,72 @@ pub(super) fn basis_vector(frames: &Frames, s: &str) -> Option<(FrameId, Axis)> 
     Some((f, axis))
 }
 
+/// The message refusing a scalar named like a basis vector (`x0` when frame `0` exists), if
+/// `n` is one: in a vector expression the name could only be read as the basis vector.
+pub(super) fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
+    let mut c = n.chars();
+    let axis = c.next().filter(|a| matches!(a, 'x' | 'y' | 'z'))?;
+    let frame = c.as_str();
+    let exists = frame == spec.ground || spec.frames.iter().any(|f| f.name == frame);
+    exists.then(|| {
+        format!(
+            "the {what} `{n}` has the name of the basis vector {axis} of frame {frame}: rename it \
+             (a position such as `{n}*{n}` could not tell them apart)"
+        )
+    })
+}
+
+/// Every expression text of the spec with its JSON path (what may write an angle as itself).
+fn expression_texts(spec: &SpecFile) -> Vec<(String, &str)> {
+    let mut out: Vec<(String, &str)> = Vec::new();
+    for (i, p) in spec.points.iter().enumerate() {
+        out.push((format!("points[{i}].position"), &p.position));
+    }
+    for (i, c) in spec.coordinates.iter().enumerate() {
+        if let Some(r) = &c.rate {
+            out.push((format!("coordinates[{i}].rate"), r));
+        }
+    }
+    for (i, s) in spec.solids.iter().enumerate() {
+        out.push((format!("solids[{i}].mass"), &s.mass));
+        if let Some(inr) = &s.inertia {
+            for (r, row) in inr.matrix.iter().enumerate() {
+                for (c, cell) in row.iter().enumerate() {
+                    out.push((format!("solids[{i}].inertia.matrix[{r}][{c}]"), cell));
+                }
+            }
+        }
+    }
+    if let Some(g) = &spec.gravity {
+        out.push(("gravity".to_string(), g));
+    }
+    for (i, l) in spec.links.iter().enumerate() {
+        if let Some(f) = &l.friction {
+            out.push((format!("links[{i}].friction"), f));
+        }
+        if let Some(sp) = &l.spring {
+            out.push((format!("links[{i}].spring.stiffness"), &sp.stiffness));
+            if let Some(f) = &sp.free {
+                out.push((format!("links[{i}].spring.free"), f));
+            }
+        }
+    }
+    for (i, a) in spec.actions.iter().enumerate() {
+        if let Some(r) = &a.resultant {
+            out.push((format!("actions[{i}].resultant"), r));
+        }
+        if let Some(m) = &a.moment {
+            out.push((format!("actions[{i}].moment"), m));
+        }
+    }
+    for (i, s) in spec.small.iter().enumerate() {
+        if let Some(a) = &s.around {
+            out.push((format!("small[{i}].around"), a));
+        }
+    }
+    out
+}
+
 /// Builds the mechanism described by a spec.
 pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     // Names: parameters and coordinates share one namespace with the reserved words and
@@ -58,6 +124,9 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     for (i, p) in spec.parameters.iter().enumerate() {
         let path = format!("parameters[{i}].name");
         crate::expr::check_identifier(&p.name).map_err(|m| at(&path, m))?;
+        if let Some(m) = basis_vector_clash(spec, "parameter", &p.name) {
+            return Err(at(path, m));
+        }
         if !names.insert(p.name.clone()) {
             return Err(at(path, format!("duplicate name `{}`", p.name)));
         }
@@ -65,18 +134,41 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     for (i, c) in spec.coordinates.iter().enumerate() {
         let path = format!("coordinates[{i}].name");
         crate::expr::check_identifier(&c.name).map_err(|m| at(&path, m))?;
+        if let Some(m) = basis_vector_clash(spec, "coordinate", &c.name) {
+            return Err(at(path, m));
+        }
         if !names.insert(c.name.clone()) {
             return Err(at(path, format!("duplicate name `{}`", c.name)));
         }
     }
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
+    let angle_params: Vec<String> = spec
+        .parameters
+        .iter()
+        .filter(|p| p.kind == ParameterKind::Angle)
+        .map(|p| p.name.clone())
+        .collect();
     let coords: Vec<(String, CoordinateKind, Option<String>)> = spec
         .coordinates
         .iter()
         .map(|c| (c.name.clone(), c.kind, c.rate.clone()))
         .collect();
-    let (unknowns, raw_angles) = super::dynamics::pfd_names(spec, &names)?;
-    let reg = Registry::with_unknowns(&params, &coords, &unknowns, &raw_angles)
+    let (unknowns, mut raw_angles) = super::dynamics::pfd_names(spec, &names)?;
+    // An angle coordinate written as itself (a disc's centre at R*theta*x1) gets a variable
+    // of its own besides cos and sin.
+    for (_, text) in expression_texts(spec) {
+        for n in crate::expr::bare_names(text) {
+            if spec
+                .coordinates
+                .iter()
+                .any(|c| c.name == n && c.kind == CoordinateKind::Angle)
+                && !raw_angles.contains(&n)
+            {
+                raw_angles.push(n);
+            }
+        }
+    }
+    let reg = Registry::with_unknowns(&params, &coords, &unknowns, &raw_angles, &angle_params)
         .map_err(|e| at("coordinates", e.to_string()))?;
 
     // Frames, in an order where each parent comes first (the spec may list them in any order).
@@ -123,26 +215,9 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                             format!("axis `{}` is not x, y, z, -x, -y or -z", r.axis),
                         )
                     })?;
-                    let coord = reg.coord(&r.angle).ok_or_else(|| {
-                        at(
-                            format!("{path}.angle"),
-                            format!(
-                                "`{}` is not a coordinate (a rotation angle is an angle \
-                                 coordinate; a constant angle is one with rate 0)",
-                                r.angle
-                            ),
-                        )
-                    })?;
-                    if reg.coord_info(coord).kind != CoordinateKind::Angle {
-                        return Err(at(
-                            format!("{path}.angle"),
-                            format!("`{}` is a length, not an angle", r.angle),
-                        ));
-                    }
-                    Some(Rotation {
-                        axis,
-                        angle: Angle { coord, sign },
-                    })
+                    let angle = rotation_angle(&reg, &r.angle, sign)
+                        .map_err(|m| at(format!("{path}.angle"), m))?;
+                    Some(Rotation { axis, angle })
                 }
             };
             frames.add(&f.name, parent, rotation);
@@ -539,6 +614,72 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     Ok(m)
 }
 
+/// The angle of a rotation, `±q + c` (one time coordinate, with coefficient ±1, plus
+/// constants: multiples of π/2 and angle parameters), turned the other way when the axis is
+/// negative (`sign` −1).
+fn rotation_angle(reg: &std::rc::Rc<Registry>, text: &str, sign: i32) -> Result<Angle, String> {
+    let a = reg.parse_angle(text).map_err(|e| match e {
+        ExprError::UnknownName { name, .. } => format!(
+            "unknown name `{name}` in the angle `{text}` (declare it as an angle coordinate, or \
+             as a parameter with \"kind\": \"angle\" for a constant angle)"
+        ),
+        other => other.to_string(),
+    })?;
+    let moving: Vec<(crate::expr::CoordId, i64)> = a
+        .terms
+        .iter()
+        .copied()
+        .filter(|(q, _)| !reg.coord_info(*q).is_constant())
+        .collect();
+    let constants = || {
+        a.terms
+            .iter()
+            .copied()
+            .filter(|(q, _)| reg.coord_info(*q).is_constant())
+    };
+    let (coord, coef) = match moving.as_slice() {
+        [(q, n)] if n.abs() == 1 => (*q, *n),
+        [(q, _)] => {
+            return Err(format!(
+                "`{text}`: the coordinate {} enters a rotation angle with coefficient 1 or -1 \
+                 (the angle is ±q + a constant)",
+                reg.coord_info(*q).name
+            ));
+        }
+        [] => match constants().next() {
+            Some(first) => first,
+            None => {
+                return Err(format!(
+                    "`{text}` is a constant multiple of pi/2: a frame turned by it alone has its \
+                     axes along the parent's, so name them so (no rotation), or declare the angle \
+                     as a parameter with \"kind\": \"angle\""
+                ));
+            }
+        },
+        _ => {
+            return Err(format!(
+                "`{text}` holds several coordinates: a rotation angle is ±q + a constant, one \
+                 coordinate per elementary rotation (chain one frame per coordinate)"
+            ));
+        }
+    };
+    let s = i64::from(sign);
+    let mut terms = vec![(coord, coef * s)];
+    terms.extend(
+        constants()
+            .filter(|(q, _)| *q != coord)
+            .map(|(q, n)| (q, n * s)),
+    );
+    Ok(Angle {
+        coord,
+        sign: (coef * s) as i32,
+        terms,
+        quarter_turns: a.quarter_turns * s,
+        cos: a.cos,
+        sin: if sign < 0 { -a.sin } else { a.sin },
+    })
+}
+
 /// An inertia matrix is constant in the solid's basis. Given in another basis, that basis
 /// must be fixed in the solid, or turn relative to it about one of its own axes around which
 /// the matrix is of revolution (then it is the same in every such basis); anything else would
@@ -563,7 +704,9 @@ fn invariant_in_solid(
         Ok(())
     } else {
         Err(format!(
-            "the inertia matrix is given in basis {} which turns relative to the solid's frame              {}: give it in the solid's basis (or in a basis where it is of revolution about              the relative rotation axis)",
+            "the inertia matrix is given in basis {} which turns relative to the solid's frame \
+             {}: give it in the solid's basis (or in a basis where it is of revolution about \
+             the relative rotation axis)",
             frames.get(basis).name,
             frames.get(solid).name
         ))

@@ -12,10 +12,12 @@ pub struct SpecFile {
     /// Optional statement or source.
     #[serde(default)]
     pub description: Option<String>,
-    /// Constant parameters, in the order they should be listed.
+    /// Constant parameters, in the order they should be listed (`"kind": "angle"` for a
+    /// constant angle such as an incline).
     #[serde(default)]
     pub parameters: Vec<ParameterSpec>,
-    /// Time coordinates q(t).
+    /// Time coordinates q(t). Their names, like the parameters', cannot be those of basis
+    /// vectors (`x0` while frame `0` exists).
     #[serde(default)]
     pub coordinates: Vec<CoordinateSpec>,
     /// Name of the fixed (Galilean) frame, `0` unless given.
@@ -54,7 +56,9 @@ pub struct SpecFile {
     #[serde(default)]
     pub gravity: Option<String>,
     /// Perfect links between solids (and the ground), with optional viscous friction and
-    /// torsion spring.
+    /// torsion spring. They form a tree: a link between two solids already connected by other
+    /// links (a closed kinematic loop, a four-bar linkage) is refused; links in parallel
+    /// between the same two solids (two bearings) are one connection.
     #[serde(default)]
     pub links: Vec<LinkSpec>,
     /// Other actions: given or unknown forces and torques (a motor torque).
@@ -356,13 +360,37 @@ pub struct ParameterSpec {
     /// Unit, for the answer key.
     #[serde(default)]
     pub unit: Option<String>,
+    /// `angle` for a constant angle (an incline α): it may then turn a frame (`"angle":
+    /// "alpha"`, `"theta - alpha"`) and appear in sin and cos; results hold cos α and sin α,
+    /// reduced like a coordinate's, with a zero rate. A plain scalar unless given.
+    #[serde(default, skip_serializing_if = "ParameterKind::is_scalar")]
+    pub kind: ParameterKind,
+}
+
+/// Kind of a constant parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ParameterKind {
+    /// Enters polynomially (a mass, a length, an inertia).
+    #[default]
+    Scalar,
+    /// A constant angle: enters polynomially as itself, and through its exact cos and sin.
+    Angle,
+}
+
+impl ParameterKind {
+    /// Whether this is the default kind (a plain scalar).
+    pub fn is_scalar(&self) -> bool {
+        *self == ParameterKind::Scalar
+    }
 }
 
 /// Kind of a time coordinate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum CoordinateKind {
-    /// Enters through cos q and sin q.
+    /// Enters through cos q and sin q, and as itself where an expression of the spec writes
+    /// it so (a disc's centre at `R*theta*x1`).
     Angle,
     /// Enters polynomially.
     Length,
@@ -379,7 +407,8 @@ pub struct CoordinateSpec {
     /// What it is.
     #[serde(default)]
     pub description: Option<String>,
-    /// Imposed constant rate: q̇ is this parameter expression and q̈ = 0.
+    /// Imposed constant rate: q̇ is this parameter expression and q̈ = 0 (a constant angle is
+    /// better declared as a parameter of kind `angle`).
     #[serde(default)]
     pub rate: Option<String>,
 }
@@ -406,7 +435,9 @@ pub struct FrameSpec {
 pub struct RotationSpec {
     /// `x`, `y` or `z` of the parent basis (`-z` for a negative orientation).
     pub axis: String,
-    /// A coordinate name or a constant angle expression.
+    /// The angle: `±q + c`, one angle coordinate q (coefficient ±1) plus a constant c made of
+    /// multiples of pi/2 and of angle parameters (`theta1`, `pi/2 - q1`, `theta - alpha`);
+    /// or constants only, with at least one angle parameter (`alpha`, an incline).
     pub angle: String,
 }
 

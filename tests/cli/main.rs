@@ -443,3 +443,39 @@ fn verify_takes_an_expression_that_starts_with_a_minus() {
     ]);
     assert!(o.status.success(), "{}{}", stdout(&o), stderr(&o));
 }
+
+#[test]
+fn a_coordinate_named_like_a_basis_vector_or_a_closed_loop_exits_2_naming_the_path() {
+    let d = tmp();
+    // sympy's mass–spring–damper names its coordinate x0, the name of a basis vector.
+    let clash = d.path().join("clash.json");
+    std::fs::write(
+        &clash,
+        r#"{"title": "t", "parameters": [{"name": "m"}],
+  "coordinates": [{"name": "x0", "kind": "length"}],
+  "frames": [{"name": "1", "parent": "0", "origin": "P"}],
+  "points": [{"name": "P", "from": "O0", "position": "x0*x0"}],
+  "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "P"}]}"#,
+    )
+    .unwrap();
+    let o = run(&["derive", clash.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("coordinates[0].name"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("basis vector"), "{}", stderr(&o));
+    assert!(stdout(&o).is_empty());
+    // A link that closes a loop (0–1–2 then 2–0).
+    let text = std::fs::read_to_string(spec()).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["links"].as_array_mut().unwrap().push(serde_json::json!(
+        {"name": "02", "kind": "ball", "between": ["0", "2"], "point": "O2"}));
+    let loop_spec = d.path().join("loop.json");
+    std::fs::write(&loop_spec, v.to_string()).unwrap();
+    let o = run(&["check", loop_spec.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("links[2].between"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("kinematic loops are not supported yet"),
+        "{}",
+        stderr(&o)
+    );
+}

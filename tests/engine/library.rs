@@ -378,6 +378,100 @@ fn inverted_pendulum_with_torsion_spring_by_hand() {
 }
 
 #[test]
+fn pendulum_on_a_slider_down_an_incline_of_constant_angle_parameter_by_hand() {
+    // Frame 1 turned by the constant angle parameter α (kind angle) about z0, frame 2 from 1
+    // by θ − α, so (x0, x2) = θ: x1 = (cos α, sin α), y1 = (−sin α, cos α) and x2 = (cos θ,
+    // sin θ), y2 = (−sin θ, cos θ) in B0. Ω(2/0) = θ̇ z0 (α has no rate).
+    // OA = x x1, AG = −l y2: V(G,2/0) = ẋ x1 + l θ̇ x2 and Γ(G,2/0) = ẍ x1 + l θ̈ x2 + l θ̇² y2
+    // (dx2/dt = θ̇ y2, dy2/dt = −θ̇ x2). On B1: x2·x1 = cos(θ − α), x2·y1 = sin(θ − α),
+    // y2·x1 = −sin(θ − α), y2·y1 = cos(θ − α), written expanded below:
+    // cos(θ − α) = cos θ cos α + sin θ sin α, sin(θ − α) = sin θ cos α − cos θ sin α.
+    // Isolate E, resultant on x1 (the slider transmits nothing along x1, weight
+    // −(M + m) g y0·x1 = −(M + m) g sin α):
+    // (M + m) ẍ + m l (θ̈ cos(θ − α) − θ̇² sin(θ − α)) = −(M + m) g sin α.
+    // Isolate 2, moment at A on z0 (A moves: δ(A) = δ(G) + AG ∧ m Γ(G), δ(G)·z0 = C2 θ̈):
+    // (−l y2 ∧ m ẍ x1)·z0 = m l ẍ cos(θ − α), (−l y2 ∧ m l θ̈ x2)·z0 = m l² θ̈; the pivot
+    // transmits no moment on z1 = z0 and the weight gives (−l y2 ∧ −m g y0)·z0 = −m g l sin θ:
+    // (C2 + m l²) θ̈ + m l cos(θ − α) ẍ = −m g l sin θ.
+    // Isolate E, resultant on y1: m Γ(G)·y1 = Y01 − (M + m) g cos α, so
+    // Y01 = (M + m) g cos α + m l (θ̈ sin(θ − α) + θ̇² cos(θ − α)).
+    // Ec = ½ M ẋ² + ½ m |V(G)|² + ½ C2 θ̇², |V(G)|² = ẋ² + l² θ̇² + 2 l ẋ θ̇ cos(θ − α).
+    let m = problem!("pendule_plan_incline");
+    let c = "(cos(theta)*cos(alpha) + sin(theta)*sin(alpha))";
+    let s = "(sin(theta)*cos(alpha) - cos(theta)*sin(alpha))";
+    torseur::assert_equivalent!(m, "Omega(2/0)", "[0, 0, dot(theta)]");
+    torseur::assert_equivalent!(
+        m,
+        "V(G,2/0) in B1",
+        &format!("[dot(x) + l*dot(theta)*{c}, l*dot(theta)*{s}, 0]")
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Gamma(G,2/0) in B1",
+        &format!(
+            "[ddot(x) + l*ddot(theta)*{c} - l*dot(theta)^2*{s}, \
+            l*ddot(theta)*{s} + l*dot(theta)^2*{c}, 0]"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(x)",
+        &format!(
+            "(M + m)*ddot(x) + m*l*(ddot(theta)*{c} - dot(theta)^2*{s}) = -(M + m)*g*sin(alpha)"
+        )
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta)",
+        &format!("(C2 + m*l^2)*ddot(theta) + m*l*{c}*ddot(x) = -m*g*l*sin(theta)")
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Y01",
+        &format!("(M + m)*g*cos(alpha) + m*l*(ddot(theta)*{s} + dot(theta)^2*{c})")
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Ec(E/0)",
+        &format!(
+            "1/2*M*dot(x)^2 + 1/2*m*(dot(x)^2 + l^2*dot(theta)^2 + \
+            2*l*dot(x)*dot(theta)*{c}) + 1/2*C2*dot(theta)^2"
+        )
+    );
+}
+
+#[test]
+fn winch_whose_load_rises_by_r_theta_by_hand() {
+    // OB = R x0 + (R θ − h) y0, the angle θ itself in a position: V(B,2/0) = R θ̇ y0,
+    // Γ(B,2/0) = R θ̈ y0. Composition: V(B,1/0) = θ̇ z0 ∧ OB = θ̇ (R y0 − (R θ − h) x0), so
+    // V(B,2/1) = V(B,2/0) − V(B,1/0) = (R θ − h) θ̇ x0.
+    // σ(O,E/0)·z0 = J θ̇ + (OB ∧ m R θ̇ y0)·z0 = (J + m R²) θ̇, δ(O,E/0)·z0 = (J + m R²) θ̈
+    // (O fixed). Isolate E, moment at O on z0: the pivot transmits none, the motor C_m, the
+    // drum's weight acts at O, the load's gives (OB ∧ −m g y0)·z0 = −m g R:
+    // (J + m R²) θ̈ = C_m − m g R. Resultant on x0: 0 = X01; on y0: m R θ̈ = Y01 − (M1 + m) g.
+    // Ec = ½ J θ̇² + ½ m R² θ̇².
+    let m = problem!("treuil");
+    torseur::assert_equivalent!(m, "V(B,2/0) in B0", "[0, R*dot(theta), 0]");
+    torseur::assert_equivalent!(m, "V(B,2/1) in B0", "[(R*theta - h)*dot(theta), 0, 0]");
+    torseur::assert_equivalent!(m, "sigma(O,E/0).z0", "(J + m*R^2)*dot(theta)");
+    torseur::assert_equivalent!(m, "delta(O,E/0).z0", "(J + m*R^2)*ddot(theta)");
+    torseur::assert_equivalent!(m, "eom(theta)", "(J + m*R^2)*ddot(theta) = C_m - m*g*R");
+    torseur::assert_equivalent!(m, "X01", "0");
+    torseur::assert_equivalent!(m, "Y01", "(M1 + m)*g + m*R*ddot(theta)");
+    torseur::assert_equivalent!(m, "Ec(E/0)", "1/2*(J + m*R^2)*dot(theta)^2");
+}
+
+#[test]
+fn pendule_plan_incline_agrees_with_the_float_backend() {
+    assert_checked(&problem!("pendule_plan_incline"));
+}
+
+#[test]
+fn treuil_agrees_with_the_float_backend() {
+    assert_checked(&problem!("treuil"));
+}
+
+#[test]
 fn pendule_sur_chariot_agrees_with_the_float_backend() {
     assert_checked(&problem!("pendule_sur_chariot"));
 }

@@ -91,3 +91,62 @@ fn with_friction_the_flyweight_settles_at_its_relative_equilibrium() {
     let free = simulate(&m, "sans_frottement").unwrap();
     assert!(run.max_abs("C_m").unwrap().0 < free.max_abs("C_m").unwrap().0);
 }
+
+#[test]
+fn a_pendulum_on_an_incline_of_angle_parameter_conserves_its_energy() {
+    // The incline α is a parameter of kind angle (cos α and sin α are set from its value).
+    // No friction: Ec + Ep is constant, both written by hand with plain floats:
+    // Ec = ½ (M + m) ẋ² + m l cos(θ − α) ẋ θ̇ + ½ (C2 + m l²) θ̇²,
+    // Ep = (M + m) g x sin α − m g l cos θ (heights y0·OA = x sin α, y0·AG = −l cos θ).
+    let m = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/pendule_plan_incline.json"
+    ))
+    .unwrap();
+    let values: std::collections::BTreeMap<String, f64> = [
+        ("M", 2.0),
+        ("m", 0.5),
+        ("l", 0.4),
+        ("A2", 0.01),
+        ("B2", 0.01),
+        ("C2", 0.02),
+        ("g", 9.81),
+        ("alpha", 0.3),
+    ]
+    .into_iter()
+    .map(|(k, v)| (k.to_string(), v))
+    .collect();
+    let sc = torseur::spec::wire::ScenarioSpec {
+        name: "glisse".into(),
+        description: None,
+        duration: 1.0,
+        values: values.clone(),
+        initial: [
+            ("x".to_string(), [0.0, 0.0]),
+            ("theta".to_string(), [0.5, 0.0]),
+        ]
+        .into(),
+        imposed: vec![],
+        record: vec![],
+    };
+    let run = simulate_with(&m, &sc, &[]).unwrap();
+    let v = |k: &str| values[k];
+    let energy = |k: usize| {
+        let col = |c: &str| run.column(c).unwrap()[k];
+        let (x, xd, th, thd) = (col("x"), col("dot(x)"), col("theta"), col("dot(theta)"));
+        let ec = 0.5 * (v("M") + v("m")) * xd * xd
+            + v("m") * v("l") * (th - v("alpha")).cos() * xd * thd
+            + 0.5 * (v("C2") + v("m") * v("l") * v("l")) * thd * thd;
+        let ep =
+            (v("M") + v("m")) * v("g") * x * v("alpha").sin() - v("m") * v("g") * v("l") * th.cos();
+        ec + ep
+    };
+    let last = run.times.len() - 1;
+    let x_end = run.column("x").unwrap()[last];
+    assert!(x_end < -1.0, "the slider goes down the slope: x = {x_end}");
+    let (e0, e1) = (energy(0), energy(last));
+    assert!(
+        (e1 - e0).abs() < 1e-7 * e0.abs().max(1.0),
+        "E0 = {e0}, E1 = {e1}"
+    );
+}

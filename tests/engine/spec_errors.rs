@@ -158,3 +158,133 @@ fn spec_expressions_of_absurd_degree_are_refused() {
     assert_eq!(path_of(&e), "points[3].position");
     assert!(e.to_string().contains("degree over 32"), "{e}");
 }
+
+fn message_of(e: &SpecError) -> String {
+    match e {
+        SpecError::Invalid { message, .. } | SpecError::Json { message, .. } => message.clone(),
+        SpecError::Io { message, .. } => message.clone(),
+    }
+}
+
+#[test]
+fn a_coordinate_named_like_a_basis_vector_is_refused_at_its_name() {
+    // sympy's mass–spring–damper names its coordinate x0: accepted, `x0*x0` then failed with
+    // « a basis vector cannot be raised to a power ». Refused at the name instead.
+    let spec = serde_json::json!({"title": "t",
+        "parameters": [{"name": "m"}],
+        "coordinates": [{"name": "x0", "kind": "length"}],
+        "frames": [{"name": "1", "parent": "0", "origin": "P"}],
+        "points": [{"name": "P", "from": "O0", "position": "x0*x0"}],
+        "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "P"}]});
+    let e = refused(spec.clone());
+    assert_eq!(path_of(&e), "coordinates[0].name", "{e}");
+    assert!(message_of(&e).contains("basis vector x of frame 0"), "{e}");
+    // The same for a parameter (frame 1 exists) and an action's unknown (frame 2 exists).
+    let mut v = base();
+    v["parameters"][0]["name"] = "y1".into();
+    let e = refused(v);
+    assert_eq!(path_of(&e), "parameters[0].name", "{e}");
+    assert!(message_of(&e).contains("basis vector y of frame 1"), "{e}");
+    let mut v = base();
+    v["actions"][0]["unknowns"][0] = "z2".into();
+    v["actions"][0]["moment"] = "z2*z0".into();
+    let e = refused(v);
+    assert_eq!(path_of(&e), "actions[0].unknowns[0]", "{e}");
+    // x3 names no basis vector here (no frame 3): still a valid coordinate name.
+    let mut ok = spec;
+    ok["coordinates"][0]["name"] = "x3".into();
+    ok["points"][0]["position"] = "x3*x0".into();
+    from_str(&ok.to_string()).expect("x3 is a fine name");
+}
+
+/// A four-bar linkage: crank 1 (pivot O), coupler 2 (pivot A), rocker 3 (pivot B), and the
+/// pivot C between 3 and the ground closes the loop.
+fn four_bar() -> serde_json::Value {
+    serde_json::json!({"title": "quadrilatère articulé",
+        "parameters": [{"name": "a"}, {"name": "b"}, {"name": "c"}, {"name": "d"},
+                       {"name": "m"}, {"name": "J"}],
+        "coordinates": [{"name": "theta1", "kind": "angle"}, {"name": "theta2", "kind": "angle"},
+                        {"name": "theta3", "kind": "angle"}],
+        "frames": [
+            {"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "theta1"}},
+            {"name": "2", "parent": "1", "rotation": {"axis": "z", "angle": "theta2"}, "origin": "A"},
+            {"name": "3", "parent": "2", "rotation": {"axis": "z", "angle": "theta3"}, "origin": "B"}],
+        "points": [{"name": "A", "from": "O0", "position": "a*x1"},
+                   {"name": "B", "from": "A", "position": "b*x2"},
+                   {"name": "C", "from": "B", "position": "c*x3"}],
+        "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "O0"},
+                   {"name": "2", "frame": "2", "mass": "m", "centre": "A"},
+                   {"name": "3", "frame": "3", "mass": "m", "centre": "B"}],
+        "links": [
+            {"name": "01", "kind": "pivot", "between": ["0", "1"], "point": "O0", "axis": "z0"},
+            {"name": "12", "kind": "pivot", "between": ["1", "2"], "point": "A", "axis": "z1"},
+            {"name": "23", "kind": "pivot", "between": ["2", "3"], "point": "B", "axis": "z2"},
+            {"name": "03", "kind": "pivot", "between": ["0", "3"], "point": "C", "axis": "z0"}],
+        "actions": [{"name": "moteur", "from": "0", "on": "1", "point": "O0",
+                     "moment": "C_m*z0", "unknowns": ["C_m"]}],
+        "pfd": [{"isolate": "1", "theorem": "moment", "point": "O0", "on": "z0"}]})
+}
+
+#[test]
+fn a_four_bar_linkage_is_refused_as_a_closed_kinematic_loop() {
+    // Was refused only indirectly (« the equation of motion still contains the unknown X30 »).
+    let e = refused(four_bar());
+    assert_eq!(path_of(&e), "links[3].between", "{e}");
+    let msg = message_of(&e);
+    assert!(msg.contains("closes a kinematic loop"), "{msg}");
+    assert!(msg.contains("links 01, 12, 23"), "{msg}");
+    assert!(msg.contains("not supported yet"), "{msg}");
+    // Without the closing link, the open chain is accepted.
+    let mut open = four_bar();
+    open["links"].as_array_mut().unwrap().pop();
+    from_str(&open.to_string()).expect("an open chain is a tree of links");
+    // Two links in parallel between the same solids (two bearings of a shaft) are one
+    // connection, not a loop.
+    let mut v = base();
+    v["links"].as_array_mut().unwrap().push(serde_json::json!(
+        {"name": "01b", "kind": "annular", "between": ["0", "1"], "point": "O1", "axis": "z0"}));
+    from_str(&v.to_string()).expect("two bearings between 0 and 1");
+}
+
+#[test]
+fn the_inertia_basis_message_has_no_run_of_spaces() {
+    // A string literal broken without `\` kept its indentation: « relative to the solid's
+    // frame ␣␣␣␣␣…2 ».
+    let mut v = base();
+    v["solids"][1]["inertia"]["basis"] = "1".into();
+    let e = refused(v);
+    assert_eq!(path_of(&e), "solids[1].inertia.basis", "{e}");
+    let msg = message_of(&e);
+    assert_eq!(
+        msg,
+        "the inertia matrix is given in basis 1 which turns relative to the solid's frame 2: \
+         give it in the solid's basis (or in a basis where it is of revolution about the \
+         relative rotation axis)"
+    );
+    assert!(!msg.contains("  "), "{msg}");
+}
+
+#[test]
+fn a_rotation_angle_that_is_not_plus_or_minus_one_coordinate_plus_a_constant_is_refused() {
+    let angle_of = |a: &str| {
+        let mut v = base();
+        v["frames"][1]["rotation"]["angle"] = a.into();
+        refused(v)
+    };
+    // A constant whose cos and sin are not exact rationals: declare it as a parameter.
+    let e = angle_of("theta2 + pi/6");
+    assert_eq!(path_of(&e), "frames[1].rotation.angle", "{e}");
+    assert!(message_of(&e).contains("multiple of pi/2"), "{e}");
+    assert!(message_of(&e).contains("\"kind\": \"angle\""), "{e}");
+    let e = angle_of("theta1 + theta2");
+    assert!(message_of(&e).contains("several coordinates"), "{e}");
+    let e = angle_of("2*theta2");
+    assert!(message_of(&e).contains("coefficient 1 or -1"), "{e}");
+    let e = angle_of("pi/2");
+    assert!(message_of(&e).contains("constant multiple of pi/2"), "{e}");
+    // A plain parameter is not an angle; a length coordinate neither.
+    let e = angle_of("theta2 + L1");
+    assert!(message_of(&e).contains("`L1` is not an angle"), "{e}");
+    let e = angle_of("beta");
+    assert!(message_of(&e).contains("unknown name `beta`"), "{e}");
+}
