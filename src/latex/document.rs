@@ -105,12 +105,26 @@ pub struct Display {
     pub value: Value,
 }
 
-/// The document being written and the record of its displayed formulas.
+/// A formula inside the text (`$…$`) that shows a value: a point's position
+/// (`\overrightarrow{OA} = …`, over the bases it is written in; its value in the ground basis)
+/// or a solid's mass.
+#[derive(Debug, Clone)]
+pub struct Inline {
+    /// `OA` for a position, `m(2)` for a mass.
+    pub what: String,
+    /// The math exactly as printed between the dollars.
+    pub latex: String,
+    /// The engine's value.
+    pub value: Value,
+}
+
+/// The document being written and the record of its formulas.
 struct Doc<'m> {
     m: &'m Mechanism,
     style: VectorStyle,
     o: String,
     displays: Vec<Display>,
+    inline: Vec<Inline>,
 }
 
 impl Doc<'_> {
@@ -357,6 +371,8 @@ pub struct AnswerKey {
     pub figures: Vec<(String, crate::simulate::Figure)>,
     /// Every displayed formula, in the order of the document, with the value it shows.
     pub displays: Vec<Display>,
+    /// The formulas in the text that carry a value (positions of the points, masses).
+    pub inline: Vec<Inline>,
 }
 
 /// [`answer_key_with`], with the figures of the simulations the questions show.
@@ -370,6 +386,7 @@ pub fn answer_key_document(
         style,
         o: String::new(),
         displays: Vec::new(),
+        inline: Vec::new(),
     };
     let o = &mut doc.o;
     o.push_str(
@@ -429,6 +446,7 @@ pub fn answer_key_document(
             }
         }
     }
+    let mut positions = Vec::new();
     for p in m.points.ids().skip(1) {
         let pt = m.points.get(p);
         let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
@@ -460,22 +478,37 @@ pub fn answer_key_document(
         } else {
             parts.join(" + ").replace("+ -", "- ")
         };
-        let _ = writeln!(
-            o,
-            "\\item $\\overrightarrow{{{}{}}} = {rhs}$.",
+        let math = format!(
+            "\\overrightarrow{{{}{}}} = {rhs}",
             point(from),
             point(&pt.name)
         );
+        let _ = writeln!(o, "\\item ${math}$.");
+        let ground = m.frames.ground();
+        positions.push(Inline {
+            what: format!("{from}{}", pt.name),
+            latex: math,
+            value: Value::Vector {
+                basis: ground,
+                components: pt.offset.express_in(&m.frames, ground),
+            },
+        });
     }
     o.push_str("\\end{itemize}\n");
+    doc.inline.extend(positions);
     for b in &m.bodies {
+        let mass = super::expr(&b.mass);
         let _ = write!(
             doc.o,
-            "Solide ${}$ : masse ${}$, centre d'inertie ${}$",
+            "Solide ${}$ : masse ${mass}$, centre d'inertie ${}$",
             name(&b.name),
-            super::expr(&b.mass),
             point(m.point_name(b.centre))
         );
+        doc.inline.push(Inline {
+            what: format!("m({})", b.name),
+            latex: mass,
+            value: Value::Scalar(b.mass.clone()),
+        });
         match &b.inertia {
             Some(i) => {
                 doc.o.push_str(", opérateur d'inertie\n");
@@ -518,6 +551,7 @@ pub fn answer_key_document(
         tex: doc.o,
         figures,
         displays: doc.displays,
+        inline: doc.inline,
     })
 }
 

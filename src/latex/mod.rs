@@ -7,7 +7,7 @@
 mod document;
 
 pub use document::{
-    AnswerKey, Display, DisplayRole, answer_key, answer_key_document, answer_key_with,
+    AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
 };
 
 use crate::derivation::Value;

@@ -105,7 +105,8 @@ pub fn value_json(m: &Mechanism, v: &Value) -> Json {
 
 /// The manifest of an answer key (`answer-key --manifest`): every displayed formula, what it
 /// shows, under which hypothesis, its LaTeX exactly as printed and the engine's value, so that
-/// a reader of the LaTeX can prove each line equal to the engine's result.
+/// a reader of the LaTeX can prove each line equal to the engine's result; then the formulas
+/// of the text that carry a value (positions, in the ground basis; masses).
 pub fn manifest_json(m: &Mechanism, key: &crate::latex::AnswerKey) -> Json {
     use crate::latex::DisplayRole;
     let displays: Vec<Json> = key
@@ -122,7 +123,12 @@ pub fn manifest_json(m: &Mechanism, key: &crate::latex::AnswerKey) -> Json {
                    "latex": d.latex, "value": value_json(m, &d.value)})
         })
         .collect();
-    json!({"title": m.title, "displays": displays})
+    let inline: Vec<Json> = key
+        .inline
+        .iter()
+        .map(|f| json!({"what": f.what, "latex": f.latex, "value": value_json(m, &f.value)}))
+        .collect();
+    json!({"title": m.title, "displays": displays, "inline": inline})
 }
 
 /// The JSON report of `torseur derive --json`.

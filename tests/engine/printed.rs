@@ -438,6 +438,32 @@ impl Ctx<'_> {
     }
 }
 
+impl Ctx<'_> {
+    /// A vector printed over the basis vectors of any frames, expressed in the ground basis.
+    fn any_basis(&self, t: &[Tok]) -> Result<[Expr; 3], String> {
+        let (_, seen) = self.read(t, &|_, _| "0")?;
+        let mut v = torseur::vector::Vector::zero();
+        let mut done: Vec<(char, String)> = Vec::new();
+        for (a, f) in seen {
+            if done.contains(&(a, f.clone())) {
+                continue;
+            }
+            let g = f.clone();
+            let pick = move |ax: char, fr: &str| if ax == a && fr == g { "1" } else { "0" };
+            let (c, _) = self.read(t, &pick)?;
+            let frame = self.m.frames.find(&f).ok_or(format!("no frame {f}"))?;
+            let axis = match a {
+                'x' => torseur::frame::Axis::X,
+                'y' => torseur::frame::Axis::Y,
+                _ => torseur::frame::Axis::Z,
+            };
+            v = v.add(&torseur::vector::Vector::along(frame, axis, c));
+            done.push((a, f));
+        }
+        Ok(v.express_in(&self.m.frames, self.m.frames.ground()))
+    }
+}
+
 /// Splits an environment's content (`\begin{env}{spec}? … \end{env}`) starting at `t[0]`
 /// into rows of cells, and returns what follows it.
 fn environment(t: &[Tok]) -> (Vec<Vec<Vec<Tok>>>, &[Tok]) {
@@ -637,6 +663,32 @@ fn every_printed_formula_is_the_engines_value() {
             "{}: the document's displays are exactly the recorded ones",
             path.display()
         );
+        for f in &key.inline {
+            assert!(
+                key.tex.contains(&format!("${}$", f.latex)),
+                "{}: {} is not in the text as recorded",
+                path.display(),
+                f.what
+            );
+            let t = tokenize(&f.latex);
+            let ok = match &f.value {
+                Value::Scalar(e) => ctx.scalar(&t).map(|g| &g == e),
+                Value::Vector { components, .. } => {
+                    let eq = t.iter().position(|x| *x == Tok::Sym('=')).unwrap();
+                    ctx.any_basis(&t[eq + 1..]).map(|g| &g == components)
+                }
+                _ => unreachable!("inline formulas are scalars and positions"),
+            };
+            assert_eq!(
+                ok,
+                Ok(true),
+                "{}: {} printed {}",
+                path.display(),
+                f.what,
+                f.latex
+            );
+            proven += 1;
+        }
         let mut fast: HashMap<String, Value> = HashMap::new();
         for d in &key.displays {
             if let Err(e) = prove(&ctx, &d.latex, &d.value) {
@@ -720,4 +772,65 @@ fn the_reader_catches_a_wrong_sign() {
     assert!(prove(&ctx, "v &= \\left(L_{1} + L_{2}\\right)\\vec{x}_{2}", &vec).is_ok());
     assert!(prove(&ctx, "v &= L_{1} + L_{2}\\,\\vec{x}_{2}", &vec).is_err());
     assert!(prove(&ctx, "v &= \\left(L_{1} + L_{2}\\right)\\vec{x}_{1}", &vec).is_err());
+}
+
+/// The strings of a JSON value (`canonical` or `presentation`), in `Value::exprs` order.
+fn json_strings(v: &serde_json::Value, form: &str) -> Vec<String> {
+    let flat = |x: &serde_json::Value| -> Vec<String> {
+        let mut out = Vec::new();
+        let mut stack = vec![x];
+        while let Some(y) = stack.pop() {
+            match y {
+                serde_json::Value::String(s) => out.push(s.clone()),
+                serde_json::Value::Array(a) => stack.extend(a.iter().rev()),
+                _ => panic!("unexpected {y}"),
+            }
+        }
+        out
+    };
+    match v["kind"].as_str().unwrap() {
+        "torsor" => {
+            let mut r = flat(&v["resultant"][form]);
+            r.extend(flat(&v["moment"][form]));
+            r
+        }
+        _ => flat(&v[form]),
+    }
+}
+
+/// The text and JSON outputs of `derive` (canonical and presentation strings) read back by
+/// the engine's parser equal the fast route's values, for every quantity of every spec,
+/// under every hypothesis.
+#[test]
+fn every_derived_text_and_json_string_is_the_engines_value() {
+    let mut n = 0;
+    for path in spec_paths() {
+        let m = torseur::spec::load(&path).unwrap();
+        let ds = torseur::derivation::derive_values(&m, &m.quantities).unwrap();
+        let j = torseur::output::derive_json(&m, &ds);
+        for (d, jq) in ds.iter().zip(j["quantities"].as_array().unwrap()) {
+            let mut cases = vec![(d.value.clone(), &jq["value"])];
+            for h in &m.hypotheses {
+                cases.push((d.value.under(h), &jq["hypotheses"][&h.name]));
+            }
+            for (v, jv) in cases {
+                for form in ["canonical", "presentation"] {
+                    let got = json_strings(jv, form);
+                    let want = v.exprs();
+                    assert_eq!(got.len(), want.len(), "{}: {}", path.display(), d.quantity);
+                    for (g, w) in got.iter().zip(want) {
+                        let e = m.reg.parse(g).unwrap_or_else(|e| panic!("{g}: {e}"));
+                        assert!(
+                            &e == w,
+                            "{}: {} ({form}) printed {g}, engine {w}",
+                            path.display(),
+                            d.quantity
+                        );
+                        n += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(n > 500, "only {n} strings read back");
 }
