@@ -61,6 +61,10 @@ enum Command {
         /// as subscript (long vectors stay sums).
         #[arg(long, value_enum, default_value_t = Vectors::Sum)]
         vectors: Vectors,
+        /// Also write every displayed formula as JSON: what it shows, under which hypothesis,
+        /// its LaTeX exactly as printed, and the engine's value (canonical text).
+        #[arg(long)]
+        manifest: Option<PathBuf>,
     },
     /// Numbers: evaluates quantities at the values of a JSON file.
     Eval {
@@ -394,6 +398,7 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             output,
             pdf,
             vectors,
+            manifest,
         } => {
             let m = load(&spec)?;
             let style = match vectors {
@@ -402,6 +407,12 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             };
             let key = torseur::latex::answer_key_document(&m, style).map_err(bad_input)?;
             let figures = render_figures(&key)?;
+            let manifest_bytes = serde_json::to_string_pretty(&output::manifest_json(&m, &key))
+                .map_err(bad_input)?
+                + "\n";
+            if let Some(path) = &manifest {
+                write_atomic(path, manifest_bytes.as_bytes())?;
+            }
             let tex = key.tex;
             match output {
                 None => {

@@ -76,6 +76,72 @@ fn align(body: &str) -> String {
     format!("\\begin{{align*}}\n{body}\n\\end{{align*}}\n")
 }
 
+/// What a displayed formula shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DisplayRole {
+    /// An inertia operator as given by the spec, or its particular form under a hypothesis.
+    Inertia,
+    /// An intermediate step of a derivation.
+    Step,
+    /// The result of a question (a requested quantity).
+    Result,
+    /// An equation of a question (`C_m = …`), solved for an unknown.
+    Equation,
+}
+
+/// One displayed formula of the answer key: the LaTeX exactly as printed (the body of its
+/// `align*`), what it shows, and the engine's value it must equal.
+#[derive(Debug, Clone)]
+pub struct Display {
+    /// What is shown.
+    pub role: DisplayRole,
+    /// The quantity in the notation (`delta(O2,2/0).x2`), the step's label, or `I(G2,2)`.
+    pub what: String,
+    /// The hypothesis it is specialised under, if any.
+    pub hypothesis: Option<String>,
+    /// The LaTeX, exactly as in the document.
+    pub latex: String,
+    /// The engine's value.
+    pub value: Value,
+}
+
+/// A formula inside the text (`$…$`) that shows a value: a point's position
+/// (`\overrightarrow{OA} = …`, over the bases it is written in; its value in the ground basis)
+/// or a solid's mass.
+#[derive(Debug, Clone)]
+pub struct Inline {
+    /// `OA` for a position, `m(2)` for a mass.
+    pub what: String,
+    /// The math exactly as printed between the dollars.
+    pub latex: String,
+    /// The engine's value.
+    pub value: Value,
+}
+
+/// The document being written and the record of its formulas.
+struct Doc<'m> {
+    m: &'m Mechanism,
+    style: VectorStyle,
+    o: String,
+    displays: Vec<Display>,
+    inline: Vec<Inline>,
+}
+
+impl Doc<'_> {
+    /// Writes `lhs = value` as a display and records it.
+    fn show(&mut self, role: DisplayRole, what: &str, hyp: Option<&str>, lhs: &str, v: &Value) {
+        let body = value_styled(self.m, self.style, lhs, v);
+        self.o.push_str(&align(&body));
+        self.displays.push(Display {
+            role,
+            what: what.to_string(),
+            hypothesis: hyp.map(str::to_string),
+            latex: body,
+            value: v.clone(),
+        });
+    }
+}
+
 fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) -> String {
     let axes = ['x', 'y', 'z'];
     match s {
@@ -104,9 +170,10 @@ fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) ->
 
 /// A hypothesis: its statement, the zeros its symmetries give (each justified by its plane or
 /// axis), the particular inertia matrices, and what it sets.
-fn hypothesis_block(o: &mut String, m: &Mechanism, h: &Hypothesis, hs: &HypothesisSpec) {
+fn hypothesis_block(d: &mut Doc, h: &Hypothesis, hs: &HypothesisSpec) {
+    let m = d.m;
     let _ = writeln!(
-        o,
+        d.o,
         "\\subsection*{{Hypothèse {}}}\n{}\n",
         escape_text(&h.name),
         h.text.as_deref().map(escape_text).unwrap_or_default()
@@ -127,7 +194,7 @@ fn hypothesis_block(o: &mut String, m: &Mechanism, h: &Hypothesis, hs: &Hypothes
                 .map(|t| format!("${}$", t.trim_start_matches('-')))
                 .collect();
             let _ = writeln!(
-                o,
+                d.o,
                 "Pour le solide ${}$, {} : {}{}.\n",
                 name(sname),
                 symmetry_text(m, &bn, *s, &centre),
@@ -144,15 +211,14 @@ fn hypothesis_block(o: &mut String, m: &Mechanism, h: &Hypothesis, hs: &Hypothes
             );
         }
         let under = Value::Matrix(i.clone()).under(h);
-        if let Value::Matrix(iu) = under {
-            let _ = writeln!(
-                o,
-                "\\[ I_{{{}}}({}) = {} \\]",
-                point(&centre),
-                name(sname),
-                super::matrix(m, &iu)
-            );
-        }
+        let lhs = format!("I_{{{}}}({})", point(&centre), name(sname));
+        d.show(
+            DisplayRole::Inertia,
+            &format!("I({centre},{sname})"),
+            Some(&h.name),
+            &lhs,
+            &under,
+        );
     }
     if !h.effects.is_empty() {
         let eff: Vec<String> = h
@@ -165,21 +231,27 @@ fn hypothesis_block(o: &mut String, m: &Mechanism, h: &Hypothesis, hs: &Hypothes
                 format!("${lx} = {rx}$")
             })
             .collect();
-        let _ = writeln!(o, "Sous cette hypothèse : {}.\n", eff.join(", "));
+        let _ = writeln!(d.o, "Sous cette hypothèse : {}.\n", eff.join(", "));
     }
 }
 
 /// A quantity: the steps of the methodology, the result, and the result under each hypothesis.
-fn quantity_block(o: &mut String, m: &Mechanism, style: VectorStyle, d: &Derivation) {
-    let value = |m: &Mechanism, lhs: &str, v: &Value| value_styled(m, style, lhs, v);
+fn quantity_block(doc: &mut Doc, d: &Derivation) {
+    let m = doc.m;
     let q = &d.quantity;
     let title = quantity_title(q);
-    let _ = writeln!(o, "\\subsection*{{${title}$}}");
+    let _ = writeln!(doc.o, "\\subsection*{{${title}$}}");
     for s in &d.steps {
-        let _ = writeln!(o, "{} :", theorem_text(&s.theorem));
-        o.push_str(&align(&value(m, &step_lhs(&s.kind), &s.value)));
+        let _ = writeln!(doc.o, "{} :", theorem_text(&s.theorem));
+        doc.show(
+            DisplayRole::Step,
+            &s.label,
+            None,
+            &step_lhs(&s.kind),
+            &s.value,
+        );
     }
-    o.push_str("Résultat :\n");
+    doc.o.push_str("Résultat :\n");
     let lhs = match &q.kind {
         k if k.is_torsor() => quantity(k),
         QuantityKind::Inertia { .. } => quantity(&q.kind),
@@ -187,37 +259,33 @@ fn quantity_block(o: &mut String, m: &Mechanism, style: VectorStyle, d: &Derivat
         QuantityKind::Eom(_) => "0".to_string(),
         _ => title.clone(),
     };
-    o.push_str(&align(&value(m, &lhs, &d.value)));
+    let id = q.to_string();
+    doc.show(DisplayRole::Result, &id, None, &lhs, &d.value);
     for h in &m.hypotheses {
         let under = d.value.under(h);
         if under.exprs() == d.value.exprs() {
             let _ = writeln!(
-                o,
+                doc.o,
                 "Sous l'hypothèse {}, le résultat est inchangé.\n",
                 escape_text(&h.name)
             );
             continue;
         }
-        let _ = writeln!(o, "Sous l'hypothèse {} :", escape_text(&h.name));
-        o.push_str(&align(&value(m, &lhs, &under)));
+        let _ = writeln!(doc.o, "Sous l'hypothèse {} :", escape_text(&h.name));
+        doc.show(DisplayRole::Result, &id, Some(&h.name), &lhs, &under);
     }
 }
 
 /// A question: its statement, the teacher's answer text, the hypotheses it discusses, its
 /// quantities derived step by step, and its equations written out.
-fn question_block(
-    o: &mut String,
-    m: &Mechanism,
-    style: VectorStyle,
-    qs: &QuestionSpec,
-) -> Result<(), crate::derivation::ResolveError> {
-    let value = |m: &Mechanism, lhs: &str, v: &Value| value_styled(m, style, lhs, v);
-    let _ = writeln!(o, "\\section*{{{}}}", escape_text(&qs.title));
+fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivation::ResolveError> {
+    let m = doc.m;
+    let _ = writeln!(doc.o, "\\section*{{{}}}", escape_text(&qs.title));
     if let Some(st) = &qs.statement {
-        let _ = writeln!(o, "\\emph{{{}}}\n", escape_text(st));
+        let _ = writeln!(doc.o, "\\emph{{{}}}\n", escape_text(st));
     }
     if let Some(a) = &qs.answer {
-        let _ = writeln!(o, "{}\n", escape_text(a));
+        let _ = writeln!(doc.o, "{}\n", escape_text(a));
     }
     for name in &qs.hypotheses {
         if let Some((h, hs)) = m
@@ -226,7 +294,7 @@ fn question_block(
             .zip(&m.spec.hypotheses)
             .find(|(h, _)| &h.name == name)
         {
-            hypothesis_block(o, m, h, hs);
+            hypothesis_block(doc, h, hs);
         }
     }
     for text in &qs.quantities {
@@ -234,7 +302,7 @@ fn question_block(
             quantity: text.clone(),
             message: e.to_string(),
         })?;
-        quantity_block(o, m, style, &derive(m, &q)?);
+        quantity_block(doc, &derive(m, &q)?);
     }
     for e in &qs.equations {
         let q = Quantity::parse(&e.quantity).map_err(|er| crate::derivation::ResolveError {
@@ -243,15 +311,22 @@ fn question_block(
         })?;
         let d = derive(m, &q)?;
         if let Some(r) = &e.reason {
-            let _ = writeln!(o, "{} :", escape_text(r));
+            let _ = writeln!(doc.o, "{} :", escape_text(r));
         }
         let lhs = format!("{} = {}", name(&e.lhs), quantity_title(&q));
-        o.push_str(&align(&value(m, &lhs, &d.value)));
+        let id = q.to_string();
+        doc.show(DisplayRole::Equation, &id, None, &lhs, &d.value);
         for h in &m.hypotheses {
             let under = d.value.under(h);
             if under.exprs() != d.value.exprs() {
-                let _ = writeln!(o, "Sous l'hypothèse {} :", escape_text(&h.name));
-                o.push_str(&align(&value(m, &name(&e.lhs), &under)));
+                let _ = writeln!(doc.o, "Sous l'hypothèse {} :", escape_text(&h.name));
+                doc.show(
+                    DisplayRole::Equation,
+                    &id,
+                    Some(&h.name),
+                    &name(&e.lhs),
+                    &under,
+                );
             }
         }
     }
@@ -294,6 +369,10 @@ pub struct AnswerKey {
     pub tex: String,
     /// File name (`simulation-q7.png`) and figure.
     pub figures: Vec<(String, crate::simulate::Figure)>,
+    /// Every displayed formula, in the order of the document, with the value it shows.
+    pub displays: Vec<Display>,
+    /// The formulas in the text that carry a value (positions of the points, masses).
+    pub inline: Vec<Inline>,
 }
 
 /// [`answer_key_with`], with the figures of the simulations the questions show.
@@ -302,7 +381,14 @@ pub fn answer_key_document(
     style: VectorStyle,
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
     let mut figures = Vec::new();
-    let mut o = String::new();
+    let mut doc = Doc {
+        m,
+        style,
+        o: String::new(),
+        displays: Vec::new(),
+        inline: Vec::new(),
+    };
+    let o = &mut doc.o;
     o.push_str(
         "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\
          \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
@@ -360,6 +446,7 @@ pub fn answer_key_document(
             }
         }
     }
+    let mut positions = Vec::new();
     for p in m.points.ids().skip(1) {
         let pt = m.points.get(p);
         let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
@@ -391,58 +478,81 @@ pub fn answer_key_document(
         } else {
             parts.join(" + ").replace("+ -", "- ")
         };
-        let _ = writeln!(
-            o,
-            "\\item $\\overrightarrow{{{}{}}} = {rhs}$.",
+        let math = format!(
+            "\\overrightarrow{{{}{}}} = {rhs}",
             point(from),
             point(&pt.name)
         );
+        let _ = writeln!(o, "\\item ${math}$.");
+        let ground = m.frames.ground();
+        positions.push(Inline {
+            what: format!("{from}{}", pt.name),
+            latex: math,
+            value: Value::Vector {
+                basis: ground,
+                components: pt.offset.express_in(&m.frames, ground),
+            },
+        });
     }
     o.push_str("\\end{itemize}\n");
+    doc.inline.extend(positions);
     for b in &m.bodies {
+        let mass = super::expr(&b.mass);
         let _ = write!(
-            o,
-            "Solide ${}$ : masse ${}$, centre d'inertie ${}$",
+            doc.o,
+            "Solide ${}$ : masse ${mass}$, centre d'inertie ${}$",
             name(&b.name),
-            super::expr(&b.mass),
             point(m.point_name(b.centre))
         );
+        doc.inline.push(Inline {
+            what: format!("m({})", b.name),
+            latex: mass,
+            value: Value::Scalar(b.mass.clone()),
+        });
         match &b.inertia {
             Some(i) => {
-                let _ = writeln!(
-                    o,
-                    ", opérateur d'inertie\n\\[ I_{{{}}}({}) = {} \\]",
-                    point(m.point_name(i.point)),
-                    name(&b.name),
-                    super::matrix(m, i)
+                doc.o.push_str(", opérateur d'inertie\n");
+                let lhs = format!("I_{{{}}}({})", point(m.point_name(i.point)), name(&b.name));
+                let what = format!("I({},{})", m.point_name(i.point), b.name);
+                doc.show(
+                    DisplayRole::Inertia,
+                    &what,
+                    None,
+                    &lhs,
+                    &Value::Matrix(i.clone()),
                 );
             }
-            None => o.push_str(" (masse ponctuelle).\n\n"),
+            None => doc.o.push_str(" (masse ponctuelle).\n\n"),
         }
     }
 
     if m.spec.questions.is_empty() {
         if !m.hypotheses.is_empty() {
-            o.push_str("\\section*{Hypothèses}\n");
+            doc.o.push_str("\\section*{Hypothèses}\n");
             for (h, hs) in m.hypotheses.iter().zip(&m.spec.hypotheses) {
-                hypothesis_block(&mut o, m, h, hs);
+                hypothesis_block(&mut doc, h, hs);
             }
         }
-        o.push_str("\\section*{Résultats}\n");
+        doc.o.push_str("\\section*{Résultats}\n");
         for q in &m.quantities {
-            quantity_block(&mut o, m, style, &derive(m, q)?);
+            quantity_block(&mut doc, &derive(m, q)?);
         }
     } else {
         for (k, qs) in m.spec.questions.iter().enumerate() {
-            question_block(&mut o, m, style, qs)?;
+            question_block(&mut doc, qs)?;
             if let Some(sim) = &qs.simulation {
                 let file = format!("simulation-{}.png", k + 1);
-                figures.push((file.clone(), simulation_block(&mut o, m, sim, &file)?));
+                figures.push((file.clone(), simulation_block(&mut doc.o, m, sim, &file)?));
             }
         }
     }
-    o.push_str("\\end{document}\n");
-    Ok(AnswerKey { tex: o, figures })
+    doc.o.push_str("\\end{document}\n");
+    Ok(AnswerKey {
+        tex: doc.o,
+        figures,
+        displays: doc.displays,
+        inline: doc.inline,
+    })
 }
 
 /// A number as the French text writes it: three significant digits, decimal comma.

@@ -6,7 +6,9 @@
 
 mod document;
 
-pub use document::{AnswerKey, answer_key, answer_key_document, answer_key_with};
+pub use document::{
+    AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
+};
 
 use crate::derivation::Value;
 use crate::expr::print::TermParts;
@@ -262,10 +264,12 @@ fn factors(reg: &Registry, t: &TermParts) -> Vec<String> {
     for &(q, is_cos, k) in &t.trig {
         let fun = if is_cos { "\\cos" } else { "\\sin" };
         let arg = name(&reg.coord_info(q).name);
+        // `\sin q_{1}` needs the space (`\sinq` is an undefined command); `\sin\theta` does not.
+        let sep = if arg.starts_with('\\') { "" } else { " " };
         f.push(if k == 1 {
-            format!("{fun}{arg}")
+            format!("{fun}{sep}{arg}")
         } else {
-            format!("{fun}^{{{k}}}{arg}")
+            format!("{fun}^{{{k}}}{sep}{arg}")
         });
     }
     for &(q, k) in &t.values {
@@ -334,6 +338,18 @@ pub fn expr_plain(e: &Expr) -> String {
     join(&parts)
 }
 
+/// A group printed as a plain sum `a + b` (factor +1, no rate, several terms): whatever
+/// multiplies it needs parentheses.
+fn is_bare_sum(g: &crate::expr::print::PresentationGroup) -> bool {
+    let (neg, n, d) = g.factor.coef_text();
+    !neg && n == "1"
+        && d == "1"
+        && g.factor.params.is_empty()
+        && g.factor.trig.is_empty()
+        && g.kinematic.is_empty()
+        && g.rest.nterms() > 1
+}
+
 /// The groups of the presentation form, each as (negative, LaTeX).
 fn groups(p: &Presentation) -> Vec<(bool, String)> {
     let reg: &Rc<Registry> = p.registry();
@@ -349,7 +365,9 @@ fn groups(p: &Presentation) -> Vec<(bool, String)> {
             }
             if !rest_is_one {
                 let r = expr_plain(&g.rest);
-                f.push(if g.rest.nterms() > 1 && !bare {
+                // A sum keeps its parentheses when anything multiplies it, and when the
+                // group's minus sign stands in front of it: -(a + b), never -a + b.
+                f.push(if g.rest.nterms() > 1 && (!bare || neg) {
                     format!("\\left({r}\\right)")
                 } else {
                     r
@@ -498,7 +516,12 @@ pub fn vector_sum(
         }
         let bv = basis_vector(axes[k], basis_frame);
         let ls = expr_lines(&c[k], max);
-        let single_term = c[k].presentation().groups.len() == 1;
+        // One product (a group that is not a bare sum) multiplies the basis vector without
+        // parentheses; anything else is parenthesised.
+        let single_term = match c[k].presentation().groups.as_slice() {
+            [g] => !is_bare_sum(g),
+            _ => false,
+        };
         let sign = if first { "" } else { "+ " };
         if ls.len() == 1 && single_term {
             let s = &ls[0];

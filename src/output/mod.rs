@@ -103,6 +103,34 @@ pub fn value_json(m: &Mechanism, v: &Value) -> Json {
     }
 }
 
+/// The manifest of an answer key (`answer-key --manifest`): every displayed formula, what it
+/// shows, under which hypothesis, its LaTeX exactly as printed and the engine's value, so that
+/// a reader of the LaTeX can prove each line equal to the engine's result; then the formulas
+/// of the text that carry a value (positions, in the ground basis; masses).
+pub fn manifest_json(m: &Mechanism, key: &crate::latex::AnswerKey) -> Json {
+    use crate::latex::DisplayRole;
+    let displays: Vec<Json> = key
+        .displays
+        .iter()
+        .map(|d| {
+            let role = match d.role {
+                DisplayRole::Inertia => "inertia",
+                DisplayRole::Step => "step",
+                DisplayRole::Result => "result",
+                DisplayRole::Equation => "equation",
+            };
+            json!({"role": role, "what": d.what, "hypothesis": d.hypothesis,
+                   "latex": d.latex, "value": value_json(m, &d.value)})
+        })
+        .collect();
+    let inline: Vec<Json> = key
+        .inline
+        .iter()
+        .map(|f| json!({"what": f.what, "latex": f.latex, "value": value_json(m, &f.value)}))
+        .collect();
+    json!({"title": m.title, "displays": displays, "inline": inline})
+}
+
 /// The JSON report of `torseur derive --json`.
 pub fn derive_json(m: &Mechanism, ds: &[Derivation]) -> Json {
     let qs: Vec<Json> = ds

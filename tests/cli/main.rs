@@ -479,3 +479,98 @@ fn a_coordinate_named_like_a_basis_vector_or_a_closed_loop_exits_2_naming_the_pa
         stderr(&o)
     );
 }
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/specs")
+        .join(name)
+}
+
+fn pdflatex(tex: &Path) -> Output {
+    Command::new("pdflatex")
+        .args(["-interaction=nonstopmode", "-halt-on-error"])
+        .arg(tex.file_name().unwrap())
+        .current_dir(tex.parent().unwrap())
+        .output()
+        .expect("pdflatex runs (scripts/setup installs it)")
+}
+
+/// Regression: a coordinate named `q1` or `q` printed `\sinq_{1}` and `\sinq`, an undefined
+/// control sequence. Latin, Greek, multi-letter and subscripted names in every LaTeX output.
+#[test]
+fn latin_angle_names_give_latex_that_compiles() {
+    let d = tmp();
+    let s = fixture("noms_latins_grecs.json");
+    let tex = d.path().join("derive.tex");
+    let o = run(&[
+        "derive",
+        s.to_str().unwrap(),
+        "--latex",
+        tex.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&tex).unwrap();
+    assert!(
+        text.contains("\\sin q_{1}") && text.contains("\\cos q"),
+        "{text}"
+    );
+    let c = pdflatex(&tex);
+    assert!(c.status.success(), "{}", stdout(&c));
+    let key = d.path().join("key.tex");
+    let o = run(&[
+        "answer-key",
+        s.to_str().unwrap(),
+        "-o",
+        key.to_str().unwrap(),
+        "--pdf",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(d.path().join("key.pdf").exists());
+    // verify's LaTeX difference uses the same names.
+    let o = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "delta(B,3/0).z0",
+        "-e",
+        "m_b*mu^2*ddot(q1)",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let out = stdout(&o);
+    for bad in ["\\sinq", "\\cosq"] {
+        assert!(!out.contains(bad), "{out}");
+    }
+}
+
+/// `answer-key --manifest` lists every displayed formula with its LaTeX exactly as printed
+/// (each is found in the .tex) and the engine's value in the plain syntax.
+#[test]
+fn answer_key_manifest_lists_every_display_as_printed() {
+    let d = tmp();
+    let tex = d.path().join("key.tex");
+    let man = d.path().join("key.json");
+    let o = run(&[
+        "answer-key",
+        spec().to_str().unwrap(),
+        "-o",
+        tex.to_str().unwrap(),
+        "--manifest",
+        man.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&tex).unwrap();
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&man).unwrap()).unwrap();
+    let ds = v["displays"].as_array().unwrap();
+    assert_eq!(ds.len(), text.matches("\\begin{align*}").count());
+    for disp in ds {
+        let latex = disp["latex"].as_str().unwrap();
+        assert!(text.contains(&format!("\\begin{{align*}}\n{latex}\n\\end{{align*}}")));
+        assert!(disp["what"].is_string() && disp["role"].is_string());
+        assert!(disp["value"]["kind"].is_string());
+    }
+    assert!(
+        ds.iter()
+            .any(|d| d["what"] == "delta(O2,2/0).x2" && d["role"] == "result")
+    );
+}

@@ -29,11 +29,23 @@ fn golden(name: &str, actual: &str) {
     }
 }
 
+/// Every spec's answer key is pinned (its layout; its signs are proven in `printed`).
 #[test]
-fn regulator_answer_key_matches_the_golden_file() {
-    let m = regulator();
-    let tex = torseur::latex::answer_key(&m).unwrap();
-    golden("regulateur_centrifuge.tex", &tex);
+fn every_answer_key_matches_its_golden_file() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations");
+    let mut specs: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    specs.sort();
+    assert!(specs.len() >= 10);
+    for p in specs {
+        let m = torseur::spec::load(&p).unwrap();
+        let tex = torseur::latex::answer_key(&m).unwrap();
+        let stem = p.file_stem().unwrap().to_str().unwrap();
+        golden(&format!("{stem}.tex"), &tex);
+    }
 }
 
 #[test]

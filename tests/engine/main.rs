@@ -11,6 +11,7 @@ mod kinematics;
 mod latex;
 mod library;
 mod pfd;
+mod printed;
 mod properties;
 mod regulator;
 mod simulate;

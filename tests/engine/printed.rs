@@ -1,0 +1,836 @@
+//! What is printed is the engine's value. Every displayed formula of every answer key is read
+//! back from its LaTeX by a reader written here, which shares no code with the printer
+//! (`src/latex`): it tokenises the math, turns it into the engine's plain syntax, and the
+//! engine's parser decides exact equality with the value the line claims to show. The values
+//! of the results are themselves re-derived by the fast route (`derive_values`), not taken
+//! from the document.
+
+use std::collections::HashMap;
+use torseur::derivation::Value;
+use torseur::expr::Expr;
+use torseur::mechanism::Mechanism;
+
+#[derive(Debug, Clone, PartialEq)]
+enum Tok {
+    /// `\name`, or `\,` `\\` `\{` (one non-letter character).
+    Cmd(String),
+    Letter(char),
+    Digit(char),
+    Sym(char),
+}
+
+fn tokenize(s: &str) -> Vec<Tok> {
+    let cs: Vec<char> = s.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < cs.len() {
+        let c = cs[i];
+        if c == '\\' {
+            let mut j = i + 1;
+            while j < cs.len() && cs[j].is_ascii_alphabetic() {
+                j += 1;
+            }
+            if j == i + 1 {
+                j = (i + 2).min(cs.len());
+            }
+            out.push(Tok::Cmd(cs[i + 1..j].iter().collect()));
+            i = j;
+            continue;
+        }
+        if c.is_whitespace() {
+        } else if c.is_ascii_alphabetic() {
+            out.push(Tok::Letter(c));
+        } else if c.is_ascii_digit() {
+            out.push(Tok::Digit(c));
+        } else {
+            out.push(Tok::Sym(c));
+        }
+        i += 1;
+    }
+    out
+}
+
+fn is_cmd(t: Option<&Tok>, name: &str) -> bool {
+    matches!(t, Some(Tok::Cmd(c)) if c == name)
+}
+
+const GREEK: &[&str] = &[
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+    "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",
+    "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega",
+];
+
+/// Reads LaTeX math into the engine's syntax. Basis vectors are replaced by what `basis`
+/// says (`1` for the one whose component is wanted, `0` for the others): the printed vector
+/// is linear in its basis vectors.
+struct Reader<'a> {
+    t: &'a [Tok],
+    i: usize,
+    names: &'a HashMap<String, String>,
+    basis: &'a dyn Fn(char, &str) -> &'static str,
+    seen: Vec<(char, String)>,
+}
+
+impl Reader<'_> {
+    fn peek(&self) -> Option<&Tok> {
+        self.t.get(self.i)
+    }
+
+    fn next(&mut self) -> Result<Tok, String> {
+        let t = self.t.get(self.i).cloned().ok_or("unexpected end")?;
+        self.i += 1;
+        Ok(t)
+    }
+
+    fn expect(&mut self, t: Tok) -> Result<(), String> {
+        let got = self.next()?;
+        if got == t {
+            Ok(())
+        } else {
+            Err(format!(
+                "expected {t:?}, found {got:?} at token {}",
+                self.i - 1
+            ))
+        }
+    }
+
+    /// Spacing that means nothing (or an implicit product).
+    fn skip_space(&mut self) {
+        while let Some(Tok::Cmd(c)) = self.peek() {
+            if [",", ";", "!", "quad", "qquad", " "].contains(&c.as_str()) {
+                self.i += 1;
+            } else {
+                break;
+            }
+        }
+    }
+
+    /// The raw text of a `{…}` group of letters and digits (a subscript, a \mathrm name).
+    fn raw_group(&mut self) -> Result<String, String> {
+        let mut s = String::new();
+        match self.next()? {
+            Tok::Sym('{') => loop {
+                match self.next()? {
+                    Tok::Sym('}') => break,
+                    Tok::Letter(c) | Tok::Digit(c) => s.push(c),
+                    Tok::Cmd(c) if GREEK.contains(&c.as_str()) => s.push_str(&c),
+                    t => return Err(format!("unexpected {t:?} in a name")),
+                }
+            },
+            Tok::Letter(c) | Tok::Digit(c) => s.push(c),
+            t => return Err(format!("unexpected {t:?} after `_`")),
+        }
+        Ok(s)
+    }
+
+    /// A subscript, if one follows.
+    fn subscript(&mut self) -> Result<String, String> {
+        if self.peek() == Some(&Tok::Sym('_')) {
+            self.i += 1;
+            self.raw_group()
+        } else {
+            Ok(String::new())
+        }
+    }
+
+    fn identifier(&self, written: &str) -> Result<String, String> {
+        self.names
+            .get(written)
+            .cloned()
+            .ok_or_else(|| format!("`{written}` names nothing of the spec"))
+    }
+
+    /// A name's head: a Latin letter, a Greek letter, or `\mathrm{…}`.
+    fn head(&mut self) -> Result<String, String> {
+        match self.next()? {
+            Tok::Letter(c) => Ok(c.to_string()),
+            Tok::Cmd(c) if GREEK.contains(&c.as_str()) => Ok(c),
+            Tok::Cmd(c) if c == "mathrm" => self.raw_group(),
+            t => Err(format!("expected a name, found {t:?}")),
+        }
+    }
+
+    fn name(&mut self) -> Result<String, String> {
+        let h = self.head()?;
+        let s = self.subscript()?;
+        self.identifier(&format!("{h}{s}"))
+    }
+
+    fn is_end(&self) -> bool {
+        match self.peek() {
+            None => true,
+            Some(Tok::Sym(c)) => matches!(c, '}' | ')' | '&' | '+' | '-' | '='),
+            Some(Tok::Cmd(c)) if c == "Big" => self.t.get(self.i + 1) == Some(&Tok::Sym(')')),
+            Some(Tok::Cmd(c)) => matches!(c.as_str(), "right" | "\\" | "end"),
+            _ => false,
+        }
+    }
+
+    /// sum := [±] product (± product)*
+    fn sum(&mut self) -> Result<String, String> {
+        let mut out = String::new();
+        loop {
+            self.skip_space();
+            let sign = match self.peek() {
+                Some(Tok::Sym('+')) => {
+                    self.i += 1;
+                    "+"
+                }
+                Some(Tok::Sym('-')) => {
+                    self.i += 1;
+                    "-"
+                }
+                _ if out.is_empty() => "+",
+                _ => break,
+            };
+            self.skip_space();
+            let p = self.product()?;
+            out.push_str(&format!(" {sign} ({p})"));
+        }
+        if out.is_empty() {
+            return Err(format!("empty sum at token {}", self.i));
+        }
+        Ok(format!("({out})"))
+    }
+
+    fn product(&mut self) -> Result<String, String> {
+        let mut fs = Vec::new();
+        loop {
+            self.skip_space();
+            if self.is_end() {
+                break;
+            }
+            fs.push(self.power()?);
+        }
+        if fs.is_empty() {
+            return Err(format!("empty product at token {}", self.i));
+        }
+        Ok(fs.join("*"))
+    }
+
+    fn exponent(&mut self) -> Result<Option<String>, String> {
+        if self.peek() != Some(&Tok::Sym('^')) {
+            return Ok(None);
+        }
+        self.i += 1;
+        Ok(Some(self.raw_group()?))
+    }
+
+    fn power(&mut self) -> Result<String, String> {
+        let base = self.primary()?;
+        Ok(match self.exponent()? {
+            Some(k) => format!("({base})^{k}"),
+            None => base,
+        })
+    }
+
+    /// A group closed by the given closing tokens.
+    fn closed(&mut self, close: &[Tok]) -> Result<String, String> {
+        let s = self.sum()?;
+        for t in close {
+            self.expect(t.clone())?;
+        }
+        Ok(s)
+    }
+
+    fn primary(&mut self) -> Result<String, String> {
+        match self.peek().cloned().ok_or("unexpected end")? {
+            Tok::Digit(_) => {
+                let mut n = String::new();
+                while let Some(Tok::Digit(d)) = self.peek() {
+                    n.push(*d);
+                    self.i += 1;
+                }
+                Ok(n)
+            }
+            Tok::Letter(_) => self.name(),
+            Tok::Sym('(') => {
+                self.i += 1;
+                self.closed(&[Tok::Sym(')')])
+            }
+            Tok::Sym('{') => {
+                self.i += 1;
+                self.closed(&[Tok::Sym('}')])
+            }
+            Tok::Cmd(c) => {
+                self.i += 1;
+                match c.as_str() {
+                    "left" => {
+                        self.expect(Tok::Sym('('))?;
+                        self.closed(&[Tok::Cmd("right".into()), Tok::Sym(')')])
+                    }
+                    "Big" => {
+                        self.expect(Tok::Sym('('))?;
+                        self.closed(&[Tok::Cmd("Big".into()), Tok::Sym(')')])
+                    }
+                    "frac" => {
+                        self.expect(Tok::Sym('{'))?;
+                        let n = self.closed(&[Tok::Sym('}')])?;
+                        self.expect(Tok::Sym('{'))?;
+                        let d = self.closed(&[Tok::Sym('}')])?;
+                        Ok(format!("({n}/{d})"))
+                    }
+                    "sin" | "cos" => {
+                        let k = self.exponent()?;
+                        let arg = match self.peek() {
+                            Some(Tok::Sym('(')) | Some(Tok::Sym('{')) => self.primary()?,
+                            Some(Tok::Cmd(c)) if c == "left" => self.primary()?,
+                            _ => self.name()?,
+                        };
+                        let f = format!("{c}({arg})");
+                        Ok(match k {
+                            Some(k) => format!("{f}^{k}"),
+                            None => f,
+                        })
+                    }
+                    "dot" | "ddot" | "dddot" => {
+                        let h = match self.next()? {
+                            Tok::Sym('{') => {
+                                let h = self.head()?;
+                                self.expect(Tok::Sym('}'))?;
+                                h
+                            }
+                            t => return Err(format!("\\{c} of {t:?}")),
+                        };
+                        let s = self.subscript()?;
+                        let q = self.identifier(&format!("{h}{s}"))?;
+                        Ok(format!("{c}({q})"))
+                    }
+                    "vec" => {
+                        let axis = self.raw_group()?;
+                        if axis == "0" {
+                            return Ok("0".into());
+                        }
+                        let f = self.subscript()?;
+                        let a = axis.chars().next().ok_or("empty \\vec")?;
+                        self.seen.push((a, f.clone()));
+                        Ok((self.basis)(a, &f).to_string())
+                    }
+                    g if GREEK.contains(&g) => {
+                        self.i -= 1;
+                        self.name()
+                    }
+                    "mathrm" => {
+                        self.i -= 1;
+                        self.name()
+                    }
+                    other => Err(format!("unknown command \\{other}")),
+                }
+            }
+            t => Err(format!("unexpected {t:?} at token {}", self.i)),
+        }
+    }
+}
+
+/// The equations of an `align*` body: (left side, right side) as tokens; `&\phantom{=}`
+/// rows continue the previous right side. Rows inside environments are kept whole.
+fn equations(body: &str) -> Vec<(Vec<Tok>, Vec<Tok>)> {
+    let toks = tokenize(body);
+    let mut rows: Vec<Vec<Tok>> = vec![vec![]];
+    let mut env = 0;
+    for t in toks {
+        match &t {
+            Tok::Cmd(c) if c == "begin" => env += 1,
+            Tok::Cmd(c) if c == "end" => env -= 1,
+            Tok::Cmd(c) if c == "\\" && env == 0 => {
+                rows.push(vec![]);
+                continue;
+            }
+            _ => {}
+        }
+        rows.last_mut().unwrap().push(t);
+    }
+    let mut eqs: Vec<(Vec<Tok>, Vec<Tok>)> = Vec::new();
+    for r in rows {
+        let phantom = [
+            Tok::Sym('&'),
+            Tok::Cmd("phantom".into()),
+            Tok::Sym('{'),
+            Tok::Sym('='),
+            Tok::Sym('}'),
+        ];
+        if r.starts_with(&phantom) {
+            eqs.last_mut()
+                .expect("a continuation row follows an equation")
+                .1
+                .extend_from_slice(&r[phantom.len()..]);
+            continue;
+        }
+        let at = (0..r.len().saturating_sub(1))
+            .find(|&k| r[k] == Tok::Sym('&') && r[k + 1] == Tok::Sym('='))
+            .unwrap_or_else(|| panic!("a row without `&=`: {r:?}"));
+        eqs.push((r[..at].to_vec(), r[at + 2..].to_vec()));
+    }
+    eqs
+}
+
+struct Ctx<'a> {
+    m: &'a Mechanism,
+    names: HashMap<String, String>,
+}
+
+impl Ctx<'_> {
+    fn new(m: &Mechanism) -> Ctx<'_> {
+        let mut names = HashMap::new();
+        let ids = m
+            .reg
+            .parameters()
+            .iter()
+            .chain(m.reg.unknowns())
+            .cloned()
+            .chain(m.reg.coordinates().iter().map(|c| c.name.clone()));
+        for n in ids {
+            let written: String = n.chars().filter(|&c| c != '_').collect();
+            if let Some(other) = names.insert(written.clone(), n.clone()) {
+                panic!("`{n}` and `{other}` print alike ({written})");
+            }
+        }
+        Ctx { m, names }
+    }
+
+    /// A scalar read from tokens, with basis vectors set by `basis`.
+    fn read(
+        &self,
+        t: &[Tok],
+        basis: &dyn Fn(char, &str) -> &'static str,
+    ) -> Result<(Expr, Vec<(char, String)>), String> {
+        let mut r = Reader {
+            t,
+            i: 0,
+            names: &self.names,
+            basis,
+            seen: vec![],
+        };
+        let text = r.sum()?;
+        if r.i != t.len() {
+            return Err(format!("trailing {:?}", &t[r.i..]));
+        }
+        let e = self
+            .m
+            .reg
+            .parse(&text)
+            .map_err(|e| format!("{text}: {e}"))?;
+        Ok((e, r.seen))
+    }
+
+    fn scalar(&self, t: &[Tok]) -> Result<Expr, String> {
+        let (e, seen) = self.read(t, &|_, _| "0")?;
+        if !seen.is_empty() {
+            return Err(format!("a scalar printed with basis vectors {seen:?}"));
+        }
+        Ok(e)
+    }
+
+    /// The components of a vector printed as a sum over the basis vectors of `frame`.
+    fn vector(&self, t: &[Tok], frame: &str) -> Result<[Expr; 3], String> {
+        let axes = ['x', 'y', 'z'];
+        let mut out: Vec<Expr> = Vec::new();
+        for &a in &axes {
+            let f = frame.to_string();
+            let pick = move |ax: char, fr: &str| if ax == a && fr == f { "1" } else { "0" };
+            let (e, seen) = self.read(t, &pick)?;
+            if let Some(bad) = seen.iter().find(|(_, fr)| fr != frame) {
+                return Err(format!("basis vector {bad:?} outside the basis {frame}"));
+            }
+            out.push(e);
+        }
+        Ok([out[0].clone(), out[1].clone(), out[2].clone()])
+    }
+}
+
+impl Ctx<'_> {
+    /// A vector printed over the basis vectors of any frames, expressed in the ground basis.
+    fn any_basis(&self, t: &[Tok]) -> Result<[Expr; 3], String> {
+        let (_, seen) = self.read(t, &|_, _| "0")?;
+        let mut v = torseur::vector::Vector::zero();
+        let mut done: Vec<(char, String)> = Vec::new();
+        for (a, f) in seen {
+            if done.contains(&(a, f.clone())) {
+                continue;
+            }
+            let g = f.clone();
+            let pick = move |ax: char, fr: &str| if ax == a && fr == g { "1" } else { "0" };
+            let (c, _) = self.read(t, &pick)?;
+            let frame = self.m.frames.find(&f).ok_or(format!("no frame {f}"))?;
+            let axis = match a {
+                'x' => torseur::frame::Axis::X,
+                'y' => torseur::frame::Axis::Y,
+                _ => torseur::frame::Axis::Z,
+            };
+            v = v.add(&torseur::vector::Vector::along(frame, axis, c));
+            done.push((a, f));
+        }
+        Ok(v.express_in(&self.m.frames, self.m.frames.ground()))
+    }
+}
+
+/// Splits an environment's content (`\begin{env}{spec}? … \end{env}`) starting at `t[0]`
+/// into rows of cells, and returns what follows it.
+fn environment(t: &[Tok]) -> (Vec<Vec<Vec<Tok>>>, &[Tok]) {
+    assert!(is_cmd(t.first(), "begin"), "expected \\begin: {t:?}");
+    // Skip `{name}` and, for an array, its column spec.
+    let mut i = 1;
+    let mut groups = 0;
+    while groups < 2 {
+        if t[i] == Tok::Sym('}') {
+            groups += 1;
+            if !matches!(t.get(i + 1), Some(Tok::Sym('{'))) {
+                break;
+            }
+        }
+        i += 1;
+    }
+    i += 1;
+    let mut rows = vec![vec![vec![]]];
+    let mut depth = 0;
+    while !(depth == 0 && is_cmd(t.get(i), "end")) {
+        match &t[i] {
+            Tok::Cmd(c) if c == "begin" => depth += 1,
+            Tok::Cmd(c) if c == "end" => depth -= 1,
+            _ => {}
+        }
+        match &t[i] {
+            Tok::Cmd(c) if c == "\\" && depth == 0 => rows.push(vec![vec![]]),
+            Tok::Sym('&') if depth == 0 => rows.last_mut().unwrap().push(vec![]),
+            tok => rows
+                .last_mut()
+                .unwrap()
+                .last_mut()
+                .unwrap()
+                .push(tok.clone()),
+        }
+        i += 1;
+    }
+    // `\end{name}`
+    i += 1;
+    while t[i] != Tok::Sym('}') {
+        i += 1;
+    }
+    (rows, &t[i + 1..])
+}
+
+/// The frame named by a `_{\mathcal{B}_{2}}` subscript.
+fn basis_subscript(t: &[Tok]) -> String {
+    let s: String = t
+        .iter()
+        .filter_map(|x| match x {
+            Tok::Letter(c) | Tok::Digit(c) => Some(*c),
+            _ => None,
+        })
+        .collect();
+    s.strip_prefix('B').unwrap_or(&s).to_string()
+}
+
+/// Proves that a displayed formula equals its value; returns what is wrong otherwise.
+fn prove(ctx: &Ctx, latex: &str, v: &Value) -> Result<(), String> {
+    let m = ctx.m;
+    let eqs = equations(latex);
+    let same = |what: &str, got: &Expr, want: &Expr| -> Result<(), String> {
+        if got == want {
+            Ok(())
+        } else {
+            Err(format!("{what}: printed {got}, engine {want}"))
+        }
+    };
+    match v {
+        Value::Scalar(e) => {
+            let [(_, rhs)] = eqs.as_slice() else {
+                return Err(format!("{} equations for a scalar", eqs.len()));
+            };
+            same("scalar", &ctx.scalar(rhs)?, e)
+        }
+        Value::Vector { basis, components } => {
+            let [(_, rhs)] = eqs.as_slice() else {
+                return Err(format!("{} equations for a vector", eqs.len()));
+            };
+            let f = m.frame_name(*basis);
+            let got = if is_cmd(rhs.first(), "begin") {
+                let (rows, rest) = environment(rhs);
+                if basis_subscript(rest) != f {
+                    return Err(format!("column in basis {rest:?}, engine {f}"));
+                }
+                let c: Result<Vec<Expr>, String> = rows.iter().map(|r| ctx.scalar(&r[0])).collect();
+                c?
+            } else {
+                ctx.vector(rhs, f)?.to_vec()
+            };
+            for k in 0..3 {
+                same(&format!("component {k}"), &got[k], &components[k])?;
+            }
+            Ok(())
+        }
+        Value::Matrix(i) => {
+            let (_, rhs) = &eqs[0];
+            let (rows, rest) = environment(rhs);
+            let f = m.frame_name(i.basis);
+            if basis_subscript(rest) != f {
+                return Err(format!("matrix in basis {rest:?}, engine {f}"));
+            }
+            for r in 0..3 {
+                for c in 0..3 {
+                    let cell = &rows[r][c];
+                    let def = eqs[1..].iter().find(|(l, _)| l == cell);
+                    let got = ctx.scalar(def.map(|d| &d.1[..]).unwrap_or(cell))?;
+                    same(&format!("entry ({r},{c})"), &got, &i.matrix[r][c])?;
+                }
+            }
+            Ok(())
+        }
+        Value::Torsor {
+            basis,
+            resultant,
+            moment,
+            ..
+        } => {
+            let f = m.frame_name(*basis);
+            let (res, mom) = if eqs.len() == 2 {
+                (ctx.vector(&eqs[0].1, f)?, ctx.vector(&eqs[1].1, f)?)
+            } else {
+                let rhs = &eqs[0].1;
+                // \left\{ \begin{array}{c|c} … \end{array} \right\}_{O,\,B}
+                assert!(is_cmd(rhs.first(), "left"), "torsor opens with \\left\\{{");
+                let (rows, rest) = environment(&rhs[2..]);
+                if basis_subscript(&rest[2..]).rsplit(',').next() != Some(f) {
+                    let b = basis_subscript(&rest[2..]);
+                    if !b.ends_with(f) {
+                        return Err(format!("torsor in basis {b}, engine {f}"));
+                    }
+                }
+                let col = |k: usize| -> Result<[Expr; 3], String> {
+                    Ok([
+                        ctx.scalar(&rows[0][k])?,
+                        ctx.scalar(&rows[1][k])?,
+                        ctx.scalar(&rows[2][k])?,
+                    ])
+                };
+                (col(0)?, col(1)?)
+            };
+            for k in 0..3 {
+                same(&format!("resultant {k}"), &res[k], &resultant[k])?;
+                same(&format!("moment {k}"), &mom[k], &moment[k])?;
+            }
+            Ok(())
+        }
+    }
+}
+
+/// The bodies of the `align*` displays of a document, in order.
+fn align_bodies(tex: &str) -> Vec<&str> {
+    let (open, close) = ("\\begin{align*}\n", "\n\\end{align*}");
+    let mut out = Vec::new();
+    let mut rest = tex;
+    while let Some(a) = rest.find(open) {
+        let from = &rest[a + open.len()..];
+        let b = from.find(close).expect("align* closes");
+        out.push(&from[..b]);
+        rest = &from[b..];
+    }
+    out
+}
+
+fn spec_paths() -> Vec<std::path::PathBuf> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations");
+    let mut v: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    v.sort();
+    v.push(dir.join("chain/chain_2.json"));
+    v.push(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/specs/noms_latins_grecs.json"),
+    );
+    v
+}
+
+/// Every displayed formula of every answer key in `derivations/`, proven equal to its value;
+/// every `align*` of the document is one of them; every result is the fast route's value.
+#[test]
+fn every_printed_formula_is_the_engines_value() {
+    let mut proven = 0;
+    for path in spec_paths() {
+        let m = torseur::spec::load(&path).unwrap();
+        let key = torseur::latex::answer_key_document(&m, torseur::latex::VectorStyle::Sum)
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let ctx = Ctx::new(&m);
+        let bodies = align_bodies(&key.tex);
+        assert_eq!(
+            bodies,
+            key.displays
+                .iter()
+                .map(|d| d.latex.as_str())
+                .collect::<Vec<_>>(),
+            "{}: the document's displays are exactly the recorded ones",
+            path.display()
+        );
+        for f in &key.inline {
+            assert!(
+                key.tex.contains(&format!("${}$", f.latex)),
+                "{}: {} is not in the text as recorded",
+                path.display(),
+                f.what
+            );
+            let t = tokenize(&f.latex);
+            let ok = match &f.value {
+                Value::Scalar(e) => ctx.scalar(&t).map(|g| &g == e),
+                Value::Vector { components, .. } => {
+                    let eq = t.iter().position(|x| *x == Tok::Sym('=')).unwrap();
+                    ctx.any_basis(&t[eq + 1..]).map(|g| &g == components)
+                }
+                _ => unreachable!("inline formulas are scalars and positions"),
+            };
+            assert_eq!(
+                ok,
+                Ok(true),
+                "{}: {} printed {}",
+                path.display(),
+                f.what,
+                f.latex
+            );
+            proven += 1;
+        }
+        let mut fast: HashMap<String, Value> = HashMap::new();
+        for d in &key.displays {
+            if let Err(e) = prove(&ctx, &d.latex, &d.value) {
+                panic!(
+                    "{}: {} ({:?}, under {:?}) is printed wrong: {e}\n{}",
+                    path.display(),
+                    d.what,
+                    d.role,
+                    d.hypothesis,
+                    d.latex
+                );
+            }
+            if matches!(
+                d.role,
+                torseur::latex::DisplayRole::Result | torseur::latex::DisplayRole::Equation
+            ) {
+                let q = torseur::quantity::Quantity::parse(&d.what).unwrap();
+                let v = fast.entry(d.what.clone()).or_insert_with(|| {
+                    torseur::derivation::derive_values(&m, std::slice::from_ref(&q))
+                        .unwrap()
+                        .remove(0)
+                        .value
+                });
+                let want = match &d.hypothesis {
+                    Some(h) => v.under(m.hypotheses.iter().find(|x| &x.name == h).unwrap()),
+                    None => v.clone(),
+                };
+                assert!(
+                    want.exprs() == d.value.exprs(),
+                    "{}: {} under {:?}: the key's value is not the fast route's",
+                    path.display(),
+                    d.what,
+                    d.hypothesis
+                );
+            }
+            proven += 1;
+        }
+    }
+    eprintln!("{proven} displayed formulas proven");
+    assert!(proven > 300, "only {proven} formulas read back");
+}
+
+/// The reader can fail: a sign flipped in the printed LaTeX, a dropped parenthesis, a wrong
+/// basis are each caught.
+#[test]
+fn the_reader_catches_a_wrong_sign() {
+    let m = super::regulator();
+    let ctx = Ctx::new(&m);
+    let e = m.reg.parse("-(A2 + L2^2*m2)*ddot(theta2) + g").unwrap();
+    let v = Value::Scalar(e);
+    assert!(
+        prove(
+            &ctx,
+            "x &= -\\left(A_{2} + m_{2}\\,L_{2}^{2}\\right)\\,\\ddot{\\theta}_{2} + g",
+            &v
+        )
+        .is_ok()
+    );
+    assert!(
+        prove(
+            &ctx,
+            "x &= -A_{2} + m_{2}\\,L_{2}^{2}\\,\\ddot{\\theta}_{2} + g",
+            &v
+        )
+        .is_err()
+    );
+    assert!(
+        prove(
+            &ctx,
+            "x &= -A_{2}\\,\\ddot{\\theta}_{2} - m_{2}\\,L_{2}^{2}\\,\\ddot{\\theta}_{2} - g",
+            &v
+        )
+        .is_err()
+    );
+    let f2 = m.frames.find("2").unwrap();
+    let z = m.reg.zero();
+    let vec = Value::Vector {
+        basis: f2,
+        components: [m.reg.parse("L1 + L2").unwrap(), z.clone(), z],
+    };
+    assert!(prove(&ctx, "v &= \\left(L_{1} + L_{2}\\right)\\vec{x}_{2}", &vec).is_ok());
+    assert!(prove(&ctx, "v &= L_{1} + L_{2}\\,\\vec{x}_{2}", &vec).is_err());
+    assert!(prove(&ctx, "v &= \\left(L_{1} + L_{2}\\right)\\vec{x}_{1}", &vec).is_err());
+}
+
+/// The strings of a JSON value (`canonical` or `presentation`), in `Value::exprs` order.
+fn json_strings(v: &serde_json::Value, form: &str) -> Vec<String> {
+    let flat = |x: &serde_json::Value| -> Vec<String> {
+        let mut out = Vec::new();
+        let mut stack = vec![x];
+        while let Some(y) = stack.pop() {
+            match y {
+                serde_json::Value::String(s) => out.push(s.clone()),
+                serde_json::Value::Array(a) => stack.extend(a.iter().rev()),
+                _ => panic!("unexpected {y}"),
+            }
+        }
+        out
+    };
+    match v["kind"].as_str().unwrap() {
+        "torsor" => {
+            let mut r = flat(&v["resultant"][form]);
+            r.extend(flat(&v["moment"][form]));
+            r
+        }
+        _ => flat(&v[form]),
+    }
+}
+
+/// The text and JSON outputs of `derive` (canonical and presentation strings) read back by
+/// the engine's parser equal the fast route's values, for every quantity of every spec,
+/// under every hypothesis.
+#[test]
+fn every_derived_text_and_json_string_is_the_engines_value() {
+    let mut n = 0;
+    for path in spec_paths() {
+        let m = torseur::spec::load(&path).unwrap();
+        let ds = torseur::derivation::derive_values(&m, &m.quantities).unwrap();
+        let j = torseur::output::derive_json(&m, &ds);
+        for (d, jq) in ds.iter().zip(j["quantities"].as_array().unwrap()) {
+            let mut cases = vec![(d.value.clone(), &jq["value"])];
+            for h in &m.hypotheses {
+                cases.push((d.value.under(h), &jq["hypotheses"][&h.name]));
+            }
+            for (v, jv) in cases {
+                for form in ["canonical", "presentation"] {
+                    let got = json_strings(jv, form);
+                    let want = v.exprs();
+                    assert_eq!(got.len(), want.len(), "{}: {}", path.display(), d.quantity);
+                    for (g, w) in got.iter().zip(want) {
+                        let e = m.reg.parse(g).unwrap_or_else(|e| panic!("{g}: {e}"));
+                        assert!(
+                            &e == w,
+                            "{}: {} ({form}) printed {g}, engine {w}",
+                            path.display(),
+                            d.quantity
+                        );
+                        n += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(n > 500, "only {n} strings read back");
+}
