@@ -15,11 +15,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "/derivations/regulateur_centrifuge.json"
     ))?;
 
-    // A student's answer to Q4, under the hypotheses of Q2 (symmetries, constant rates).
+    // A student's answer to Q4, under the hypotheses H2 (symmetries, constant rates).
     let student = "m2*L2*sin(theta2)*(L1 + L2*cos(theta2))*dot(theta1)^2 \
-                   + 1/2*(C2 - B2)*sin(2*theta2)*dot(theta1)^2";
-    torseur::assert_equivalent!(m, "delta(O2,2/0).x2", under "Q2", student);
-    println!("Q4 (under Q2): the student's answer is exactly right");
+                   + 1/2*(C2 - B2)*sin(2*theta2)*dot(theta1)^2 + D2*cos(2*theta2)*dot(theta1)^2";
+    torseur::assert_equivalent!(m, "delta(O2,2/0).x2", under "H2", student);
+    println!("Q4 (under H2): the student's answer is exactly right");
 
     // A vector, component by component in the quantity's basis.
     torseur::assert_equivalent!(
@@ -33,7 +33,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         &m,
         "delta(O2,2/0).x2",
         "(A2 + m2*L2^2)*ddot(theta2)",
-        Some("Q1"),
+        Some("H1"),
     )?;
     assert!(!wrong.is_equivalent());
     println!("{wrong}");

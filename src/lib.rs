@@ -12,13 +12,13 @@
 //! let m = spec::load("derivations/regulateur_centrifuge.json")?;
 //! let d = derive(&m, &Quantity::parse("delta(O2,2/0).x2")?)?;
 //!
-//! // Under Q1 (the symmetries zero the products of inertia), compare with the hand-written
+//! // Under H1 (the planes of symmetry zero E2 and F2; D2 stays), compare with the hand-written
 //! // result: the test is exact, modulo sin² + cos² = 1, sin 2θ = 2 sin θ cos θ, any order.
-//! let q1 = m.hypotheses.iter().find(|h| h.name == "Q1").unwrap();
+//! let q1 = m.hypotheses.iter().find(|h| h.name == "H1").unwrap();
 //! let Value::Scalar(delta) = d.value.under(q1) else { unreachable!() };
 //! let by_hand = m.reg.parse(
 //!     "(A2 + m2*L2^2)*ddot(theta2) \
-//!      + (m2*L1*L2*sin(theta2) + 1/2*(C2 - B2 + m2*L2^2)*sin(2*theta2))*dot(theta1)^2",
+//!      + (m2*L1*L2*sin(theta2) + 1/2*(C2 - B2 + m2*L2^2)*sin(2*theta2) + D2*cos(2*theta2))*dot(theta1)^2",
 //! )?;
 //! assert_eq!(delta, by_hand);
 //! # Ok::<(), Box<dyn std::error::Error>>(())

@@ -187,8 +187,8 @@ pub fn verify(
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// torseur::assert_equivalent!(m, "V(G2,2/0) in B2",
 ///     "[-(L1 + L2*cos(theta2))*dot(theta1), 0, L2*dot(theta2)]");
-/// torseur::assert_equivalent!(m, "delta(O2,2/0).x2", under "Q2",
-///     "sin(theta2)*(m2*L1*L2 + (C2 - B2 + m2*L2^2)*cos(theta2))*dot(theta1)^2");
+/// torseur::assert_equivalent!(m, "delta(O2,2/0).x2", under "H2",
+///     "(sin(theta2)*(m2*L1*L2 + (C2 - B2 + m2*L2^2)*cos(theta2)) + D2*cos(2*theta2))*dot(theta1)^2");
 /// ```
 #[macro_export]
 macro_rules! assert_equivalent {

@@ -352,7 +352,7 @@ impl NumericModel {
     /// let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
     /// let spec = serde_json::from_str(&text).unwrap();
     /// let model = torseur::numeric::NumericModel::new(&spec).unwrap();
-    /// let s = model.sample_under(&mut rand_chacha::ChaCha8Rng::seed_from_u64(1), "Q2").unwrap();
+    /// let s = model.sample_under(&mut rand_chacha::ChaCha8Rng::seed_from_u64(1), "H2").unwrap();
     /// assert_eq!(s.coordinates["theta1"][2], 0.0);
     /// assert!(s.parameters["F2"].abs() < 1e-12);
     /// ```

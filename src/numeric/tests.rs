@@ -432,26 +432,27 @@ fn regulator_rotor_moments_by_hand() {
 }
 
 #[test]
-fn regulator_delta_o2_x2_under_q2_by_hand() {
+fn regulator_delta_o2_x2_under_h2_by_hand() {
     let m = model(REGULATOR);
     for seed in 0..5 {
         let s = m
-            .sample_under(&mut ChaCha8Rng::seed_from_u64(seed), "Q2")
-            .expect("sample under Q2");
+            .sample_under(&mut ChaCha8Rng::seed_from_u64(seed), "H2")
+            .expect("sample under H2");
         let p = &s.parameters;
         let (t1, t2) = (s.coordinates["theta1"], s.coordinates["theta2"]);
         assert_eq!(t1[2], 0.0);
         assert_eq!(t2[2], 0.0);
-        // Symmetries of Q1: the products of inertia vanish, and A1 = B1 (revolution about z1).
-        for k in ["D1", "E1", "F1", "D2", "E2", "F2"] {
+        // Symmetries of H1: S1's products of inertia vanish, and S2's E2 and F2 (plane
+        // (G2, y2, z2)); D2 stays.
+        for k in ["D1", "E1", "F1", "E2", "F2"] {
             assert!(p[k].abs() < 1e-12, "{k} = {}", p[k]);
         }
-        assert!((p["A1"] - p["B1"]).abs() < 1e-12);
-        // δ(G2)·x2 = (C2 − B2) θ̇1² sin θ2 cos θ2, and O2G2 ∧ m2 Γ(G2) · x2
+        // δ(G2)·x2 = ((C2 − B2) sin θ2 cos θ2 + D2 cos 2θ2) θ̇1², and O2G2 ∧ m2 Γ(G2) · x2
         // = m2 L2 Γ(G2)·z2 = m2 L2 (L1 + L2 cos θ2) θ̇1² sin θ2.
         let (c2, s2) = (t2[0].cos(), t2[0].sin());
         let w2 = t1[1] * t1[1];
         let expected = (p["C2"] - p["B2"]) * w2 * s2 * c2
+            + p["D2"] * (c2 * c2 - s2 * s2) * w2
             + p["m2"] * p["L2"] * (p["L1"] + p["L2"] * c2) * w2 * s2;
         let got = scalar(&m, "delta(O2,2/0).x2", &s);
         assert!(
@@ -935,8 +936,9 @@ fn documentation_examples_hold() {
     assert_eq!(v.numbers(), vec![1.0, 2.0, 3.0]);
 }
 
-/// δ(O2,2/0)·x2 by hand (Euler's equations at G2 for I_G2 = diag(A2, B2, C2) in B2, then the
-/// transport to O2): (A2 + m2 L2²) θ̈2 + sin θ2 (m2 L1 L2 + (C2 − B2 + m2 L2²) cos θ2) θ̇1².
+/// δ(O2,2/0)·x2 by hand (Euler's equations at G2 for I_G2 with E2 = F2 = 0 in B2, then the
+/// transport to O2): (A2 + m2 L2²) θ̈2 + [sin θ2 (m2 L1 L2 + (C2 − B2 + m2 L2²) cos θ2)
+/// + D2 cos 2θ2] θ̇1².
 fn regulator_delta_o2_x2_hand(s: &Sample) -> f64 {
     let p = &s.parameters;
     let (t1, t2) = (s.coordinates["theta1"], s.coordinates["theta2"]);
@@ -944,9 +946,10 @@ fn regulator_delta_o2_x2_hand(s: &Sample) -> f64 {
     let (c2, s2) = (t2[0].cos(), t2[0].sin());
     (p["A2"] + m2 * l2 * l2) * t2[2]
         + s2 * (m2 * l1 * l2 + (p["C2"] - p["B2"] + m2 * l2 * l2) * c2) * t1[1] * t1[1]
+        + p["D2"] * (c2 * c2 - s2 * s2) * t1[1] * t1[1]
 }
 
-/// A sample drawn under Q1 (exactly diagonal inertia, signed zeros) once gave −5.7911...
+/// A sample drawn under the former hypothesis Q1 (exactly diagonal inertia, signed zeros) once gave −5.7911...
 #[test]
 fn regulator_delta_o2_x2_diagonal_inertia_regression() {
     let m = model(REGULATOR);
@@ -994,7 +997,7 @@ fn regulator_delta_o2_x2_diagonal_inertia_regression() {
     );
 }
 
-/// Samples under Q1 (diagonal inertia in B2, the exact case of the regression above) and
+/// Samples under H1 (E2 = F2 = 0 in B2, the case of the regression above with D2 free) and
 /// random diagonal inertias, against the hand formula.
 #[test]
 fn regulator_delta_o2_x2_diagonal_inertia_by_hand() {
@@ -1002,15 +1005,15 @@ fn regulator_delta_o2_x2_diagonal_inertia_by_hand() {
     let mut failures = Vec::new();
     for seed in 0..200 {
         let s = m
-            .sample_under(&mut ChaCha8Rng::seed_from_u64(seed), "Q1")
-            .expect("sample under Q1");
+            .sample_under(&mut ChaCha8Rng::seed_from_u64(seed), "H1")
+            .expect("sample under H1");
         let expected = regulator_delta_o2_x2_hand(&s);
         let got = scalar(&m, "delta(O2,2/0).x2", &s);
         if (got - expected).abs() > 1e-12 * (1.0 + expected.abs()) {
             failures.push((seed, got, expected));
         }
     }
-    assert!(failures.is_empty(), "Q1 seeds failing: {failures:?}");
+    assert!(failures.is_empty(), "H1 seeds failing: {failures:?}");
     // Diagonal inertias given directly: principal moments A = jy + jz, B = jz + jx,
     // C = jx + jy from second moments jₖ ≥ 0, products of inertia ±0.
     use rand::Rng;

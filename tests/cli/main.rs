@@ -64,7 +64,7 @@ fn derive_writes_json_with_canonical_forms_and_steps() {
     assert_eq!(d2["value"]["point"], "O2");
     assert_eq!(d2["value"]["basis"], "B2");
     assert!(d2["steps"].as_array().unwrap().len() >= 5);
-    assert!(d2["hypotheses"]["Q2"].is_object());
+    assert!(d2["hypotheses"]["H2"].is_object());
 }
 
 #[test]
@@ -222,9 +222,9 @@ fn verify_answers_equivalent_or_shows_the_difference() {
         "-q",
         "delta(O2,2/0).x2",
         "--hypothesis",
-        "Q1",
+        "H1",
         "-e",
-        "(A2 + m2*L2^2)*ddot(theta2) + (m2*L1*L2*sin(theta2) + 1/2*(C2 - B2 + m2*L2^2)*sin(2*theta2))*dot(theta1)^2",
+        "(A2 + m2*L2^2)*ddot(theta2) + (m2*L1*L2*sin(theta2) + 1/2*(C2 - B2 + m2*L2^2)*sin(2*theta2) + D2*cos(2*theta2))*dot(theta1)^2",
     ]);
     assert_eq!(ok.status.code(), Some(0), "{}", stderr(&ok));
     assert!(stdout(&ok).contains("equivalent"));
@@ -234,7 +234,7 @@ fn verify_answers_equivalent_or_shows_the_difference() {
         "-q",
         "delta(O2,2/0).x2",
         "--hypothesis",
-        "Q1",
+        "H1",
         "-e",
         "(A2 + m2*L2^2)*ddot(theta2)",
     ]);
@@ -276,7 +276,7 @@ fn check_reports_agreement_with_the_float_backend() {
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["passed"], true);
     assert_eq!(v["seed"], 9);
-    // 12 quantities (C_m, eom(theta2) and Ec(E/0) included), general and under Q1 and Q2.
+    // 12 quantities (C_m, eom(theta2) and Ec(E/0) included), general and under H1 and H2.
     assert_eq!(v["quantities"].as_array().unwrap().len(), 36);
 }
 
@@ -383,7 +383,7 @@ fn simulate_writes_csv_and_plots_and_refuses_unknown_scenarios() {
 #[test]
 fn verify_accepts_an_equation_of_motion_up_to_a_factor() {
     let eq = "A2*ddot(theta2) + m2*L2^2*ddot(theta2) \
-              + (C2 - B2)*sin(theta2)*cos(theta2)*dot(theta1)^2 \
+              + (C2 - B2)*sin(theta2)*cos(theta2)*dot(theta1)^2 + D2*cos(2*theta2)*dot(theta1)^2 \
               + m2*L1*L2*sin(theta2)*dot(theta1)^2 + m2*L2^2*sin(theta2)*cos(theta2)*dot(theta1)^2 \
               = -m2*g*L2*cos(theta2) - f*dot(theta2)";
     let o = run(&[
@@ -392,7 +392,7 @@ fn verify_accepts_an_equation_of_motion_up_to_a_factor() {
         "-q",
         "eom(theta2)",
         "--hypothesis",
-        "Q1",
+        "H1",
         "-e",
         eq,
     ]);
@@ -406,7 +406,7 @@ fn verify_accepts_an_equation_of_motion_up_to_a_factor() {
         "-q",
         "eom(theta2)",
         "--hypothesis",
-        "Q1",
+        "H1",
         "-e",
         &doubled,
     ]);
@@ -423,7 +423,7 @@ fn verify_accepts_an_equation_of_motion_up_to_a_factor() {
         "-q",
         "eom(theta2)",
         "--hypothesis",
-        "Q1",
+        "H1",
         "-e",
         &eq.replace(" - f*dot(theta2)", ""),
     ]);

@@ -23,17 +23,19 @@ fn load(text: &str) -> Mechanism {
 
 #[test]
 fn motor_torque_of_the_regulator_by_hand() {
-    // Under Q1 (D = E = F = 0): δ(O1,1/0)·z0 = C1 θ̈1, and with O1 fixed and z0 fixed,
-    // δ(O1,2/0)·z0 = d/dt σ(O1,2/0)·z0 where σ(G2)·z0 = (B2 s² + C2 c²) θ̇1 (z0 = s y2 + c z2)
-    // and (O1G2 ∧ m2 V(G2))·z0 = m2 r² θ̇1 with r = L1 + L2 c. So C_m = C1 θ̈1 + d/dt(K θ̇1),
-    // K = B2 s² + C2 c² + m2 r², K' = 2 (B2 − C2) s c − 2 m2 r L2 s. Gravity has no moment on z0
-    // at O1 (axis vertical); friction in the 1–2 pivot is internal to E.
+    // Under H1 (D1 = E1 = F1 = 0, E2 = F2 = 0, D2 kept): δ(O1,1/0)·z0 = C1 θ̈1, and with O1
+    // fixed and z0 fixed, δ(O1,2/0)·z0 = d/dt σ(O1,2/0)·z0 where, with z0 = s y2 + c z2 and
+    // ω = (θ̇2, s θ̇1, c θ̇1) in B2, σ(G2)·z0 = s (B2 s − D2 c) θ̇1 + c (C2 c − D2 s) θ̇1
+    // = (B2 s² + C2 c² − 2 D2 s c) θ̇1, and (O1G2 ∧ m2 V(G2))·z0 = m2 r² θ̇1 with r = L1 + L2 c.
+    // So C_m = C1 θ̈1 + d/dt(K θ̇1), K = B2 s² + C2 c² − 2 D2 s c + m2 r²,
+    // K' = 2 (B2 − C2) s c − 2 D2 (c² − s²) − 2 m2 r L2 s. Gravity has no moment on z0 at O1
+    // (axis vertical); friction in the 1–2 pivot is internal to E.
     let m = regulator();
-    let q1 = m.hypotheses.iter().find(|h| h.name == "Q1").unwrap();
+    let q1 = m.hypotheses.iter().find(|h| h.name == "H1").unwrap();
     let cm = q1.apply(&scalar(&m, "C_m"));
     let (s, c) = ("sin(theta2)", "cos(theta2)");
-    let k = format!("(B2*{s}^2 + C2*{c}^2 + m2*(L1 + L2*{c})^2)");
-    let kp = format!("(2*(B2 - C2)*{s}*{c} - 2*m2*(L1 + L2*{c})*L2*{s})");
+    let k = format!("(B2*{s}^2 + C2*{c}^2 - 2*D2*{s}*{c} + m2*(L1 + L2*{c})^2)");
+    let kp = format!("(2*(B2 - C2)*{s}*{c} - 2*D2*({c}^2 - {s}^2) - 2*m2*(L1 + L2*{c})*L2*{s})");
     let by_hand = format!("C1*ddot(theta1) + {k}*ddot(theta1) + {kp}*dot(theta2)*dot(theta1)");
     assert_eq!(cm, ex(&m, &by_hand));
 }
@@ -53,13 +55,14 @@ fn flyweight_equation_of_motion_by_hand() {
     // Moment theorem on 2 at O2 on x2: δ(O2,2/0)·x2 = M(O2, pes→2)·x2 + M(O2, 1→2)·x2, where
     // the pivot of axis (O2, x1) transmits no moment on x1 = x2 except friction −f θ̇2, and
     // O2G2 ∧ (−m2 g z0) = −m2 g L2 (y2 ∧ z0) = −m2 g L2 cos θ2 x2.
-    // Under Q1, δ(O2,2/0)·x2 is Euler's equation plus transport (see regulator.rs).
+    // Under H1, δ(O2,2/0)·x2 is Euler's equation plus transport (see regulator.rs).
     let m = regulator();
-    let q1 = m.hypotheses.iter().find(|h| h.name == "Q1").unwrap();
+    let q1 = m.hypotheses.iter().find(|h| h.name == "H1").unwrap();
     let eom = q1.apply(&scalar(&m, "eom(theta2)"));
     let by_hand = ex(
         &m,
         "A2*ddot(theta2) + (C2 - B2)*sin(theta2)*cos(theta2)*dot(theta1)^2 \
+         + D2*(cos(theta2)^2 - sin(theta2)^2)*dot(theta1)^2 \
          + m2*L2*(L2*ddot(theta2) + sin(theta2)*(L1 + L2*cos(theta2))*dot(theta1)^2) \
          + m2*g*L2*cos(theta2) + f*dot(theta2)",
     );

@@ -42,15 +42,18 @@ fn dynamic_torsor_of_the_rotor_at_o1() {
 
 #[test]
 fn delta_o2_on_x2_matches_euler_equations_plus_transport() {
-    // By hand, under the symmetries of Q1 (I_G2 = diag(A2, B2, C2) in B2):
-    // Ω(2/0) = (θ̇2, sθ2 θ̇1, cθ2 θ̇1) in B2, Euler at G2: δ(G2)·x2 = A2 θ̈2 + (C2 − B2) s c θ̇1²,
+    // By hand, under the symmetries of H1 (the plane (G2, y2, z2): E2 = F2 = 0, D2 stays):
+    // Ω(2/0) = ω = (θ̇2, sθ2 θ̇1, cθ2 θ̇1) in B2, I ω = (A2 θ̇2, (B2 s − D2 c) θ̇1,
+    // (C2 c − D2 s) θ̇1); Euler at G2: δ(G2)·x2 = (I ω̇)·x2 + ω_y (Iω)_z − ω_z (Iω)_y
+    // = A2 θ̈2 + ((C2 − B2) s c + D2 (c² − s²)) θ̇1²,
     // Γ(G2)·z2 = L2 θ̈2 + s (L1 + L2 c) θ̇1², and δ(O2)·x2 = δ(G2)·x2 + m2 L2 Γ(G2)·z2.
     let m = regulator();
-    let q1 = m.hypotheses.iter().find(|h| h.name == "Q1").unwrap();
+    let q1 = m.hypotheses.iter().find(|h| h.name == "H1").unwrap();
     let v = value(&m, "delta(O2,2/0).x2").under(q1);
     let expected = ex(
         &m,
         "A2*ddot(theta2) + (C2 - B2)*sin(theta2)*cos(theta2)*dot(theta1)^2 \
+         + D2*(cos(theta2)^2 - sin(theta2)^2)*dot(theta1)^2 \
          + m2*L2*(L2*ddot(theta2) + sin(theta2)*(L1 + L2*cos(theta2))*dot(theta1)^2)",
     );
     assert_eq!(components(&v)[0], expected);
@@ -118,18 +121,15 @@ fn dynamic_torsor_of_e_at_o2_is_the_sum_of_the_moved_torsors() {
 #[test]
 fn hypotheses_zero_the_products_of_inertia_named_by_the_symmetries() {
     let m = regulator();
-    let q1 = m.hypotheses.iter().find(|h| h.name == "Q1").unwrap();
+    // S1's planes (O1, y1, z1) and (O1, x1, z1): every product of S1 vanishes, A1 ≠ B1;
+    // S2's plane (G2, y2, z2) (normal x2): the products with x, E2 and F2, vanish; D2 stays.
+    let q1 = m.hypotheses.iter().find(|h| h.name == "H1").unwrap();
     let mut effects = q1.effects.clone();
     effects.sort();
-    assert_eq!(
-        effects,
-        [
-            "B1 = A1", "D1 = 0", "D2 = 0", "E1 = 0", "E2 = 0", "F1 = 0", "F2 = 0"
-        ]
-    );
-    let q2 = m.hypotheses.iter().find(|h| h.name == "Q2").unwrap();
+    assert_eq!(effects, ["D1 = 0", "E1 = 0", "E2 = 0", "F1 = 0", "F2 = 0"]);
+    let q2 = m.hypotheses.iter().find(|h| h.name == "H2").unwrap();
     assert!(q2.effects.contains(&"ddot(theta1) = 0".to_string()));
-    // Under Q2 (constant rates, symmetries), δ(O1,1/0) vanishes: C1 θ̈1 = 0.
+    // Under H2 (constant rates, symmetries), δ(O1,1/0) vanishes: C1 θ̈1 = 0.
     let d = value(&m, "{D(1/0)}_O1 in B1").under(q2);
     assert!(d.exprs().iter().all(|e| e.is_zero()));
 }
