@@ -424,16 +424,19 @@ pub fn answer_key_document(
         let parent = m.frames.get(fr.parent.unwrap_or(m.frames.ground()));
         match &fr.rotation {
             Some(r) => {
-                let q = &m.reg.coord_info(r.angle.coord).name;
-                let sign = if r.angle.sign < 0 { "-" } else { "" };
+                // The course's paramétrage: (x0, x1) = (y0, y1) = θ1 about z0 = z1.
+                let k = r.axis.index();
+                let (u, v) = (['y', 'z', 'x'][k], ['z', 'x', 'y'][k]);
+                let angle = angle_latex(m, &r.angle);
                 let _ = writeln!(
                     o,
-                    "\\item ${}$ est obtenu à partir de ${}$ par la rotation d'angle ${sign}{}$ \
-                     autour de ${}$.",
-                    frame(&fr.name),
-                    frame(&parent.name),
-                    name(q),
-                    basis_vector(r.axis.letter(), &parent.name)
+                    "\\item $({}, {}) = ({}, {}) = {angle}$, autour de ${} = {}$.",
+                    basis_vector(u, &parent.name),
+                    basis_vector(u, &fr.name),
+                    basis_vector(v, &parent.name),
+                    basis_vector(v, &fr.name),
+                    basis_vector(r.axis.letter(), &parent.name),
+                    basis_vector(r.axis.letter(), &fr.name)
                 );
             }
             None => {
@@ -553,6 +556,49 @@ pub fn answer_key_document(
         displays: doc.displays,
         inline: doc.inline,
     })
+}
+
+/// The angle of a rotation as written: `\theta_{1}`, `\frac{\pi}{2} - q_{1}`, `\theta - \alpha`.
+fn angle_latex(m: &Mechanism, a: &crate::frame::Angle) -> String {
+    let mut parts: Vec<(bool, String)> = a
+        .terms
+        .iter()
+        .map(|&(q, n)| {
+            let nm = name(&m.reg.coord_info(q).name);
+            let body = if n.abs() == 1 {
+                nm
+            } else {
+                format!("{}\\,{nm}", n.abs())
+            };
+            (n < 0, body)
+        })
+        .collect();
+    let k = a.quarter_turns;
+    if k != 0 {
+        let body = match k.abs() {
+            1 => "\\frac{\\pi}{2}".to_string(),
+            2 => "\\pi".to_string(),
+            n if n % 2 == 0 => format!("{}\\pi", n / 2),
+            n => format!("\\frac{{{n}\\pi}}{{2}}"),
+        };
+        // A positive offset reads first: π/2 − q rather than −q + π/2.
+        if k > 0 && parts.first().is_some_and(|p| p.0) {
+            parts.insert(0, (false, body));
+        } else {
+            parts.push((k < 0, body));
+        }
+    }
+    let mut o = String::new();
+    for (i, (neg, body)) in parts.iter().enumerate() {
+        o.push_str(match (i, neg) {
+            (0, true) => "-",
+            (0, false) => "",
+            (_, true) => " - ",
+            (_, false) => " + ",
+        });
+        o.push_str(body);
+    }
+    if o.is_empty() { "0".to_string() } else { o }
 }
 
 /// A number as the French text writes it: three significant digits, decimal comma.
