@@ -957,6 +957,32 @@ impl Expr {
         self.with(Expr::reduce(p, &self.reg))
     }
 
+    /// The terms that contain a rate (q̇, q̈, …), and the others: `e = with + without`.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into(), "g".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let e = reg.parse("m*ddot(q) + m*g*sin(q)").unwrap();
+    /// let (with, without) = e.split_by_rates();
+    /// assert_eq!(with, reg.parse("m*ddot(q)").unwrap());
+    /// assert_eq!(without, reg.parse("m*g*sin(q)").unwrap());
+    /// ```
+    pub fn split_by_rates(&self) -> (Expr, Expr) {
+        let reg = self.registry();
+        let rate = |i: usize| matches!(reg.role(i), VarRole::Rate(..));
+        let (mut with, mut without) = (Vec::new(), Vec::new());
+        for (c, e) in self.terms() {
+            let t = (c.clone(), e.to_vec());
+            if e.iter().enumerate().any(|(i, &k)| k > 0 && rate(i)) {
+                with.push(t);
+            } else {
+                without.push(t);
+            }
+        }
+        (Expr::from_terms(reg, with), Expr::from_terms(reg, without))
+    }
+
     /// Numeric value, given a value for every variable (see [`Registry::role`]).
     ///
     /// Terms are summed in double-double arithmetic (error-free transformations, about 32

@@ -1,79 +1,28 @@
-//! The answer key (« corrigé »): set-up, hypotheses with the particular forms of the inertia
-//! matrices, then each requested quantity with the steps of the course's methodology, in the
-//! general case and under each hypothesis. All text about the problem comes from the spec.
+//! The answer key (« corrigé »): the paramétrage and the model's hypotheses once, then each
+//! question with the method applied to its objects (see `method`), results already shown
+//! cited rather than re-derived, every result boxed. All text about the problem comes from
+//! the spec; every formula is recorded with its value so a reader can prove it.
 
+use super::method::{pfd_block, quantity_block};
 use super::{
-    VectorStyle, basis, basis_vector, escape_text, frame, name, point, quantity, value_styled,
+    VectorStyle, basis, basis_vector, escape_text, frame, name, point, quantity, value_named,
 };
-use crate::derivation::{Derivation, StepKind, Value, derive};
+use crate::derivation::{Value, derive};
 use crate::inertia::Symmetry;
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::quantity::Quantity;
 use crate::quantity::QuantityKind;
 use crate::spec::wire::{HypothesisSpec, QuestionSpec};
+use std::collections::HashMap;
 use std::fmt::Write;
-
-fn step_lhs(k: &StepKind) -> String {
-    match k {
-        StepKind::Quantity(q) => quantity(q),
-        StepKind::Derivative(q, r) => format!(
-            "\\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}}",
-            quantity(q),
-            frame(r)
-        ),
-        StepKind::Action { from, on, point: p } => format!(
-            "\\left\\{{\\mathcal{{T}}({} \\rightarrow {})\\right\\}}_{{{}}}",
-            action_side(from),
-            action_side(on),
-            point(p)
-        ),
-        StepKind::Projected(q, (f, a)) => format!("{} \\cdot {}", quantity(q), basis_vector(*a, f)),
-        StepKind::External {
-            isolate,
-            point: p,
-            on: (f, a),
-        } => {
-            let s = action_side(isolate);
-            let arrow = format!("\\bar{{{s}}} \\rightarrow {s}");
-            match p {
-                Some(p) => format!(
-                    "\\overrightarrow{{M({},{arrow})}} \\cdot {}",
-                    point(p),
-                    basis_vector(*a, f)
-                ),
-                None => format!(
-                    "\\overrightarrow{{R({arrow})}} \\cdot {}",
-                    basis_vector(*a, f)
-                ),
-            }
-        }
-        StepKind::Complementary(a, g, r) => format!(
-            "\\overrightarrow{{V({}/{})}} \\wedge m\\,\\overrightarrow{{V({}/{})}}",
-            point(a),
-            frame(r),
-            point(g),
-            frame(r)
-        ),
-    }
-}
-
-/// A solid number as is, a name (`pes`, `moteur`) upright.
-fn action_side(n: &str) -> String {
-    if n.chars().all(|c| c.is_ascii_digit()) {
-        n.to_string()
-    } else if n.len() == 1 {
-        name(n)
-    } else {
-        format!("\\mathrm{{{}}}", n.replace('_', "\\_"))
-    }
-}
-
-fn theorem_text(t: &str) -> String {
-    escape_text(t)
-}
 
 fn align(body: &str) -> String {
     format!("\\begin{{align*}}\n{body}\n\\end{{align*}}\n")
+}
+
+/// A boxed display (the results): `empheq`'s frame around an `align*`.
+fn boxed(body: &str) -> String {
+    format!("\\begin{{empheq}}[box=\\fbox]{{align*}}\n{body}\n\\end{{empheq}}\n")
 }
 
 /// What a displayed formula shows.
@@ -101,8 +50,10 @@ pub struct Display {
     pub hypothesis: Option<String>,
     /// The LaTeX, exactly as in the document.
     pub latex: String,
-    /// The engine's value.
+    /// The engine's value (of the left side, for an equality).
     pub value: Value,
+    /// For an equality `a = b` (a theorem, an equation of motion): the value of `b`.
+    pub rhs: Option<Value>,
 }
 
 /// A formula inside the text (`$…$`) that shows a value: a point's position
@@ -118,27 +69,181 @@ pub struct Inline {
     pub value: Value,
 }
 
-/// The document being written and the record of its formulas.
-struct Doc<'m> {
-    m: &'m Mechanism,
+/// The document being written, the record of its formulas, and what it has shown.
+pub(super) struct Doc<'m> {
+    pub(super) m: &'m Mechanism,
     style: VectorStyle,
-    o: String,
+    pub(super) o: String,
     displays: Vec<Display>,
     inline: Vec<Inline>,
+    /// Values already displayed: (left side, canonical value) → where (« la question 3 »).
+    shown: HashMap<(String, String), String>,
+    /// Isolated systems whose bilan of external actions is written → where.
+    pub(super) bilans: HashMap<String, String>,
+    /// Hypotheses stated: name, symmetric solids, effects.
+    stated: Vec<(String, Vec<String>, Vec<String>)>,
+    /// Where the text is: « la question 3 ».
+    pub(super) here: String,
+    /// The hypothesis the current question works under.
+    pub(super) under: Option<&'m Hypothesis>,
 }
 
-impl Doc<'_> {
-    /// Writes `lhs = value` as a display and records it.
-    fn show(&mut self, role: DisplayRole, what: &str, hyp: Option<&str>, lhs: &str, v: &Value) {
-        let body = value_styled(self.m, self.style, lhs, v);
-        self.o.push_str(&align(&body));
+impl<'m> Doc<'m> {
+    /// What identifies a shown value: its left side and its value, vectors taken in the ground
+    /// basis (the same vector shown in B2 and asked in B1 is cited, not re-derived).
+    fn key(&self, lhs: &str, v: &Value) -> (String, String) {
+        let m = self.m;
+        let g = m.frames.ground();
+        let ground = |b: crate::frame::FrameId, c: &[crate::expr::Expr; 3]| {
+            crate::vector::Vector::new(b, c.clone()).express_in(&m.frames, g)
+        };
+        let exprs: Vec<crate::expr::Expr> = match v {
+            Value::Vector { basis, components } => ground(*basis, components).to_vec(),
+            Value::Torsor {
+                basis,
+                resultant,
+                moment,
+                ..
+            } => {
+                let mut e = ground(*basis, resultant).to_vec();
+                e.extend(ground(*basis, moment));
+                e
+            }
+            Value::Matrix(i) => {
+                let mut e: Vec<crate::expr::Expr> = v.exprs().into_iter().cloned().collect();
+                e.push(m.reg.integer(i.basis.index() as i64));
+                e
+            }
+            Value::Scalar(x) => vec![x.clone()],
+        };
+        let vals: Vec<String> = exprs.iter().map(|e| e.to_string()).collect();
+        (lhs.to_string(), vals.join(";"))
+    }
+
+    /// Where a value with this left side was already shown, if it was.
+    pub(super) fn cited(&self, lhs: &str, v: &Value) -> Option<String> {
+        self.shown.get(&self.key(lhs, v)).map(|p| {
+            if *p == self.here {
+                "ce qui précède".to_string()
+            } else {
+                p.clone()
+            }
+        })
+    }
+
+    /// Notes that a value was shown here (in the text).
+    pub(super) fn remember(&mut self, lhs: &str, v: &Value) {
+        let here = self.here.clone();
+        let key = self.key(lhs, v);
+        self.shown.entry(key).or_insert(here);
+    }
+
+    fn record(
+        &mut self,
+        role: DisplayRole,
+        what: &str,
+        body: String,
+        v: &Value,
+        rhs: Option<Value>,
+        boxed_display: bool,
+    ) {
+        self.o.push_str(&if boxed_display {
+            boxed(&body)
+        } else {
+            align(&body)
+        });
         self.displays.push(Display {
             role,
             what: what.to_string(),
-            hypothesis: hyp.map(str::to_string),
+            hypothesis: self.under.map(|h| h.name.clone()),
             latex: body,
             value: v.clone(),
+            rhs,
         });
+    }
+
+    /// Writes `lhs = value` as a display, records it, and remembers it under `key_lhs`.
+    pub(super) fn show_keyed(
+        &mut self,
+        role: DisplayRole,
+        what: &str,
+        lhs: &str,
+        key_lhs: &str,
+        v: &Value,
+        boxed_display: bool,
+    ) {
+        let body = value_named(self.m, self.style, lhs, v, None);
+        self.record(role, what, body, v, None, boxed_display);
+        self.remember(key_lhs, v);
+    }
+
+    /// A result, boxed; a long torsor is written with its elements' names.
+    pub(super) fn show_result(
+        &mut self,
+        role: DisplayRole,
+        what: &str,
+        hyp: Option<&str>,
+        lhs: &str,
+        v: &Value,
+        names: Option<&(String, String)>,
+    ) {
+        let body = super::value_within(
+            self.m,
+            self.style,
+            lhs,
+            v,
+            names.map(|(r, mo)| (r.as_str(), mo.as_str())),
+            super::LINE - 6,
+        );
+        self.record(role, what, body, v, None, true);
+        if let Some(d) = self.displays.last_mut() {
+            d.hypothesis = hyp.map(str::to_string);
+        }
+        self.remember(lhs, v);
+    }
+
+    /// Two scalars, each on its own line: `l1 = v1` and `l2 = v2` (the two sides of a
+    /// theorem, stated equal in the sentence before).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn show_equality(
+        &mut self,
+        role: DisplayRole,
+        what: &str,
+        l1: &str,
+        v1: &Value,
+        l2: &str,
+        v2: &Value,
+        boxed_display: bool,
+    ) {
+        let body = format!(
+            "{} \\\\\n{}",
+            value_named(self.m, self.style, l1, v1, None),
+            value_named(self.m, self.style, l2, v2, None)
+        );
+        self.record(role, what, body, v1, Some(v2.clone()), boxed_display);
+    }
+
+    /// An equation `a = b`, boxed, the shorter side on the left.
+    pub(super) fn show_equation(
+        &mut self,
+        role: DisplayRole,
+        what: &str,
+        hyp: Option<&str>,
+        a: &crate::expr::Expr,
+        b: &crate::expr::Expr,
+    ) {
+        let (l, r) = if super::width(&super::expr(a)) <= super::LINE / 2 {
+            (a, b)
+        } else {
+            (b, a)
+        };
+        let lhs = super::expr(l);
+        let rv = Value::Scalar(r.clone());
+        let body = super::value_within(self.m, self.style, &lhs, &rv, None, super::LINE - 6);
+        self.record(role, what, body, &Value::Scalar(l.clone()), Some(rv), true);
+        if let Some(d) = self.displays.last_mut() {
+            d.hypothesis = hyp.map(str::to_string);
+        }
     }
 }
 
@@ -168,61 +273,95 @@ fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) ->
     }
 }
 
-/// A hypothesis: its statement, the zeros its symmetries give (each justified by its plane or
-/// axis), the particular inertia matrices, and what it sets.
-fn hypothesis_block(d: &mut Doc, h: &Hypothesis, hs: &HypothesisSpec) {
+/// A hypothesis, stated once: its text, the zeros its symmetries give (each justified by
+/// its plane or axis) and the particular inertia matrices; a later hypothesis with the same
+/// symmetries refers to the first and adds only what is new (constant rates).
+fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec) {
     let m = d.m;
+    if d.stated.iter().any(|(n, _, _)| n == &h.name) {
+        return;
+    }
     let _ = writeln!(
         d.o,
-        "\\subsection*{{Hypothèse {}}}\n{}\n",
+        "\\paragraph{{Hypothèse {}.}} {}\n",
         escape_text(&h.name),
         h.text.as_deref().map(escape_text).unwrap_or_default()
     );
-    for sname in &hs.symmetric_solids {
-        let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
-            continue;
-        };
-        let Some(i) = &b.inertia else { continue };
-        let bn = m.frame_name(i.basis).to_string();
-        let centre = m.point_name(i.point).to_string();
-        for s in &b.symmetries {
-            let entries: Vec<String> = s
-                .zero_entries()
-                .iter()
-                .map(|&(r, c)| super::expr(&i.matrix[r][c]))
-                .filter(|t| t != "0")
-                .map(|t| format!("${}$", t.trim_start_matches('-')))
-                .collect();
-            let _ = writeln!(
-                d.o,
-                "Pour le solide ${}$, {} : {}{}.\n",
-                name(sname),
-                symmetry_text(m, &bn, *s, &centre),
-                if entries.is_empty() {
-                    "les produits d'inertie correspondants sont nuls".to_string()
-                } else {
-                    format!("les produits d'inertie {} sont nuls", entries.join(", "))
-                },
-                if s.equal_moments().is_some() {
-                    " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
-                } else {
-                    ""
-                }
-            );
-        }
-        let under = Value::Matrix(i.clone()).under(h);
-        let lhs = format!("I_{{{}}}({})", point(&centre), name(sname));
-        d.show(
-            DisplayRole::Inertia,
-            &format!("I({centre},{sname})"),
-            Some(&h.name),
-            &lhs,
-            &under,
+    let same = d
+        .stated
+        .iter()
+        .find(|(_, solids, _)| !solids.is_empty() && *solids == hs.symmetric_solids)
+        .map(|(n, _, e)| (n.clone(), e.clone()));
+    let old_effects: Vec<String>;
+    if let Some((other, effects)) = &same {
+        let _ = writeln!(
+            d.o,
+            "Les symétries sont celles de l'hypothèse {} : mêmes matrices d'inertie.\n",
+            escape_text(other)
         );
-    }
-    if !h.effects.is_empty() {
-        let eff: Vec<String> = h
+        old_effects = effects.clone();
+    } else {
+        for sname in &hs.symmetric_solids {
+            let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
+                continue;
+            };
+            let Some(i) = &b.inertia else { continue };
+            let bn = m.frame_name(i.basis).to_string();
+            let centre = m.point_name(i.point).to_string();
+            for s in &b.symmetries {
+                let entries: Vec<String> = s
+                    .zero_entries()
+                    .iter()
+                    .map(|&(r, c)| super::expr(&i.matrix[r][c]))
+                    .filter(|t| t != "0")
+                    .map(|t| format!("${}$", t.trim_start_matches('-')))
+                    .collect();
+                let _ = writeln!(
+                    d.o,
+                    "Pour le solide ${}$, {} : {}{}.\n",
+                    name(sname),
+                    symmetry_text(m, &bn, *s, &centre),
+                    if entries.is_empty() {
+                        "les produits d'inertie correspondants sont nuls".to_string()
+                    } else {
+                        format!("les produits d'inertie {} sont nuls", entries.join(", "))
+                    },
+                    if s.equal_moments().is_some() {
+                        " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
+                    } else {
+                        ""
+                    }
+                );
+            }
+            let under = Value::Matrix(i.clone()).under(h);
+            let lhs = format!("I_{{{}}}({})", point(&centre), name(sname));
+            let saved = d.under;
+            d.under = Some(h);
+            d.show_keyed(
+                DisplayRole::Inertia,
+                &format!("I({centre},{sname})"),
+                &lhs,
+                &lhs,
+                &under,
+                false,
+            );
+            d.under = saved;
+        }
+        // The symmetries' zeros are what the matrices show.
+        old_effects = h
             .effects
+            .iter()
+            .filter(|e| !hs.symmetric_solids.is_empty() && !e.contains("dot("))
+            .cloned()
+            .collect();
+    }
+    let new_effects: Vec<&String> = h
+        .effects
+        .iter()
+        .filter(|e| !old_effects.contains(e))
+        .collect();
+    if !new_effects.is_empty() {
+        let eff: Vec<String> = new_effects
             .iter()
             .map(|e| {
                 let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
@@ -233,54 +372,20 @@ fn hypothesis_block(d: &mut Doc, h: &Hypothesis, hs: &HypothesisSpec) {
             .collect();
         let _ = writeln!(d.o, "Sous cette hypothèse : {}.\n", eff.join(", "));
     }
+    d.stated.push((
+        h.name.clone(),
+        hs.symmetric_solids.clone(),
+        h.effects.clone(),
+    ));
 }
 
-/// A quantity: the steps of the methodology, the result, and the result under each hypothesis.
-fn quantity_block(doc: &mut Doc, d: &Derivation) {
-    let m = doc.m;
-    let q = &d.quantity;
-    let title = quantity_title(q);
-    let _ = writeln!(doc.o, "\\subsection*{{${title}$}}");
-    for s in &d.steps {
-        let _ = writeln!(doc.o, "{} :", theorem_text(&s.theorem));
-        doc.show(
-            DisplayRole::Step,
-            &s.label,
-            None,
-            &step_lhs(&s.kind),
-            &s.value,
-        );
-    }
-    doc.o.push_str("Résultat :\n");
-    let lhs = match &q.kind {
-        k if k.is_torsor() => quantity(k),
-        QuantityKind::Inertia { .. } => quantity(&q.kind),
-        // An equation of motion is written 0 = … (the residual, dynamic side minus actions).
-        QuantityKind::Eom(_) => "0".to_string(),
-        _ => title.clone(),
-    };
-    let id = q.to_string();
-    doc.show(DisplayRole::Result, &id, None, &lhs, &d.value);
-    for h in &m.hypotheses {
-        let under = d.value.under(h);
-        if under.exprs() == d.value.exprs() {
-            let _ = writeln!(
-                doc.o,
-                "Sous l'hypothèse {}, le résultat est inchangé.\n",
-                escape_text(&h.name)
-            );
-            continue;
-        }
-        let _ = writeln!(doc.o, "Sous l'hypothèse {} :", escape_text(&h.name));
-        doc.show(DisplayRole::Result, &id, Some(&h.name), &lhs, &under);
-    }
-}
-
-/// A question: its statement, the teacher's answer text, the hypotheses it discusses, its
-/// quantities derived step by step, and its equations written out.
+/// A question: its statement, the teacher's answer text, the hypotheses it states, its
+/// quantities (kinematics and kinetics step by step, the PFD as bilan and theorems), its
+/// equations written out.
 fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivation::ResolveError> {
     let m = doc.m;
     let _ = writeln!(doc.o, "\\section*{{{}}}", escape_text(&qs.title));
+    doc.here = format!("la {}", escape_text(&qs.title.to_lowercase()));
     if let Some(st) = &qs.statement {
         let _ = writeln!(doc.o, "\\emph{{{}}}\n", escape_text(st));
     }
@@ -297,12 +402,38 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
             hypothesis_block(doc, h, hs);
         }
     }
+    doc.under = qs
+        .under
+        .as_ref()
+        .and_then(|n| m.hypotheses.iter().find(|h| &h.name == n));
+    if let Some(h) = doc.under
+        && !(qs.quantities.is_empty() && qs.equations.is_empty())
+    {
+        let _ = writeln!(
+            doc.o,
+            "On se place sous l'hypothèse {}.\n",
+            escape_text(&h.name)
+        );
+    }
     for text in &qs.quantities {
         let q = Quantity::parse(text).map_err(|e| crate::derivation::ResolveError {
             quantity: text.clone(),
             message: e.to_string(),
         })?;
-        quantity_block(doc, &derive(m, &q)?);
+        let d = derive(m, &q)?;
+        let title = quantity_title(&q);
+        match &q.kind {
+            QuantityKind::Unknown(_) | QuantityKind::Eom(_) => pfd_block(doc, &d, &title),
+            k => {
+                let lhs = match k {
+                    k if k.is_torsor() => quantity(k),
+                    QuantityKind::Inertia { .. } => quantity(k),
+                    QuantityKind::KineticEnergy(_) => quantity(k),
+                    _ => title.clone(),
+                };
+                quantity_block(doc, &d, &title, &lhs)
+            }
+        }
     }
     for e in &qs.equations {
         let q = Quantity::parse(&e.quantity).map_err(|er| crate::derivation::ResolveError {
@@ -315,21 +446,14 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
         }
         let lhs = format!("{} = {}", name(&e.lhs), quantity_title(&q));
         let id = q.to_string();
-        doc.show(DisplayRole::Equation, &id, None, &lhs, &d.value);
-        for h in &m.hypotheses {
-            let under = d.value.under(h);
-            if under.exprs() != d.value.exprs() {
-                let _ = writeln!(doc.o, "Sous l'hypothèse {} :", escape_text(&h.name));
-                doc.show(
-                    DisplayRole::Equation,
-                    &id,
-                    Some(&h.name),
-                    &name(&e.lhs),
-                    &under,
-                );
-            }
-        }
+        let v = match doc.under {
+            Some(h) => d.value.under(h),
+            None => d.value.clone(),
+        };
+        let hyp = doc.under.map(|h| h.name.clone());
+        doc.show_result(DisplayRole::Equation, &id, hyp.as_deref(), &lhs, &v, None);
     }
+    doc.under = None;
     Ok(())
 }
 
@@ -387,13 +511,19 @@ pub fn answer_key_document(
         o: String::new(),
         displays: Vec::new(),
         inline: Vec::new(),
+        shown: HashMap::new(),
+        bilans: HashMap::new(),
+        stated: Vec::new(),
+        here: "le paramétrage".to_string(),
+        under: None,
     };
     let o = &mut doc.o;
     o.push_str(
         "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\
          \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
-         \\usepackage{amsmath,amssymb,graphicx}\n\\usepackage[margin=2cm]{geometry}\n\
-         \\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.5em}\n",
+         \\usepackage{amsmath,amssymb,graphicx,empheq}\n\\usepackage[margin=1.8cm]{geometry}\n\
+         \\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.4em}\n\
+         \\setlength{\\fboxsep}{4pt}\n",
     );
     let _ = writeln!(
         o,
@@ -517,17 +647,20 @@ pub fn answer_key_document(
                 doc.o.push_str(", opérateur d'inertie\n");
                 let lhs = format!("I_{{{}}}({})", point(m.point_name(i.point)), name(&b.name));
                 let what = format!("I({},{})", m.point_name(i.point), b.name);
-                doc.show(
+                doc.show_keyed(
                     DisplayRole::Inertia,
                     &what,
-                    None,
+                    &lhs,
                     &lhs,
                     &Value::Matrix(i.clone()),
+                    false,
                 );
             }
             None => doc.o.push_str(" (masse ponctuelle).\n\n"),
         }
     }
+
+    model_hypotheses(&mut doc);
 
     if m.spec.questions.is_empty() {
         if !m.hypotheses.is_empty() {
@@ -536,10 +669,17 @@ pub fn answer_key_document(
                 hypothesis_block(&mut doc, h, hs);
             }
         }
-        doc.o.push_str("\\section*{Résultats}\n");
-        for q in &m.quantities {
-            quantity_block(&mut doc, &derive(m, q)?);
-        }
+        let all = QuestionSpec {
+            title: "Résultats".to_string(),
+            statement: None,
+            answer: None,
+            hypotheses: vec![],
+            under: None,
+            quantities: m.quantities.iter().map(|q| q.to_string()).collect(),
+            equations: vec![],
+            simulation: None,
+        };
+        question_block(&mut doc, &all)?;
     } else {
         for (k, qs) in m.spec.questions.iter().enumerate() {
             question_block(&mut doc, qs)?;
@@ -556,6 +696,66 @@ pub fn answer_key_document(
         displays: doc.displays,
         inline: doc.inline,
     })
+}
+
+/// The model's hypotheses, stated once: the reference frame, the links, gravity.
+fn model_hypotheses(doc: &mut Doc) {
+    let m = doc.m;
+    let ground = super::frame(m.frame_name(m.frames.ground()));
+    let mut parts = vec![format!("le référentiel ${ground}$ est galiléen")];
+    if let Some(g) = &m.dynamics.gravity {
+        let dirs: Vec<String> = g
+            .parts()
+            .flat_map(|(b, c)| {
+                let bn = m.frame_name(b).to_string();
+                (0..3)
+                    .filter(|&k| !c[k].is_zero())
+                    .map(|k| {
+                        let e = super::expr(&c[k]);
+                        let bv = basis_vector(['x', 'y', 'z'][k], &bn);
+                        if c[k].nterms() > 1 {
+                            format!("\\left({e}\\right){bv}")
+                        } else {
+                            format!("{e}\\,{bv}")
+                        }
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        parts.push(format!(
+            "l'accélération de la pesanteur est ${}$",
+            dirs.join(" + ").replace("+ -", "- ")
+        ));
+    }
+    if !m.spec.links.is_empty() {
+        let lossy: Vec<String> = m
+            .spec
+            .links
+            .iter()
+            .filter(|l| l.friction.is_some() || l.spring.is_some())
+            .map(|l| {
+                let what = match (&l.friction, &l.spring) {
+                    (Some(f), None) => format!(
+                        "frottement visqueux de coefficient ${}$",
+                        m.reg.parse(f).map(|e| super::expr(&e)).unwrap_or_default()
+                    ),
+                    (None, Some(_)) => "ressort".to_string(),
+                    _ => "frottement visqueux et ressort".to_string(),
+                };
+                format!("la liaison {} ({what})", escape_text(&l.name))
+            })
+            .collect();
+        parts.push(if lossy.is_empty() {
+            "les liaisons sont parfaites".to_string()
+        } else {
+            format!("les liaisons sont parfaites, sauf {}", lossy.join(" et "))
+        });
+    }
+    let mut text = parts.join(" ; ");
+    if let Some(c) = text.get(..1) {
+        text = c.to_uppercase() + &text[1..];
+    }
+    let _ = writeln!(doc.o, "\\paragraph{{Hypothèses du modèle.}} {text}.\n");
 }
 
 /// The angle of a rotation as written: `\theta_{1}`, `\frac{\pi}{2} - q_{1}`, `\theta - \alpha`.

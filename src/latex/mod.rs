@@ -5,6 +5,7 @@
 //! letters, digits and `_` when the spec is loaded, and free text goes through [`escape_text`].
 
 mod document;
+mod method;
 
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
@@ -250,7 +251,7 @@ pub fn quantity(k: &QuantityKind) -> String {
         }
         KineticEnergy(mo) => format!("E_{{c}}({})", motion(mo)),
         Unknown(n) => name(n),
-        Eom(q) => format!("\\text{{équation du mouvement en }} {}", name(q)),
+        Eom(q) => format!("\\text{{Équation du mouvement en }} {}", name(q)),
     }
 }
 
@@ -395,7 +396,7 @@ pub fn expr(e: &Expr) -> String {
 }
 
 /// Approximate printed width of LaTeX math, in characters of the body text.
-fn width(s: &str) -> usize {
+pub(crate) fn width(s: &str) -> usize {
     let mut w = 0usize;
     let mut chars = s.chars().peekable();
     while let Some(c) = chars.next() {
@@ -647,6 +648,38 @@ pub fn value(m: &Mechanism, lhs: &str, v: &Value) -> String {
 
 /// A value on the right of `lhs`, with vectors in the given style.
 pub fn value_styled(m: &Mechanism, style: VectorStyle, lhs: &str, v: &Value) -> String {
+    value_named(m, style, lhs, v, None)
+}
+
+/// [`value_styled`], naming the resultant and the moment of a long torsor as the course does
+/// (`\overrightarrow{R_d(2/0)}` and `\overrightarrow{\delta(O_2,2/0)}` for a dynamic torsor);
+/// `\vec{R}` and `\vec{M}(P)` without names.
+pub fn value_named(
+    m: &Mechanism,
+    style: VectorStyle,
+    lhs: &str,
+    v: &Value,
+    torsor_names: Option<(&str, &str)>,
+) -> String {
+    value_within(m, style, lhs, v, torsor_names, LINE)
+}
+
+/// The width left for the right side of `lhs` on a line of `line` characters: a wide left
+/// side (a derivative, a long name) takes its share.
+fn room(lhs: &str, line: usize) -> usize {
+    line.saturating_sub(width(lhs).saturating_sub(14)).max(28)
+}
+
+/// [`value_named`] on lines of at most `line` characters (a boxed result has less room).
+pub(crate) fn value_within(
+    m: &Mechanism,
+    style: VectorStyle,
+    lhs: &str,
+    v: &Value,
+    torsor_names: Option<(&str, &str)>,
+    line: usize,
+) -> String {
+    let max = room(lhs, line);
     if let (
         VectorStyle::Column,
         Value::Vector {
@@ -656,13 +689,13 @@ pub fn value_styled(m: &Mechanism, style: VectorStyle, lhs: &str, v: &Value) -> 
     ) = (style, v)
     {
         let col = vector_column(m.frame_name(*b), components);
-        if components.iter().all(|c| width(&expr(c)) <= LINE) {
+        if components.iter().all(|c| width(&expr(c)) <= max) {
             return format!("{lhs} &= {col}");
         }
     }
     match v {
         Value::Scalar(e) => {
-            let ls = expr_lines(e, LINE);
+            let ls = expr_lines(e, max);
             let mut out = format!("{lhs} &= {}", ls[0]);
             for l in &ls[1..] {
                 out.push_str(&format!(" \\\\\n&\\phantom{{=}} {l}"));
@@ -672,10 +705,10 @@ pub fn value_styled(m: &Mechanism, style: VectorStyle, lhs: &str, v: &Value) -> 
         Value::Vector {
             basis: b,
             components,
-        } => vector_sum(m, lhs, m.frame_name(*b), components, LINE),
+        } => vector_sum(m, lhs, m.frame_name(*b), components, max),
         Value::Matrix(i) => {
             let mx = matrix(m, i);
-            if width(&mx) > LINE + 20 {
+            if width(&mx) > max + 20 {
                 matrix_named(m, lhs, i)
             } else {
                 format!("{lhs} &= {mx}")
@@ -703,10 +736,14 @@ pub fn value_styled(m: &Mechanism, style: VectorStyle, lhs: &str, v: &Value) -> 
                 )
             } else {
                 let bn = m.frame_name(*b);
+                let (rn, mn) = match torsor_names {
+                    Some((r, mo)) => (r.to_string(), mo.to_string()),
+                    None => ("\\vec{R}".to_string(), format!("\\vec{{M}}({pn})")),
+                };
                 format!(
                     "{}\\\\\n{}",
-                    vector_sum(m, "\\vec{R}", bn, resultant, LINE),
-                    vector_sum(m, &format!("\\vec{{M}}({pn})"), bn, moment, LINE)
+                    vector_sum(m, &rn, bn, resultant, room(&rn, line)),
+                    vector_sum(m, &mn, bn, moment, room(&mn, line))
                 )
             }
         }

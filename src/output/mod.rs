@@ -119,8 +119,12 @@ pub fn manifest_json(m: &Mechanism, key: &crate::latex::AnswerKey) -> Json {
                 DisplayRole::Result => "result",
                 DisplayRole::Equation => "equation",
             };
-            json!({"role": role, "what": d.what, "hypothesis": d.hypothesis,
-                   "latex": d.latex, "value": value_json(m, &d.value)})
+            let mut j = json!({"role": role, "what": d.what, "hypothesis": d.hypothesis,
+                   "latex": d.latex, "value": value_json(m, &d.value)});
+            if let Some(r) = &d.rhs {
+                j["rhs"] = value_json(m, r);
+            }
+            j
         })
         .collect();
     let inline: Vec<Json> = key

@@ -565,6 +565,14 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                 ));
             }
         }
+        if let Some(h) = &qs.under
+            && !hypotheses.iter().any(|x: &Hypothesis| &x.name == h)
+        {
+            return Err(at(
+                format!("{path}.under"),
+                format!("unknown hypothesis `{h}`"),
+            ));
+        }
         for (k, q) in qs.quantities.iter().enumerate() {
             Quantity::parse(q).map_err(|e| at(format!("{path}.quantities[{k}]"), e.to_string()))?;
         }

@@ -274,6 +274,10 @@ pub struct QuestionSpec {
     /// set to zero).
     #[serde(default)]
     pub hypotheses: Vec<String>,
+    /// The hypothesis the question works under: every step and result of the answer is then
+    /// written under it (« on se place sous l'hypothèse H2 »), and only under it.
+    #[serde(default)]
+    pub under: Option<String>,
     /// Quantities derived step by step in the answer.
     #[serde(default)]
     pub quantities: Vec<String>,

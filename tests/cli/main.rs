@@ -562,10 +562,17 @@ fn answer_key_manifest_lists_every_display_as_printed() {
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&man).unwrap()).unwrap();
     let ds = v["displays"].as_array().unwrap();
-    assert_eq!(ds.len(), text.matches("\\begin{align*}").count());
+    let boxed = "\\begin{empheq}[box=\\fbox]{align*}";
+    assert_eq!(
+        ds.len(),
+        text.matches("\\begin{align*}").count() + text.matches(boxed).count()
+    );
     for disp in ds {
         let latex = disp["latex"].as_str().unwrap();
-        assert!(text.contains(&format!("\\begin{{align*}}\n{latex}\n\\end{{align*}}")));
+        assert!(
+            text.contains(&format!("\\begin{{align*}}\n{latex}\n\\end{{align*}}"))
+                || text.contains(&format!("{boxed}\n{latex}\n\\end{{empheq}}"))
+        );
         assert!(disp["what"].is_string() && disp["role"].is_string());
         assert!(disp["value"]["kind"].is_string());
     }

@@ -69,7 +69,15 @@ fn the_key_shows_the_course_notation() {
         "\\cos\\theta_{2}",
         "L_{1}",
         "A_{2}",
-        "théorème de Huygens",
+        "Théorème de Huygens",
+        // The method, applied to the objects, and the structure of a corrigé.
+        "$O_{1}$ est un point de $S_{1}$ fixe dans $\\mathcal{R}_{0}$",
+        "Composition des vitesses de rotation",
+        "Bilan des actions mécaniques extérieures à $E$",
+        "D'après la question 3",
+        "\\begin{empheq}[box=\\fbox]{align*}",
+        "Hypothèses du modèle.} Le référentiel $\\mathcal{R}_{0}$ est galiléen",
+        "On se place sous l'hypothèse H2.",
     ] {
         assert!(tex.contains(needle), "missing {needle}");
     }

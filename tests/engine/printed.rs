@@ -614,18 +614,47 @@ fn prove(ctx: &Ctx, latex: &str, v: &Value) -> Result<(), String> {
     }
 }
 
-/// The bodies of the `align*` displays of a document, in order.
+/// The bodies of the `align*` displays of a document (boxed in `empheq` or not), in order.
 fn align_bodies(tex: &str) -> Vec<&str> {
-    let (open, close) = ("\\begin{align*}\n", "\n\\end{align*}");
+    let kinds = [
+        ("\\begin{align*}\n", "\n\\end{align*}"),
+        ("\\begin{empheq}[box=\\fbox]{align*}\n", "\n\\end{empheq}"),
+    ];
     let mut out = Vec::new();
     let mut rest = tex;
-    while let Some(a) = rest.find(open) {
+    loop {
+        let next = kinds
+            .iter()
+            .filter_map(|(o, c)| rest.find(o).map(|a| (a, *o, *c)))
+            .min_by_key(|x| x.0);
+        let Some((a, open, close)) = next else { break };
         let from = &rest[a + open.len()..];
-        let b = from.find(close).expect("align* closes");
+        let b = from.find(close).expect("display closes");
         out.push(&from[..b]);
         rest = &from[b..];
     }
     out
+}
+
+/// An equality display: its left side (first equation's right side, or the left side of a
+/// single equation) and its right side.
+fn prove_equality(ctx: &Ctx, latex: &str, l: &Value, r: &Value) -> Result<(), String> {
+    let eqs = equations(latex);
+    let (Value::Scalar(l), Value::Scalar(r)) = (l, r) else {
+        return Err("an equality of non-scalars".into());
+    };
+    let (a, b) = match eqs.as_slice() {
+        [(_, a), (_, b)] => (ctx.scalar(a)?, ctx.scalar(b)?),
+        [(a, b)] => (ctx.scalar(a)?, ctx.scalar(b)?),
+        _ => return Err(format!("{} equations in an equality", eqs.len())),
+    };
+    if &a != l {
+        return Err(format!("left side printed {a}, engine {l}"));
+    }
+    if &b != r {
+        return Err(format!("right side printed {b}, engine {r}"));
+    }
+    Ok(())
 }
 
 fn spec_paths() -> Vec<std::path::PathBuf> {
@@ -691,7 +720,11 @@ fn every_printed_formula_is_the_engines_value() {
         }
         let mut fast: HashMap<String, Value> = HashMap::new();
         for d in &key.displays {
-            if let Err(e) = prove(&ctx, &d.latex, &d.value) {
+            let proof = match &d.rhs {
+                Some(r) => prove_equality(&ctx, &d.latex, &d.value, r),
+                None => prove(&ctx, &d.latex, &d.value),
+            };
+            if let Err(e) = proof {
                 panic!(
                     "{}: {} ({:?}, under {:?}) is printed wrong: {e}\n{}",
                     path.display(),
@@ -716,8 +749,24 @@ fn every_printed_formula_is_the_engines_value() {
                     Some(h) => v.under(m.hypotheses.iter().find(|x| &x.name == h).unwrap()),
                     None => v.clone(),
                 };
+                // An equation a = b shows the quantity a − b (up to its sign: either side may
+                // stand on the left).
+                let shown = match (&d.value, &d.rhs) {
+                    (Value::Scalar(a), Some(Value::Scalar(b))) => {
+                        let diff = a - b;
+                        let Value::Scalar(w) = &want else {
+                            panic!("an equation of a vector")
+                        };
+                        if &(-&diff) == w {
+                            Value::Scalar(-&diff)
+                        } else {
+                            Value::Scalar(diff)
+                        }
+                    }
+                    _ => d.value.clone(),
+                };
                 assert!(
-                    want.exprs() == d.value.exprs(),
+                    want.exprs() == shown.exprs(),
                     "{}: {} under {:?}: the key's value is not the fast route's",
                     path.display(),
                     d.what,

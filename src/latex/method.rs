@@ -1,0 +1,724 @@
+//! The method a corrigé teaches: each step of a derivation introduced by one typeset sentence
+//! applied to the actual objects (« $O_1$ est fixe dans $\mathcal{R}_0$ … »), steps already
+//! shown cited instead of re-derived, the dynamic moment at a fixed point written as the
+//! derivative of the kinetic moment in one line, and the PFD as a bilan of the external
+//! actions followed by one equality per theorem.
+
+use super::document::{DisplayRole, Doc};
+use super::{basis_vector, frame, name, point, quantity};
+use crate::derivation::{Derivation, Step, StepKind, Value, derive};
+use crate::frame::FrameId;
+use crate::mechanism::Mechanism;
+use crate::quantity::{Motion, Quantity, QuantityKind};
+use std::fmt::Write;
+
+/// `\overrightarrow{\Omega(2/1)}` from frame names.
+fn omega_of(a: &str, b: &str) -> String {
+    quantity(&QuantityKind::Omega(Motion {
+        moving: a.to_string(),
+        reference: b.to_string(),
+    }))
+}
+
+/// The frames from `f` up to `r` (both included), when `r` is an ancestor of `f`.
+fn chain(m: &Mechanism, f: FrameId, r: FrameId) -> Option<Vec<FrameId>> {
+    let mut out = vec![f];
+    let mut cur = f;
+    while cur != r {
+        cur = m.frames.get(cur).parent?;
+        out.push(cur);
+    }
+    Some(out)
+}
+
+/// « Composition des vitesses de rotation : Ω(2/0) = Ω(2/1) + Ω(1/0) » along the frames that
+/// turn, or « D'après le paramétrage » for one rotation.
+fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
+    let (Some(f), Some(r)) = (m.frames.find(&mo.moving), m.frames.find(&mo.reference)) else {
+        return "Composition des vitesses de rotation :".to_string();
+    };
+    let Some(c) = chain(m, f, r) else {
+        return "Composition des vitesses de rotation :".to_string();
+    };
+    let turning: Vec<(FrameId, FrameId)> = c
+        .windows(2)
+        .filter(|w| m.frames.get(w[0]).rotation.is_some())
+        .map(|w| (w[0], w[1]))
+        .collect();
+    if turning.len() <= 1 {
+        return "D'après le paramétrage :".to_string();
+    }
+    let parts: Vec<String> = turning
+        .iter()
+        .map(|&(a, b)| omega_of(m.frame_name(a), m.frame_name(b)))
+        .collect();
+    format!(
+        "Composition des vitesses de rotation, ${} = {}$ :",
+        omega_of(&mo.moving, &mo.reference),
+        parts.join(" + ")
+    )
+}
+
+/// `S_2` for solid `2`, `E` for a set.
+fn solid(n: &str) -> String {
+    if n.chars().all(|c| c.is_ascii_digit()) {
+        format!("S_{{{n}}}")
+    } else {
+        name(n)
+    }
+}
+
+/// The mass of a solid in LaTeX (`m_{2}`), or `m` for a set.
+fn mass_of(m: &Mechanism, s: &str) -> String {
+    m.bodies
+        .iter()
+        .find(|b| b.name == s)
+        .map(|b| super::expr(&b.mass))
+        .unwrap_or_else(|| "m".to_string())
+}
+
+/// The sentence that introduces a step: the theorem applied to the step's objects.
+fn sentence(m: &Mechanism, s: &Step) -> String {
+    use QuantityKind::*;
+    let t = s.theorem.as_str();
+    match &s.kind {
+        StepKind::Quantity(Omega(mo)) => omega_sentence(m, mo),
+        StepKind::Quantity(Inertia {
+            point: a,
+            solid: sn,
+        }) => {
+            if let Some(g) = t.strip_prefix("théorème de Huygens, de ") {
+                let g = g.split(' ').next().unwrap_or(g);
+                format!(
+                    "Théorème de Huygens, de ${}$ en ${}$ (${} = I_{{{}}}({sn})$ + terme de transport de ${}$) :",
+                    point(g),
+                    point(a),
+                    quantity(&Inertia {
+                        point: a.clone(),
+                        solid: sn.clone()
+                    }),
+                    point(g),
+                    mass_of(m, sn)
+                )
+            } else if t == "masse ponctuelle" {
+                format!("${}$ est une masse ponctuelle :", solid(sn))
+            } else {
+                "Opérateur d'inertie :".to_string()
+            }
+        }
+        StepKind::Quantity(KineticMoment {
+            point: a,
+            motion: mo,
+        }) => {
+            let sigma = quantity(&KineticMoment {
+                point: a.clone(),
+                motion: mo.clone(),
+            });
+            let i = format!("I_{{{}}}({})", point(a), mo.moving);
+            let om = omega_of(&mo.moving, &mo.reference);
+            if t.starts_with("σ(G") {
+                format!(
+                    "${}$ est le centre d'inertie de ${}$ : ${sigma} = {i}\\cdot{om}$ :",
+                    point(a),
+                    solid(&mo.moving)
+                )
+            } else if t.starts_with("point fixe") {
+                format!(
+                    "${}$ est un point de ${}$ fixe dans ${}$ : ${sigma} = {i}\\cdot{om}$ :",
+                    point(a),
+                    solid(&mo.moving),
+                    frame(&mo.reference)
+                )
+            } else {
+                let g = m
+                    .bodies
+                    .iter()
+                    .find(|b| b.name == mo.moving)
+                    .map(|b| m.point_name(b.centre).to_string())
+                    .unwrap_or_else(|| "G".into());
+                format!(
+                    "${sigma} = {i}\\cdot{om} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
+                    mass_of(m, &mo.moving),
+                    point(a),
+                    point(&g),
+                    point(a),
+                    mo.moving,
+                    mo.reference
+                )
+            }
+        }
+        StepKind::Derivative(_, r) => format!(
+            "Dérivée dans ${}$ (formule de Bour, $\\left[\\frac{{\\mathrm{{d}}\\vec u}}{{\\mathrm{{d}}t}}\\right]_{{{}}} = \\left[\\frac{{\\mathrm{{d}}\\vec u}}{{\\mathrm{{d}}t}}\\right]_{{\\mathcal{{R}}_k}} + \\overrightarrow{{\\Omega(k/{r})}}\\wedge\\vec u$) :",
+            frame(r),
+            frame(r)
+        ),
+        StepKind::Complementary(a, _, r) => format!(
+            "${}$ n'est pas fixe dans ${}$ : terme complémentaire",
+            point(a),
+            frame(r)
+        ),
+        StepKind::Quantity(DynamicMoment {
+            point: a,
+            motion: mo,
+        }) => format!(
+            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}} + \\overrightarrow{{V({}/{})}}\\wedge {}\\,\\overrightarrow{{V(G/{})}}$ :",
+            quantity(&DynamicMoment {
+                point: a.clone(),
+                motion: mo.clone()
+            }),
+            quantity(&KineticMoment {
+                point: a.clone(),
+                motion: mo.clone()
+            }),
+            frame(&mo.reference),
+            point(a),
+            frame(&mo.reference),
+            mass_of(m, &mo.moving),
+            frame(&mo.reference)
+        ),
+        StepKind::Quantity(DynamicResultant(mo)) | StepKind::Quantity(KineticResultant(mo)) => {
+            let dynamic = matches!(s.kind, StepKind::Quantity(DynamicResultant(_)));
+            let g = m
+                .bodies
+                .iter()
+                .find(|b| b.name == mo.moving)
+                .map(|b| m.point_name(b.centre).to_string())
+                .unwrap_or_else(|| "G".into());
+            let (r, v) = if dynamic {
+                (
+                    DynamicResultant(mo.clone()),
+                    Acceleration {
+                        point: g,
+                        motion: mo.clone(),
+                    },
+                )
+            } else {
+                (
+                    KineticResultant(mo.clone()),
+                    Velocity {
+                        point: g,
+                        motion: mo.clone(),
+                    },
+                )
+            };
+            format!(
+                "${} = {}\\,{}$ :",
+                quantity(&r),
+                mass_of(m, &mo.moving),
+                quantity(&v)
+            )
+        }
+        StepKind::Quantity(k) if k.is_torsor() => {
+            // A change of point: M(B) = M(A) + BA ∧ R.
+            let from = t
+                .split("= M(")
+                .nth(1)
+                .and_then(|x| x.split(')').next())
+                .unwrap_or("A")
+                .to_string();
+            let to = match k {
+                KineticTorsor { point: p, .. } | DynamicTorsor { point: p, .. } => p.clone(),
+                _ => "B".into(),
+            };
+            format!(
+                "Changement de point, de ${}$ à ${}$ ($\\vec{{M}}({}) = \\vec{{M}}({}) + \\overrightarrow{{{}{}}}\\wedge\\vec{{R}}$) :",
+                point(&from),
+                point(&to),
+                point(&to),
+                point(&from),
+                point(&to),
+                point(&from)
+            )
+        }
+        _ => format!("{} :", super::escape_text(t)),
+    }
+}
+
+/// The course's names of a torsor's elements: (resultant, moment).
+pub(super) fn torsor_names(k: &QuantityKind) -> Option<(String, String)> {
+    use QuantityKind::*;
+    let (r, mo, p) = match k {
+        KinematicTorsor { motion, point } => (
+            Omega(motion.clone()),
+            Velocity {
+                point: point.clone(),
+                motion: motion.clone(),
+            },
+            point,
+        ),
+        KineticTorsor { motion, point } => (
+            KineticResultant(motion.clone()),
+            KineticMoment {
+                point: point.clone(),
+                motion: motion.clone(),
+            },
+            point,
+        ),
+        DynamicTorsor { motion, point } => (
+            DynamicResultant(motion.clone()),
+            DynamicMoment {
+                point: point.clone(),
+                motion: motion.clone(),
+            },
+            point,
+        ),
+        _ => return None,
+    };
+    let _ = p;
+    Some((quantity(&r), quantity(&mo)))
+}
+
+/// The left side of a step's display.
+fn step_lhs(k: &StepKind) -> String {
+    match k {
+        StepKind::Quantity(q) => quantity(q),
+        StepKind::Derivative(q, r) => format!(
+            "\\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}}",
+            quantity(q),
+            frame(r)
+        ),
+        StepKind::Complementary(a, g, r) => format!(
+            "\\overrightarrow{{V({}/{})}} \\wedge m\\,\\overrightarrow{{V({}/{})}}",
+            point(a),
+            frame(r),
+            point(g),
+            frame(r)
+        ),
+        StepKind::Action { from, on, point: p } => format!(
+            "\\left\\{{\\mathcal{{T}}({} \\rightarrow {})\\right\\}}_{{{}}}",
+            action_side(from),
+            action_side(on),
+            point(p)
+        ),
+        StepKind::Projected(q, (f, a)) => format!("{} \\cdot {}", quantity(q), basis_vector(*a, f)),
+        StepKind::External {
+            isolate,
+            point: p,
+            on: (f, a),
+        } => {
+            let s = action_side(isolate);
+            let arrow = format!("\\bar{{{s}}} \\rightarrow {s}");
+            match p {
+                Some(p) => format!(
+                    "\\overrightarrow{{M({},{arrow})}} \\cdot {}",
+                    point(p),
+                    basis_vector(*a, f)
+                ),
+                None => format!(
+                    "\\overrightarrow{{R({arrow})}} \\cdot {}",
+                    basis_vector(*a, f)
+                ),
+            }
+        }
+    }
+}
+
+/// A solid number as is, a name (`pes`, `moteur`) upright.
+pub(super) fn action_side(n: &str) -> String {
+    if n.chars().all(|c| c.is_ascii_digit()) {
+        n.to_string()
+    } else if n.len() == 1 {
+        name(n)
+    } else {
+        format!("\\mathrm{{{}}}", n.replace('_', "\\_"))
+    }
+}
+
+/// A step's value under the question's hypothesis.
+fn shown_value(doc: &Doc, v: &Value) -> Value {
+    match doc.under {
+        Some(h) => v.under(h),
+        None => v.clone(),
+    }
+}
+
+/// Writes the steps of a kinematic or kinetic derivation as the course shows them. Returns
+/// whether the last step displayed equals the result (so the result is not repeated).
+fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
+    let m = doc.m;
+    let mut cited: Vec<(String, String)> = Vec::new();
+    let flush = |doc: &mut Doc, cited: &mut Vec<(String, String)>| {
+        if cited.is_empty() {
+            return;
+        }
+        let mut by_place: Vec<(String, Vec<String>)> = Vec::new();
+        for (lhs, place) in cited.drain(..) {
+            match by_place.iter_mut().find(|(p, _)| *p == place) {
+                Some((_, v)) => v.push(lhs),
+                None => by_place.push((place, vec![lhs])),
+            }
+        }
+        for (place, lhss) in by_place {
+            let list: Vec<String> = lhss.iter().map(|l| format!("${l}$")).collect();
+            let _ = writeln!(doc.o, "D'après {place} : {}.\n", french_list(&list));
+        }
+    };
+    let n = d.steps.len();
+    let mut i = 0;
+    let mut last_is_result = false;
+    while i < n {
+        let s = &d.steps[i];
+        let v = shown_value(doc, &s.value);
+        // A derivative that is already the dynamic moment (no complementary term): one line.
+        if let (StepKind::Derivative(sig, r), Some(next)) = (&s.kind, d.steps.get(i + 1))
+            && let StepKind::Quantity(QuantityKind::DynamicMoment {
+                point: a,
+                motion: mo,
+            }) = &next.kind
+            && next.value.exprs() == s.value.exprs()
+        {
+            let delta = quantity(&next_kind(&next.kind));
+            let lhs = format!("{delta} = {}", step_lhs(&s.kind));
+            let _ = sig;
+            let why = if mo_centre(m, a, mo) {
+                format!("${}$ est le centre d'inertie", point(a))
+            } else {
+                format!("${}$ est fixe dans ${}$", point(a), frame(r))
+            };
+            if let Some(place) = doc.cited(&delta, &v) {
+                cited.push((delta, place));
+            } else {
+                flush(doc, &mut cited);
+                let _ = writeln!(
+                    doc.o,
+                    "{why} : le moment dynamique est la dérivée du moment cinétique dans ${}$ (formule de Bour) :",
+                    frame(r)
+                );
+                doc.show_keyed(DisplayRole::Step, &next.label, &lhs, &delta, &v, false);
+                last_is_result = i + 2 == n && delta == result_lhs;
+            }
+            i += 2;
+            continue;
+        }
+        let lhs = step_lhs(&s.kind);
+        if let Some(place) = doc.cited(&lhs, &v) {
+            cited.push((lhs, place));
+            i += 1;
+            continue;
+        }
+        // The last step is the result itself: the result display shows it.
+        if i + 1 == n && lhs == result_lhs && d.value.exprs() == s.value.exprs() {
+            last_is_result = true;
+            flush(doc, &mut cited);
+            let _ = writeln!(doc.o, "{}", sentence(m, s));
+            i += 1;
+            continue;
+        }
+        flush(doc, &mut cited);
+        // Rd = m Γ(G) and Rc = m V(G): the velocity and acceleration of G first.
+        if let StepKind::Quantity(QuantityKind::DynamicResultant(mo))
+        | StepKind::Quantity(QuantityKind::KineticResultant(mo)) = &s.kind
+        {
+            let dynamic = matches!(
+                s.kind,
+                StepKind::Quantity(QuantityKind::DynamicResultant(_))
+            );
+            kinematics_of_centre(doc, mo, dynamic, &s.value);
+        }
+        let _ = writeln!(doc.o, "{}", sentence(m, s));
+        doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
+        i += 1;
+    }
+    flush(doc, &mut cited);
+    last_is_result
+}
+
+fn next_kind(k: &StepKind) -> QuantityKind {
+    match k {
+        StepKind::Quantity(q) => q.clone(),
+        _ => unreachable!("called on a quantity step"),
+    }
+}
+
+/// Whether `a` is the centre of inertia of the moving solid.
+fn mo_centre(m: &Mechanism, a: &str, mo: &Motion) -> bool {
+    m.bodies
+        .iter()
+        .any(|b| b.name == mo.moving && m.point_name(b.centre) == a)
+}
+
+/// « a, b et c ».
+fn french_list(items: &[String]) -> String {
+    match items {
+        [] => String::new(),
+        [a] => a.clone(),
+        [init @ .., last] => format!("{} et {last}", init.join(", ")),
+    }
+}
+
+/// V(G) (derivative of the position from the ground origin) and Γ(G) (derivative of V(G)),
+/// shown before the resultant m V(G) or m Γ(G), in the basis of the resultant.
+fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) {
+    let m = doc.m;
+    let Some(body) = m.bodies.iter().find(|b| b.name == mo.moving) else {
+        return;
+    };
+    let Value::Vector { basis: b, .. } = res else {
+        return;
+    };
+    let g = m.point_name(body.centre).to_string();
+    let bn = m.frame_name(*b).to_string();
+    let o = m.point_name(m.points.origin()).to_string();
+    let r = &mo.reference;
+    let vq = format!("V({g},{}/{r}) in B{bn}", mo.moving);
+    let Ok(vd) = Quantity::parse(&vq)
+        .map_err(|e| e.to_string())
+        .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
+    else {
+        return;
+    };
+    let vv = shown_value(doc, &vd.value);
+    let vk = QuantityKind::Velocity {
+        point: g.clone(),
+        motion: mo.clone(),
+    };
+    let vlhs = quantity(&vk);
+    if vv.exprs().iter().all(|e| e.is_zero()) {
+        if doc.cited(&vlhs, &vv).is_none() {
+            let _ = writeln!(
+                doc.o,
+                "${}$ est fixe dans ${}$ : ${} = \\vec{{0}}$, donc la résultante est nulle.\n",
+                point(&g),
+                frame(r),
+                vlhs
+            );
+            doc.remember(&vlhs, &vv);
+        }
+        return;
+    }
+    match doc.cited(&vlhs, &vv) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${vlhs}$.\n");
+        }
+        None => {
+            let _ = writeln!(
+                doc.o,
+                "Dérivée dans ${}$ du vecteur position $\\overrightarrow{{{}{}}}$ (${}$ fixe dans ${}$) :",
+                frame(r),
+                point(&o),
+                point(&g),
+                point(&o),
+                frame(r)
+            );
+            doc.show_keyed(DisplayRole::Step, &vq, &vlhs, &vlhs, &vv, false);
+        }
+    }
+    if !dynamic {
+        return;
+    }
+    let aq = format!("Gamma({g},{}/{r}) in B{bn}", mo.moving);
+    let Ok(ad) = Quantity::parse(&aq)
+        .map_err(|e| e.to_string())
+        .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
+    else {
+        return;
+    };
+    let av = shown_value(doc, &ad.value);
+    let alhs = quantity(&QuantityKind::Acceleration {
+        point: g.clone(),
+        motion: mo.clone(),
+    });
+    match doc.cited(&alhs, &av) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${alhs}$.\n");
+        }
+        None => {
+            let _ = writeln!(
+                doc.o,
+                "${alhs} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vlhs}\\right]_{{{}}}$ :",
+                frame(r)
+            );
+            doc.show_keyed(DisplayRole::Step, &aq, &alhs, &alhs, &av, false);
+        }
+    }
+}
+
+/// A requested quantity of the kinematics or kinetics: its steps, then the boxed result.
+pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &str) {
+    let m = doc.m;
+    let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
+    let last_is_result = steps(doc, d, lhs);
+    let id = d.quantity.to_string();
+    let names = torsor_names(&d.quantity.kind);
+    let hyps: Vec<_> = match doc.under {
+        Some(h) => vec![Some(h)],
+        None => std::iter::once(None)
+            .chain(m.hypotheses.iter().map(Some))
+            .collect(),
+    };
+    let general = d.value.clone();
+    for h in hyps {
+        let v = match h {
+            Some(h) => general.under(h),
+            None => general.clone(),
+        };
+        if doc.under.is_none()
+            && let Some(h) = h
+        {
+            if v.exprs() == general.exprs() {
+                let _ = writeln!(
+                    doc.o,
+                    "Sous l'hypothèse {}, le résultat est inchangé.\n",
+                    super::escape_text(&h.name)
+                );
+                continue;
+            }
+            let _ = writeln!(doc.o, "Sous l'hypothèse {} :", super::escape_text(&h.name));
+        } else if h.is_none() && last_is_result {
+            // The last step is the result: box it without repeating a sentence.
+        }
+        // A torsor whose elements were just shown: its notation, boxed, not its values again.
+        if let (
+            Some((rn, mn)),
+            Value::Torsor {
+                basis,
+                resultant,
+                moment,
+                point: p,
+            },
+        ) = (&names, &v)
+        {
+            let res = Value::Vector {
+                basis: *basis,
+                components: resultant.clone(),
+            };
+            let mom = Value::Vector {
+                basis: *basis,
+                components: moment.clone(),
+            };
+            if doc.cited(rn, &res).is_some() && doc.cited(mn, &mom).is_some() {
+                let _ = writeln!(
+                    doc.o,
+                    "\\[ \\boxed{{{lhs} = \\left\\{{ \\begin{{array}}{{l}} {rn} \\\\ {mn} \\end{{array}} \\right\\}}_{{{}}}}} \\]\nses éléments de réduction étant ceux calculés ci-dessus.\n",
+                    point(m.point_name(*p))
+                );
+                doc.remember(lhs, &v);
+                continue;
+            }
+        }
+        let hn = h.map(|h| h.name.clone());
+        doc.show_result(
+            DisplayRole::Result,
+            &id,
+            hn.as_deref(),
+            lhs,
+            &v,
+            names.as_ref(),
+        );
+    }
+}
+
+/// The PFD: for each theorem, the bilan of the external actions (once per isolated system),
+/// the theorem as one equality (dynamic side, actions), then the unknown or the equation of
+/// motion.
+pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
+    let m = doc.m;
+    let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
+    let mut k = 0;
+    let steps = &d.steps;
+    let mut last_equality: Option<(Value, Value)> = None;
+    while k < steps.len() {
+        // One theorem: actions…, projected dynamic side, external actions.
+        let start = k;
+        while k < steps.len() && matches!(steps[k].kind, StepKind::Action { .. }) {
+            k += 1;
+        }
+        let (Some(dyn_step), Some(ext_step)) = (steps.get(k), steps.get(k + 1)) else {
+            break;
+        };
+        let StepKind::External {
+            isolate,
+            point: at,
+            on: (f, a),
+        } = &ext_step.kind
+        else {
+            break;
+        };
+        let iso = action_side(isolate);
+        let iso_name = solid(isolate);
+        match doc.bilans.get(isolate).cloned() {
+            Some(place) => {
+                let _ = writeln!(
+                    doc.o,
+                    "On isole ${iso_name}$ ; le bilan des actions mécaniques extérieures est celui de {place}.\n"
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    doc.o,
+                    "On isole ${iso_name}$. Bilan des actions mécaniques extérieures à ${iso_name}$ :"
+                );
+                for s in &steps[start..k] {
+                    let desc = s
+                        .theorem
+                        .split_once('(')
+                        .map(|(_, d)| d.strip_suffix(')').unwrap_or(d))
+                        .unwrap_or(&s.theorem);
+                    let _ = writeln!(doc.o, "{} :", super::escape_text(desc));
+                    let v = shown_value(doc, &s.value);
+                    let lhs = step_lhs(&s.kind);
+                    doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
+                }
+                let here = doc.here.clone();
+                doc.bilans.insert(isolate.clone(), here);
+            }
+        }
+        let theorem = match at {
+            Some(p) => format!(
+                "Théorème du moment dynamique appliqué à ${iso_name}$ en ${}$, en projection sur ${}$",
+                point(p),
+                basis_vector(*a, f)
+            ),
+            None => format!(
+                "Théorème de la résultante dynamique appliqué à ${iso_name}$, en projection sur ${}$",
+                basis_vector(*a, f)
+            ),
+        };
+        let _ = iso;
+        let dl = step_lhs(&dyn_step.kind);
+        let el = step_lhs(&ext_step.kind);
+        let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$ :");
+        let dv = shown_value(doc, &dyn_step.value);
+        let ev = shown_value(doc, &ext_step.value);
+        doc.show_equality(
+            DisplayRole::Step,
+            &dyn_step.label,
+            &dl,
+            &dv,
+            &el,
+            &ev,
+            false,
+        );
+        last_equality = Some((dv, ev));
+        k += 2;
+    }
+    let id = d.quantity.to_string();
+    let v = shown_value(doc, &d.value);
+    let hn = doc.under.map(|h| h.name.clone());
+    match &d.quantity.kind {
+        QuantityKind::Eom(q) => {
+            // The equation of motion, dynamic side = actions, boxed; when the theorem's
+            // equality is already it, box that.
+            let Value::Scalar(e) = &v else { return };
+            let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
+            let (lhs, rhs) = match &last_equality {
+                Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => {
+                    (a.clone(), b.clone())
+                }
+                _ => split_equation(e),
+            };
+            doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
+        }
+        _ => {
+            let lhs = quantity(&d.quantity.kind);
+            doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
+        }
+    }
+    let _ = m;
+}
+
+/// An equation e = 0 as (terms with a rate) = −(the others).
+fn split_equation(e: &crate::expr::Expr) -> (crate::expr::Expr, crate::expr::Expr) {
+    let (with, without) = e.split_by_rates();
+    (with, -without)
+}
