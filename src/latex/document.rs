@@ -519,9 +519,9 @@ pub fn answer_key_document(
     };
     let o = &mut doc.o;
     o.push_str(
-        "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\
+        "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
          \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
-         \\usepackage{amsmath,amssymb,graphicx,empheq}\n\\usepackage[margin=1.8cm]{geometry}\n\
+         \\usepackage{amsmath,amssymb,graphicx,empheq,multicol}\n\\usepackage[margin=1.6cm]{geometry}\n\
          \\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.4em}\n\
          \\setlength{\\fboxsep}{4pt}\n",
     );
@@ -536,7 +536,7 @@ pub fn answer_key_document(
     }
 
     // Set-up.
-    o.push_str("\\section*{Paramétrage}\n\\begin{itemize}\n");
+    o.push_str("\\section*{Paramétrage}\n\\begin{multicols}{2}\n\\begin{itemize}\n");
     for c in &m.spec.coordinates {
         let kind = match c.kind {
             crate::spec::wire::CoordinateKind::Angle => "angle",
@@ -627,7 +627,7 @@ pub fn answer_key_document(
             },
         });
     }
-    o.push_str("\\end{itemize}\n");
+    o.push_str("\\end{itemize}\n\\end{multicols}\n");
     doc.inline.extend(positions);
     for b in &m.bodies {
         let mass = super::expr(&b.mass);
@@ -834,14 +834,14 @@ fn simulation_block(
     {
         o.push_str(
             "Le sujet ne donne pas de valeurs numériques : les simulations utilisent les valeurs \
-             supposées suivantes (unités SI).\n\n\\begin{center}\n\\begin{tabular}{llll}\n",
+             supposées suivantes (unités SI).\n\n\\begin{center}\n\\begin{tabular}{llllll}\n",
         );
         let cells: Vec<String> = first
             .values
             .iter()
             .map(|(k, v)| format!("${} = {}$", name(k), french_sci(*v)))
             .collect();
-        for row in cells.chunks(4) {
+        for row in cells.chunks(6) {
             let _ = writeln!(o, "{} \\\\", row.join(" & "));
         }
         o.push_str("\\end{tabular}\n\\end{center}\n");
@@ -872,7 +872,7 @@ fn simulation_block(
     let figure = crate::simulate::figure(&m.title, &pairs, &ids, true);
     let _ = writeln!(
         o,
-        "\\begin{{center}}\n\\includegraphics[width=0.85\\textwidth]{{{file}}}\n\\end{{center}}"
+        "\\begin{{center}}\n\\includegraphics[width=0.72\\textwidth]{{{file}}}\n\\end{{center}}"
     );
     if let Some(col) = &sim.maximum {
         let unit = runs

@@ -629,7 +629,7 @@ fn matrix_named(m: &Mechanism, lhs: &str, i: &crate::inertia::Inertia) -> String
 }
 
 /// Width (in characters) beyond which a vector is written over several lines.
-pub const LINE: usize = 62;
+pub const LINE: usize = 70;
 
 /// How vectors are written in the answer key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
