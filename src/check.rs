@@ -1,11 +1,13 @@
 //! `check`: the symbolic results against the independent float backend, on random physically
-//! valid samples (bodies realised as random point clouds, random angles, rates, accelerations).
+//! valid samples (bodies realised as random point clouds, random angles, rates, accelerations),
+//! and every result homogeneous, of its quantity's dimension ([`crate::units`]).
 
 use crate::derivation::{ResolveError, Value, derive_values, resolve};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::numeric::{NumericError, NumericModel, Sample};
 use crate::output::{Values, ValuesError, numeric_point};
 use crate::quantity::Quantity;
+use crate::units::{DimensionError, Dimensions, check_value};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::fmt;
@@ -41,6 +43,18 @@ pub struct CheckRow {
     pub sample: usize,
 }
 
+/// The dimension check of one quantity under one hypothesis (or none).
+#[derive(Debug, Clone)]
+pub struct DimensionRow {
+    /// Quantity id.
+    pub quantity: String,
+    /// Hypothesis the value was taken under, if any.
+    pub hypothesis: Option<String>,
+    /// Why the value is inhomogeneous or not of its quantity's dimension; none when it is
+    /// right.
+    pub error: Option<DimensionError>,
+}
+
 /// The result of a check run.
 #[derive(Debug, Clone)]
 pub struct CheckReport {
@@ -48,8 +62,11 @@ pub struct CheckReport {
     pub samples: usize,
     /// Seed of the random generator.
     pub seed: u64,
-    /// One row per quantity and hypothesis.
+    /// One row per quantity and hypothesis (the linearisations `lin(...)` are not compared
+    /// with the float backend).
     pub rows: Vec<CheckRow>,
+    /// One row per quantity and hypothesis, `lin(...)` included: the dimension check.
+    pub dimensions: Vec<DimensionRow>,
 }
 
 impl CheckReport {
@@ -61,9 +78,17 @@ impl CheckReport {
             .collect()
     }
 
-    /// Whether every quantity agrees within [`TOLERANCE`].
+    /// Values that are inhomogeneous or not of their quantity's dimension.
+    pub fn dimension_failures(&self) -> Vec<&DimensionRow> {
+        self.dimensions
+            .iter()
+            .filter(|r| r.error.is_some())
+            .collect()
+    }
+
+    /// Whether every quantity agrees within [`TOLERANCE`] and has its dimension.
     pub fn passed(&self) -> bool {
-        self.failures().is_empty()
+        self.failures().is_empty() && self.dimension_failures().is_empty()
     }
 }
 
@@ -96,16 +121,30 @@ impl fmt::Display for CheckReport {
                 }
             )?;
         }
+        for r in self.dimension_failures() {
+            if let Some(e) = &r.error {
+                match &r.hypothesis {
+                    Some(h) => writeln!(f, "DIMENSION under {h}: {e}")?,
+                    None => writeln!(f, "DIMENSION: {e}")?,
+                }
+            }
+        }
+        let wrong = self.dimension_failures().len();
         write!(
             f,
-            "{} quantities x {} samples (seed {}), tolerance {TOLERANCE:e}: {}",
+            "{} quantities x {} samples (seed {}), tolerance {TOLERANCE:e}: {}; dimensions: {}",
             self.rows.len(),
             self.samples,
             self.seed,
-            if self.passed() {
+            if self.failures().is_empty() {
                 "all agree"
             } else {
                 "MISMATCH"
+            },
+            if wrong == 0 {
+                format!("{} values homogeneous", self.dimensions.len())
+            } else {
+                format!("{wrong} of {} values WRONG", self.dimensions.len())
             }
         )
     }
@@ -178,7 +217,10 @@ pub fn compare(
     Ok(row)
 }
 
-/// Checks every requested quantity of the spec, in general and under each hypothesis.
+/// Checks every requested quantity of the spec, in general and under each hypothesis: against
+/// the float backend, and for its dimension (every term of every component of the quantity's
+/// dimension, [`crate::units::check_value`]; terms holding a parameter without a unit are not
+/// checked).
 ///
 /// ```
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
@@ -189,23 +231,34 @@ pub fn check(m: &Mechanism, samples: usize, seed: u64) -> Result<CheckReport, Ch
     let model = NumericModel::new(&m.spec)?;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut rows = Vec::new();
+    let mut dimensions = Vec::new();
+    let dims = Dimensions::of(m);
     let derived = derive_values(m, &m.quantities)?;
     for (q, d) in m.quantities.iter().zip(derived) {
+        let v = d.value;
+        let under: Vec<(Option<&Hypothesis>, Value)> = std::iter::once((None, v.clone()))
+            .chain(m.hypotheses.iter().map(|h| (Some(h), v.under(h))))
+            .collect();
+        for (h, value) in &under {
+            dimensions.push(DimensionRow {
+                quantity: q.to_string(),
+                hypothesis: h.map(|h| h.name.clone()),
+                error: check_value(m, &dims, q, value).err(),
+            });
+        }
         // A linearisation is exact algebra on a checked quantity, tested against hand
         // derivations; the float backend computes full motions only.
         if q.linear {
             continue;
         }
-        let v = d.value;
-        rows.push(compare(m, &model, q, &v, None, samples, &mut rng)?);
-        for h in &m.hypotheses {
-            let vh = v.under(h);
-            rows.push(compare(m, &model, q, &vh, Some(h), samples, &mut rng)?);
+        for (h, value) in &under {
+            rows.push(compare(m, &model, q, value, *h, samples, &mut rng)?);
         }
     }
     Ok(CheckReport {
         samples,
         seed,
         rows,
+        dimensions,
     })
 }

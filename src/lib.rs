@@ -27,8 +27,8 @@
 //! Layers: [`spec`] (JSON to [`mechanism::Mechanism`]), [`expr`] (the only module that uses
 //! symbolica: canonical polynomial form), mechanics ([`frame`], [`vector`], [`point`],
 //! [`inertia`], [`kinematics`], [`torsor`]), [`derivation`] (steps with their theorems),
-//! [`pfd`] (actions, the Fundamental Principle of Dynamics, Lagrange), [`output`] (text, JSON,
-//! numbers).
+//! [`pfd`] (actions, the Fundamental Principle of Dynamics, Lagrange), [`units`] (dimensions
+//! and homogeneity), [`output`] (text, JSON, numbers).
 #![deny(missing_docs)]
 // Matrix and vector code indexes components as the formulas do (I[i][j], u[k]).
 #![allow(clippy::needless_range_loop)]
@@ -50,6 +50,7 @@ pub mod quantity;
 pub mod simulate;
 pub mod spec;
 pub mod torsor;
+pub mod units;
 pub mod vector;
 pub mod verify;
 

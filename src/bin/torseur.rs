@@ -77,7 +77,8 @@ enum Command {
         #[arg(long = "quantity", short = 'q')]
         quantities: Vec<String>,
     },
-    /// Symbolic results against the independent float backend (exit 1 on a mismatch).
+    /// Symbolic results against the independent float backend, and every result of its
+    /// quantity's dimension (exit 1 on a mismatch or a wrong dimension).
     Check {
         /// Problem spec (JSON).
         spec: PathBuf,
@@ -458,8 +459,18 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                             "ok": x.worst <= torseur::check::TOLERANCE})
                     })
                     .collect();
+                let dims: Vec<serde_json::Value> = r
+                    .dimensions
+                    .iter()
+                    .map(|x| {
+                        serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
+                            "ok": x.error.is_none(),
+                            "error": x.error.as_ref().map(|e| e.to_string())})
+                    })
+                    .collect();
                 let j = serde_json::json!({"samples": r.samples, "seed": r.seed,
-                    "tolerance": torseur::check::TOLERANCE, "passed": r.passed(), "quantities": rows});
+                    "tolerance": torseur::check::TOLERANCE, "passed": r.passed(), "quantities": rows,
+                    "dimensions": dims});
                 emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))?;
             } else {
                 emit(&format!("{r}\n"))?;
@@ -467,10 +478,32 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             if r.passed() {
                 Ok(())
             } else {
+                let mut problems = Vec::new();
                 let names: Vec<String> = r.failures().iter().map(|x| x.quantity.clone()).collect();
+                if !names.is_empty() {
+                    problems.push(format!(
+                        "symbolic and float results disagree: {}",
+                        names.join(", ")
+                    ));
+                }
+                let wrong = r.dimension_failures();
+                if let Some(x) = wrong.first()
+                    && let Some(e) = &x.error
+                {
+                    let under = x
+                        .hypothesis
+                        .as_ref()
+                        .map(|h| format!(" under {h}"))
+                        .unwrap_or_default();
+                    let more = match wrong.len() {
+                        1 => String::new(),
+                        n => format!(" ({} more in the report)", n - 1),
+                    };
+                    problems.push(format!("wrong dimension{under}: {e}{more}"));
+                }
                 Err(Failure {
                     code: 1,
-                    error: anyhow!("symbolic and float results disagree: {}", names.join(", ")),
+                    error: anyhow!("{}", problems.join("\n")),
                 })
             }
         }

@@ -130,6 +130,19 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         if !names.insert(p.name.clone()) {
             return Err(at(path, format!("duplicate name `{}`", p.name)));
         }
+        if let Some(u) = &p.unit {
+            let path = format!("parameters[{i}].unit");
+            let d = crate::units::Dimension::parse(u).map_err(|e| at(&path, e.to_string()))?;
+            if p.kind == ParameterKind::Angle && !d.is_dimensionless() {
+                return Err(at(
+                    path,
+                    format!(
+                        "`{}` is an angle (\"kind\": \"angle\"): its unit is rad, not `{u}`",
+                        p.name
+                    ),
+                ));
+            }
+        }
     }
     for (i, c) in spec.coordinates.iter().enumerate() {
         let path = format!("coordinates[{i}].name");

@@ -361,7 +361,9 @@ pub struct ParameterSpec {
     /// What it is, in the course's words.
     #[serde(default)]
     pub description: Option<String>,
-    /// Unit, for the answer key.
+    /// SI unit (`kg m^2`, `N m s/rad`; see [`crate::units::Dimension::parse`]): the answer
+    /// key's units and the homogeneity checks. Without it the parameter's dimension is
+    /// unknown and the terms holding it are not checked.
     #[serde(default)]
     pub unit: Option<String>,
     /// `angle` for a constant angle (an incline α): it may then turn a frame (`"angle":

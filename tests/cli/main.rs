@@ -278,6 +278,9 @@ fn check_reports_agreement_with_the_float_backend() {
     assert_eq!(v["seed"], 9);
     // 12 quantities (C_m, eom(theta2) and Ec(E/0) included), general and under H1 and H2.
     assert_eq!(v["quantities"].as_array().unwrap().len(), 36);
+    let dims = v["dimensions"].as_array().unwrap();
+    assert_eq!(dims.len(), 36);
+    assert!(dims.iter().all(|x| x["ok"] == true && x["error"].is_null()));
 }
 
 #[test]
@@ -580,4 +583,67 @@ fn answer_key_manifest_lists_every_display_as_printed() {
         ds.iter()
             .any(|d| d["what"] == "delta(O2,2/0).x2" && d["role"] == "result")
     );
+}
+
+/// The regulator's spec with an edit.
+fn edited_regulator(edit: impl Fn(&mut serde_json::Value)) -> (tempfile::TempDir, PathBuf) {
+    let mut j: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(spec()).unwrap()).unwrap();
+    edit(&mut j);
+    let d = tmp();
+    let p = d.path().join("edited.json");
+    std::fs::write(&p, serde_json::to_string_pretty(&j).unwrap()).unwrap();
+    (d, p)
+}
+
+#[test]
+fn a_unit_that_is_not_si_exits_2_naming_its_json_path() {
+    let (_d, p) = edited_regulator(|j| j["parameters"][3]["unit"] = "tr/min".into());
+    let o = run(&["check", p.to_str().unwrap(), "--samples", "2"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(e.contains("parameters[3].unit"), "{e}");
+    assert!(e.contains("rad/s"), "{e}");
+    assert!(stdout(&o).is_empty());
+}
+
+#[test]
+fn check_exits_1_on_an_inhomogeneous_position_naming_the_terms() {
+    // O2 at d1 z0 + m2 L1 y1: a mass times a length among lengths. The float backend agrees
+    // with the symbolic side (same mechanism); the dimensions do not.
+    let (_d, p) = edited_regulator(|j| {
+        let o2 = j["points"]
+            .as_array_mut()
+            .unwrap()
+            .iter_mut()
+            .find(|p| p["name"] == "O2")
+            .unwrap();
+        o2["position"] = "d1*z0 + m2*L1*y1".into();
+    });
+    let o = run(&["check", p.to_str().unwrap(), "--samples", "2"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(e.contains("wrong dimension"), "{e}");
+    assert!(
+        e.contains("V(G2,2/0) in B2, x2: inhomogeneous: the terms `-L1*m2*dot(theta1)`"),
+        "{e}"
+    );
+    assert!(!e.contains("disagree"), "the float backend agrees: {e}");
+    let out = stdout(&o);
+    assert!(out.contains("DIMENSION: V(G2,2/0) in B2, x2"), "{out}");
+    // The JSON report carries each value's dimension verdict.
+    let o = run(&["check", p.to_str().unwrap(), "--samples", "2", "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["passed"], false);
+    let dims = v["dimensions"].as_array().unwrap();
+    assert_eq!(dims.len(), 36);
+    let omega = dims.iter().find(|x| x["id"] == "Omega(2/0) in B2").unwrap();
+    assert_eq!(omega["ok"], true);
+    let vg = dims
+        .iter()
+        .find(|x| x["id"] == "V(G2,2/0) in B2" && x["hypothesis"].is_null())
+        .unwrap();
+    assert_eq!(vg["ok"], false);
+    assert!(vg["error"].as_str().unwrap().contains("inhomogeneous"));
 }

@@ -17,6 +17,7 @@ mod regulator;
 mod simulate;
 mod spec_errors;
 mod threads;
+mod units;
 
 use torseur::expr::Expr;
 use torseur::frame::FrameId;
