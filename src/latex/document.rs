@@ -86,6 +86,8 @@ pub(super) struct Doc<'m> {
     pub(super) here: String,
     /// The hypothesis the current question works under.
     pub(super) under: Option<&'m Hypothesis>,
+    /// The results, for the closing bilan: quantity id, hypothesis, value, where.
+    pub(super) results: Vec<(String, Option<String>, Value, String)>,
 }
 
 impl<'m> Doc<'m> {
@@ -516,6 +518,7 @@ pub fn answer_key_document(
         stated: Vec::new(),
         here: "le paramétrage".to_string(),
         under: None,
+        results: Vec::new(),
     };
     let o = &mut doc.o;
     o.push_str(
@@ -689,6 +692,7 @@ pub fn answer_key_document(
             }
         }
     }
+    bilan(&mut doc);
     doc.o.push_str("\\end{document}\n");
     Ok(AnswerKey {
         tex: doc.o,
@@ -696,6 +700,54 @@ pub fn answer_key_document(
         displays: doc.displays,
         inline: doc.inline,
     })
+}
+
+/// The closing « Bilan »: each result of the key (in the order of the questions), where it
+/// is, its value when it is short, and its unit from the parameters' units.
+fn bilan(doc: &mut Doc) {
+    let m = doc.m;
+    let dims = crate::units::Dimensions::of(m);
+    let mut rows: Vec<String> = Vec::new();
+    for (what, hyp, v, place) in &doc.results {
+        let Ok(q) = Quantity::parse(what) else {
+            continue;
+        };
+        let style = crate::units::unit_style(&q.kind);
+        let expected = crate::units::expected_dimension(m, &dims, &q);
+        let unit = |k: usize| {
+            expected
+                .component(k)
+                .map(|u| u.si_latex(style))
+                .filter(|u| !u.is_empty())
+                .map(|u| format!("${u}$"))
+                .unwrap_or_else(|| "--".to_string())
+        };
+        let unit = if q.kind.is_torsor() {
+            format!("{} ; {}", unit(0), unit(3))
+        } else {
+            unit(0)
+        };
+        let title = quantity_title(&q);
+        let value = match v {
+            Value::Scalar(e) if super::width(&super::expr(e)) <= 34 => {
+                format!("${}$", super::expr(e))
+            }
+            _ => place.replacen("la ", "", 1),
+        };
+        let under = hyp
+            .as_deref()
+            .map(|h| format!(" ({})", escape_text(h)))
+            .unwrap_or_default();
+        rows.push(format!("${title}${under} & {value} & {unit} \\\\"));
+    }
+    if rows.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        doc.o,
+        "\\section*{{Bilan}}\n\\begin{{center}}\n\\begin{{tabular}}{{lll}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n{}\n\\hline\n\\end{{tabular}}\n\\end{{center}}",
+        rows.join("\n")
+    );
 }
 
 /// The model's hypotheses, stated once: the reference frame, the links, gravity.

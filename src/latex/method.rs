@@ -586,6 +586,9 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
                 basis: *basis,
                 components: moment.clone(),
             };
+            let here = doc.here.clone();
+            doc.results
+                .push((id.clone(), h.map(|h| h.name.clone()), v.clone(), here));
             if doc.cited(rn, &res).is_some() && doc.cited(mn, &mom).is_some() {
                 let _ = writeln!(
                     doc.o,
@@ -597,6 +600,10 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
             }
         }
         let hn = h.map(|h| h.name.clone());
+        if names.is_none() || !matches!(v, Value::Torsor { .. }) {
+            let here = doc.here.clone();
+            doc.results.push((id.clone(), hn.clone(), v.clone(), here));
+        }
         doc.show_result(
             DisplayRole::Result,
             &id,
@@ -695,6 +702,8 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
     let id = d.quantity.to_string();
     let v = shown_value(doc, &d.value);
     let hn = doc.under.map(|h| h.name.clone());
+    let here = doc.here.clone();
+    doc.results.push((id.clone(), hn.clone(), v.clone(), here));
     match &d.quantity.kind {
         QuantityKind::Eom(q) => {
             // The equation of motion, dynamic side = actions, boxed; when the theorem's

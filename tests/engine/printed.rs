@@ -718,6 +718,18 @@ fn every_printed_formula_is_the_engines_value() {
             );
             proven += 1;
         }
+        // Every displayed value is homogeneous: all its terms have one dimension, from the
+        // parameters' units (torseur::units).
+        let dims = torseur::units::Dimensions::of(&m);
+        for d in &key.displays {
+            for v in std::iter::once(&d.value).chain(d.rhs.iter()) {
+                for e in v.exprs() {
+                    if let Err(err) = torseur::units::dimension(e, &dims) {
+                        panic!("{}: {} is not homogeneous: {err:?}", path.display(), d.what);
+                    }
+                }
+            }
+        }
         let mut fast: HashMap<String, Value> = HashMap::new();
         for d in &key.displays {
             let proof = match &d.rhs {
