@@ -119,6 +119,7 @@ fn a_pendulum_on_an_incline_of_angle_parameter_conserves_its_energy() {
     let sc = torseur::spec::wire::ScenarioSpec {
         name: "glisse".into(),
         description: None,
+        label: None,
         duration: 1.0,
         values: values.clone(),
         initial: [
