@@ -7,11 +7,13 @@
 //! loaded).
 
 mod document;
+mod figures;
 mod text;
 
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
 };
+pub use figures::{link_graph, link_text, rotation_figures};
 pub use text::{RichTextError, rich_text, rich_text_or_escaped};
 
 use crate::derivation::Value;
