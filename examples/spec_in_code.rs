@@ -110,6 +110,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 direction: None,
                 friction: None,
                 spring: None,
+                label: None,
             },
             LinkSpec {
                 name: "12".into(),
@@ -120,6 +121,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 direction: None,
                 friction: None,
                 spring: None,
+                label: None,
             },
         ],
         actions: vec![ActionSpec {
@@ -130,6 +132,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             resultant: Some("F*x0".into()),
             moment: None,
             unknowns: vec![],
+            label: Some("la poussée".into()),
         }],
         pfd: vec![
             TheoremSpec {

@@ -132,4 +132,34 @@ impl Mechanism {
     pub fn frame_name(&self, f: FrameId) -> &str {
         &self.frames.get(f).name
     }
+
+    /// How a sentence names the action `name` of the spec (« le moteur »): its `label`, or
+    /// a default built from the name; `None` for an unknown action. Gravity's label is
+    /// [`crate::spec::wire::GRAVITY_LABEL`]. Free text that may hold `$…$` formulas, checked
+    /// when the spec was loaded: print it with [`crate::latex::rich_text`].
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+    /// assert_eq!(m.action_label("moteur").as_deref(), Some("le moteur"));
+    /// assert_eq!(m.link_label("01").as_deref(), Some("la liaison pivot entre 0 et 1"));
+    /// assert_eq!(m.scenario_label("sans_frottement").as_deref(), Some("sans frottement"));
+    /// ```
+    pub fn action_label(&self, name: &str) -> Option<String> {
+        let a = self.spec.actions.iter().find(|a| a.name == name)?;
+        Some(a.label())
+    }
+
+    /// How a sentence names the link `name` of the spec: its `label`, or « la liaison pivot
+    /// entre 0 et 1 » (see [`Mechanism::action_label`]).
+    pub fn link_label(&self, name: &str) -> Option<String> {
+        let l = self.spec.links.iter().find(|l| l.name == name)?;
+        Some(l.label())
+    }
+
+    /// How the answer key and the plots name the scenario `name`: its `label`, or its name
+    /// with spaces for underscores (see [`Mechanism::action_label`]).
+    pub fn scenario_label(&self, name: &str) -> Option<String> {
+        let s = self.spec.scenarios.iter().find(|s| s.name == name)?;
+        Some(s.label())
+    }
 }

@@ -71,6 +71,9 @@ pub struct Action {
     pub basis: FrameId,
     /// How the course describes it (« liaison pivot d'axe (O1, z0) »).
     pub description: String,
+    /// How a sentence names it (« le moteur », « la pesanteur », « la liaison pivot entre 0
+    /// et 1 »): free text that may hold `$…$` formulas, for [`crate::latex::rich_text`].
+    pub label: String,
     /// The spring's part, when the link has one.
     pub spring: Option<SpringPart>,
 }
@@ -100,6 +103,7 @@ impl Action {
             moment: self.moment.neg(),
             basis: self.basis,
             description: self.description.clone(),
+            label: self.label.clone(),
             spring: self.spring.as_ref().map(|s| SpringPart {
                 potential: s.potential.clone(),
                 resultant: s.resultant.neg(),
@@ -184,6 +188,7 @@ pub fn external_actions(m: &Mechanism, s: &[BodyId]) -> Vec<Action> {
                 moment: Vector::zero(),
                 basis: m.frames.ground(),
                 description: "pesanteur, au centre d'inertie".to_string(),
+                label: crate::spec::wire::GRAVITY_LABEL.to_string(),
                 spring: None,
             });
         }

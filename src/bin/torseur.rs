@@ -524,8 +524,8 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 .filter(|id| !id.starts_with("int("))
                 .collect();
             let fig = torseur::simulate::figure(
-                &format!("{} ({})", m.title, run.scenario),
-                &[(run.scenario.as_str(), &run)],
+                &format!("{} ({})", m.title, run.label),
+                &[(run.label.as_str(), &run)],
                 &ids,
                 true,
             );

@@ -2,14 +2,20 @@
 //! kinematic monomials, vectors on their basis, torsors, inertia matrices; and the answer key.
 //!
 //! Nothing from a spec reaches the LaTeX unvalidated: identifiers are checked to be ASCII
-//! letters, digits and `_` when the spec is loaded, and free text goes through [`escape_text`].
+//! letters, digits and `_` when the spec is loaded, and free text goes through [`escape_text`],
+//! or [`rich_text`] where it may hold formulas (checked against a whitelist when the spec is
+//! loaded).
 
 mod document;
 mod method;
+mod figures;
+mod text;
 
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
 };
+pub use figures::{link_graph, link_text, rotation_figures};
+pub use text::{RichTextError, rich_text, rich_text_or_escaped};
 
 use crate::derivation::Value;
 use crate::expr::print::TermParts;

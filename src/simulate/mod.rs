@@ -61,6 +61,8 @@ pub struct Column {
 pub struct Run {
     /// Scenario name.
     pub scenario: String,
+    /// The scenario's display label (« sans frottement »), for legends.
+    pub label: String,
     /// Output instants (s).
     pub times: Vec<f64>,
     /// Columns: each coordinate and its rate, then the recorded unknowns and integrals.
@@ -233,14 +235,17 @@ pub fn simulate_with(
     }
     Ok(Run {
         scenario: sc.name.clone(),
+        label: sc.label(),
         times: traj.times().to_vec(),
         columns,
         stats: traj.stats(),
     })
 }
 
-/// A figure comparing runs: one panel per column id, one curve per run. Angles are drawn in
-/// degrees and rates in rpm when `course_units` is set, as the seed's curves are.
+/// A figure comparing runs: one panel per column id, one curve per run, named by the legend
+/// given with it (a run's [`Run::label`]). Axes are labelled in the course's notation
+/// ([`column_label`], units with `·`); angles are drawn in degrees and rates in tr/min when
+/// `course_units` is set, as the seed's curves are.
 pub fn figure(title: &str, runs: &[(&str, &Run)], ids: &[&str], course_units: bool) -> Figure {
     let mut fig = Figure::new(title, "t (s)");
     for id in ids {
@@ -253,9 +258,9 @@ pub fn figure(title: &str, runs: &[(&str, &Run)], ids: &[&str], course_units: bo
             let (scale, unit) = match (course_units, col.unit.as_str()) {
                 (true, "rad") => (180.0 / std::f64::consts::PI, "°".to_string()),
                 (true, "rad/s") => (30.0 / std::f64::consts::PI, "tr/min".to_string()),
-                (_, u) => (1.0, u.to_string()),
+                (_, u) => (1.0, u.replace(' ', "·")),
             };
-            label.get_or_insert(format!("{id} ({unit})"));
+            label.get_or_insert(format!("{} ({unit})", column_label(id)));
             let pts = run
                 .times
                 .iter()
@@ -273,4 +278,103 @@ pub fn figure(title: &str, runs: &[(&str, &Run)], ids: &[&str], course_units: bo
         }
     }
     fig
+}
+
+/// A column id in the course's notation, in Unicode for the plots: `dot(theta1)` → θ̇₁,
+/// `C_m` → Cₘ, `X01` → X₀₁; an index without a Unicode subscript stays after `_`.
+///
+/// ```
+/// use torseur::simulate::column_label;
+/// assert_eq!(column_label("dot(theta1)"), "θ\u{307}₁");
+/// assert_eq!(column_label("ddot(x)"), "x\u{308}");
+/// assert_eq!(column_label("C_m"), "Cₘ");
+/// assert_eq!(column_label("F_b"), "F_b");
+/// assert_eq!(column_label("omega"), "ω");
+/// ```
+pub fn column_label(id: &str) -> String {
+    let (inner, accent) =
+        if let Some(n) = id.strip_prefix("ddot(").and_then(|r| r.strip_suffix(')')) {
+            (n, "\u{308}")
+        } else if let Some(n) = id.strip_prefix("dot(").and_then(|r| r.strip_suffix(')')) {
+            (n, "\u{307}")
+        } else {
+            (id, "")
+        };
+    let (head, sub) = match inner.split_once('_') {
+        Some((h, s)) => (h, s.replace('_', "")),
+        None => {
+            let cut = inner
+                .char_indices()
+                .find(|(i, c)| *i > 0 && c.is_ascii_digit())
+                .map_or(inner.len(), |(i, _)| i);
+            (&inner[..cut], inner[cut..].to_string())
+        }
+    };
+    let head = greek_letter(head).map_or_else(|| head.to_string(), String::from);
+    let sub = match sub.chars().map(subscript).collect::<Option<String>>() {
+        Some(s) => s,
+        None => format!("_{sub}"),
+    };
+    format!("{head}{accent}{sub}")
+}
+
+/// The Greek letter a name spells (`theta` → θ).
+fn greek_letter(n: &str) -> Option<char> {
+    const NAMES: [(&str, char); 33] = [
+        ("alpha", 'α'),
+        ("beta", 'β'),
+        ("gamma", 'γ'),
+        ("delta", 'δ'),
+        ("epsilon", 'ε'),
+        ("zeta", 'ζ'),
+        ("eta", 'η'),
+        ("theta", 'θ'),
+        ("iota", 'ι'),
+        ("kappa", 'κ'),
+        ("lambda", 'λ'),
+        ("mu", 'μ'),
+        ("nu", 'ν'),
+        ("xi", 'ξ'),
+        ("pi", 'π'),
+        ("rho", 'ρ'),
+        ("sigma", 'σ'),
+        ("tau", 'τ'),
+        ("upsilon", 'υ'),
+        ("phi", 'φ'),
+        ("chi", 'χ'),
+        ("psi", 'ψ'),
+        ("omega", 'ω'),
+        ("Gamma", 'Γ'),
+        ("Delta", 'Δ'),
+        ("Theta", 'Θ'),
+        ("Lambda", 'Λ'),
+        ("Xi", 'Ξ'),
+        ("Pi", 'Π'),
+        ("Sigma", 'Σ'),
+        ("Phi", 'Φ'),
+        ("Psi", 'Ψ'),
+        ("Omega", 'Ω'),
+    ];
+    NAMES.iter().find(|(s, _)| *s == n).map(|(_, c)| *c)
+}
+
+/// The Unicode subscript of a digit or of one of the letters that have one (in the plots'
+/// font, DejaVu Sans).
+fn subscript(c: char) -> Option<char> {
+    match c {
+        '0'..='9' => char::from_u32(0x2080 + (c as u32 - '0' as u32)),
+        'a' => Some('ₐ'),
+        'e' => Some('ₑ'),
+        'o' => Some('ₒ'),
+        'x' => Some('ₓ'),
+        'h' => Some('ₕ'),
+        'k' => Some('ₖ'),
+        'l' => Some('ₗ'),
+        'm' => Some('ₘ'),
+        'n' => Some('ₙ'),
+        'p' => Some('ₚ'),
+        's' => Some('ₛ'),
+        't' => Some('ₜ'),
+        _ => None,
+    }
 }

@@ -134,7 +134,9 @@ impl<'a> DrawingBackend for Raster<'a> {
             if let Some(p) = prev {
                 x += font.kern(p, id);
             }
-            pen.push((id, x));
+            // A combining mark (the dots of θ̇, θ̈) is placed over the glyph before it.
+            let mark = ('\u{300}'..='\u{36f}').contains(&c);
+            pen.push((id, x, mark));
             x += font.h_advance(id);
             prev = Some(id);
         }
@@ -153,11 +155,29 @@ impl<'a> DrawingBackend for Raster<'a> {
         let transform = style.transform();
         let (w, h) = self.get_size();
         let mut result = Ok(());
-        for (id, x) in pen {
+        // Bounds of the last base glyph, for the marks that follow it.
+        let mut base: Option<ab_glyph::Rect> = None;
+        for (id, x, mark) in pen {
             let glyph = id.with_scale_and_position(scale, point(x + dx, dy));
-            let Some(outline) = self.font.outline_glyph(glyph) else {
+            let Some(mut outline) = self.font.outline_glyph(glyph) else {
                 continue; // a space
             };
+            if let (true, Some(b)) = (mark, base) {
+                // Centred over the base, and above it by a sixteenth of the size when the base is
+                // taller than the letters the mark is drawn for (θ rather than x).
+                let m = outline.px_bounds();
+                let shift_x = (b.min.x + b.max.x - m.min.x - m.max.x) / 2.0;
+                let gap = scale.y / 16.0;
+                let shift_y = (b.min.y - gap - m.max.y).min(0.0);
+                let moved =
+                    id.with_scale_and_position(scale, point(x + dx + shift_x, dy + shift_y));
+                match self.font.outline_glyph(moved) {
+                    Some(o) => outline = o,
+                    None => continue,
+                }
+            } else if !mark {
+                base = Some(outline.px_bounds());
+            }
             let min = outline.px_bounds().min;
             outline.draw(|gx, gy, coverage| {
                 if result.is_err() || coverage <= 0.0 {

@@ -392,6 +392,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
             moment,
             basis,
             description,
+            label: l.label(),
             spring,
         });
     }
@@ -425,6 +426,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
             moment,
             basis,
             description: format!("action {} de {} sur {}", a.name, a.from, a.on),
+            label: a.label(),
             spring: None,
         });
     }

@@ -142,6 +142,31 @@ pub struct LinkSpec {
     /// Torsion (pivot) or linear (slider) spring: -k (q - q0) along the axis.
     #[serde(default)]
     pub spring: Option<SpringSpec>,
+    /// How the answer key names it in a sentence (« la liaison pivot en O1 »); see
+    /// [`LinkSpec::label`] for the default.
+    #[serde(default)]
+    pub label: Option<String>,
+}
+
+impl LinkSpec {
+    /// The display label: the spec's `label`, or « la liaison pivot entre 0 et 1 » built
+    /// from the kind and the two solids. Free text: it may hold `$…$` formulas.
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+    /// assert_eq!(m.spec.links[0].label(), "la liaison pivot entre 0 et 1");
+    /// ```
+    pub fn label(&self) -> String {
+        if let Some(l) = &self.label {
+            return l.clone();
+        }
+        let kind = crate::pfd::link_name(self.kind);
+        let article = if kind.starts_with('e') { "l'" } else { "la " };
+        format!(
+            "{article}{kind} entre {} et {}",
+            self.between[0], self.between[1]
+        )
+    }
 }
 
 /// A spring in a pivot or a slider: the action on the link's second solid is
@@ -179,7 +204,32 @@ pub struct ActionSpec {
     /// Scalars of these expressions that are unknowns to solve for (`C_m`), not parameters.
     #[serde(default)]
     pub unknowns: Vec<String>,
+    /// How the answer key names it in a sentence (« le moteur », « la poussée »); see
+    /// [`ActionSpec::label`] for the default.
+    #[serde(default)]
+    pub label: Option<String>,
 }
+
+impl ActionSpec {
+    /// The display label: the spec's `label`, or « l'action moteur » built from the name.
+    /// Free text: it may hold `$…$` formulas.
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+    /// assert_eq!(m.spec.actions[0].label(), "le moteur");
+    /// let mut a = m.spec.actions[0].clone();
+    /// a.label = None;
+    /// assert_eq!(a.label(), "l'action moteur");
+    /// ```
+    pub fn label(&self) -> String {
+        self.label
+            .clone()
+            .unwrap_or_else(|| format!("l'action {}", self.name.replace('_', " ")))
+    }
+}
+
+/// The display label of gravity in the answer key's sentences.
+pub const GRAVITY_LABEL: &str = "la pesanteur";
 
 /// Which theorem of the PFD.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
@@ -219,6 +269,10 @@ pub struct ScenarioSpec {
     /// What it shows.
     #[serde(default)]
     pub description: Option<String>,
+    /// How the answer key and the plots' legends name it (« sans frottement »); see
+    /// [`ScenarioSpec::label`] for the default.
+    #[serde(default)]
+    pub label: Option<String>,
     /// Duration in seconds.
     pub duration: f64,
     /// Value of every parameter (SI units).
@@ -232,6 +286,21 @@ pub struct ScenarioSpec {
     /// Unknowns and coordinates to record (`C_m`, `theta2`), in output order.
     #[serde(default)]
     pub record: Vec<String>,
+}
+
+impl ScenarioSpec {
+    /// The display label: the spec's `label`, or the name with its underscores as spaces
+    /// (`sans_frottement` → « sans frottement »). Free text: it may hold `$…$` formulas.
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+    /// assert_eq!(m.spec.scenarios[0].label(), "sans frottement");
+    /// ```
+    pub fn label(&self) -> String {
+        self.label
+            .clone()
+            .unwrap_or_else(|| self.name.replace('_', " "))
+    }
 }
 
 /// An imposed motion: the rate of a coordinate as pieces `until` successive times.

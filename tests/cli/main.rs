@@ -647,3 +647,68 @@ fn check_exits_1_on_an_inhomogeneous_position_naming_the_terms() {
     assert_eq!(vg["ok"], false);
     assert!(vg["error"].as_str().unwrap().contains("inhomogeneous"));
 }
+
+/// A text using every whitelisted macro of free-text formulas (issue 12, item 3).
+const RICH_SAMPLE: &str = "Le rotor $S_1$ tourne de $\\theta_1$ autour de $(O_1, \\vec{z}_0)$ \
+    dans $\\mathcal{R}_0$ ; $\\overrightarrow{O_1G_2} \\wedge m_2 \\vec{\\Gamma}(G_2/\\mathcal{R}_0)$, \
+    $\\left\\{ \\mathcal{D}(2/0) \\right\\}_{O_2}$, $\\dot{\\theta}_1^{2} \\cdot \\ddot\\theta_2$, \
+    $\\frac{1}{2} m v^2 \\times \\sin\\alpha \\cos\\beta \\tan\\gamma$, \
+    $\\left( \\frac{\\pi}{2} - q_1 \\right) \\quad \\ell \\leq \\infty$, $a \\geq b \\neq c \\approx d$, \
+    $x \\rightarrow 0$, $u_1, \\ldots, u_n$, $\\mathrm{C}_{m}\\,\\omega\\;\\Omega\\!$, $f'(x)$, \
+    $\\varepsilon \\vartheta \\varphi \\Delta \\Lambda \\Psi$ ; 100 % & # _ ~ \\$ et θ̇.";
+
+/// Whitelisted formulas in free texts typeset with pdflatex; a spec with a forbidden one is
+/// refused with exit 2, its path named and nothing written.
+#[test]
+fn free_text_formulas_compile_and_forbidden_ones_exit_2() {
+    let d = tmp();
+    // The text as the answer key prints it (pure string code: no symbolica here).
+    let body = torseur::latex::rich_text(RICH_SAMPLE).expect("whitelisted");
+    let tex = d.path().join("rich.tex");
+    std::fs::write(
+        &tex,
+        format!(
+            "\\documentclass[a4paper,11pt]{{article}}\n\\usepackage[utf8]{{inputenc}}\n\
+             \\usepackage[T1]{{fontenc}}\n\\usepackage[french]{{babel}}\n\
+             \\usepackage{{lmodern}}\n\\usepackage{{amsmath,amssymb}}\n\
+             \\begin{{document}}\n{body}\n\\end{{document}}\n"
+        ),
+    )
+    .unwrap();
+    let c = pdflatex(&tex);
+    assert!(c.status.success(), "{}", stdout(&c));
+
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(spec()).unwrap()).unwrap();
+    v["description"] = RICH_SAMPLE.into();
+    v["actions"][0]["label"] = "le moteur $M$".into();
+    let good = d.path().join("good.json");
+    std::fs::write(&good, v.to_string()).unwrap();
+    let key = d.path().join("good.tex");
+    let o = run(&[
+        "answer-key",
+        good.to_str().unwrap(),
+        "-o",
+        key.to_str().unwrap(),
+        "--pdf",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(d.path().join("good.pdf").exists());
+
+    v["questions"][2]["statement"] = "Calculer $\\input{/etc/passwd}$.".into();
+    let bad = d.path().join("bad.json");
+    std::fs::write(&bad, v.to_string()).unwrap();
+    let out = d.path().join("bad.tex");
+    let o = run(&[
+        "answer-key",
+        bad.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("questions[2].statement"), "{err}");
+    assert!(err.contains("`\\input` is not allowed"), "{err}");
+    assert!(!out.exists());
+    assert!(stdout(&o).is_empty());
+}

@@ -91,8 +91,19 @@ fn spec_text_cannot_inject_latex() {
     ))
     .unwrap();
     let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    // Outside `$…$`, every special character is printed as text.
     v["title"] = "\\input{/etc/passwd} \\write18{rm -rf /} }{".into();
-    v["hypotheses"][0]["text"] = "$\\immediate\\write18{id}$ %".into();
+    v["hypotheses"][0]["text"] = "\\immediate\\write18{id} % \\$".into();
+    // Inside, anything off the whitelist refuses the spec when it is loaded.
+    let mut bad = v.clone();
+    bad["hypotheses"][0]["text"] = "$\\immediate\\write18{id}$ %".into();
+    let e = torseur::spec::from_str(&bad.to_string()).unwrap_err();
+    assert!(e.to_string().contains("hypotheses[0].text"), "{e}");
+    let mut bad = v.clone();
+    bad["title"] = "$\\input{/etc/passwd}$".into();
+    let e = torseur::spec::from_str(&bad.to_string()).unwrap_err();
+    assert!(e.to_string().contains("at title"), "{e}");
+    assert!(e.to_string().contains("`\\input` is not allowed"), "{e}");
     let m = torseur::spec::from_str(&v.to_string()).unwrap();
     let tex = torseur::latex::answer_key(&m).unwrap();
     assert!(!tex.contains("\\input{"));

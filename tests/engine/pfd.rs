@@ -295,3 +295,36 @@ fn sphere_like_symmetry_and_a_massless_solid() {
     let report = torseur::check::check(&m, 10, 1).unwrap();
     assert!(report.passed(), "{report}");
 }
+
+/// Actions carry the label a sentence names them by: the spec's, or a French default.
+#[test]
+fn actions_are_labelled_for_the_sentences_of_the_key() {
+    let m = regulator();
+    let labels: Vec<String> = pfd::external_actions(&m, &m.solids_of("E").unwrap())
+        .iter()
+        .map(|a| a.label.clone())
+        .collect();
+    assert_eq!(
+        labels,
+        [
+            "la liaison pivot entre 0 et 1",
+            "le moteur",
+            "la pesanteur",
+            "la pesanteur"
+        ]
+    );
+    let chariot = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/pendule_sur_chariot.json"
+    ))
+    .unwrap();
+    assert_eq!(
+        chariot.action_label("poussee").as_deref(),
+        Some("la poussée")
+    );
+    assert_eq!(chariot.action_label("nothing"), None);
+    assert_eq!(
+        chariot.link_label("12").as_deref(),
+        Some("la liaison pivot entre 1 et 2")
+    );
+}

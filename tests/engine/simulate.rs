@@ -119,6 +119,7 @@ fn a_pendulum_on_an_incline_of_angle_parameter_conserves_its_energy() {
     let sc = torseur::spec::wire::ScenarioSpec {
         name: "glisse".into(),
         description: None,
+        label: None,
         duration: 1.0,
         values: values.clone(),
         initial: [
@@ -149,4 +150,28 @@ fn a_pendulum_on_an_incline_of_angle_parameter_conserves_its_energy() {
         (e1 - e0).abs() < 1e-7 * e0.abs().max(1.0),
         "E0 = {e0}, E1 = {e1}"
     );
+}
+
+/// The plots speak the course's notation: θ̇1 in tr/min, C_m in N·m, the scenario's label as
+/// legend (issue 12, item 3).
+#[test]
+fn plots_are_labelled_in_the_course_notation() {
+    let m = regulator();
+    let run = simulate(&m, "sans_frottement").unwrap();
+    assert_eq!(run.label, "sans frottement");
+    let fig = torseur::simulate::figure(
+        "t",
+        &[(run.label.as_str(), &run)],
+        &["theta2", "dot(theta1)", "C_m"],
+        true,
+    );
+    let labels: Vec<&str> = fig.panels.iter().map(|p| p.y_label.as_str()).collect();
+    assert_eq!(
+        labels,
+        ["θ₂ (°)", "θ\u{307}₁ (tr/min)", "Cₘ (N·m)"],
+        "{labels:?}"
+    );
+    for p in &fig.panels {
+        assert_eq!(p.series[0].name, "sans frottement");
+    }
 }

@@ -288,3 +288,86 @@ fn a_rotation_angle_that_is_not_plus_or_minus_one_coordinate_plus_a_constant_is_
     let e = angle_of("beta");
     assert!(message_of(&e).contains("unknown name `beta`"), "{e}");
 }
+
+/// Free texts accept `$…$` formulas with the whitelisted macros (issue 12, item 3).
+#[test]
+fn free_texts_accept_whitelisted_formulas() {
+    let mut v = base();
+    v["title"] = "Régulateur : $\\mathcal{R}_0$ galiléen".into();
+    v["description"] = "Le rotor $S_1$ tourne de $\\theta_1$ autour de $(O_1, \\vec{z}_0)$ ; \
+                        $\\overrightarrow{O_1G_2} \\wedge m_2 \\vec{\\Gamma}$, 100 % & \\$"
+        .into();
+    v["questions"][2]["statement"] =
+        "Calculer $\\left\\{ \\mathcal{D}(2/0) \\right\\}_{O_2}$ et $\\dot{\\theta}_1 \\leq \
+         \\frac{\\pi}{2}$, $\\sin\\theta_2 \\cdot \\cos\\theta_2 \\approx \\ell^{2}$."
+            .into();
+    v["hypotheses"][0]["text"] = "$D_2 \\neq 0$, $\\ddot{\\theta}_1 = 0$".into();
+    v["actions"][0]["label"] = "le moteur $M$".into();
+    v["scenarios"][0]["label"] = "$f = 0$".into();
+    let m = from_str(&v.to_string()).unwrap();
+    assert_eq!(m.action_label("moteur").as_deref(), Some("le moteur $M$"));
+}
+
+/// Anything outside the whitelist in a formula refuses the spec, naming the text's path.
+#[test]
+fn forbidden_latex_in_free_texts_is_refused_with_its_path() {
+    let cases: [(&str, &str, &str); 14] = [
+        ("/title", "$\\input{/etc/passwd}$", "`\\input`"),
+        ("/description", "$\\write18{id}$", "`\\write`"),
+        ("/questions/2/statement", "$\\def\\x{1}$", "`\\def`"),
+        ("/questions/1/answer", "$\\catcode 36=11$", "`\\catcode`"),
+        ("/questions/0/title", "$\\immediate$", "`\\immediate`"),
+        (
+            "/hypotheses/0/text",
+            "$\\csname relax\\endcsname$",
+            "`\\csname`",
+        ),
+        ("/parameters/0/description", "$\\textbf{G}_1$", "`\\textbf`"),
+        ("/coordinates/0/description", "$\\theta_{1$", "not closed"),
+        (
+            "/scenarios/0/description",
+            "de 0 à $2000 tr/min",
+            "never closed",
+        ),
+        ("/scenarios/0/label", "$x}$", "closes no"),
+        ("/actions/0/label", "$a % b$", "`%`"),
+        ("/links/0/label", "$$x$$", "empty formula"),
+        (
+            "/questions/0/equations/0/reason",
+            "$\\unknown$",
+            "`\\unknown`",
+        ),
+        ("/questions/3/statement", "$x^2^3$", "double superscript"),
+    ];
+    for (pointer, text, what) in cases {
+        let mut v = base();
+        v["questions"][0]["equations"] = serde_json::json!([
+            {"lhs": "Cm", "quantity": "delta(O1,E/0).z0", "reason": "ok"}
+        ]);
+        let (parent, key) = pointer.rsplit_once('/').unwrap();
+        let target = if parent.is_empty() {
+            &mut v
+        } else {
+            v.pointer_mut(parent).unwrap_or_else(|| panic!("{pointer}"))
+        };
+        target[key] = text.into();
+        let e = refused(v);
+        let path =
+            pointer
+                .trim_start_matches('/')
+                .split('/')
+                .fold(String::new(), |mut acc, part| {
+                    if part.chars().all(|c| c.is_ascii_digit()) {
+                        acc.push_str(&format!("[{part}]"));
+                    } else {
+                        if !acc.is_empty() {
+                            acc.push('.');
+                        }
+                        acc.push_str(part);
+                    }
+                    acc
+                });
+        assert_eq!(path_of(&e), path, "{text}: {e}");
+        assert!(e.to_string().contains(what), "{text}: {e}");
+    }
+}
