@@ -486,10 +486,9 @@ fn theorem_steps(m: &Mechanism, th: &Theorem, steps: &mut Vec<Step>) -> Result<(
                 on: a.on_label.clone(),
                 point: m.point_name(a.point).to_string(),
             },
-            theorem: format!(
-                "Action de {} sur {} ({})",
-                a.from_label, a.on_label, a.description
-            ),
+            // The action as a sentence names it, then what it is: « le moteur (action
+            // moteur de 0 sur 1) ».
+            theorem: format!("{} ({})", a.label, a.description),
             value: Value::Torsor {
                 point: a.point,
                 basis: a.basis,

@@ -7,6 +7,7 @@ use super::method::{pfd_block, quantity_block};
 use super::{
     VectorStyle, basis, basis_vector, escape_text, frame, name, point, quantity, value_named,
 };
+use super::{link_graph, rich_text_or_escaped, rotation_figures};
 use crate::derivation::{Value, derive};
 use crate::inertia::Symmetry;
 use crate::mechanism::{Hypothesis, Mechanism};
@@ -287,7 +288,10 @@ fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec)
         d.o,
         "\\paragraph{{Hypothèse {}.}} {}\n",
         escape_text(&h.name),
-        h.text.as_deref().map(escape_text).unwrap_or_default()
+        h.text
+            .as_deref()
+            .map(rich_text_or_escaped)
+            .unwrap_or_default()
     );
     let same = d
         .stated
@@ -386,13 +390,13 @@ fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec)
 /// equations written out.
 fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivation::ResolveError> {
     let m = doc.m;
-    let _ = writeln!(doc.o, "\\section*{{{}}}", escape_text(&qs.title));
+    let _ = writeln!(doc.o, "\\section*{{{}}}", rich_text_or_escaped(&qs.title));
     doc.here = format!("la {}", escape_text(&qs.title.to_lowercase()));
     if let Some(st) = &qs.statement {
-        let _ = writeln!(doc.o, "\\emph{{{}}}\n", escape_text(st));
+        let _ = writeln!(doc.o, "\\emph{{{}}}\n", rich_text_or_escaped(st));
     }
     if let Some(a) = &qs.answer {
-        let _ = writeln!(doc.o, "{}\n", escape_text(a));
+        let _ = writeln!(doc.o, "{}\n", rich_text_or_escaped(a));
     }
     for name in &qs.hypotheses {
         if let Some((h, hs)) = m
@@ -444,7 +448,7 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
         })?;
         let d = derive(m, &q)?;
         if let Some(r) = &e.reason {
-            let _ = writeln!(doc.o, "{} :", escape_text(r));
+            let _ = writeln!(doc.o, "{} :", rich_text_or_escaped(r));
         }
         let lhs = format!("{} = {}", name(&e.lhs), quantity_title(&q));
         let id = q.to_string();
@@ -524,7 +528,7 @@ pub fn answer_key_document(
     o.push_str(
         "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
          \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
-         \\usepackage{amsmath,amssymb,graphicx,empheq,multicol}\n\\usepackage[margin=1.6cm]{geometry}\n\
+         \\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz}\n\\usepackage[margin=1.6cm]{geometry}\n\
          \\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.4em}\n\
          \\setlength{\\fboxsep}{4pt}\n",
     );
@@ -535,7 +539,7 @@ pub fn answer_key_document(
     );
     o.push_str("\\begin{document}\n\\maketitle\n");
     if let Some(d) = &m.description {
-        let _ = writeln!(o, "{}\n", escape_text(d));
+        let _ = writeln!(o, "{}\n", rich_text_or_escaped(d));
     }
 
     // Set-up.
@@ -548,7 +552,7 @@ pub fn answer_key_document(
         let desc = c
             .description
             .as_deref()
-            .map(escape_text)
+            .map(rich_text_or_escaped)
             .unwrap_or_default();
         let _ = writeln!(o, "\\item ${}(t)$ ({kind}) : {desc}", name(&c.name));
     }
@@ -631,6 +635,9 @@ pub fn answer_key_document(
         });
     }
     o.push_str("\\end{itemize}\n\\end{multicols}\n");
+    // The figures planes of the rotations and the graph of links, side by side when small.
+    o.push_str(&rotation_figures(m));
+    o.push_str(&link_graph(m));
     doc.inline.extend(positions);
     for b in &m.bodies {
         let mass = super::expr(&b.mass);
@@ -909,17 +916,14 @@ fn simulation_block(
             let _ = writeln!(
                 o,
                 "\\textbf{{{}}} : {}\n",
-                escape_text(name),
-                escape_text(d)
+                rich_text_or_escaped(&m.scenario_label(name).unwrap_or_else(|| name.clone())),
+                rich_text_or_escaped(d)
             );
         }
     }
-    let pairs: Vec<(&str, &crate::simulate::Run)> = sim
-        .scenarios
-        .iter()
-        .map(String::as_str)
-        .zip(runs.iter())
-        .collect();
+    // The legend names each run by its scenario's label (« sans frottement »).
+    let pairs: Vec<(&str, &crate::simulate::Run)> =
+        runs.iter().map(|r| (r.label.as_str(), r)).collect();
     let ids: Vec<&str> = sim.plot.iter().map(String::as_str).collect();
     let figure = crate::simulate::figure(&m.title, &pairs, &ids, true);
     let _ = writeln!(
@@ -951,7 +955,10 @@ fn simulation_block(
             let _ = writeln!(
                 o,
                 "{} & ${}$ (à $t = {}$~s) & {} \\\\",
-                escape_text(scenario),
+                rich_text_or_escaped(
+                    &m.scenario_label(scenario)
+                        .unwrap_or_else(|| scenario.clone())
+                ),
                 french(v),
                 french(t),
                 reference

@@ -656,12 +656,14 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                     "On isole ${iso_name}$. Bilan des actions mécaniques extérieures à ${iso_name}$ :"
                 );
                 for s in &steps[start..k] {
-                    let desc = s
-                        .theorem
-                        .split_once('(')
-                        .map(|(_, d)| d.strip_suffix(')').unwrap_or(d))
-                        .unwrap_or(&s.theorem);
-                    let _ = writeln!(doc.o, "{} :", super::escape_text(desc));
+                    // « le moteur (action moteur de 0 sur 1) », capitalised.
+                    let text = super::rich_text_or_escaped(&s.theorem);
+                    let mut cs = text.chars();
+                    let text = match cs.next() {
+                        Some(c) => c.to_uppercase().chain(cs).collect::<String>(),
+                        None => text,
+                    };
+                    let _ = writeln!(doc.o, "{text} :");
                     let v = shown_value(doc, &s.value);
                     let lhs = step_lhs(&s.kind);
                     doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);

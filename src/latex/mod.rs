@@ -7,8 +7,8 @@
 //! loaded).
 
 mod document;
-mod method;
 mod figures;
+mod method;
 mod text;
 
 pub use document::{
