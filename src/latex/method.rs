@@ -413,7 +413,12 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
                 s.kind,
                 StepKind::Quantity(QuantityKind::DynamicResultant(_))
             );
-            kinematics_of_centre(doc, mo, dynamic, &s.value);
+            if kinematics_of_centre(doc, mo, dynamic, &s.value) {
+                // G is fixed: the sentence said the resultant is zero.
+                doc.remember(&lhs, &v);
+                i += 1;
+                continue;
+            }
         }
         let _ = writeln!(doc.o, "{}", sentence(m, s));
         doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
@@ -447,14 +452,15 @@ fn french_list(items: &[String]) -> String {
 }
 
 /// V(G) (derivative of the position from the ground origin) and Γ(G) (derivative of V(G)),
-/// shown before the resultant m V(G) or m Γ(G), in the basis of the resultant.
-fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) {
+/// shown before the resultant m V(G) or m Γ(G), in the basis of the resultant. Returns
+/// whether G is fixed (the resultant is then said to be zero).
+fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) -> bool {
     let m = doc.m;
     let Some(body) = m.bodies.iter().find(|b| b.name == mo.moving) else {
-        return;
+        return false;
     };
     let Value::Vector { basis: b, .. } = res else {
-        return;
+        return false;
     };
     let g = m.point_name(body.centre).to_string();
     let bn = m.frame_name(*b).to_string();
@@ -465,7 +471,7 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
         .map_err(|e| e.to_string())
         .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
     else {
-        return;
+        return false;
     };
     let vv = shown_value(doc, &vd.value);
     let vk = QuantityKind::Velocity {
@@ -484,7 +490,7 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
             );
             doc.remember(&vlhs, &vv);
         }
-        return;
+        return true;
     }
     match doc.cited(&vlhs, &vv) {
         Some(place) => {
@@ -504,14 +510,14 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
         }
     }
     if !dynamic {
-        return;
+        return false;
     }
     let aq = format!("Gamma({g},{}/{r}) in B{bn}", mo.moving);
     let Ok(ad) = Quantity::parse(&aq)
         .map_err(|e| e.to_string())
         .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
     else {
-        return;
+        return false;
     };
     let av = shown_value(doc, &ad.value);
     let alhs = quantity(&QuantityKind::Acceleration {
@@ -531,6 +537,7 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
             doc.show_keyed(DisplayRole::Step, &aq, &alhs, &alhs, &av, false);
         }
     }
+    false
 }
 
 /// A requested quantity of the kinematics or kinetics: its steps, then the boxed result.
@@ -589,7 +596,11 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
             let here = doc.here.clone();
             doc.results
                 .push((id.clone(), h.map(|h| h.name.clone()), v.clone(), here));
-            if doc.cited(rn, &res).is_some() && doc.cited(mn, &mom).is_some() {
+            let short = resultant
+                .iter()
+                .chain(moment.iter())
+                .all(|e| e.nterms() <= 1);
+            if !short && doc.cited(rn, &res).is_some() && doc.cited(mn, &mom).is_some() {
                 let _ = writeln!(
                     doc.o,
                     "\\[ \\boxed{{{lhs} = \\left\\{{ \\begin{{array}}{{l}} {rn} \\\\ {mn} \\end{{array}} \\right\\}}_{{{}}}}} \\]\nses éléments de réduction étant ceux calculés ci-dessus.\n",
