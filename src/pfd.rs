@@ -474,6 +474,28 @@ fn resolve_err(q: &Quantity, message: String) -> ResolveError {
     }
 }
 
+/// A solid in a sentence: `$S_{2}$` for solid `2`, its name otherwise (free text).
+fn solid_text(n: &str) -> String {
+    if n.chars().all(|c| c.is_ascii_digit()) {
+        format!("$S_{{{n}}}$")
+    } else {
+        n.to_string()
+    }
+}
+
+/// The line of an action in the bilan of the external actions (free text for
+/// [`crate::latex::rich_text`]).
+fn bilan_line(a: &Action) -> String {
+    let (from, on) = (solid_text(&a.from_label), solid_text(&a.on_label));
+    if a.from_label == "pes" {
+        format!("pesanteur sur {on}")
+    } else if a.description.starts_with("liaison") || a.description.starts_with("encastrement") {
+        format!("{}, action de {from} sur {on}", a.description)
+    } else {
+        format!("{}, action sur {on}", a.label)
+    }
+}
+
 /// The steps of one theorem: each exterior action's torsor, the dynamic side, the actions'
 /// side.
 fn theorem_steps(m: &Mechanism, th: &Theorem, steps: &mut Vec<Step>) -> Result<(), ResolveError> {
@@ -486,9 +508,9 @@ fn theorem_steps(m: &Mechanism, th: &Theorem, steps: &mut Vec<Step>) -> Result<(
                 on: a.on_label.clone(),
                 point: m.point_name(a.point).to_string(),
             },
-            // The action as a sentence names it, then what it is: « le moteur (action
-            // moteur de 0 sur 1) ».
-            theorem: format!("{} ({})", a.label, a.description),
+            // The bilan's line, as the course words it: « liaison pivot d'axe (O1, z0),
+            // action de 0 sur 1 », « pesanteur sur $S_{1}$ », « le moteur, action de 0 sur 1 ».
+            theorem: bilan_line(a),
             value: Value::Torsor {
                 point: a.point,
                 basis: a.basis,
