@@ -540,11 +540,227 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
     false
 }
 
+/// Shows a vector value computed by the engine, or cites it.
+fn show_vector(
+    doc: &mut Doc,
+    what: &str,
+    sentence: &str,
+    lhs: &str,
+    v: &crate::vector::Vector,
+    b: FrameId,
+) {
+    let value = Value::Vector {
+        basis: b,
+        components: v.express_in(&doc.m.frames, b),
+    };
+    let value = shown_value(doc, &value);
+    match doc.cited(lhs, &value) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+        }
+        None => {
+            let _ = writeln!(doc.o, "{sentence}");
+            doc.show_keyed(DisplayRole::Step, what, lhs, lhs, &value, false);
+        }
+    }
+}
+
+/// Shows a scalar value computed by the engine.
+fn show_scalar(doc: &mut Doc, what: &str, sentence: &str, lhs: &str, e: crate::expr::Expr) {
+    let value = shown_value(doc, &Value::Scalar(e));
+    let _ = writeln!(doc.o, "{sentence}");
+    doc.show_keyed(DisplayRole::Step, what, lhs, lhs, &value, false);
+}
+
+/// The short route a teacher takes for a projected dynamic moment δ(A,S/R)·u of one solid:
+/// at a point fixed in R on an axis fixed in R, the derivative of σ(A,S/R)·u; elsewhere
+/// (A ≠ G), the change of point to the centre of inertia, δ(G)·u + (AG ∧ m Γ(G))·u. Returns
+/// false when neither applies (the steps of the vector are then shown).
+fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
+    use crate::kinematics::{acceleration, is_fixed_in, omega, point_velocity};
+    let m = doc.m;
+    let q = &d.quantity;
+    let QuantityKind::DynamicMoment {
+        point: a,
+        motion: mo,
+    } = &q.kind
+    else {
+        return false;
+    };
+    let Ok(r) = crate::derivation::resolve(m, q) else {
+        return false;
+    };
+    let (Some((uf, ua)), [s], Some(pa)) = (r.projection, r.solids.as_slice(), r.point) else {
+        return false;
+    };
+    let rf = r.reference.unwrap_or(m.frames.ground());
+    let body = m.body(*s);
+    let u = crate::vector::Vector::along(uf, ua, m.reg.one());
+    let ul = basis_vector(ua.letter(), m.frame_name(uf));
+    let rl = frame(&mo.reference);
+    let sigma_a = quantity(&QuantityKind::KineticMoment {
+        point: a.clone(),
+        motion: mo.clone(),
+    });
+    let fixed_axis = omega(m, uf, rf).is_zero(&m.frames);
+    let fixed_point =
+        point_velocity(m, pa, rf).is_zero(&m.frames) && is_fixed_in(m, pa, body.frame);
+    let ib = crate::torsor::inertia_basis(m, *s);
+    let Value::Scalar(result) = &d.value else {
+        return false;
+    };
+    if fixed_point && fixed_axis {
+        // The route must give the engine's value exactly, or it is not taken.
+        let sig = crate::torsor::kinetic_moment_solid(m, *s, pa, rf);
+        let proj = sig.dot(&m.frames, &u);
+        if &proj.dt() != result {
+            return false;
+        }
+        let om = omega(m, body.frame, rf);
+        let oml = omega_of(&mo.moving, &mo.reference);
+        show_vector(
+            doc,
+            &format!("Omega({})", mo),
+            &omega_sentence(m, mo),
+            &oml,
+            &om,
+            ib,
+        );
+        let il = format!("I_{{{}}}({})", point(a), mo.moving);
+        show_vector(
+            doc,
+            &format!("sigma({a},{mo})"),
+            &format!(
+                "${}$ est un point de ${}$ fixe dans ${rl}$ : ${sigma_a} = {il}\\cdot{oml}$ :",
+                point(a),
+                solid(&mo.moving)
+            ),
+            &sigma_a,
+            &sig,
+            ib,
+        );
+        show_scalar(
+            doc,
+            &format!("sigma({a},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
+            &format!(
+                "${}$ est fixe dans ${rl}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_a}\\cdot {ul}\\right)$, avec :",
+                point(a),
+                quantity(&q.kind)
+            ),
+            &format!("{sigma_a}\\cdot {ul}"),
+            proj,
+        );
+        return true;
+    }
+    let g = body.centre;
+    if pa == g {
+        return false;
+    }
+    let dg = crate::torsor::dynamic_moment_solid(m, *s, g, rf).dot(&m.frames, &u);
+    let gam = acceleration(m, g, body.frame, rf);
+    let ag = crate::kinematics::position(m, pa, g);
+    let transport = ag
+        .cross(&m.frames, &gam.scale(&body.mass))
+        .dot(&m.frames, &u);
+    // δ(A)·u = δ(G)·u + (AG ∧ m Γ(G))·u must give the engine's value exactly.
+    if &(&dg + &transport) != result {
+        return false;
+    }
+    let gn = m.point_name(g).to_string();
+    let delta_g = QuantityKind::DynamicMoment {
+        point: gn.clone(),
+        motion: mo.clone(),
+    };
+    let gamma = QuantityKind::Acceleration {
+        point: gn.clone(),
+        motion: mo.clone(),
+    };
+    let mass = mass_of(m, &mo.moving);
+    let _ = writeln!(
+        doc.o,
+        "Changement de point vers le centre d'inertie : ${} \\cdot {ul} = {} \\cdot {ul} + \\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}$.\n",
+        quantity(&q.kind),
+        quantity(&delta_g),
+        point(a),
+        point(&gn),
+        quantity(&gamma)
+    );
+    let om = omega(m, body.frame, rf);
+    let oml = omega_of(&mo.moving, &mo.reference);
+    show_vector(
+        doc,
+        &format!("Omega({mo})"),
+        &omega_sentence(m, mo),
+        &oml,
+        &om,
+        ib,
+    );
+    let sigma_g = quantity(&QuantityKind::KineticMoment {
+        point: gn.clone(),
+        motion: mo.clone(),
+    });
+    let sig = crate::torsor::kinetic_moment_solid(m, *s, g, rf);
+    show_vector(
+        doc,
+        &format!("sigma({gn},{mo})"),
+        &format!(
+            "En ${}$, centre d'inertie : ${sigma_g} = I_{{{}}}({})\\cdot{oml}$ :",
+            point(&gn),
+            point(&gn),
+            mo.moving
+        ),
+        &sigma_g,
+        &sig,
+        ib,
+    );
+    show_scalar(
+        doc,
+        &format!("delta({gn},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
+        &format!(
+            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{sigma_g}\\right]_{{{rl}}}$ (formule de Bour), projeté sur ${ul}$ :",
+            quantity(&delta_g)
+        ),
+        &format!("{} \\cdot {ul}", quantity(&delta_g)),
+        dg,
+    );
+    show_vector(
+        doc,
+        &format!("Gamma({gn},{mo})"),
+        &format!("Accélération de ${}$ :", point(&gn)),
+        &quantity(&gamma),
+        &gam,
+        r.basis,
+    );
+    show_scalar(
+        doc,
+        "transport",
+        "Terme de transport :",
+        &format!(
+            "\\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}",
+            point(a),
+            point(&gn),
+            quantity(&gamma)
+        ),
+        transport,
+    );
+    true
+}
+
 /// A requested quantity of the kinematics or kinetics: its steps, then the boxed result.
 pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &str) {
     let m = doc.m;
     let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
-    let last_is_result = steps(doc, d, lhs);
+    // A projection asked alone is computed by the short route when all its steps were not
+    // already shown.
+    let all_shown = d.steps.iter().all(|s| {
+        let v = shown_value(doc, &s.value);
+        doc.cited(&step_lhs(&s.kind), &v).is_some()
+    });
+    let last_is_result = if !all_shown && projected_moment_route(doc, d) {
+        false
+    } else {
+        steps(doc, d, lhs)
+    };
     let id = d.quantity.to_string();
     let names = torsor_names(&d.quantity.kind);
     let hyps: Vec<_> = match doc.under {
