@@ -913,9 +913,24 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         let _ = iso;
         let dl = step_lhs(&dyn_step.kind);
         let el = step_lhs(&ext_step.kind);
-        let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$ :");
         let dv = shown_value(doc, &dyn_step.value);
         let ev = shown_value(doc, &ext_step.value);
+        // When the actions reduce to the unknown asked (C_m), the theorem gives it at once:
+        // « C_m = δ(O1,E/0)·z0 », boxed below, without writing the dynamic side twice.
+        if let (QuantityKind::Unknown(u), Value::Scalar(e)) = (&d.quantity.kind, &ev)
+            && m.reg.param(u).as_ref() == Some(e)
+            && k + 2 == steps.len()
+        {
+            let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$, soit :");
+            let id = d.quantity.to_string();
+            let hn = doc.under.map(|h| h.name.clone());
+            let here = doc.here.clone();
+            doc.results.push((id.clone(), hn.clone(), dv.clone(), here));
+            let lhs = format!("{} = {dl}", name(u));
+            doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &dv, None);
+            return;
+        }
+        let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$ :");
         doc.show_equality(
             DisplayRole::Step,
             &dyn_step.label,
