@@ -134,6 +134,11 @@ impl<'m> Doc<'m> {
         })
     }
 
+    /// Whether a hypothesis has been stated already.
+    pub(super) fn is_stated(&self, h: &str) -> bool {
+        self.stated.iter().any(|(n, _, _)| n == h)
+    }
+
     /// Notes that a value was shown here (in the text).
     pub(super) fn remember(&mut self, lhs: &str, v: &Value) {
         let here = self.here.clone();
@@ -390,7 +395,11 @@ fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec)
 /// equations written out.
 fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivation::ResolveError> {
     let m = doc.m;
-    let _ = writeln!(doc.o, "\\section*{{{}}}", rich_text_or_escaped(&qs.title));
+    let _ = writeln!(
+        doc.o,
+        "\\needspace{{8\\baselineskip}}\n\\section*{{{}}}",
+        rich_text_or_escaped(&qs.title)
+    );
     doc.here = format!("la {}", escape_text(&qs.title.to_lowercase()));
     if let Some(st) = &qs.statement {
         let _ = writeln!(doc.o, "\\emph{{{}}}\n", rich_text_or_escaped(st));
@@ -528,13 +537,13 @@ pub fn answer_key_document(
     o.push_str(
         "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
          \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
-         \\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz}\n\\usepackage[margin=1.6cm]{geometry}\n\
+         \\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz,needspace}\n\\usepackage[margin=1.6cm]{geometry}\n\
          \\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.4em}\n\
          \\setlength{\\fboxsep}{4pt}\n",
     );
     let _ = writeln!(
         o,
-        "\\title{{Corrigé -- {}}}\n\\author{{torseur}}\n\\date{{}}",
+        "\\title{{Corrigé -- {}}}\n\\author{{}}\n\\date{{}}",
         escape_text(&m.title)
     );
     o.push_str("\\begin{document}\n\\maketitle\n");
@@ -554,7 +563,11 @@ pub fn answer_key_document(
             .as_deref()
             .map(rich_text_or_escaped)
             .unwrap_or_default();
-        let _ = writeln!(o, "\\item ${}(t)$ ({kind}) : {desc}", name(&c.name));
+        // A coordinate held constant (rate 0) is a constant, not a function of t.
+        let constant = c.rate.as_deref().is_some_and(|r| r.trim() == "0");
+        let _ = kind;
+        let t = if constant { "" } else { "(t)" };
+        let _ = writeln!(o, "\\item ${}{t}$ : {desc}", name(&c.name));
     }
     for f in m.frames.ids().skip(1) {
         let fr = m.frames.get(f);
@@ -752,7 +765,7 @@ fn bilan(doc: &mut Doc) {
     }
     let _ = writeln!(
         doc.o,
-        "\\section*{{Bilan}}\n\\begin{{center}}\n\\begin{{tabular}}{{lll}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n{}\n\\hline\n\\end{{tabular}}\n\\end{{center}}",
+        "\\section*{{Bilan}}\n\\begin{{center}}\n\\renewcommand{{\\arraystretch}}{{1.5}}\n\\begin{{tabular}}{{lll}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n{}\n\\hline\n\\end{{tabular}}\n\\end{{center}}",
         rows.join("\n")
     );
 }
@@ -895,10 +908,27 @@ fn simulation_block(
             "Le sujet ne donne pas de valeurs numériques : les simulations utilisent les valeurs \
              supposées suivantes (unités SI).\n\n\\begin{center}\n\\begin{tabular}{llllll}\n",
         );
+        // A value that differs between the scenarios (the friction f) is given for each, in
+        // the order of the scenarios.
+        let others: Vec<&crate::spec::wire::ScenarioSpec> = sim
+            .scenarios
+            .iter()
+            .filter_map(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
+            .collect();
         let cells: Vec<String> = first
             .values
             .iter()
-            .map(|(k, v)| format!("${} = {}$", name(k), french_sci(*v)))
+            .map(|(k, v)| {
+                let mut vals: Vec<String> = Vec::new();
+                for sc in &others {
+                    let x = sc.values.get(k).copied().unwrap_or(*v);
+                    let t = french_sci(x);
+                    if !vals.contains(&t) {
+                        vals.push(t);
+                    }
+                }
+                format!("${} = {}$", name(k), vals.join(" \\text{ ou } "))
+            })
             .collect();
         for row in cells.chunks(6) {
             let _ = writeln!(o, "{} \\\\", row.join(" & "));

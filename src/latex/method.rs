@@ -42,7 +42,10 @@ fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
     };
     let turning: Vec<(FrameId, FrameId)> = c
         .windows(2)
-        .filter(|w| m.frames.get(w[0]).rotation.is_some())
+        .filter(|w| {
+            m.frames.get(w[0]).rotation.is_some()
+                && !crate::kinematics::omega(m, w[0], w[1]).is_zero(&m.frames)
+        })
         .map(|w| (w[0], w[1]))
         .collect();
     if turning.len() <= 1 {
@@ -161,7 +164,7 @@ fn sentence(m: &Mechanism, s: &Step) -> String {
             point: a,
             motion: mo,
         }) => format!(
-            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}} + \\overrightarrow{{V({}/{})}}\\wedge {}\\,\\overrightarrow{{V(G/{})}}$ :",
+            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}} + \\overrightarrow{{V({}/{})}}\\wedge {}\\,\\overrightarrow{{V({}/{})}}$ :",
             quantity(&DynamicMoment {
                 point: a.clone(),
                 motion: mo.clone()
@@ -174,6 +177,13 @@ fn sentence(m: &Mechanism, s: &Step) -> String {
             point(a),
             frame(&mo.reference),
             mass_of(m, &mo.moving),
+            point(
+                &m.bodies
+                    .iter()
+                    .find(|b| b.name == mo.moving)
+                    .map(|b| m.point_name(b.centre).to_string())
+                    .unwrap_or_else(|| "G".into())
+            ),
             frame(&mo.reference)
         ),
         StepKind::Quantity(DynamicResultant(mo)) | StepKind::Quantity(KineticResultant(mo)) => {
@@ -381,7 +391,7 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
                 flush(doc, &mut cited);
                 let _ = writeln!(
                     doc.o,
-                    "{why} : le moment dynamique est la dérivée du moment cinétique dans ${}$ (formule de Bour) :",
+                    "{why} : le moment dynamique est la dérivée du moment cinétique dans ${}$ (cas particulier du cours) :",
                     frame(r)
                 );
                 doc.show_keyed(DisplayRole::Step, &next.label, &lhs, &delta, &v, false);
@@ -390,7 +400,18 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
             i += 2;
             continue;
         }
-        let lhs = step_lhs(&s.kind);
+        let lhs = match &s.kind {
+            // V(A/R) ∧ m2 V(G2/R): the solid's own mass.
+            StepKind::Complementary(..) => match &d.quantity.kind {
+                QuantityKind::DynamicMoment { motion, .. }
+                | QuantityKind::DynamicTorsor { motion, .. } => step_lhs(&s.kind).replace(
+                    "\\wedge m\\,",
+                    &format!("\\wedge {}\\,", mass_of(m, &motion.moving)),
+                ),
+                _ => step_lhs(&s.kind),
+            },
+            _ => step_lhs(&s.kind),
+        };
         if let Some(place) = doc.cited(&lhs, &v) {
             cited.push((lhs, place));
             i += 1;
@@ -717,7 +738,7 @@ fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
         doc,
         &format!("delta({gn},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
         &format!(
-            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{sigma_g}\\right]_{{{rl}}}$ (formule de Bour), projeté sur ${ul}$ :",
+            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{sigma_g}\\right]_{{{rl}}}$ (centre d'inertie), projeté sur ${ul}$ :",
             quantity(&delta_g)
         ),
         &format!("{} \\cdot {ul}", quantity(&delta_g)),
@@ -763,10 +784,16 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
     };
     let id = d.quantity.to_string();
     let names = torsor_names(&d.quantity.kind);
+    // Results under a hypothesis only once it has been stated (never before its question).
     let hyps: Vec<_> = match doc.under {
         Some(h) => vec![Some(h)],
         None => std::iter::once(None)
-            .chain(m.hypotheses.iter().map(Some))
+            .chain(
+                m.hypotheses
+                    .iter()
+                    .filter(|h| doc.is_stated(&h.name))
+                    .map(Some),
+            )
             .collect(),
     };
     let general = d.value.clone();
