@@ -487,6 +487,10 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
     let bn = m.frame_name(*b).to_string();
     let o = m.point_name(m.points.origin()).to_string();
     let r = &mo.reference;
+    // The position is taken from the ground origin, fixed only in the ground frame.
+    if m.frames.find(r) != Some(m.frames.ground()) {
+        return false;
+    }
     let vq = format!("V({g},{}/{r}) in B{bn}", mo.moving);
     let Ok(vd) = Quantity::parse(&vq)
         .map_err(|e| e.to_string())
@@ -767,6 +771,82 @@ fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
     true
 }
 
+/// V(P,S/R) and Γ(P,S/R) have no steps of their own: the method sentence (derivative of the
+/// position from the ground origin, fixed in R), and for Γ the velocity first.
+fn position_route(doc: &mut Doc, d: &Derivation) {
+    let m = doc.m;
+    let (p, mo, accel) = match &d.quantity.kind {
+        QuantityKind::Velocity { point, motion } => (point, motion, false),
+        QuantityKind::Acceleration { point, motion } => (point, motion, true),
+        _ => return,
+    };
+    // d/dt O0P in R is V(P,S/R) only for P fixed in S, R the ground (where O0 is fixed).
+    let moving = m
+        .bodies
+        .iter()
+        .find(|b| b.name == mo.moving)
+        .map(|b| b.frame)
+        .or_else(|| m.frames.find(&mo.moving));
+    let (Some(pid), Some(sf), Some(rf)) = (m.points.find(p), moving, m.frames.find(&mo.reference))
+    else {
+        return;
+    };
+    if rf != m.frames.ground() || !crate::kinematics::is_fixed_in(m, pid, sf) {
+        return;
+    }
+    let o = m.point_name(m.points.origin()).to_string();
+    let rl = frame(&mo.reference);
+    let pos = format!("\\overrightarrow{{{}{}}}", point(&o), point(p));
+    let vk = QuantityKind::Velocity {
+        point: p.clone(),
+        motion: mo.clone(),
+    };
+    let vl = quantity(&vk);
+    if !accel {
+        let _ = writeln!(
+            doc.o,
+            "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{pos}\\right]_{{{rl}}}$ (${}$ fixe dans ${rl}$) :",
+            point(&o)
+        );
+        return;
+    }
+    // Γ: the velocity first (shown or cited), in the basis of the result.
+    let Value::Vector { basis, .. } = &d.value else {
+        return;
+    };
+    let vq = format!(
+        "V({p},{}/{}) in B{}",
+        mo.moving,
+        mo.reference,
+        m.frame_name(*basis)
+    );
+    let Ok(vd) = Quantity::parse(&vq)
+        .map_err(|e| e.to_string())
+        .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
+    else {
+        return;
+    };
+    let vv = shown_value(doc, &vd.value);
+    match doc.cited(&vl, &vv) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${vl}$.\n");
+        }
+        None => {
+            let _ = writeln!(
+                doc.o,
+                "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{pos}\\right]_{{{rl}}}$ (${}$ fixe dans ${rl}$) :",
+                point(&o)
+            );
+            doc.show_keyed(DisplayRole::Step, &vq, &vl, &vl, &vv, false);
+        }
+    }
+    let _ = writeln!(
+        doc.o,
+        "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vl}\\right]_{{{rl}}}$ :",
+        quantity(&d.quantity.kind)
+    );
+}
+
 /// A requested quantity of the kinematics or kinetics: its steps, then the boxed result.
 pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &str) {
     let m = doc.m;
@@ -780,6 +860,7 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
     let last_is_result = if !all_shown && projected_moment_route(doc, d) {
         false
     } else {
+        position_route(doc, d);
         steps(doc, d, lhs)
     };
     let id = d.quantity.to_string();
