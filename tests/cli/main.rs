@@ -529,6 +529,18 @@ fn latin_angle_names_give_latex_that_compiles() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(d.path().join("key.pdf").exists());
+    // The chain family (Latin q1, q2, l1, multi-letter parameters) compiles too.
+    let chain = Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations/chain/chain_2.json");
+    let ck = d.path().join("chain.tex");
+    let o = run(&[
+        "answer-key",
+        chain.to_str().unwrap(),
+        "-o",
+        ck.to_str().unwrap(),
+        "--pdf",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(d.path().join("chain.pdf").exists());
     // verify's LaTeX difference uses the same names.
     let o = run(&[
         "verify",
