@@ -384,9 +384,12 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 .with_context(|| format!("cannot read {}", at.display()))
                 .map_err(bad_input)?;
             let values = output::Values::parse(&text).map_err(bad_input)?;
-            let point = output::numeric_point(&m, &values).map_err(bad_input)?;
             let qs = quantities(&m, &qs)?;
             let ds = values_only(&m, &qs)?;
+            // Only the parameters and coordinates the results hold are demanded.
+            let exprs: Vec<&torseur::expr::Expr> =
+                ds.iter().flat_map(|d| d.value.exprs()).collect();
+            let point = output::numeric_point_for(&m, &values, &exprs).map_err(bad_input)?;
             let items: Vec<serde_json::Value> = ds
                 .iter()
                 .map(|d| output::eval_value(&m, &d.quantity.to_string(), &d.value, &point))
