@@ -160,6 +160,14 @@ impl Verdict {
         self.difference.iter().all(Expr::is_zero)
     }
 
+    /// The quantity asked, when it is an equation of motion (`eom(q)`, `lin(eom(q))`).
+    fn asked_equation_of_motion(&self) -> Option<String> {
+        Quantity::parse(&self.quantity)
+            .ok()
+            .filter(|q| matches!(q.kind, QuantityKind::Eom(_)))
+            .map(|q| q.to_string())
+    }
+
     /// « with delta(O1,E/0).z0 replaced by its derived value and C_m by its solved value »,
     /// for the report; empty when nothing was replaced.
     fn replaced(&self) -> String {
@@ -211,9 +219,10 @@ impl fmt::Display for Verdict {
                     self.replaced()
                 ),
                 (Check::EquationOfMotion { coordinate }, k) => {
-                    let eom = format!("eom({coordinate})");
                     // Say which equation it is, unless that was the quantity asked.
-                    let is = if self.quantity != eom {
+                    let asked = self.asked_equation_of_motion();
+                    let eom = asked.clone().unwrap_or(format!("eom({coordinate})"));
+                    let is = if asked.is_none() {
                         format!(" (it is the equation of motion {eom}{})", self.replaced())
                     } else {
                         String::new()
@@ -245,7 +254,9 @@ impl fmt::Display for Verdict {
         match &self.check {
             Check::Value => writeln!(f, "{subject}: NOT equivalent; given − derived =")?,
             Check::EquationOfMotion { coordinate } => {
-                let eom = format!("eom({coordinate})");
+                let eom = self
+                    .asked_equation_of_motion()
+                    .unwrap_or(format!("eom({coordinate})"));
                 write!(
                     f,
                     "{subject}: NOT equivalent: {eom} is not (lhs − rhs) times a nonzero \
@@ -634,7 +645,7 @@ pub fn verify(
     let h = hypothesis(m, hypothesis_name)?;
     if let Some((l, r)) = sides(text)? {
         return match &q.kind {
-            QuantityKind::Eom(c) if !q.linear => equation_of_motion(m, &q, c, text, l, r, h),
+            QuantityKind::Eom(c) => equation_of_motion(m, &q, c, text, l, r, h),
             _ if q.is_scalar() => relation(m, Some(&q), text, l, r, h),
             _ => Err(VerifyError::Shape(format!(
                 "`{q}` is not a scalar: an equation `lhs = rhs` is between scalars (write the \
