@@ -1,10 +1,29 @@
 //! Exact equivalence of a hand-written result with the derived one: « is this δ(O2,2/0)·x2
-//! equal to the true one? ». The decision is the canonical form's zero test, never sampling.
+//! equal to the true one? », « is ẍ cos θ + l θ̈ + g sin θ = 0 the pendulum's equation? »,
+//! « does L01 + a F = −J ω θ̇2 cos θ2 hold? ». The decision is the canonical form's zero test,
+//! never sampling.
+//!
+//! Three checks, each reported by [`Check`]:
+//!
+//! - **a value** (`-q Q -e EXPR`): given − derived = 0, component by component;
+//! - **an equation of motion** (`-q eom(q) -e "lhs = rhs"`): with G = lhs − rhs, the engine's
+//!   eom(q) = k · G for a nonzero factor k made of parameters only (a number, m L, 1/(m L),
+//!   (M + m)/m; never a coordinate, a rate or an unknown: an equation multiplied by θ̇ is
+//!   another equation). k is found exactly ([`Expr::parameter_ratio`]) and reported;
+//! - **a relation** (`-e "lhs = rhs"`, or `-q Q -e "lhs = rhs"` with Q in the equation): the
+//!   equation holds when lhs − rhs is identically zero once every quantity written in it
+//!   (`delta(O2,2/0).x2`, `eom(theta)`) is replaced by its derived value and every unknown of
+//!   the PFD (`X01`, `C_m`) by its solved value ([`crate::pfd::solve`]); failing that, when it
+//!   is one of the engine's equations of motion up to such a factor k.
+//!
+//! Under a hypothesis, everything (derived values, solved unknowns, equations of motion and the
+//! text given) is taken under its substitutions.
 
 use crate::derivation::{Value, derive_values};
-use crate::expr::{Expr, ExprError};
-use crate::mechanism::Mechanism;
-use crate::quantity::{NotationError, Quantity};
+use crate::expr::{Expr, ExprError, VarRole};
+use crate::mechanism::{Hypothesis, Mechanism};
+use crate::pfd::{PfdError, Solution};
+use crate::quantity::{NotationError, Quantity, QuantityKind};
 use std::fmt;
 
 /// Why a verification could not be made (bad input, not a mismatch).
@@ -25,38 +44,480 @@ pub enum VerifyError {
     /// No hypothesis of that name.
     #[error("unknown hypothesis `{0}`")]
     Hypothesis(String),
+    /// Names the spec does not declare, all of them.
+    #[error("{}", unknown_names(.names, .input))]
+    UnknownNames {
+        /// The names, in the order written.
+        names: Vec<String>,
+        /// The text given.
+        input: String,
+    },
+    /// The PFD, needed for an unknown or an equation of motion, cannot be solved.
+    #[error("the spec's pfd: {0}")]
+    Pfd(#[from] PfdError),
 }
 
-/// The verdict: equivalent or not, and the simplified difference (given − derived).
+fn unknown_names(names: &[String], input: &str) -> String {
+    let quoted: Vec<String> = names.iter().map(|n| format!("`{n}`")).collect();
+    let s = if names.len() > 1 { "s" } else { "" };
+    format!(
+        "unknown name{s} {} in `{input}`: neither a parameter, a coordinate nor an unknown of \
+         the PFD of the spec",
+        quoted.join(", ")
+    )
+}
+
+/// A nonzero factor made of parameters, numerator / denominator, in lowest terms.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Factor {
+    /// Numerator (a polynomial in the parameters).
+    pub numerator: Expr,
+    /// Denominator (a polynomial in the parameters; 1 for a polynomial factor).
+    pub denominator: Expr,
+}
+
+impl Factor {
+    /// Whether the factor is exactly 1 (the equation as derived).
+    pub fn is_one(&self) -> bool {
+        self.numerator.is_one() && self.denominator.is_one()
+    }
+
+    /// Whether the factor is a number (no parameter).
+    pub fn is_number(&self) -> bool {
+        self.numerator.as_rational().is_some() && self.denominator.as_rational().is_some()
+    }
+}
+
+impl fmt::Display for Factor {
+    /// `m*l`, `1/(L*m)`, `(M + m)/m`, in the expression syntax.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let wrap = |e: &Expr| {
+            if e.nterms() > 1 || e.to_string().contains(['*', '/']) {
+                format!("({e})")
+            } else {
+                e.to_string()
+            }
+        };
+        if self.denominator.is_one() {
+            write!(f, "{}", self.numerator)
+        } else {
+            let n = if self.numerator.nterms() > 1 {
+                format!("({})", self.numerator)
+            } else {
+                self.numerator.to_string()
+            };
+            write!(f, "{n}/{}", wrap(&self.denominator))
+        }
+    }
+}
+
+/// Which check decided a verdict.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Check {
+    /// A value: given − derived is zero, component by component.
+    Value,
+    /// An equation `lhs = rhs` against the equation of motion of `coordinate` (eom = 0): the
+    /// same equation when eom = k · (lhs − rhs) for a nonzero factor k of parameters only.
+    EquationOfMotion {
+        /// The coordinate (`theta`).
+        coordinate: String,
+    },
+    /// An equation `lhs = rhs` as a relation: it holds when lhs − rhs, every quantity replaced
+    /// by its derived value and every unknown by its solved value, is identically zero.
+    Relation,
+}
+
+/// The verdict: equivalent or not, which check decided, and the simplified difference.
 #[derive(Debug, Clone)]
 pub struct Verdict {
-    /// The quantity checked.
+    /// The quantity checked, or the equation as written when no quantity was given.
     pub quantity: String,
-    /// The derived value.
+    /// The equation as written, when the text was one (`lhs = rhs`).
+    pub equation: Option<String>,
+    /// The hypothesis everything was taken under.
+    pub hypothesis: Option<String>,
+    /// The check that decided (for a relation found to be an equation of motion, that one).
+    pub check: Check,
+    /// The derived value compared with: the quantity's value, the equation of motion's
+    /// residual, 0 for a relation.
     pub derived: Value,
-    /// given − derived, component by component, in canonical form.
+    /// given − derived, component by component, in canonical form. For an equation, given is
+    /// lhs − rhs with its quantities and unknowns replaced; against an equation of motion with
+    /// a factor k = n/d, the difference is n · given − d · derived (zero when equivalent).
     pub difference: Vec<Expr>,
+    /// Against an equation of motion: when equivalent, the factor k with eom = k · (lhs − rhs);
+    /// when not, the factor that makes most terms agree, used for the difference (if any).
+    pub factor: Option<Factor>,
+    /// The quantities and unknowns of the text replaced by their derived or solved values, in
+    /// the order met.
+    pub substituted: Vec<String>,
 }
 
 impl Verdict {
-    /// Whether the hand-written value equals the derived one exactly.
+    /// Whether the hand-written value equals the derived one exactly (for an equation: is
+    /// equivalent to the engine's relation, see [`Check`]).
     pub fn is_equivalent(&self) -> bool {
         self.difference.iter().all(Expr::is_zero)
+    }
+
+    /// The quantity asked, when it is an equation of motion (`eom(q)`, `lin(eom(q))`).
+    fn asked_equation_of_motion(&self) -> Option<String> {
+        Quantity::parse(&self.quantity)
+            .ok()
+            .filter(|q| matches!(q.kind, QuantityKind::Eom(_)))
+            .map(|q| q.to_string())
+    }
+
+    /// « with delta(O1,E/0).z0 replaced by its derived value and C_m by its solved value »,
+    /// for the report; empty when nothing was replaced.
+    fn replaced(&self) -> String {
+        let (unknowns, quantities): (Vec<&String>, Vec<&String>) =
+            self.substituted.iter().partition(|n| {
+                Quantity::parse(n).is_ok_and(|q| matches!(q.kind, QuantityKind::Unknown(_)))
+            });
+        // « a, b replaced by their derived values », « c by its solved value ».
+        let list = |names: &[&String], lead: &str, what: &str| {
+            let joined: Vec<&str> = names.iter().map(|s| s.as_str()).collect();
+            let (their, s) = if names.len() > 1 {
+                ("their", "s")
+            } else {
+                ("its", "")
+            };
+            format!("{} {lead}{their} {what} value{s}", joined.join(", "))
+        };
+        match (quantities.is_empty(), unknowns.is_empty()) {
+            (true, true) => String::new(),
+            (false, true) => format!(" with {}", list(&quantities, "replaced by ", "derived")),
+            (true, false) => format!(" with {}", list(&unknowns, "replaced by ", "solved")),
+            (false, false) => format!(
+                " with {} and {}",
+                list(&quantities, "replaced by ", "derived"),
+                list(&unknowns, "by ", "solved")
+            ),
+        }
     }
 }
 
 impl fmt::Display for Verdict {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let under = self
+            .hypothesis
+            .as_ref()
+            .map(|h| format!(" under {h}"))
+            .unwrap_or_default();
+        let subject = match &self.equation {
+            Some(eq) if self.quantity != *eq => format!("{}: `{eq}`{under}", self.quantity),
+            Some(eq) => format!("`{eq}`{under}"),
+            None => format!("{}{under}", self.quantity),
+        };
         if self.is_equivalent() {
-            return write!(f, "{}: equivalent", self.quantity);
+            return match (&self.check, &self.factor) {
+                (Check::Value, _) => write!(f, "{subject}: equivalent"),
+                (Check::Relation, _) => write!(
+                    f,
+                    "{subject}: equivalent (relation: lhs − rhs = 0{})",
+                    self.replaced()
+                ),
+                (Check::EquationOfMotion { coordinate }, k) => {
+                    // Say which equation it is, unless that was the quantity asked.
+                    let asked = self.asked_equation_of_motion();
+                    let eom = asked.clone().unwrap_or(format!("eom({coordinate})"));
+                    let is = if asked.is_none() {
+                        format!(" (it is the equation of motion {eom}{})", self.replaced())
+                    } else {
+                        String::new()
+                    };
+                    match k {
+                        Some(k) if !k.is_one() => {
+                            write!(f, "{subject}: equivalent, up to the factor {k}{is}")?;
+                            write!(f, "\n  {eom} = {k} × (lhs − rhs)")?;
+                            // The same equation wherever the factor is defined and nonzero.
+                            let conditions: Vec<String> = [&k.numerator, &k.denominator]
+                                .into_iter()
+                                .filter(|e| e.as_rational().is_none())
+                                .map(|e| format!("{e} ≠ 0"))
+                                .collect();
+                            if !conditions.is_empty() {
+                                write!(
+                                    f,
+                                    ", the same equation where {}",
+                                    conditions.join(" and ")
+                                )?;
+                            }
+                            Ok(())
+                        }
+                        _ => write!(f, "{subject}: equivalent{is}"),
+                    }
+                }
+            };
         }
-        writeln!(f, "{}: NOT equivalent; given − derived =", self.quantity)?;
+        match &self.check {
+            Check::Value => writeln!(f, "{subject}: NOT equivalent; given − derived =")?,
+            Check::EquationOfMotion { coordinate } => {
+                let eom = self
+                    .asked_equation_of_motion()
+                    .unwrap_or(format!("eom({coordinate})"));
+                write!(
+                    f,
+                    "{subject}: NOT equivalent: {eom} is not (lhs − rhs) times a nonzero \
+                     factor made of parameters; "
+                )?;
+                match &self.factor {
+                    Some(k) if k.is_one() => writeln!(f, "(lhs − rhs) − {eom} =")?,
+                    Some(k) if k.denominator.is_one() => writeln!(
+                        f,
+                        "with the factor {k} that matches most terms, {k} × (lhs − rhs) − {eom} ="
+                    )?,
+                    Some(k) => writeln!(
+                        f,
+                        "with the factor {k} that matches most terms, {} × (lhs − rhs) − {} × \
+                         {eom} =",
+                        k.numerator, k.denominator
+                    )?,
+                    None => writeln!(f, "(lhs − rhs) − {eom} =")?,
+                }
+            }
+            Check::Relation => writeln!(
+                f,
+                "{subject}: NOT equivalent: lhs − rhs{} is neither zero nor an equation of \
+                 motion times a nonzero factor made of parameters; lhs − rhs =",
+                self.replaced()
+            )?,
+        }
         for (k, d) in self.difference.iter().enumerate() {
             if !d.is_zero() {
                 writeln!(f, "  component {}: {}", k + 1, d.presentation())?;
             }
         }
         Ok(())
+    }
+}
+
+/// Reads what the user typed: quantities written in the course's notation inside it are
+/// replaced by their derived values, unknowns of the PFD by their solved values, everything
+/// under the hypothesis.
+struct Reader<'a> {
+    m: &'a Mechanism,
+    hypothesis: Option<&'a Hypothesis>,
+    solution: Option<Solution>,
+    /// Quantities met, with their value (under the hypothesis).
+    quantities: Vec<(Quantity, Expr)>,
+    /// Quantities and unknowns replaced, in the order met.
+    substituted: Vec<String>,
+    /// Bare names met (outside quantities), for `-q Q` with Q an unknown.
+    names: Vec<String>,
+}
+
+/// The functions of the expression syntax; any other `name(` starts a quantity.
+const SYNTAX_FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
+
+impl<'a> Reader<'a> {
+    fn new(m: &'a Mechanism, hypothesis: Option<&'a Hypothesis>) -> Reader<'a> {
+        Reader {
+            m,
+            hypothesis,
+            solution: None,
+            quantities: Vec::new(),
+            substituted: Vec::new(),
+            names: Vec::new(),
+        }
+    }
+
+    fn under(&self, e: Expr) -> Expr {
+        match self.hypothesis {
+            Some(h) => h.apply(&e),
+            None => e,
+        }
+    }
+
+    fn solution(&mut self) -> Result<&Solution, VerifyError> {
+        if self.solution.is_none() {
+            self.solution = Some(crate::pfd::solve(self.m)?);
+        }
+        Ok(self.solution.as_ref().expect("solved"))
+    }
+
+    fn note(&mut self, what: String) {
+        if !self.substituted.contains(&what) {
+            self.substituted.push(what);
+        }
+    }
+
+    /// One scalar text: quantities replaced by placeholder names, unknown names refused (all
+    /// named at once), parsed, unknowns replaced by their solved values, under the hypothesis.
+    fn read(&mut self, text: &str) -> Result<Expr, VerifyError> {
+        let reg = self.m.reg.clone();
+        let known = |n: &str| reg.param(n).is_some() || reg.coord(n).is_some() || n == "pi";
+        // Placeholders: a prefix that neither the text nor any name of the spec holds.
+        let mut prefix = String::from("qty");
+        while text.contains(&prefix)
+            || reg
+                .parameters()
+                .iter()
+                .chain(reg.unknowns())
+                .any(|n| n.starts_with(&prefix))
+            || reg
+                .coordinates()
+                .iter()
+                .any(|c| c.name.starts_with(&prefix))
+        {
+            prefix.push('_');
+        }
+        let b = text.as_bytes();
+        let mut out = String::with_capacity(text.len());
+        let mut placeholders: Vec<(String, Expr)> = Vec::new();
+        let mut unknown: Vec<String> = Vec::new();
+        let mut i = 0;
+        while i < b.len() {
+            let c = b[i];
+            if c.is_ascii_digit() {
+                // A number, and a name glued to it (the parser refuses `2x`).
+                while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_' || b[i] == b'.')
+                {
+                    out.push(b[i] as char);
+                    i += 1;
+                }
+                continue;
+            }
+            if !(c.is_ascii_alphabetic() || c == b'_') {
+                // Only ASCII is allowed; the parser names any other character.
+                let ch = text[i..].chars().next().unwrap_or(' ');
+                out.push(ch);
+                i += ch.len_utf8();
+                continue;
+            }
+            let start = i;
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                i += 1;
+            }
+            let word = &text[start..i];
+            let mut j = i;
+            while j < b.len() && b[j].is_ascii_whitespace() {
+                j += 1;
+            }
+            let call = j < b.len() && b[j] == b'(';
+            if !call || SYNTAX_FUNCTIONS.contains(&word) {
+                if !call && !known(word) && !unknown.iter().any(|u| u == word) {
+                    unknown.push(word.to_string());
+                }
+                if !call && !self.names.iter().any(|n| n == word) {
+                    self.names.push(word.to_string());
+                }
+                out.push_str(word);
+                continue;
+            }
+            // A quantity: `name(...)`, then an optional projection `.x2`.
+            let mut depth = 0usize;
+            let mut end = j;
+            while end < b.len() {
+                match b[end] {
+                    b'(' => depth += 1,
+                    b')' => {
+                        depth -= 1;
+                        if depth == 0 {
+                            break;
+                        }
+                    }
+                    _ => {}
+                }
+                end += 1;
+            }
+            if end >= b.len() {
+                return Err(ExprError::Parse {
+                    input: text.to_string(),
+                    reason: "unbalanced parentheses".to_string(),
+                }
+                .into());
+            }
+            end += 1;
+            if end + 2 < b.len() + 1
+                && b.get(end) == Some(&b'.')
+                && b.get(end + 1)
+                    .is_some_and(|a| matches!(a, b'x' | b'y' | b'z'))
+                && b.get(end + 2)
+                    .is_some_and(|a| a.is_ascii_alphanumeric() || *a == b'_')
+            {
+                end += 2;
+                while end < b.len() && (b[end].is_ascii_alphanumeric() || b[end] == b'_') {
+                    end += 1;
+                }
+            }
+            let notation = &text[start..end];
+            let q = Quantity::parse(notation)?;
+            let value = self.quantity_value(&q, notation)?;
+            let name = format!("{prefix}{}", placeholders.len());
+            out.push_str(&name);
+            placeholders.push((name, value));
+            i = end;
+        }
+        if !unknown.is_empty() {
+            return Err(VerifyError::UnknownNames {
+                names: unknown,
+                input: text.to_string(),
+            });
+        }
+        let lookup = |n: &str| {
+            placeholders
+                .iter()
+                .find(|(p, _)| p == n)
+                .map(|(_, e)| e.clone())
+        };
+        let mut e = reg.parse_with(&out, &lookup).map_err(|err| match err {
+            // The user's text, not the one with placeholders.
+            ExprError::Parse { reason, .. } => ExprError::Parse {
+                input: text.to_string(),
+                reason,
+            },
+            ExprError::Unsupported { reason, .. } => ExprError::Unsupported {
+                input: text.to_string(),
+                reason,
+            },
+            other => other,
+        })?;
+        // Unknowns of the PFD: their solved values.
+        for v in 0..reg.nvars() {
+            let VarRole::Parameter(k) = reg.role(v) else {
+                continue;
+            };
+            if !reg.is_unknown(k) || !e.contains_var(v) {
+                continue;
+            }
+            let name = reg.scalar_name(k).to_string();
+            let value = self
+                .solution()?
+                .unknowns
+                .get(&name)
+                .cloned()
+                .ok_or_else(|| {
+                    VerifyError::Shape(format!(
+                        "`{name}` in `{text}`: no equation of the spec's pfd determines it"
+                    ))
+                })?;
+            e = e.substitute(v, &value);
+            self.note(name);
+        }
+        Ok(self.under(e))
+    }
+
+    /// The derived value of a scalar quantity written inside an expression.
+    fn quantity_value(&mut self, q: &Quantity, notation: &str) -> Result<Expr, VerifyError> {
+        if let Some((_, v)) = self.quantities.iter().find(|(x, _)| x == q) {
+            return Ok(v.clone());
+        }
+        let value = derive_values(self.m, std::slice::from_ref(q))?
+            .pop()
+            .map(|d| d.value)
+            .ok_or_else(|| VerifyError::Shape("nothing derived".into()))?;
+        let Value::Scalar(e) = value else {
+            return Err(VerifyError::Shape(format!(
+                "`{notation}` is not a scalar: inside an expression, write a projection \
+                 (`.x2`), an unknown, an energy or an equation of motion"
+            )));
+        };
+        let e = self.under(e);
+        self.quantities.push((q.clone(), e.clone()));
+        self.note(q.to_string());
+        Ok(e)
     }
 }
 
@@ -86,7 +547,11 @@ fn split_list(s: &str) -> Option<Vec<String>> {
 /// Parses the hand-written value in the shape of the derived one: a scalar; `[x, y, z]` for a
 /// vector (components in the quantity's basis); `[[Rx, Ry, Rz], [Mx, My, Mz]]` for a torsor;
 /// three rows for an inertia matrix.
-fn parse_shaped(m: &Mechanism, derived: &Value, text: &str) -> Result<Vec<Expr>, VerifyError> {
+fn parse_shaped(
+    reader: &mut Reader,
+    derived: &Value,
+    text: &str,
+) -> Result<Vec<Expr>, VerifyError> {
     let n = derived.exprs().len();
     let flat: Vec<String> =
         match derived {
@@ -115,13 +580,48 @@ fn parse_shaped(m: &Mechanism, derived: &Value, text: &str) -> Result<Vec<Expr>,
             flat.len()
         )));
     }
-    flat.iter()
-        .map(|s| m.reg.parse(s.trim()).map_err(VerifyError::from))
-        .collect()
+    flat.iter().map(|s| reader.read(s.trim())).collect()
+}
+
+/// The hypothesis of that name.
+fn hypothesis<'a>(
+    m: &'a Mechanism,
+    h: Option<&str>,
+) -> Result<Option<&'a Hypothesis>, VerifyError> {
+    h.map(|h| {
+        m.hypotheses
+            .iter()
+            .find(|x| x.name == h)
+            .ok_or_else(|| VerifyError::Hypothesis(h.to_string()))
+    })
+    .transpose()
+}
+
+/// `lhs = rhs` split at its one `=`; none for a text without `=`.
+fn sides(text: &str) -> Result<Option<(&str, &str)>, VerifyError> {
+    let Some((l, r)) = text.split_once('=') else {
+        return Ok(None);
+    };
+    if r.contains('=') {
+        return Err(VerifyError::Shape(format!(
+            "`{text}`: an equation is written `lhs = rhs`, with one `=`"
+        )));
+    }
+    for (side, s) in [("left", l), ("right", r)] {
+        if s.trim().is_empty() {
+            return Err(VerifyError::Shape(format!(
+                "`{text}`: the {side} side of the equation is empty"
+            )));
+        }
+    }
+    Ok(Some((l.trim(), r.trim())))
 }
 
 /// Compares a hand-written value with the derived value of `quantity`, optionally under a
-/// hypothesis of the spec.
+/// hypothesis of the spec. The text may also be an equation `lhs = rhs`: for `eom(q)`, the
+/// equation of motion up to a nonzero factor of parameters; for another scalar quantity, a
+/// relation that contains it ([`verify_equation`]). Quantities in the course's notation and
+/// unknowns of the PFD may be written inside the text (see [`Check`]).
 ///
 /// ```
 /// use torseur::{spec, verify::verify};
@@ -131,43 +631,34 @@ fn parse_shaped(m: &Mechanism, derived: &Value, text: &str) -> Result<Vec<Expr>,
 /// assert!(v.is_equivalent());
 /// let v = verify(&m, "Omega(2/0) in B2", "[dot(theta2), 0, dot(theta1)]", None).unwrap();
 /// assert!(!v.is_equivalent());
+/// // The motor torque is the dynamic moment of E at O1 on z0 (no other action has a moment
+/// // on z0 there): a value written with a quantity.
+/// assert!(verify(&m, "C_m", "delta(O1,E/0).z0", None).unwrap().is_equivalent());
 /// ```
 pub fn verify(
     m: &Mechanism,
     quantity: &str,
     text: &str,
-    hypothesis: Option<&str>,
+    hypothesis_name: Option<&str>,
 ) -> Result<Verdict, VerifyError> {
     let q = Quantity::parse(quantity)?;
-    let mut derived = derive_values(m, std::slice::from_ref(&q))?
-        .pop()
-        .map(|d| d.value)
-        .ok_or_else(|| VerifyError::Shape("nothing derived".into()))?;
-    if let Some(h) = hypothesis {
-        let h = m
-            .hypotheses
-            .iter()
-            .find(|x| x.name == h)
-            .ok_or_else(|| VerifyError::Hypothesis(h.to_string()))?;
+    let h = hypothesis(m, hypothesis_name)?;
+    if let Some((l, r)) = sides(text)? {
+        return match &q.kind {
+            QuantityKind::Eom(c) => equation_of_motion(m, &q, c, text, l, r, h),
+            _ if q.is_scalar() => relation(m, Some(&q), text, l, r, h),
+            _ => Err(VerifyError::Shape(format!(
+                "`{q}` is not a scalar: an equation `lhs = rhs` is between scalars (write the \
+                 vector [x, y, z] in its basis, or project it: `.x2`)"
+            ))),
+        };
+    }
+    let mut derived = derived_value(m, &q)?;
+    if let Some(h) = h {
         derived = derived.under(h);
     }
-    // An equation of motion may be written `lhs = rhs`, and is the same equation when
-    // multiplied by a nonzero number.
-    let is_equation = matches!(q.kind, crate::quantity::QuantityKind::Eom(_));
-    let given = match (is_equation, text.split_once('=')) {
-        (true, Some((l, r))) => vec![&m.reg.parse(l.trim())? - &m.reg.parse(r.trim())?],
-        _ => parse_shaped(m, &derived, text)?,
-    };
-    if is_equation
-        && let (Some(g), Some(d)) = (given.first(), derived.exprs().first())
-        && g.constant_multiple_of(d).is_some()
-    {
-        return Ok(Verdict {
-            quantity: q.to_string(),
-            difference: vec![m.reg.zero()],
-            derived,
-        });
-    }
+    let mut reader = Reader::new(m, h);
+    let given = parse_shaped(&mut reader, &derived, text)?;
     let difference = given
         .iter()
         .zip(derived.exprs())
@@ -175,9 +666,172 @@ pub fn verify(
         .collect();
     Ok(Verdict {
         quantity: q.to_string(),
+        equation: None,
+        hypothesis: hypothesis_name.map(str::to_string),
+        check: Check::Value,
         derived,
         difference,
+        factor: None,
+        substituted: reader.substituted,
     })
+}
+
+/// The derived value of a quantity.
+fn derived_value(m: &Mechanism, q: &Quantity) -> Result<Value, VerifyError> {
+    derive_values(m, std::slice::from_ref(q))?
+        .pop()
+        .map(|d| d.value)
+        .ok_or_else(|| VerifyError::Shape("nothing derived".into()))
+}
+
+/// `-q eom(c) -e "lhs = rhs"`: eom(c) = k · (lhs − rhs) for a nonzero factor k of parameters.
+fn equation_of_motion(
+    m: &Mechanism,
+    q: &Quantity,
+    coordinate: &str,
+    text: &str,
+    l: &str,
+    r: &str,
+    h: Option<&Hypothesis>,
+) -> Result<Verdict, VerifyError> {
+    let mut derived = derived_value(m, q)?;
+    if let Some(h) = h {
+        derived = derived.under(h);
+    }
+    let mut reader = Reader::new(m, h);
+    let given = &reader.read(l)? - &reader.read(r)?;
+    let d = derived.exprs()[0].clone();
+    // Not equivalent: the difference is shown with the factor that matches most terms (a
+    // wrong sign in one term then shows as that term alone).
+    let factor = d
+        .parameter_ratio(&given)
+        .or_else(|| d.closest_parameter_ratio(&given))
+        .map(|(numerator, denominator)| Factor {
+            numerator,
+            denominator,
+        });
+    // k · given − derived, written n · given − d · derived for k = n/d.
+    let difference = match &factor {
+        Some(k) => &(&given * &k.numerator) - &(&d * &k.denominator),
+        None => &given - &d,
+    };
+    Ok(Verdict {
+        quantity: q.to_string(),
+        equation: Some(text.trim().to_string()),
+        hypothesis: h.map(|h| h.name.clone()),
+        check: Check::EquationOfMotion {
+            coordinate: coordinate.to_string(),
+        },
+        derived,
+        difference: vec![difference],
+        factor,
+        substituted: reader.substituted,
+    })
+}
+
+/// A relation: lhs − rhs, quantities and unknowns replaced, is zero, or else an equation of
+/// motion of the spec up to a nonzero factor of parameters. With `subject`, the equation must
+/// contain that quantity.
+fn relation(
+    m: &Mechanism,
+    subject: Option<&Quantity>,
+    text: &str,
+    l: &str,
+    r: &str,
+    h: Option<&Hypothesis>,
+) -> Result<Verdict, VerifyError> {
+    let mut reader = Reader::new(m, h);
+    let e = &reader.read(l)? - &reader.read(r)?;
+    if let Some(q) = subject {
+        let present = match &q.kind {
+            QuantityKind::Unknown(n) if !q.linear => reader.names.contains(n),
+            _ => reader.quantities.iter().any(|(x, _)| x == q),
+        };
+        if !present {
+            return Err(VerifyError::Shape(format!(
+                "`{text}` does not contain {q}: write {q} in the equation, or verify the \
+                 equation without --quantity"
+            )));
+        }
+    }
+    let quantity = subject.map_or_else(|| text.trim().to_string(), Quantity::to_string);
+    let verdict = |check, derived: Expr, difference, factor, substituted| Verdict {
+        quantity: quantity.clone(),
+        equation: Some(text.trim().to_string()),
+        hypothesis: h.map(|h| h.name.clone()),
+        check,
+        derived: Value::Scalar(derived),
+        difference: vec![difference],
+        factor,
+        substituted,
+    };
+    if e.is_zero() {
+        let zero = m.reg.zero();
+        return Ok(verdict(
+            Check::Relation,
+            zero.clone(),
+            zero,
+            None,
+            reader.substituted,
+        ));
+    }
+    // Not an identity: is it one of the equations of motion, up to a factor?
+    if m.dynamics.theorems.iter().any(|t| t.eom.is_some()) {
+        let eoms = reader.solution()?.eom.clone();
+        for (coordinate, eom) in eoms {
+            let d = reader.under(eom);
+            if let Some((numerator, denominator)) = d.parameter_ratio(&e) {
+                let difference = &(&e * &numerator) - &(&d * &denominator);
+                return Ok(verdict(
+                    Check::EquationOfMotion { coordinate },
+                    d,
+                    difference,
+                    Some(Factor {
+                        numerator,
+                        denominator,
+                    }),
+                    reader.substituted,
+                ));
+            }
+        }
+    }
+    let zero = m.reg.zero();
+    Ok(verdict(Check::Relation, zero, e, None, reader.substituted))
+}
+
+/// Decides an equation `lhs = rhs` between quantities (`delta(O2,2/0).x2`, `eom(theta)`),
+/// unknowns of the PFD (`X01`, `C_m`) and expressions of the spec's names: it holds when
+/// lhs − rhs, every quantity replaced by its derived value and every unknown by its solved
+/// value, is identically zero, or else when it is an equation of motion of the spec up to a
+/// nonzero factor made of parameters (the verdict's [`Check`] says which). An equation that
+/// holds only along the motions after an equation of motion has eliminated an acceleration is
+/// not recognised, unless it is itself one equation of motion up to such a factor.
+///
+/// ```
+/// use torseur::{spec, verify::{verify_equation, Check}};
+/// let m = spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// // The moment theorem on E at O1 on z0: the motor torque balances δ(O1,E/0)·z0.
+/// let v = verify_equation(&m, "C_m - delta(O1,E/0).z0 = 0", None).unwrap();
+/// assert!(v.is_equivalent());
+/// assert_eq!(v.check, Check::Relation);
+/// // Twice the pendulum's equation, read as a relation: the equation of motion of theta2.
+/// let v = verify_equation(&m, "2*eom(theta2) = 0", Some("H2")).unwrap();
+/// assert_eq!(v.check, Check::EquationOfMotion { coordinate: "theta2".into() });
+/// assert_eq!(v.factor.unwrap().to_string(), "1/2");
+/// assert!(!verify_equation(&m, "C_m = 0", None).unwrap().is_equivalent());
+/// ```
+pub fn verify_equation(
+    m: &Mechanism,
+    text: &str,
+    hypothesis_name: Option<&str>,
+) -> Result<Verdict, VerifyError> {
+    let h = hypothesis(m, hypothesis_name)?;
+    let (l, r) = sides(text)?.ok_or_else(|| {
+        VerifyError::Shape(format!(
+            "`{text}` is not an equation `lhs = rhs` (a value is verified with --quantity)"
+        ))
+    })?;
+    relation(m, None, text, l, r, h)
 }
 
 /// Asserts that a hand-written expression equals a derived quantity exactly; on failure the

@@ -110,15 +110,18 @@ enum Command {
         #[arg(long)]
         png: Option<PathBuf>,
     },
-    /// Exact equivalence of a hand-written result with the derived one (exit 1 if not).
+    /// Exact equivalence of a hand-written result or equation with the engine's (exit 1 if
+    /// not): a value, an equation of motion up to a nonzero factor of parameters (reported),
+    /// or a relation between quantities, unknowns and expressions.
     Verify {
         /// Problem spec (JSON).
         spec: PathBuf,
-        /// The quantity, in course notation.
+        /// The quantity, in course notation; without it, --expr is an equation `lhs = rhs`.
         #[arg(long = "quantity", short = 'q')]
-        quantity: String,
+        quantity: Option<String>,
         /// The hand-written value: a scalar, `[x, y, z]` in the quantity's basis, or
-        /// `[[Rx, Ry, Rz], [Mx, My, Mz]]` for a torsor.
+        /// `[[Rx, Ry, Rz], [Mx, My, Mz]]` for a torsor; or an equation `lhs = rhs`. Quantities
+        /// (`delta(O2,2/0).x2`, `eom(theta)`) and unknowns (`X01`, `C_m`) may be written in it.
         #[arg(long = "expr", short = 'e', allow_hyphen_values = true)]
         expr: String,
         /// Compare with the derived value under this hypothesis of the spec.
@@ -384,9 +387,12 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 .with_context(|| format!("cannot read {}", at.display()))
                 .map_err(bad_input)?;
             let values = output::Values::parse(&text).map_err(bad_input)?;
-            let point = output::numeric_point(&m, &values).map_err(bad_input)?;
             let qs = quantities(&m, &qs)?;
             let ds = values_only(&m, &qs)?;
+            // Only the parameters and coordinates the results hold are demanded.
+            let exprs: Vec<&torseur::expr::Expr> =
+                ds.iter().flat_map(|d| d.value.exprs()).collect();
+            let point = output::numeric_point_for(&m, &values, &exprs).map_err(bad_input)?;
             let items: Vec<serde_json::Value> = ds
                 .iter()
                 .map(|d| output::eval_value(&m, &d.quantity.to_string(), &d.value, &point))
@@ -563,8 +569,11 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             hypothesis,
         } => {
             let m = load(&spec)?;
-            let v = torseur::verify::verify(&m, &quantity, &expr, hypothesis.as_deref())
-                .map_err(bad_input)?;
+            let v = match &quantity {
+                Some(q) => torseur::verify::verify(&m, q, &expr, hypothesis.as_deref()),
+                None => torseur::verify::verify_equation(&m, &expr, hypothesis.as_deref()),
+            }
+            .map_err(bad_input)?;
             emit(&format!("{v}\n"))?;
             for (k, d) in v
                 .difference
@@ -583,7 +592,10 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             } else {
                 Err(Failure {
                     code: 1,
-                    error: anyhow!("{} differs from the derived result", v.quantity),
+                    error: match &v.equation {
+                        None => anyhow!("{} differs from the derived result", v.quantity),
+                        Some(eq) => anyhow!("`{eq}` is not equivalent to the engine's relation"),
+                    },
                 })
             }
         }

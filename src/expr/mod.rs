@@ -496,6 +496,17 @@ impl Registry {
         &self.parameters[i]
     }
 
+    /// Whether variable `i` may enter a factor between two equations
+    /// ([`Expr::parameter_ratio`]): a parameter, or the cos or sin of a constant angle
+    /// parameter; not a coordinate, a rate or an unknown.
+    pub fn is_factor_variable(&self, i: usize) -> bool {
+        match self.roles[i] {
+            VarRole::Parameter(k) => !self.is_unknown(k),
+            VarRole::Cos(q) | VarRole::Sin(q) => self.coords[q.0].constant,
+            VarRole::Value(_) | VarRole::Rate(..) => false,
+        }
+    }
+
     /// Whether a [`VarRole::Parameter`] index is an unknown of the PFD.
     pub fn is_unknown(&self, i: usize) -> bool {
         i >= self.n_params
@@ -696,6 +707,27 @@ impl Registry {
         parse::parse_scalar(self, s)
     }
 
+    /// [`Registry::parse`], where `names` gives the value of the names that are neither
+    /// parameters, unknowns nor coordinates (a quantity written inside an equation, replaced by
+    /// a placeholder name); any other name is still an [`ExprError::UnknownName`].
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let w = reg.parse("m*dot(q)").unwrap();
+    /// let e = reg.parse_with("2*W - m*dot(q)", &|n| (n == "W").then(|| w.clone())).unwrap();
+    /// assert_eq!(e, w);
+    /// assert!(reg.parse_with("2*U", &|n| (n == "W").then(|| w.clone())).is_err());
+    /// ```
+    pub fn parse_with(
+        self: &Rc<Self>,
+        s: &str,
+        names: &dyn Fn(&str) -> Option<Expr>,
+    ) -> Result<Expr, ExprError> {
+        parse::parse_scalar_with(self, s, names)
+    }
+
     /// Parses an angle that is a sum of angles with integer coefficients and a multiple of
     /// π/2 (`pi/2 - q1`, `theta - alpha`, `2*q`): its terms, offset and exact cos and sin,
     /// by the angle-addition formulas. What a frame's rotation takes (the spec then allows one
@@ -857,7 +889,6 @@ impl Expr {
     }
 
     /// Whether the variable `i` occurs.
-    #[allow(dead_code)]
     pub(crate) fn contains_var(&self, i: usize) -> bool {
         self.p.degree(i) > 0
     }
@@ -1025,6 +1056,10 @@ impl Expr {
 
     /// Builds an expression from terms (any order; like terms are combined).
     pub(crate) fn from_terms(reg: &Rc<Registry>, terms: Vec<(Rational, Vec<u8>)>) -> Expr {
+        if terms.is_empty() {
+            // No term: symbolica's list constructor is not asked to size an empty list.
+            return reg.zero();
+        }
         let mut coefficients = Vec::with_capacity(terms.len());
         let mut exponents = Vec::with_capacity(terms.len() * reg.nvars());
         for (c, e) in terms {
@@ -1107,6 +1142,113 @@ impl Expr {
         (&k * other == *self).then_some(k)
     }
 
+    /// The nonzero factor k = numerator / denominator, made of parameters only, with
+    /// `self = k · other`; none if there is no such factor (two equations `e = 0` that differ
+    /// by such a factor are the same equation wherever it is nonzero).
+    ///
+    /// « Parameters » are the spec's parameters and the cos and sin of its constant angle
+    /// parameters: never a coordinate, a rate or an unknown, so an equation multiplied by q̇
+    /// or cos q is another equation. The factor is found exactly: with μ the kinematic part
+    /// (coordinates, rates, unknowns) of a term of `other`, n and d the coefficients of μ in
+    /// `self` and `other` (polynomials in the parameters, d ≠ 0), `self = (n/d) · other` iff
+    /// d · self = n · other, a product of canonical forms compared structurally. n/d is then
+    /// reduced by its polynomial gcd, the denominator's first coefficient made 1.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into(), "l".into(), "g".into()],
+    ///     &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let derived = reg.parse("m*l^2*ddot(q) + m*g*l*sin(q)").unwrap();
+    /// let given = reg.parse("l*ddot(q) + g*sin(q)").unwrap();
+    /// let (n, d) = derived.parameter_ratio(&given).unwrap();
+    /// assert_eq!((n, d), (reg.parse("m*l").unwrap(), reg.one()));
+    /// // The other way round, the factor is 1/(m l).
+    /// let (n, d) = given.parameter_ratio(&derived).unwrap();
+    /// assert_eq!((n, d), (reg.one(), reg.parse("m*l").unwrap()));
+    /// // Multiplied by a rate or by cos q, it is another equation.
+    /// assert!(derived.parameter_ratio(&(&given * &reg.parse("dot(q)").unwrap())).is_none());
+    /// assert!(derived.parameter_ratio(&(&given * &reg.parse("cos(q)").unwrap())).is_none());
+    /// ```
+    pub fn parameter_ratio(&self, other: &Expr) -> Option<(Expr, Expr)> {
+        let theirs = other.by_kinematic_monomial();
+        let (mu, d) = theirs.first()?;
+        let n = self
+            .by_kinematic_monomial()
+            .into_iter()
+            .find(|(m, _)| m == mu)?
+            .1;
+        if d * self != &n * other {
+            return None;
+        }
+        Some(lowest_terms(n, d.clone()))
+    }
+
+    /// For a report when [`Expr::parameter_ratio`] finds none: the factor k = numerator /
+    /// denominator of parameters only for which the most kinematic monomials of `self` and
+    /// `k · other` have equal coefficients (a wrong sign in one term leaves the others
+    /// agreeing). None when they share no kinematic monomial.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into(), "l".into(), "g".into()],
+    ///     &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let derived = reg.parse("m*l^2*ddot(q) + m*l*dot(q)^2 + m*g*l*sin(q)").unwrap();
+    /// let wrong_sign = reg.parse("l*ddot(q) + dot(q)^2 - g*sin(q)").unwrap();
+    /// assert!(derived.parameter_ratio(&wrong_sign).is_none());
+    /// let (n, d) = derived.closest_parameter_ratio(&wrong_sign).unwrap();
+    /// assert_eq!((n, d), (reg.parse("m*l").unwrap(), reg.one()));
+    /// ```
+    pub fn closest_parameter_ratio(&self, other: &Expr) -> Option<(Expr, Expr)> {
+        /// Candidates tried (each is compared with every shared monomial).
+        const CANDIDATES: usize = 32;
+        let mine = self.by_kinematic_monomial();
+        let shared: Vec<(Expr, Expr)> = other
+            .by_kinematic_monomial()
+            .into_iter()
+            .filter_map(|(mu, d)| Some((mine.iter().find(|(m, _)| *m == mu)?.1.clone(), d)))
+            .collect();
+        // How many monomials n/d makes agree: n · d' = n' · d.
+        let agree = |n: &Expr, d: &Expr| shared.iter().filter(|(n2, d2)| n * d2 == n2 * d).count();
+        let mut best: Option<(usize, &Expr, &Expr)> = None;
+        for (n, d) in shared.iter().take(CANDIDATES) {
+            let k = agree(n, d);
+            if best.is_none_or(|(b, _, _)| k > b) {
+                best = Some((k, n, d));
+            }
+        }
+        best.map(|(_, n, d)| lowest_terms(n.clone(), d.clone()))
+    }
+
+    /// The terms grouped by their kinematic part μ (coordinates, rates, unknowns: every
+    /// variable but [`Registry::is_factor_variable`]), each with its coefficient, a polynomial
+    /// in the parameters; in the order of the canonical form's terms.
+    fn by_kinematic_monomial(&self) -> Vec<(Vec<u8>, Expr)> {
+        let reg = &self.reg;
+        let param: Vec<bool> = (0..reg.nvars())
+            .map(|i| reg.is_factor_variable(i))
+            .collect();
+        // (μ, terms of its coefficient: rational and exponents of the parameters).
+        type Terms = Vec<(Rational, Vec<u8>)>;
+        let mut groups: Vec<(Vec<u8>, Terms)> = Vec::new();
+        for (c, e) in self.terms() {
+            let (mu, parameters): (Vec<u8>, Vec<u8>) = e
+                .iter()
+                .zip(&param)
+                .map(|(&k, &p)| if p { (0, k) } else { (k, 0) })
+                .unzip();
+            match groups.iter_mut().find(|(m, _)| *m == mu) {
+                Some((_, terms)) => terms.push((c.clone(), parameters)),
+                None => groups.push((mu, vec![(c.clone(), parameters)])),
+            }
+        }
+        groups
+            .into_iter()
+            .map(|(mu, terms)| (mu, Expr::from_terms(reg, terms)))
+            .collect()
+    }
+
     /// Whether the expression is a nonzero rational number.
     pub fn is_nonzero_constant(&self) -> bool {
         self.as_rational().is_some_and(|r| !r.is_zero())
@@ -1120,6 +1262,19 @@ impl Expr {
             None
         }
     }
+}
+
+/// n/d in lowest terms (divided by their polynomial gcd), the denominator's first coefficient
+/// made 1.
+fn lowest_terms(n: Expr, d: Expr) -> (Expr, Expr) {
+    let g = n.p.gcd(&d.p);
+    let (np, dp) = match (n.p.try_div(&g), d.p.try_div(&g)) {
+        (Some(a), Some(b)) => (a, b),
+        _ => (n.p.clone(), d.p.clone()),
+    };
+    let (n, d) = (n.with(np), d.with(dp));
+    let unit = n.reg.constant(d.p.coefficients[0].inv());
+    (&n * &unit, &d * &unit)
 }
 
 macro_rules! binop {

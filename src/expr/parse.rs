@@ -305,8 +305,22 @@ fn exact_decimals(s: &str) -> Result<String, String> {
 }
 
 pub(super) fn parse_scalar(reg: &Rc<Registry>, s: &str) -> Result<Expr, ExprError> {
+    parse_scalar_with(reg, s, &|_| None)
+}
+
+/// [`parse_scalar`], where `names` gives the value of names the registry does not know.
+pub(super) fn parse_scalar_with(
+    reg: &Rc<Registry>,
+    s: &str,
+    names: &dyn Fn(&str) -> Option<Expr>,
+) -> Result<Expr, ExprError> {
     let a = parse_atom(s)?;
-    Walker { reg, input: s }.scalar(a.as_view())
+    Walker {
+        reg,
+        input: s,
+        names,
+    }
+    .scalar(a.as_view())
 }
 
 pub(super) fn parse_vector<K: Ord + Copy>(
@@ -315,7 +329,11 @@ pub(super) fn parse_vector<K: Ord + Copy>(
     basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
 ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
     let a = parse_atom(s)?;
-    let w = Walker { reg, input: s };
+    let w = Walker {
+        reg,
+        input: s,
+        names: &|_| None,
+    };
     let expanded = a.expand();
     let mut out: Vec<(K, [Expr; 3])> = Vec::new();
     let mut add = |k: K, axis: usize, e: Expr| {
@@ -378,6 +396,8 @@ pub(super) fn parse_vector<K: Ord + Copy>(
 struct Walker<'a> {
     reg: &'a Rc<Registry>,
     input: &'a str,
+    /// Values of names the registry does not know (none but in [`parse_scalar_with`]).
+    names: &'a dyn Fn(&str) -> Option<Expr>,
 }
 
 impl Walker<'_> {
@@ -422,6 +442,9 @@ impl Walker<'_> {
                              sin({name}) and cos({name})"
                         ))
                     });
+                }
+                if let Some(e) = (self.names)(&name) {
+                    return Ok(e);
                 }
                 Err(ExprError::UnknownName {
                     name,
@@ -634,7 +657,11 @@ fn cos_sin(reg: &Rc<Registry>, terms: &[(CoordId, i64)], quarter_turns: i64) -> 
 /// Reads an angle `Σ nᵢ aᵢ + k π/2` (see [`Registry::parse_angle`]).
 pub(super) fn parse_angle(reg: &Rc<Registry>, s: &str) -> Result<LinearAngle, ExprError> {
     let a = parse_atom(s)?;
-    let w = Walker { reg, input: s };
+    let w = Walker {
+        reg,
+        input: s,
+        names: &|_| None,
+    };
     let (terms, quarter_turns) = w.linear_angle(a.as_view())?;
     let (cos, sin) = cos_sin(reg, &terms, quarter_turns);
     Ok(LinearAngle {

@@ -1,7 +1,7 @@
 //! Numeric evaluation of derived values at given parameters and coordinates.
 
 use crate::derivation::Value;
-use crate::expr::VarRole;
+use crate::expr::{Expr, VarRole};
 use crate::mechanism::Mechanism;
 use serde::Deserialize;
 use serde_json::{Value as Json, json};
@@ -42,8 +42,60 @@ impl Values {
     }
 }
 
-/// The value of every polynomial variable of the mechanism at `values`.
+/// The value of every polynomial variable of the mechanism at `values`, which must give
+/// every parameter and every coordinate (a sample of the whole mechanism).
 pub fn numeric_point(m: &Mechanism, values: &Values) -> Result<Vec<f64>, ValuesError> {
+    point_where(m, values, &|_| true, "")
+}
+
+/// The value at `values` of the variables that `exprs` contain: only the parameters and
+/// coordinates they hold are demanded, and when some are missing, the error names exactly
+/// those. The other variables are NaN, which [`crate::expr::Expr::eval`] of these
+/// expressions never reads (a variable of exponent 0 is not multiplied).
+///
+/// ```
+/// use torseur::output::{Values, numeric_point_for};
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let omega = m.reg.parse("dot(theta1)*L1").unwrap();
+/// let v = Values::parse(r#"{"parameters": {"L1": 2}, "coordinates": {"theta1": [0, 3, 0]}}"#)
+///     .unwrap();
+/// let point = numeric_point_for(&m, &v, &[&omega]).unwrap();
+/// assert_eq!(omega.eval(&point), 6.0);
+/// let v = Values::parse(r#"{"parameters": {}}"#).unwrap();
+/// let e = numeric_point_for(&m, &v, &[&omega]).unwrap_err();
+/// assert_eq!(e.to_string(),
+///     "values: missing parameter `L1` and coordinate `theta1` (the requested quantities hold them)");
+/// ```
+pub fn numeric_point_for(
+    m: &Mechanism,
+    values: &Values,
+    exprs: &[&Expr],
+) -> Result<Vec<f64>, ValuesError> {
+    let needed: Vec<bool> = (0..m.reg.nvars())
+        .map(|i| exprs.iter().any(|e| e.contains_var(i)))
+        .collect();
+    point_where(
+        m,
+        values,
+        &|i| needed[i],
+        " (the requested quantities hold them)",
+    )
+}
+
+/// `names` as `` `a`, `b` ``.
+fn listed(names: &[String]) -> String {
+    let quoted: Vec<String> = names.iter().map(|n| format!("`{n}`")).collect();
+    quoted.join(", ")
+}
+
+/// The point where variable `i` takes its value when `needed(i)`, NaN otherwise; every missing
+/// parameter and coordinate named at once.
+fn point_where(
+    m: &Mechanism,
+    values: &Values,
+    needed: &dyn Fn(usize) -> bool,
+    why: &str,
+) -> Result<Vec<f64>, ValuesError> {
     let reg = &m.reg;
     for p in values.parameters.keys() {
         if !reg.parameters().contains(p) {
@@ -55,56 +107,89 @@ pub fn numeric_point(m: &Mechanism, values: &Values) -> Result<Vec<f64>, ValuesE
             return Err(ValuesError(format!("unknown coordinate `{q}`")));
         }
     }
+    let (mut missing_parameters, mut missing_coordinates) = (Vec::new(), Vec::new());
+    let miss = |list: &mut Vec<String>, name: &String| {
+        if !list.contains(name) {
+            list.push(name.clone());
+        }
+        f64::NAN
+    };
     let mut point = Vec::with_capacity(reg.nvars());
     for i in 0..reg.nvars() {
         let v = match reg.role(i) {
+            _ if !needed(i) => f64::NAN,
             // Solved values never contain an unknown.
             VarRole::Parameter(k) if reg.is_unknown(k) => f64::NAN,
             VarRole::Parameter(k) => {
                 let name = &reg.parameters()[k];
-                *values
-                    .parameters
-                    .get(name)
-                    .ok_or_else(|| ValuesError(format!("missing parameter `{name}`")))?
+                match values.parameters.get(name) {
+                    Some(v) => *v,
+                    None => miss(&mut missing_parameters, name),
+                }
             }
             // A constant angle parameter: its value is among the parameters.
             VarRole::Cos(q) | VarRole::Sin(q) if reg.coord_info(q).is_constant() => {
                 let name = &reg.coord_info(q).name;
-                let a = *values
-                    .parameters
-                    .get(name)
-                    .ok_or_else(|| ValuesError(format!("missing parameter `{name}`")))?;
-                if matches!(reg.role(i), VarRole::Cos(_)) {
-                    a.cos()
-                } else {
-                    a.sin()
+                match values.parameters.get(name) {
+                    Some(a) if matches!(reg.role(i), VarRole::Cos(_)) => a.cos(),
+                    Some(a) => a.sin(),
+                    None => miss(&mut missing_parameters, name),
                 }
             }
             VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q) | VarRole::Rate(q, _) => {
                 let name = &reg.coord_info(q).name;
-                let c = values
-                    .coordinates
-                    .get(name)
-                    .ok_or_else(|| ValuesError(format!("missing coordinate `{name}`")))?;
-                match reg.role(i) {
-                    VarRole::Cos(_) => c[0].cos(),
-                    VarRole::Sin(_) => c[0].sin(),
-                    VarRole::Value(_) => c[0],
-                    VarRole::Rate(_, 1) => c[1],
-                    VarRole::Rate(_, 2) => c[2],
-                    _ => f64::NAN,
+                match values.coordinates.get(name) {
+                    Some(c) => match reg.role(i) {
+                        VarRole::Cos(_) => c[0].cos(),
+                        VarRole::Sin(_) => c[0].sin(),
+                        VarRole::Value(_) => c[0],
+                        VarRole::Rate(_, 1) => c[1],
+                        VarRole::Rate(_, 2) => c[2],
+                        _ => f64::NAN,
+                    },
+                    None => miss(&mut missing_coordinates, name),
                 }
             }
         };
-        let exempt = match reg.role(i) {
-            VarRole::Rate(_, 3) => true,
-            VarRole::Parameter(k) => reg.is_unknown(k),
-            _ => false,
-        };
-        if !v.is_finite() && !exempt {
+        let exempt = !needed(i)
+            || match reg.role(i) {
+                VarRole::Rate(_, 3) => true,
+                VarRole::Parameter(k) => reg.is_unknown(k),
+                _ => false,
+            };
+        if !v.is_finite()
+            && !exempt
+            && missing_parameters.is_empty()
+            && missing_coordinates.is_empty()
+        {
             return Err(ValuesError(format!("non-finite value for variable {i}")));
         }
         point.push(v);
+    }
+    let plural = |n: usize, word: &str| {
+        if n > 1 {
+            format!("{word}s")
+        } else {
+            word.to_string()
+        }
+    };
+    let mut parts = Vec::new();
+    if !missing_parameters.is_empty() {
+        parts.push(format!(
+            "{} {}",
+            plural(missing_parameters.len(), "parameter"),
+            listed(&missing_parameters)
+        ));
+    }
+    if !missing_coordinates.is_empty() {
+        parts.push(format!(
+            "{} {}",
+            plural(missing_coordinates.len(), "coordinate"),
+            listed(&missing_coordinates)
+        ));
+    }
+    if !parts.is_empty() {
+        return Err(ValuesError(format!("missing {}{why}", parts.join(" and "))));
     }
     Ok(point)
 }

@@ -4,7 +4,7 @@ mod atomic;
 mod eval;
 
 pub use atomic::write_atomic;
-pub use eval::{Values, ValuesError, eval_value, numeric_point};
+pub use eval::{Values, ValuesError, eval_value, numeric_point, numeric_point_for};
 
 use crate::derivation::{Derivation, Value};
 use crate::expr::Expr;

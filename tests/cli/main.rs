@@ -724,3 +724,189 @@ fn free_text_formulas_compile_and_forbidden_ones_exit_2() {
     assert!(!out.exists());
     assert!(stdout(&o).is_empty());
 }
+
+/// A corrigé writes the pendulum's equation divided by m l (hand derivation in
+/// tests/engine/verify.rs: eom(θ) = m l (ẍ cos θ + l θ̈ + g sin θ) for a point mass).
+#[test]
+fn verify_accepts_an_equation_up_to_a_factor_of_parameters_and_reports_it() {
+    let s = fixture("pendule_simple_sur_chariot.json");
+    let divided = "ddot(x)*cos(theta) + l*ddot(theta) + g*sin(theta) = 0";
+    let o = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "eom(theta)",
+        "-e",
+        divided,
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert!(
+        stdout(&o).contains("equivalent, up to the factor m*l"),
+        "{}",
+        stdout(&o)
+    );
+    // Without -q: found to be the equation of motion of theta, with the same factor.
+    let o = run(&["verify", s.to_str().unwrap(), "-e", divided]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("up to the factor m*l"), "{out}");
+    assert!(out.contains("equation of motion eom(theta)"), "{out}");
+    // Multiplied by dot(theta): another equation (exit 1).
+    let o = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "eom(theta)",
+        "-e",
+        "dot(theta)*(ddot(x)*cos(theta) + l*ddot(theta) + g*sin(theta)) = 0",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(stdout(&o).contains("NOT equivalent"), "{}", stdout(&o));
+    // The weight's sign wrong (exit 1): the difference is that term alone, −2 m g l sin θ.
+    let o = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "eom(theta)",
+        "-e",
+        "ddot(x)*cos(theta) + l*ddot(theta) - g*sin(theta) = 0",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(
+        stdout(&o).contains("component 1: -2*m*l*g*sin(theta)\n"),
+        "{}",
+        stdout(&o)
+    );
+}
+
+#[test]
+fn verify_decides_relations_between_unknowns_quantities_and_expressions() {
+    let s = fixture("pendule_simple_sur_chariot.json");
+    // Resultant theorem on the pendulum along y0: Y12 − m g = m Γ(G,2/0)·y0 (hand form in
+    // tests/engine/verify.rs), written with the unknown and the quantity Rd(2/0).y0.
+    let o = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-e",
+        "Y12 - m*g = Rd(2/0).y0",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("relation: lhs − rhs = 0"), "{out}");
+    assert!(
+        out.contains("Rd(2/0).y0 replaced by its derived value and Y12 by its solved value"),
+        "{out}"
+    );
+    // A wrong relation (exit 1), with --quantity naming the unknown it is about.
+    let o = run(&[
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "Y12",
+        "-e",
+        "Y12 = m*g",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(stdout(&o).contains("NOT equivalent"), "{}", stdout(&o));
+    // The regulator's Q6: C_m = δ(O1,E/0)·z0, under H2.
+    let o = run(&[
+        "verify",
+        spec().to_str().unwrap(),
+        "-e",
+        "C_m = delta(O1,E/0).z0",
+        "--hypothesis",
+        "H2",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    // Undeclared names: exit 2, all of them named; an unknown no equation determines: exit 2.
+    let o = run(&[
+        "verify",
+        spec().to_str().unwrap(),
+        "-e",
+        "C_m = foo + bar*sin(baz)",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("unknown names `foo`, `bar`, `baz` in `foo + bar*sin(baz)`"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(stdout(&o).is_empty());
+    let o = run(&["verify", spec().to_str().unwrap(), "-e", "X01 = 0"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("`X01`"), "{}", stderr(&o));
+    // Without -q, the text must be an equation.
+    let o = run(&["verify", spec().to_str().unwrap(), "-e", "C_m"]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn eval_demands_only_the_parameters_the_quantities_hold() {
+    let d = tmp();
+    // δ(O2,2/0) holds L1, L2, m2, A2…F2 and both angles; not g, f, nor solid 1's data.
+    let needed = r#""L1":0.3,"L2":0.5,"m2":2,"A2":1,"B2":0.7,"C2":0.4,"D2":0.1,"E2":0.2,"F2":0.05"#;
+    let coordinates = r#""coordinates":{"theta1":[0.4,1.5,2],"theta2":[0.3,-0.7,3]}"#;
+    let few = d.path().join("few.json");
+    std::fs::write(
+        &few,
+        format!("{{\"parameters\":{{{needed}}},{coordinates}}}"),
+    )
+    .unwrap();
+    let all = d.path().join("all.json");
+    std::fs::write(
+        &all,
+        format!(
+            "{{\"parameters\":{{{needed},\"h1\":0.1,\"d1\":0.2,\"m1\":1,\"A1\":1,\"B1\":1,\
+             \"C1\":1,\"D1\":0,\"E1\":0,\"F1\":0,\"g\":9.81,\"f\":0.3}},{coordinates}}}"
+        ),
+    )
+    .unwrap();
+    let eval = |at: &Path| {
+        run(&[
+            "eval",
+            spec().to_str().unwrap(),
+            "--at",
+            at.to_str().unwrap(),
+            "-q",
+            "delta(O2,2/0) in B2",
+        ])
+    };
+    let (o_few, o_all) = (eval(&few), eval(&all));
+    assert_eq!(o_few.status.code(), Some(0), "{}", stderr(&o_few));
+    assert_eq!(o_all.status.code(), Some(0), "{}", stderr(&o_all));
+    // The value does not depend on what else is given.
+    assert_eq!(stdout(&o_few), stdout(&o_all));
+    // Missing m2 and theta1: exactly those are named (exit 2), nothing on stdout.
+    let missing = d.path().join("missing.json");
+    std::fs::write(
+        &missing,
+        format!(
+            "{{\"parameters\":{{{}}},\"coordinates\":{{\"theta2\":[0.3,-0.7,3]}}}}",
+            needed.replace("\"m2\":2,", "")
+        ),
+    )
+    .unwrap();
+    let o = eval(&missing);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("missing parameter `m2` and coordinate `theta1`"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(stdout(&o).is_empty());
+    // The equation of motion of theta2 does hold g and f.
+    let o = run(&[
+        "eval",
+        spec().to_str().unwrap(),
+        "--at",
+        few.to_str().unwrap(),
+        "-q",
+        "eom(theta2)",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("missing parameters `g`, `f` (the requested quantities hold them)"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -4,7 +4,7 @@
 //! Every expected value below was derived by hand from the course's theorems (written out in
 //! the comment of each test) and confirmed with `torseur verify`, which uses the same function
 //! as `assert_equivalent!`: exact equality of canonical forms (an equation of motion may be
-//! written `lhs = rhs` and is compared up to a numeric factor).
+//! written `lhs = rhs` and is compared up to a nonzero factor made of parameters).
 
 /// Loads `derivations/<name>.json`.
 macro_rules! problem {

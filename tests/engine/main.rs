@@ -7,6 +7,7 @@
 mod bilan;
 mod chain;
 mod check;
+mod eval;
 mod figures;
 mod kinematics;
 mod latex;
@@ -19,6 +20,7 @@ mod simulate;
 mod spec_errors;
 mod threads;
 mod units;
+mod verify;
 
 use torseur::expr::Expr;
 use torseur::frame::FrameId;
