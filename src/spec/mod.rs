@@ -49,6 +49,20 @@ pub enum SpecError {
 /// Largest spec file accepted (a hand-written spec is a few kilobytes).
 pub const MAX_SPEC_BYTES: u64 = 4 << 20;
 
+/// The JSON Schema (draft 2020-12) of a spec file, generated from the wire types: their doc
+/// comments are its descriptions. The repository commits it as `spec.schema.json`, and every
+/// spec names it in its `$schema` key so that an editor validates and completes it.
+///
+/// ```
+/// let schema = torseur::spec::json_schema();
+/// assert_eq!(schema["title"], "SpecFile");
+/// assert_eq!(schema["additionalProperties"], false);
+/// assert!(schema["properties"]["links"].is_object());
+/// ```
+pub fn json_schema() -> serde_json::Value {
+    schemars::schema_for!(wire::SpecFile).to_value()
+}
+
 /// Reads, parses and validates a spec file.
 ///
 /// ```

@@ -17,6 +17,7 @@ mod properties;
 mod regulator;
 mod simulate;
 mod spec_errors;
+mod spec_schema;
 mod threads;
 mod units;
 
