@@ -11,6 +11,7 @@ mod figures;
 mod kinematics;
 mod latex;
 mod library;
+mod links;
 mod pfd;
 mod printed;
 mod properties;

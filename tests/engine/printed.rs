@@ -666,9 +666,15 @@ fn spec_paths() -> Vec<std::path::PathBuf> {
         .collect();
     v.sort();
     v.push(dir.join("chain/chain_2.json"));
-    v.push(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/specs/noms_latins_grecs.json"),
-    );
+    // The reusable specs: Latin and Greek names, and the link kinds no library spec uses.
+    let tests = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/specs");
+    let mut t: Vec<_> = std::fs::read_dir(&tests)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    t.sort();
+    v.extend(t);
     v
 }
 
