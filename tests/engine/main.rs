@@ -7,6 +7,7 @@
 mod bilan;
 mod chain;
 mod check;
+mod derivation;
 mod figures;
 mod kinematics;
 mod latex;
