@@ -7,25 +7,9 @@
 //! quantity of every spec is compared, shown in the key or not, in general and under every
 //! hypothesis. The chain family is compared in `chain.rs`.
 
-use std::path::PathBuf;
+use super::specs_in;
 use torseur::derivation::{Value, derive, derive_values};
 use torseur::quantity::Quantity;
-
-/// The specs of `derivations/` and the reusable ones of `tests/specs/`.
-fn specs() -> Vec<PathBuf> {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut out = Vec::new();
-    for dir in ["derivations", "tests/specs"] {
-        let mut v: Vec<_> = std::fs::read_dir(root.join(dir))
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .filter(|p| p.extension().is_some_and(|x| x == "json"))
-            .collect();
-        v.sort();
-        out.extend(v);
-    }
-    out
-}
 
 /// Equal kinds, bases, points and canonical forms.
 fn same(a: &Value, b: &Value) -> bool {
@@ -41,7 +25,7 @@ fn same(a: &Value, b: &Value) -> bool {
 #[test]
 fn derive_equals_derive_values_on_every_quantity_of_every_spec_under_every_hypothesis() {
     let mut compared = 0;
-    for path in specs() {
+    for path in specs_in(&["derivations", "tests/specs"]) {
         let m = torseur::spec::load(&path).unwrap();
         // The requested quantities, then those the questions derive or write in an equation.
         let mut ids: Vec<String> = m.quantities.iter().map(|q| q.to_string()).collect();

@@ -137,23 +137,14 @@ fn errors(v: &Value) -> Vec<String> {
     out
 }
 
-/// Every spec of the repository, with the directory its `$schema` is relative to.
+/// Every spec of the repository.
 fn specs() -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    for dir in [
+    let out = super::specs_in(&[
         "derivations",
         "derivations/chain",
         "tests/specs",
         "fuzz/seeds/spec",
-    ] {
-        let mut v: Vec<_> = std::fs::read_dir(root().join(dir))
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .filter(|p| p.extension().is_some_and(|x| x == "json"))
-            .collect();
-        v.sort();
-        out.extend(v);
-    }
+    ]);
     assert!(out.len() > 25, "{} specs", out.len());
     out
 }
