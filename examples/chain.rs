@@ -57,6 +57,7 @@ fn chain(n: usize) -> serde_json::Value {
         quantities.push(format!("delta(O{k},E{k}/0).{axis}{}", k - 1));
     }
     json!({
+        "$schema": "../../spec.schema.json",
         "title": format!("Chaîne spatiale de {n} solides"),
         "description": "Famille de référence « chain N » : rotations alternées autour de z et de x.",
         "parameters": params, "coordinates": coords, "ground": "0", "ground_origin": "O0",

@@ -35,6 +35,7 @@
 
 pub mod check;
 pub mod derivation;
+pub mod excerpt;
 pub mod expr;
 pub mod frame;
 pub mod inertia;

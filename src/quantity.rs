@@ -68,7 +68,7 @@ pub struct Quantity {
 
 /// Why a quantity string is not in the notation.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("quantity `{input}`: {reason}")]
+#[error("quantity `{}`: {reason}", crate::excerpt::excerpt(.input))]
 pub struct NotationError {
     /// The string given.
     pub input: String,

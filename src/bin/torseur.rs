@@ -172,6 +172,12 @@ fn main() -> ExitCode {
     };
     match run(cli, out) {
         Ok(()) => ExitCode::SUCCESS,
+        // Bad input is named by an excerpt of it; a mismatch report (exit 1) is kept whole.
+        Err(f) if f.code == 2 => {
+            let message = format!("{:#}", f.error);
+            eprintln!("torseur: error: {}", torseur::excerpt::bounded(&message));
+            ExitCode::from(2)
+        }
         Err(f) => {
             eprintln!("torseur: error: {:#}", f.error);
             ExitCode::from(f.code)

@@ -16,6 +16,7 @@ pub use flat::FlatEval;
 pub use parse::bare_names;
 pub use print::{Presentation, PresentationGroup};
 
+use crate::excerpt::{bounded, excerpt};
 use crate::spec::wire::CoordinateKind;
 use std::collections::HashMap;
 use std::fmt;
@@ -44,7 +45,7 @@ impl CoordId {
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ExprError {
     /// The text is not an expression of the spec syntax.
-    #[error("cannot parse `{input}`: {reason}")]
+    #[error("cannot parse `{}`: {}", excerpt(.input), bounded(.reason))]
     Parse {
         /// The text given.
         input: String,
@@ -52,7 +53,11 @@ pub enum ExprError {
         reason: String,
     },
     /// A name that is neither a parameter nor a coordinate.
-    #[error("unknown name `{name}` in `{input}` (declare it as a parameter or a coordinate)")]
+    #[error(
+        "unknown name `{}` in `{}` (declare it as a parameter or a coordinate)",
+        excerpt(.name),
+        excerpt(.input)
+    )]
     UnknownName {
         /// The name.
         name: String,
@@ -60,7 +65,7 @@ pub enum ExprError {
         input: String,
     },
     /// Valid syntax, outside what the exact engine handles.
-    #[error("`{input}`: {reason}")]
+    #[error("`{}`: {}", excerpt(.input), bounded(.reason))]
     Unsupported {
         /// The text given.
         input: String,
@@ -68,7 +73,7 @@ pub enum ExprError {
         reason: String,
     },
     /// A registry declaration problem.
-    #[error("{0}")]
+    #[error("{}", bounded(.0))]
     Declaration(String),
     /// Another thread is using symbolica (restricted mode: one thread at a time).
     #[error("{0}")]

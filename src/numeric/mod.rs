@@ -116,7 +116,11 @@ impl NumValue {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum NumericError {
     /// The spec cannot be realised numerically (unknown name, cycle, bad expression...).
-    #[error("spec, at {path}: {message}")]
+    #[error(
+        "spec, at {}: {}",
+        crate::excerpt::excerpt(.path),
+        crate::excerpt::bounded(.message)
+    )]
     Spec {
         /// JSON path of the faulty value (`points[2].position`).
         path: String,
@@ -124,7 +128,7 @@ pub enum NumericError {
         message: String,
     },
     /// A name in a quantity or argument that the spec does not define.
-    #[error("unknown {what} `{name}`")]
+    #[error("unknown {what} `{}`", crate::excerpt::excerpt(.name))]
     Unknown {
         /// What kind of object was expected (`point`, `frame`, `solid or set`...).
         what: String,

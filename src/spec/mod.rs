@@ -8,14 +8,17 @@ pub mod wire;
 pub use locate::locate;
 pub use validate::{build, parse_spec};
 
+use crate::excerpt::{bounded, excerpt};
 use crate::mechanism::Mechanism;
 use std::path::Path;
 
-/// Why a spec was refused. Every variant names the place in the file.
+/// Why a spec was refused. Every variant names the place in the file; its message quotes at
+/// most an excerpt of each piece of input, and is at most [`crate::excerpt::MAX_MESSAGE`]
+/// bytes long, the place first.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum SpecError {
     /// The file could not be read.
-    #[error("{file}: {message}")]
+    #[error("{}", shown(&excerpt(file), None, message))]
     Io {
         /// The file.
         file: String,
@@ -23,7 +26,7 @@ pub enum SpecError {
         message: String,
     },
     /// Not JSON, or not the spec's shape.
-    #[error("at {path} (line {line}, column {column}): {message}")]
+    #[error("{}", shown(&format!("at {}", excerpt(path)), Some((*line, *column)), message))]
     Json {
         /// JSON path of the value (`solids[1].mass`).
         path: String,
@@ -35,7 +38,7 @@ pub enum SpecError {
         message: String,
     },
     /// Valid JSON whose content is wrong (an unknown frame, a cycle, a bad expression...).
-    #[error("at {path}{}: {message}", .location.map(|(l, c)| format!(" (line {l}, column {c})")).unwrap_or_default())]
+    #[error("{}", shown(&format!("at {}", excerpt(path)), *location, message))]
     Invalid {
         /// JSON path of the value.
         path: String,
@@ -46,8 +49,30 @@ pub enum SpecError {
     },
 }
 
+/// `place (line l, column c): message`, bounded.
+fn shown(place: &str, location: Option<(usize, usize)>, message: &str) -> String {
+    let at = location
+        .map(|(l, c)| format!(" (line {l}, column {c})"))
+        .unwrap_or_default();
+    bounded(&format!("{place}{at}: {message}")).into_owned()
+}
+
 /// Largest spec file accepted (a hand-written spec is a few kilobytes).
 pub const MAX_SPEC_BYTES: u64 = 4 << 20;
+
+/// The JSON Schema (draft 2020-12) of a spec file, generated from the wire types: their doc
+/// comments are its descriptions. The repository commits it as `spec.schema.json`, and every
+/// spec names it in its `$schema` key so that an editor validates and completes it.
+///
+/// ```
+/// let schema = torseur::spec::json_schema();
+/// assert_eq!(schema["title"], "SpecFile");
+/// assert_eq!(schema["additionalProperties"], false);
+/// assert!(schema["properties"]["links"].is_object());
+/// ```
+pub fn json_schema() -> serde_json::Value {
+    schemars::schema_for!(wire::SpecFile).to_value()
+}
 
 /// Reads, parses and validates a spec file.
 ///

@@ -1,12 +1,17 @@
 //! JSON wire types of a problem spec: what a teacher writes, before validation.
 
+use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// A whole problem as written in `derivations/*.json`.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SpecFile {
+    /// The JSON Schema the file follows (`"../spec.schema.json"`), so that an editor validates
+    /// and completes the spec as it is typed; ignored by the engine.
+    #[serde(rename = "$schema", default, skip_serializing_if = "Option::is_none")]
+    pub schema: Option<String>,
     /// Title of the problem (answer-key heading).
     pub title: String,
     /// Optional statement or source.
@@ -77,7 +82,7 @@ pub struct SpecFile {
 }
 
 /// A coordinate that stays close to an equilibrium value.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SmallSpec {
     /// The coordinate.
@@ -89,7 +94,7 @@ pub struct SmallSpec {
 }
 
 /// Kind of a perfect link, with the course's names.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum LinkKind {
     /// Encastrement: the six components.
@@ -116,7 +121,7 @@ pub enum LinkKind {
 /// A perfect link between two solids: its action torsor {T(first→second)} at `point` carries
 /// the unknowns X, Y, Z (resultant) and L, M, N (moment) suffixed by the link's name, as
 /// components in the basis of its axis vector; those it cannot transmit are zero.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LinkSpec {
     /// Suffix of the unknowns (`01` gives X01, Y01, ...), usually the two solids' numbers.
@@ -171,7 +176,7 @@ impl LinkSpec {
 
 /// A spring in a pivot or a slider: the action on the link's second solid is
 /// -k (q - q0) along the axis (a torque for a pivot, a force for a slider).
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SpringSpec {
     /// The coordinate the spring measures: the relative angle (or length) of the link.
@@ -184,7 +189,7 @@ pub struct SpringSpec {
 }
 
 /// A given or unknown action {T(from→on)} written at a point.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ActionSpec {
     /// Name (`moteur`), for the answer key.
@@ -232,7 +237,7 @@ impl ActionSpec {
 pub const GRAVITY_LABEL: &str = "la pesanteur";
 
 /// Which theorem of the PFD.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum TheoremKind {
     /// Théorème de la résultante dynamique: Rd(S/R0)·u = R(S̄→S)·u.
@@ -242,7 +247,7 @@ pub enum TheoremKind {
 }
 
 /// One scalar equation of the PFD.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TheoremSpec {
     /// The isolated solid or set.
@@ -261,7 +266,7 @@ pub struct TheoremSpec {
 }
 
 /// A numerical scenario: parameter values, initial state, imposed motions.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ScenarioSpec {
     /// Name given to `simulate --scenario`.
@@ -304,7 +309,7 @@ impl ScenarioSpec {
 }
 
 /// An imposed motion: the rate of a coordinate as pieces `until` successive times.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ImposedSpec {
     /// The coordinate.
@@ -317,7 +322,7 @@ pub struct ImposedSpec {
 }
 
 /// One piece of an imposed rate law.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RatePiece {
     /// End of the piece in seconds (none for the last one).
@@ -328,7 +333,7 @@ pub struct RatePiece {
 }
 
 /// One question of the statement and what its answer shows.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct QuestionSpec {
     /// Heading (`Question 3`).
@@ -360,7 +365,7 @@ pub struct QuestionSpec {
 
 /// Simulations shown in an answer: scenarios run, curves plotted, a maximum compared with the
 /// statement's figures.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SimulationSpec {
     /// Scenario names (the spec's `scenarios`), one curve each.
@@ -376,7 +381,7 @@ pub struct SimulationSpec {
 }
 
 /// An equation of an answer: a named unknown equal to a derived quantity.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct EquationSpec {
     /// Name of the left-hand side (`Cm`), written C_{m}.
@@ -397,6 +402,7 @@ fn default_ground() -> String {
 impl Default for SpecFile {
     fn default() -> Self {
         SpecFile {
+            schema: None,
             title: String::new(),
             description: None,
             parameters: vec![],
@@ -422,7 +428,7 @@ impl Default for SpecFile {
 }
 
 /// A constant parameter.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ParameterSpec {
     /// Identifier (`m2`, `L1`, `A2`).
@@ -443,7 +449,7 @@ pub struct ParameterSpec {
 }
 
 /// Kind of a constant parameter.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum ParameterKind {
     /// Enters polynomially (a mass, a length, an inertia).
@@ -461,7 +467,7 @@ impl ParameterKind {
 }
 
 /// Kind of a time coordinate.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum CoordinateKind {
     /// Enters through cos q and sin q, and as itself where an expression of the spec writes
@@ -472,7 +478,7 @@ pub enum CoordinateKind {
 }
 
 /// A time coordinate q(t).
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CoordinateSpec {
     /// Identifier (`theta1`, `lambda`).
@@ -489,7 +495,7 @@ pub struct CoordinateSpec {
 }
 
 /// A frame turned (and possibly moved) from its parent.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FrameSpec {
     /// Frame name, also the subscript of its basis vectors (`1` gives x1, y1, z1, B1, R1).
@@ -505,7 +511,7 @@ pub struct FrameSpec {
 }
 
 /// Elementary rotation about a basis vector of the parent.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RotationSpec {
     /// `x`, `y` or `z` of the parent basis (`-z` for a negative orientation).
@@ -517,7 +523,7 @@ pub struct RotationSpec {
 }
 
 /// A point placed from another point by a vector expression.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PointSpec {
     /// Point name (`O2`, `G2`).
@@ -530,7 +536,7 @@ pub struct PointSpec {
 }
 
 /// Inertia operator of a solid as given by the statement.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct InertiaSpec {
     /// Point at which it is given (usually the centre of inertia).
@@ -542,7 +548,7 @@ pub struct InertiaSpec {
 }
 
 /// A solid.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SolidSpec {
     /// Solid name: its number (`1`, `2`).
@@ -562,7 +568,7 @@ pub struct SolidSpec {
 }
 
 /// A symmetry declaration, in the solid's frame.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields, tag = "kind", rename_all = "snake_case")]
 pub enum SymmetrySpec {
     /// Plane of material symmetry through the centre, normal to the given basis vector
@@ -579,7 +585,7 @@ pub enum SymmetrySpec {
 }
 
 /// A hypothesis that yields an additional simplified form.
-#[derive(Debug, Clone, Deserialize, Serialize)]
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct HypothesisSpec {
     /// Short name (`H1`).

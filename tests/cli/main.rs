@@ -910,3 +910,55 @@ fn eval_demands_only_the_parameters_the_quantities_hold() {
         stderr(&o)
     );
 }
+
+/// The `torseur: error:` line of a run's stderr (the rest is symbolica's licence notice).
+fn error_line(o: &Output) -> String {
+    let e = stderr(o);
+    e.lines()
+        .find(|l| l.starts_with("torseur: error:"))
+        .unwrap_or_else(|| panic!("no error line in {e}"))
+        .to_string()
+}
+
+#[test]
+fn a_huge_input_is_quoted_by_an_excerpt_and_the_message_stays_short() {
+    // Issue 14: 5000 nested parentheses in a spec got a 10 kB message quoting all of them.
+    let nested = format!("{}m1{}", "(".repeat(5000), ")".repeat(5000));
+    let (d, p) = edited_regulator(|j| j["solids"][0]["mass"] = nested.as_str().into());
+    let o = run(&["derive", p.to_str().unwrap(), "-q", "Omega(1/0)"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let line = error_line(&o);
+    assert!(line.len() < 400, "{} bytes: {line}", line.len());
+    assert!(line.contains("at solids[0].mass"), "{line}");
+    assert!(line.contains("(10002 characters)"), "{line}");
+    // The same expression typed on the command line, and a huge quantity.
+    let s = spec();
+    let quantity = format!("delta({},2/0)", "O".repeat(10_000));
+    let verify = [
+        "verify",
+        s.to_str().unwrap(),
+        "-q",
+        "delta(O2,2/0).x2",
+        "--expr",
+        &nested,
+    ];
+    let derive = ["derive", s.to_str().unwrap(), "-q", &quantity];
+    for args in [&verify[..], &derive[..]] {
+        let o = run(args);
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        let line = error_line(&o);
+        assert!(line.len() < 400, "{} bytes: {line}", line.len());
+    }
+    // A values file naming a parameter with 10 000 letters.
+    let at = d.path().join("values.json");
+    let name = "x".repeat(10_000);
+    std::fs::write(
+        &at,
+        format!(r#"{{"parameters": {{"{name}": 1}}, "coordinates": {{}}}}"#),
+    )
+    .unwrap();
+    let o = run(&["eval", s.to_str().unwrap(), "--at", at.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let line = error_line(&o);
+    assert!(line.len() < 400, "{} bytes: {line}", line.len());
+}

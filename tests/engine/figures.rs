@@ -62,13 +62,7 @@ fn pdflatex(dir: &Path, file: &str) {
 
 #[test]
 fn figures_of_every_spec_compile() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations");
-    let mut specs: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "json"))
-        .collect();
-    specs.sort();
+    let specs = super::specs_in(&["derivations"]);
     let mut doc = String::from(PREAMBLE);
     doc.push_str("\\begin{document}\n");
     let mut mechanisms: Vec<(String, torseur::mechanism::Mechanism)> = specs

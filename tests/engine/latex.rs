@@ -32,13 +32,7 @@ fn golden(name: &str, actual: &str) {
 /// Every spec's answer key is pinned (its layout; its signs are proven in `printed`).
 #[test]
 fn every_answer_key_matches_its_golden_file() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations");
-    let mut specs: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "json"))
-        .collect();
-    specs.sort();
+    let specs = specs_in(&["derivations"]);
     assert!(specs.len() >= 10);
     for p in specs {
         let m = torseur::spec::load(&p).unwrap();

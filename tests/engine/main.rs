@@ -7,17 +7,20 @@
 mod bilan;
 mod chain;
 mod check;
+mod derivation;
 mod eval;
 mod figures;
 mod kinematics;
 mod latex;
 mod library;
+mod links;
 mod pfd;
 mod printed;
 mod properties;
 mod regulator;
 mod simulate;
 mod spec_errors;
+mod spec_schema;
 mod threads;
 mod units;
 mod verify;
@@ -34,6 +37,22 @@ pub fn regulator() -> Mechanism {
         "/derivations/regulateur_centrifuge.json"
     ))
     .expect("the regulator spec loads")
+}
+
+/// The spec files (`*.json`) of the repository's folders `dirs`, each folder sorted by name.
+pub fn specs_in(dirs: &[&str]) -> Vec<std::path::PathBuf> {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut out = Vec::new();
+    for dir in dirs {
+        let mut v: Vec<_> = std::fs::read_dir(root.join(dir))
+            .unwrap_or_else(|e| panic!("{dir}: {e}"))
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|x| x == "json"))
+            .collect();
+        v.sort();
+        out.extend(v);
+    }
+    out
 }
 
 /// Parses an expression of the spec syntax in the mechanism.

@@ -658,17 +658,11 @@ fn prove_equality(ctx: &Ctx, latex: &str, l: &Value, r: &Value) -> Result<(), St
 }
 
 fn spec_paths() -> Vec<std::path::PathBuf> {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations");
-    let mut v: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "json"))
-        .collect();
-    v.sort();
-    v.push(dir.join("chain/chain_2.json"));
-    v.push(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/specs/noms_latins_grecs.json"),
-    );
+    // The library, one chain, and the reusable specs (Latin and Greek names, the link kinds
+    // no library spec uses).
+    let mut v = super::specs_in(&["derivations"]);
+    v.push(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations/chain/chain_2.json"));
+    v.extend(super::specs_in(&["tests/specs"]));
     v
 }
 

@@ -371,3 +371,114 @@ fn forbidden_latex_in_free_texts_is_refused_with_its_path() {
         assert!(e.to_string().contains(what), "{text}: {e}");
     }
 }
+
+/// The JSON path (as errors write it, `solids[1].mass`) and the pointer of every string of a
+/// spec.
+fn string_leaves(
+    v: &serde_json::Value,
+    path: &str,
+    pointer: &str,
+    out: &mut Vec<(String, String)>,
+) {
+    match v {
+        serde_json::Value::String(_) => out.push((path.to_string(), pointer.to_string())),
+        serde_json::Value::Array(a) => {
+            for (i, x) in a.iter().enumerate() {
+                string_leaves(x, &format!("{path}[{i}]"), &format!("{pointer}/{i}"), out);
+            }
+        }
+        serde_json::Value::Object(o) => {
+            for (k, x) in o {
+                let p = if path.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{path}.{k}")
+                };
+                string_leaves(x, &p, &format!("{pointer}/{k}"), out);
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Asserts a refusal's message is short and starts with the JSON path of the value it refuses
+/// (issue 14: 5000 nested parentheses got a 10 kB message quoting all of them). `what` is the
+/// change made, for the failure's message.
+fn assert_bounded(e: &SpecError, what: &str, limit: usize) {
+    let text = e.to_string();
+    assert!(
+        text.len() <= limit,
+        "{what}: a message of {} bytes: {}",
+        text.len(),
+        torseur::excerpt::excerpt(&text)
+    );
+    let path = path_of(e);
+    assert!(!path.is_empty(), "{what}: {text}");
+    let named = torseur::excerpt::excerpt(&path);
+    assert!(text.starts_with(&format!("at {named}")), "{what}: {text}");
+}
+
+/// `m1` in 5000 nested parentheses.
+fn nested() -> String {
+    format!("{}m1{}", "(".repeat(5000), ")".repeat(5000))
+}
+
+#[test]
+fn five_thousand_nested_parentheses_get_a_short_message_naming_the_path() {
+    let mut v = base();
+    v["solids"][0]["mass"] = nested().into();
+    let e = refused(v);
+    assert_eq!(path_of(&e), "solids[0].mass");
+    assert_bounded(&e, "5000 parentheses", 400);
+    assert!(e.to_string().contains("nested deeper than 64"), "{e}");
+    // The same through the expression parser alone, and the quantity notation.
+    let m = super::regulator();
+    let long = nested();
+    assert!(m.reg.parse(&long).unwrap_err().to_string().len() < 200);
+    let q = format!("delta({},2/0)", "O".repeat(10_000));
+    let e = torseur::quantity::Quantity::parse(&q).unwrap_err();
+    assert!(e.to_string().len() < 200, "{e}");
+}
+
+/// Whatever a string of the regulator's spec holds (10 000 characters: nested parentheses, one
+/// letter, accented letters, many short quotes), and whatever key is added, the message of a
+/// refusal stays within [`torseur::excerpt::MAX_MESSAGE`] bytes and starts with the path of
+/// the value refused (that string, or a reference to what it named).
+#[test]
+fn every_error_message_is_bounded_and_names_its_path() {
+    let base = base();
+    let mut leaves = Vec::new();
+    string_leaves(&base, "", "", &mut leaves);
+    assert!(leaves.len() > 200, "{} strings", leaves.len());
+    let huge = [
+        nested(),
+        "x".repeat(10_000),
+        "é".repeat(5000),
+        "`a` \"b\" ".repeat(1250),
+    ];
+    let limit = torseur::excerpt::MAX_MESSAGE;
+    let mut refusals = 0;
+    for (path, pointer) in &leaves {
+        for h in &huge {
+            let mut v = base.clone();
+            *v.pointer_mut(pointer).unwrap() = h.as_str().into();
+            if let Err(e) = from_str(&v.to_string()) {
+                assert_bounded(&e, path, limit);
+                refusals += 1;
+            }
+        }
+    }
+    assert!(refusals > 500, "only {refusals} refusals");
+    // Keys: an unknown field and a set named by 10 000 characters; a number given as text.
+    for h in &huge {
+        let mut v = base.clone();
+        v[h.as_str()] = 1.into();
+        assert_bounded(&refused(v), "", limit);
+        let mut v = base.clone();
+        v["sets"][h.as_str()] = serde_json::json!(["1"]);
+        assert_bounded(&refused(v), "sets", limit);
+        let mut v = base.clone();
+        v["scenarios"][0]["duration"] = h.as_str().into();
+        assert_bounded(&refused(v), "scenarios[0].duration", limit);
+    }
+}

@@ -387,15 +387,10 @@ const LIBRARY: [&str; 12] = [
 
 #[test]
 fn the_library_list_is_every_spec() {
-    let mut on_disk: Vec<String> =
-        std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/derivations"))
-            .unwrap()
-            .filter_map(|e| {
-                let p = e.unwrap().path();
-                (p.extension()? == "json").then(|| p.file_stem()?.to_str().map(String::from))?
-            })
-            .collect();
-    on_disk.sort();
+    let on_disk: Vec<String> = super::specs_in(&["derivations"])
+        .iter()
+        .map(|p| p.file_stem().unwrap().to_str().unwrap().to_string())
+        .collect();
     assert_eq!(on_disk, LIBRARY.map(String::from).to_vec());
 }
 
