@@ -180,7 +180,12 @@ impl<'m> Doc<'m> {
         v: &Value,
         boxed_display: bool,
     ) {
-        let body = value_named(self.m, self.style, lhs, v, None);
+        let line = if boxed_display {
+            super::LINE - 6
+        } else {
+            super::LINE
+        };
+        let body = super::value_within(self.m, self.style, lhs, v, None, line);
         self.record(role, what, body, v, None, boxed_display);
         self.remember(key_lhs, v);
     }

@@ -346,6 +346,24 @@ fn shown_value(doc: &Doc, v: &Value) -> Value {
 /// whether the last step displayed equals the result (so the result is not repeated).
 fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
     let m = doc.m;
+    // The elements of a torsor result are boxed where they are derived (the torsor is then
+    // not written again): (left side, components) of its resultant and its moment.
+    let elements: Vec<(String, [crate::expr::Expr; 3])> =
+        match (torsor_names(&d.quantity.kind), &d.value) {
+            (
+                Some((rn, mn)),
+                Value::Torsor {
+                    resultant, moment, ..
+                },
+            ) => vec![(rn, resultant.clone()), (mn, moment.clone())],
+            _ => Vec::new(),
+        };
+    let is_element = |lhs: &str, v: &Value| match v {
+        Value::Vector { components, .. } => {
+            elements.iter().any(|(l, c)| l == lhs && c == components)
+        }
+        _ => false,
+    };
     let mut cited: Vec<(String, String)> = Vec::new();
     let flush = |doc: &mut Doc, cited: &mut Vec<(String, String)>| {
         if cited.is_empty() {
@@ -394,7 +412,8 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
                     "{why} : le moment dynamique est la dérivée du moment cinétique dans ${}$ (cas particulier du cours) :",
                     frame(r)
                 );
-                doc.show_keyed(DisplayRole::Step, &next.label, &lhs, &delta, &v, false);
+                let boxed = is_element(&delta, &next.value);
+                doc.show_keyed(DisplayRole::Step, &next.label, &lhs, &delta, &v, boxed);
                 last_is_result = i + 2 == n && delta == result_lhs;
             }
             i += 2;
@@ -442,7 +461,8 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
             }
         }
         let _ = writeln!(doc.o, "{}", sentence(m, s));
-        doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
+        let boxed = is_element(&lhs, &s.value);
+        doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, boxed);
         i += 1;
     }
     flush(doc, &mut cited);
@@ -927,7 +947,7 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
             if !short && doc.cited(rn, &res).is_some() && doc.cited(mn, &mom).is_some() {
                 let _ = writeln!(
                     doc.o,
-                    "\\[ \\boxed{{{lhs} = \\left\\{{ \\begin{{array}}{{l}} {rn} \\\\ {mn} \\end{{array}} \\right\\}}_{{{}}}}} \\]\nses éléments de réduction étant ceux calculés ci-dessus.\n",
+                    "D'où ${lhs} = \\left\\{{ \\begin{{array}}{{l}} {rn} \\\\ {mn} \\end{{array}} \\right\\}}_{{{}}}$, ses éléments de réduction étant encadrés ci-dessus.\n",
                     point(m.point_name(*p))
                 );
                 doc.remember(lhs, &v);
