@@ -622,7 +622,7 @@ fn show_scalar(doc: &mut Doc, what: &str, sentence: &str, lhs: &str, e: crate::e
 /// (A ≠ G), the change of point to the centre of inertia, δ(G)·u + (AG ∧ m Γ(G))·u. Returns
 /// false when neither applies (the steps of the vector are then shown).
 fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
-    use crate::kinematics::{acceleration, is_fixed_in, omega, point_velocity};
+    use crate::kinematics::{acceleration, omega, point_velocity};
     let m = doc.m;
     let q = &d.quantity;
     let QuantityKind::DynamicMoment {
@@ -648,8 +648,8 @@ fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
         motion: mo.clone(),
     });
     let fixed_axis = omega(m, uf, rf).is_zero(&m.frames);
-    let fixed_point =
-        point_velocity(m, pa, rf).is_zero(&m.frames) && is_fixed_in(m, pa, body.frame);
+    // δ(A) = dσ(A)/dt + V(A/R) ∧ m V(G): a point A at rest in R suffices.
+    let fixed_point = point_velocity(m, pa, rf).is_zero(&m.frames);
     let ib = crate::torsor::inertia_basis(m, *s);
     let Value::Scalar(result) = &d.value else {
         return false;
@@ -672,14 +672,30 @@ fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
             ib,
         );
         let il = format!("I_{{{}}}({})", point(a), mo.moving);
-        show_vector(
-            doc,
-            &format!("sigma({a},{mo})"),
-            &format!(
+        // σ(A) = I_A Ω only when the point of S at A is at rest; else the general formula.
+        let of_solid = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
+        let gn = m.point_name(body.centre).to_string();
+        let sentence = if of_solid {
+            format!(
                 "${}$ est un point de ${}$ fixe dans ${rl}$ : ${sigma_a} = {il}\\cdot{oml}$ :",
                 point(a),
                 solid(&mo.moving)
-            ),
+            )
+        } else {
+            format!(
+                "${sigma_a} = {il}\\cdot{oml} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
+                mass_of(m, &mo.moving),
+                point(a),
+                point(&gn),
+                point(a),
+                mo.moving,
+                mo.reference
+            )
+        };
+        show_vector(
+            doc,
+            &format!("sigma({a},{mo})"),
+            &sentence,
             &sigma_a,
             &sig,
             ib,
@@ -867,6 +883,165 @@ fn position_route(doc: &mut Doc, d: &Derivation) {
     );
 }
 
+/// σ(A,S/R)·u for each solid of a set, each shown with the formula that gives it; returns
+/// their sum.
+fn kinetic_projections(
+    doc: &mut Doc,
+    solids: &[crate::mechanism::BodyId],
+    pa: crate::point::PointId,
+    rf: FrameId,
+    u: &crate::vector::Vector,
+    ul: &str,
+    reference: &str,
+) -> crate::expr::Expr {
+    let m = doc.m;
+    let a = m.point_name(pa).to_string();
+    let mut total = m.reg.zero();
+    for &s in solids {
+        let body = m.body(s);
+        let mo = Motion {
+            moving: body.name.clone(),
+            reference: reference.to_string(),
+        };
+        let sigma = quantity(&QuantityKind::KineticMoment {
+            point: a.clone(),
+            motion: mo.clone(),
+        });
+        let fixed = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
+        let oml = omega_of(&mo.moving, &mo.reference);
+        let sentence = if fixed {
+            format!(
+                "${}$ est un point de ${}$ fixe dans ${}$ : ${sigma} = I_{{{}}}({})\\cdot{oml}$ :",
+                point(&a),
+                solid(&mo.moving),
+                frame(reference),
+                point(&a),
+                mo.moving
+            )
+        } else {
+            let g = m.point_name(body.centre).to_string();
+            format!(
+                "${sigma} = {} + \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+                quantity(&QuantityKind::KineticMoment {
+                    point: g.clone(),
+                    motion: mo.clone()
+                }),
+                point(&a),
+                point(&g),
+                mass_of(m, &mo.moving),
+                quantity(&QuantityKind::Velocity {
+                    point: g.clone(),
+                    motion: mo.clone()
+                })
+            )
+        };
+        let p = crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, u);
+        total = &total + &p;
+        let lhs = format!("{sigma} \\cdot {ul}");
+        let v = shown_value(doc, &Value::Scalar(p.clone()));
+        match doc.cited(&lhs, &v) {
+            Some(place) => {
+                let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+            }
+            None => show_scalar(doc, &format!("sigma({a},{mo})"), &sentence, &lhs, p),
+        }
+    }
+    total
+}
+
+/// The short route for a projection on an axis u of the kinetic or dynamic moment of a set:
+/// σ(A,E/R)·u as the sum of the solids' projections; δ(A,E/R)·u, at a point A fixed in R
+/// and u fixed in R, as d/dt(σ(A,E/R)·u). Taken only when it gives the engine's value.
+fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
+    use crate::kinematics::{omega, point_velocity};
+    let m = doc.m;
+    let q = &d.quantity;
+    let (a, mo, dynamic) = match &q.kind {
+        QuantityKind::KineticMoment { point, motion } => (point, motion, false),
+        QuantityKind::DynamicMoment { point, motion } => (point, motion, true),
+        _ => return false,
+    };
+    let Ok(r) = crate::derivation::resolve(m, q) else {
+        return false;
+    };
+    let (Some((uf, ua)), Some(pa)) = (r.projection, r.point) else {
+        return false;
+    };
+    if r.solids.len() < 2 {
+        return false;
+    }
+    let Value::Scalar(result) = &d.value else {
+        return false;
+    };
+    let rf = r.reference.unwrap_or(m.frames.ground());
+    let u = crate::vector::Vector::along(uf, ua, m.reg.one());
+    let ul = basis_vector(ua.letter(), m.frame_name(uf));
+    let sigma_e = quantity(&QuantityKind::KineticMoment {
+        point: a.clone(),
+        motion: mo.clone(),
+    });
+    let sum: crate::expr::Expr = r
+        .solids
+        .iter()
+        .map(|&s| crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, &u))
+        .fold(m.reg.zero(), |acc, p| &acc + &p);
+    let members: Vec<String> = r
+        .solids
+        .iter()
+        .map(|&s| {
+            quantity(&QuantityKind::KineticMoment {
+                point: a.clone(),
+                motion: Motion {
+                    moving: m.body(s).name.clone(),
+                    reference: mo.reference.clone(),
+                },
+            })
+        })
+        .collect();
+    if !dynamic {
+        if &sum != result {
+            return false;
+        }
+        let _ = writeln!(
+            doc.o,
+            "Le moment cinétique de ${}$ est la somme de ceux de ses solides, ${sigma_e} = {}$ ; en projection sur ${ul}$ :\n",
+            solid(&mo.moving),
+            members.join(" + ")
+        );
+        kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);
+        return true;
+    }
+    let fixed = point_velocity(m, pa, rf).is_zero(&m.frames) && omega(m, uf, rf).is_zero(&m.frames);
+    if !fixed || &sum.dt() != result {
+        return false;
+    }
+    let lhs = format!("{sigma_e} \\cdot {ul}");
+    let _ = writeln!(
+        doc.o,
+        "${}$ est fixe dans ${}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_e}\\cdot {ul}\\right)$.\n",
+        point(a),
+        frame(&mo.reference),
+        quantity(&q.kind)
+    );
+    let v = shown_value(doc, &Value::Scalar(sum.clone()));
+    match doc.cited(&lhs, &v) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+        }
+        None => {
+            kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);
+            show_scalar(
+                doc,
+                &format!("sigma({a},{mo})"),
+                "d'où, en sommant :",
+                &lhs,
+                sum,
+            );
+        }
+    }
+    true
+}
+
 /// A requested quantity of the kinematics or kinetics: its steps, then the boxed result.
 pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &str) {
     let m = doc.m;
@@ -877,12 +1052,13 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
         let v = shown_value(doc, &s.value);
         doc.cited(&step_lhs(&s.kind), &v).is_some()
     });
-    let last_is_result = if !all_shown && projected_moment_route(doc, d) {
-        false
-    } else {
-        position_route(doc, d);
-        steps(doc, d, lhs)
-    };
+    let last_is_result =
+        if !all_shown && (projected_moment_route(doc, d) || projected_set_route(doc, d)) {
+            false
+        } else {
+            position_route(doc, d);
+            steps(doc, d, lhs)
+        };
     let id = d.quantity.to_string();
     let names = torsor_names(&d.quantity.kind);
     // Results under a hypothesis only once it has been stated (never before its question).
