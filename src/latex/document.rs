@@ -608,34 +608,7 @@ pub fn answer_key_document(
     for p in m.points.ids().skip(1) {
         let pt = m.points.get(p);
         let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
-        let parts: Vec<String> = pt
-            .offset
-            .parts()
-            .flat_map(|(b, c)| {
-                let bn = m.frame_name(b).to_string();
-                (0..3)
-                    .filter(|&k| !c[k].is_zero())
-                    .map(|k| {
-                        let e = super::expr(&c[k]);
-                        let bv = basis_vector(['x', 'y', 'z'][k], &bn);
-                        if c[k].nterms() > 1 {
-                            format!("\\left({e}\\right){bv}")
-                        } else if e == "1" {
-                            bv
-                        } else if e == "-1" {
-                            format!("-{bv}")
-                        } else {
-                            format!("{e}\\,{bv}")
-                        }
-                    })
-                    .collect::<Vec<_>>()
-            })
-            .collect();
-        let rhs = if parts.is_empty() {
-            "\\vec{0}".to_string()
-        } else {
-            parts.join(" + ").replace("+ -", "- ")
-        };
+        let rhs = vector_over_bases(m, &pt.offset);
         let math = format!(
             "\\overrightarrow{{{}{}}} = {rhs}",
             point(from),
@@ -775,33 +748,47 @@ fn bilan(doc: &mut Doc) {
     );
 }
 
+/// A vector as written in the spec, over the bases of its parts: `d_{1}\,\vec{z}_{0} +
+/// L_{1}\,\vec{y}_{1}`.
+fn vector_over_bases(m: &Mechanism, v: &crate::vector::Vector) -> String {
+    let parts: Vec<String> = v
+        .parts()
+        .flat_map(|(b, c)| {
+            let bn = m.frame_name(b).to_string();
+            (0..3)
+                .filter(|&k| !c[k].is_zero())
+                .map(|k| {
+                    let e = super::expr(&c[k]);
+                    let bv = basis_vector(['x', 'y', 'z'][k], &bn);
+                    if c[k].nterms() > 1 {
+                        format!("\\left({e}\\right){bv}")
+                    } else if e == "1" {
+                        bv
+                    } else if e == "-1" {
+                        format!("-{bv}")
+                    } else {
+                        format!("{e}\\,{bv}")
+                    }
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    if parts.is_empty() {
+        "\\vec{0}".to_string()
+    } else {
+        parts.join(" + ").replace("+ -", "- ")
+    }
+}
+
 /// The model's hypotheses, stated once: the reference frame, the links, gravity.
 fn model_hypotheses(doc: &mut Doc) {
     let m = doc.m;
     let ground = super::frame(m.frame_name(m.frames.ground()));
     let mut parts = vec![format!("le référentiel ${ground}$ est galiléen")];
     if let Some(g) = &m.dynamics.gravity {
-        let dirs: Vec<String> = g
-            .parts()
-            .flat_map(|(b, c)| {
-                let bn = m.frame_name(b).to_string();
-                (0..3)
-                    .filter(|&k| !c[k].is_zero())
-                    .map(|k| {
-                        let e = super::expr(&c[k]);
-                        let bv = basis_vector(['x', 'y', 'z'][k], &bn);
-                        if c[k].nterms() > 1 {
-                            format!("\\left({e}\\right){bv}")
-                        } else {
-                            format!("{e}\\,{bv}")
-                        }
-                    })
-                    .collect::<Vec<_>>()
-            })
-            .collect();
         parts.push(format!(
             "l'accélération de la pesanteur est ${}$",
-            dirs.join(" + ").replace("+ -", "- ")
+            vector_over_bases(m, g)
         ));
     }
     if !m.spec.links.is_empty() {
