@@ -1052,6 +1052,26 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
         let v = shown_value(doc, &s.value);
         doc.cited(&step_lhs(&s.kind), &v).is_some()
     });
+    // I_A(S) at a point other than G: Huygens, named before the result.
+    if let QuantityKind::Inertia {
+        point: a,
+        solid: sn,
+    } = &d.quantity.kind
+        && let Some(b) = m.bodies.iter().find(|b| &b.name == sn)
+        && m.point_name(b.centre) != a
+        && b.inertia.is_some()
+    {
+        let g = m.point_name(b.centre).to_string();
+        let _ = writeln!(
+            doc.o,
+            "Théorème de Huygens, de ${}$ en ${}$ ($I_{{{}}}({sn}) = I_{{{}}}({sn})$ + terme de transport de ${}$) :",
+            point(&g),
+            point(a),
+            point(a),
+            point(&g),
+            mass_of(m, sn)
+        );
+    }
     let last_is_result =
         if !all_shown && (projected_moment_route(doc, d) || projected_set_route(doc, d)) {
             false
