@@ -3,7 +3,9 @@
 //! cited rather than re-derived, every result boxed. All text about the problem comes from
 //! the spec; every formula is recorded with its value so a reader can prove it.
 
-use super::method::{pfd_block, quantity_block};
+use super::method::quantity_block;
+use super::simulation::simulation_block;
+use super::theorems::pfd_block;
 use super::{
     VectorStyle, basis, basis_vector, escape_text, frame, name, point, quantity, value_named,
 };
@@ -582,7 +584,8 @@ pub fn answer_key_document(
                 // The course's paramétrage: (x0, x1) = (y0, y1) = θ1 about z0 = z1.
                 let k = r.axis.index();
                 let (u, v) = (['y', 'z', 'x'][k], ['z', 'x', 'y'][k]);
-                let angle = angle_latex(m, &r.angle);
+                let angle =
+                    super::figures::angle_latex(&m.reg, &r.angle.terms, r.angle.quarter_turns);
                 let _ = writeln!(
                     o,
                     "\\item $({}, {}) = ({}, {}) = {angle}$, autour de ${} = {}$.",
@@ -820,191 +823,4 @@ fn model_hypotheses(doc: &mut Doc) {
         text = c.to_uppercase() + &text[1..];
     }
     let _ = writeln!(doc.o, "\\paragraph{{Hypothèses du modèle.}} {text}.\n");
-}
-
-/// The angle of a rotation as written: `\theta_{1}`, `\frac{\pi}{2} - q_{1}`, `\theta - \alpha`.
-fn angle_latex(m: &Mechanism, a: &crate::frame::Angle) -> String {
-    let mut parts: Vec<(bool, String)> = a
-        .terms
-        .iter()
-        .map(|&(q, n)| {
-            let nm = name(&m.reg.coord_info(q).name);
-            let body = if n.abs() == 1 {
-                nm
-            } else {
-                format!("{}\\,{nm}", n.abs())
-            };
-            (n < 0, body)
-        })
-        .collect();
-    let k = a.quarter_turns;
-    if k != 0 {
-        let body = match k.abs() {
-            1 => "\\frac{\\pi}{2}".to_string(),
-            2 => "\\pi".to_string(),
-            n if n % 2 == 0 => format!("{}\\pi", n / 2),
-            n => format!("\\frac{{{n}\\pi}}{{2}}"),
-        };
-        // A positive offset reads first: π/2 − q rather than −q + π/2.
-        if k > 0 && parts.first().is_some_and(|p| p.0) {
-            parts.insert(0, (false, body));
-        } else {
-            parts.push((k < 0, body));
-        }
-    }
-    let mut o = String::new();
-    for (i, (neg, body)) in parts.iter().enumerate() {
-        o.push_str(match (i, neg) {
-            (0, true) => "-",
-            (0, false) => "",
-            (_, true) => " - ",
-            (_, false) => " + ",
-        });
-        o.push_str(body);
-    }
-    if o.is_empty() { "0".to_string() } else { o }
-}
-
-/// A number as the French text writes it: three significant digits, decimal comma.
-fn french(v: f64) -> String {
-    if v == 0.0 {
-        return "0".to_string();
-    }
-    let digits = (2 - v.abs().log10().floor() as i32).clamp(0, 6) as usize;
-    format!("{v:.digits$}").replace('.', "{,}")
-}
-
-/// The simulations of a question: the assumed values, the curves, the maxima against the
-/// statement's.
-fn simulation_block(
-    o: &mut String,
-    m: &Mechanism,
-    sim: &crate::spec::wire::SimulationSpec,
-    file: &str,
-) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
-    let fail = |what: &str, e: String| crate::derivation::ResolveError {
-        quantity: what.to_string(),
-        message: e,
-    };
-    let mut runs = Vec::new();
-    for name in &sim.scenarios {
-        runs.push(crate::simulate::simulate(m, name).map_err(|e| fail(name, e.to_string()))?);
-    }
-    // The assumed values, as the statement gives none.
-    if let Some(first) = sim
-        .scenarios
-        .first()
-        .and_then(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
-    {
-        o.push_str(
-            "Le sujet ne donne pas de valeurs numériques : les simulations utilisent les valeurs \
-             supposées suivantes (unités SI).\n\n\\begin{center}\n\\begin{tabular}{llllll}\n",
-        );
-        // A value that differs between the scenarios (the friction f) is given for each, in
-        // the order of the scenarios.
-        let others: Vec<&crate::spec::wire::ScenarioSpec> = sim
-            .scenarios
-            .iter()
-            .filter_map(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
-            .collect();
-        let cells: Vec<String> = first
-            .values
-            .iter()
-            .map(|(k, v)| {
-                let mut vals: Vec<String> = Vec::new();
-                for sc in &others {
-                    let x = sc.values.get(k).copied().unwrap_or(*v);
-                    let t = french_sci(x);
-                    if !vals.contains(&t) {
-                        vals.push(t);
-                    }
-                }
-                format!("${} = {}$", name(k), vals.join(" \\text{ ou } "))
-            })
-            .collect();
-        for row in cells.chunks(6) {
-            let _ = writeln!(o, "{} \\\\", row.join(" & "));
-        }
-        o.push_str("\\end{tabular}\n\\end{center}\n");
-    }
-    for (name, sc) in sim.scenarios.iter().filter_map(|n| {
-        m.spec
-            .scenarios
-            .iter()
-            .find(|s| &s.name == n)
-            .map(|s| (n, s))
-    }) {
-        if let Some(d) = &sc.description {
-            let _ = writeln!(
-                o,
-                "\\textbf{{{}}} : {}\n",
-                rich_text_or_escaped(&m.scenario_label(name).unwrap_or_else(|| name.clone())),
-                rich_text_or_escaped(d)
-            );
-        }
-    }
-    // The legend names each run by its scenario's label (« sans frottement »).
-    let pairs: Vec<(&str, &crate::simulate::Run)> =
-        runs.iter().map(|r| (r.label.as_str(), r)).collect();
-    let ids: Vec<&str> = sim.plot.iter().map(String::as_str).collect();
-    let figure = crate::simulate::figure(&m.title, &pairs, &ids, true);
-    let _ = writeln!(
-        o,
-        "\\begin{{center}}\n\\includegraphics[width=0.72\\textwidth]{{{file}}}\n\\end{{center}}"
-    );
-    if let Some(col) = &sim.maximum {
-        let unit = runs
-            .first()
-            .and_then(|r| r.columns.iter().find(|c| &c.id == col))
-            .map(|c| format!(" ({})", escape_text(&c.unit)))
-            .unwrap_or_default();
-        let _ = writeln!(
-            o,
-            "\\begin{{center}}\n\\begin{{tabular}}{{lcc}}\nCas & ${}$ maximal calculé{unit} & \
-             ${}$ maximal du sujet{unit} \\\\\n\\hline",
-            name(col),
-            name(col)
-        );
-        for (scenario, run) in sim.scenarios.iter().zip(&runs) {
-            let (v, t) = run
-                .max_abs(col)
-                .ok_or_else(|| fail(scenario, format!("no column `{col}` in the run")))?;
-            let reference = sim
-                .reference
-                .get(scenario)
-                .map(|r| format!("${}$", french(*r)))
-                .unwrap_or_else(|| "--".to_string());
-            let _ = writeln!(
-                o,
-                "{} & ${}$ (à $t = {}$~s) & {} \\\\",
-                rich_text_or_escaped(
-                    &m.scenario_label(scenario)
-                        .unwrap_or_else(|| scenario.clone())
-                ),
-                french(v),
-                french(t),
-                reference
-            );
-        }
-        o.push_str("\\end{tabular}\n\\end{center}\n");
-    }
-    Ok(figure)
-}
-
-/// A value for the table of assumed values: plain when moderate, else a power of ten.
-fn french_sci(v: f64) -> String {
-    if v == 0.0 {
-        return "0".to_string();
-    }
-    let e = v.abs().log10().floor() as i32;
-    if (-2..=3).contains(&e) {
-        return format!("{v}").replace('.', "{,}");
-    }
-    let mant = v / 10f64.powi(e);
-    let mant = format!("{mant:.3}");
-    let mant = mant
-        .trim_end_matches('0')
-        .trim_end_matches('.')
-        .replace('.', "{,}");
-    format!("{mant} \\cdot 10^{{{e}}}")
 }

@@ -300,7 +300,7 @@ impl Layout {
 
 /// An angle `Σ nᵢ qᵢ + k π/2` in LaTeX, in the order of [`crate::frame::Angle::to_text`]
 /// (a positive offset first when the first angle is negative): `\frac{\pi}{2} - q_{1}`.
-fn angle_latex(reg: &Registry, terms: &[(CoordId, i64)], k: i64) -> String {
+pub(super) fn angle_latex(reg: &Registry, terms: &[(CoordId, i64)], k: i64) -> String {
     let mut out = String::new();
     let mut push = |neg: bool, body: String| {
         match (out.is_empty(), neg) {

@@ -5,6 +5,7 @@
 //! actions followed by one equality per theorem.
 
 use super::document::{DisplayRole, Doc};
+use super::routes::{position_route, projected_moment_route, projected_set_route};
 use super::{basis_vector, frame, name, point, quantity};
 use crate::derivation::{Derivation, Step, StepKind, Value, derive};
 use crate::frame::FrameId;
@@ -13,7 +14,7 @@ use crate::quantity::{Motion, Quantity, QuantityKind};
 use std::fmt::Write;
 
 /// `\overrightarrow{\Omega(2/1)}` from frame names.
-fn omega_of(a: &str, b: &str) -> String {
+pub(super) fn omega_of(a: &str, b: &str) -> String {
     quantity(&QuantityKind::Omega(Motion {
         moving: a.to_string(),
         reference: b.to_string(),
@@ -21,7 +22,7 @@ fn omega_of(a: &str, b: &str) -> String {
 }
 
 /// The frames from `f` up to `r` (both included), when `r` is an ancestor of `f`.
-fn chain(m: &Mechanism, f: FrameId, r: FrameId) -> Option<Vec<FrameId>> {
+pub(super) fn chain(m: &Mechanism, f: FrameId, r: FrameId) -> Option<Vec<FrameId>> {
     let mut out = vec![f];
     let mut cur = f;
     while cur != r {
@@ -33,7 +34,7 @@ fn chain(m: &Mechanism, f: FrameId, r: FrameId) -> Option<Vec<FrameId>> {
 
 /// « Composition des vitesses de rotation : Ω(2/0) = Ω(2/1) + Ω(1/0) » along the frames that
 /// turn, or « D'après le paramétrage » for one rotation.
-fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
+pub(super) fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
     let (Some(f), Some(r)) = (m.frames.find(&mo.moving), m.frames.find(&mo.reference)) else {
         return "Composition des vitesses de rotation :".to_string();
     };
@@ -63,7 +64,7 @@ fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
 }
 
 /// `S_2` for solid `2`, `E` for a set.
-fn solid(n: &str) -> String {
+pub(super) fn solid(n: &str) -> String {
     if n.chars().all(|c| c.is_ascii_digit()) {
         format!("S_{{{n}}}")
     } else {
@@ -72,7 +73,7 @@ fn solid(n: &str) -> String {
 }
 
 /// The mass of a solid in LaTeX (`m_{2}`), or `m` for a set.
-fn mass_of(m: &Mechanism, s: &str) -> String {
+pub(super) fn mass_of(m: &Mechanism, s: &str) -> String {
     m.bodies
         .iter()
         .find(|b| b.name == s)
@@ -279,7 +280,7 @@ pub(super) fn torsor_names(k: &QuantityKind) -> Option<(String, String)> {
 }
 
 /// The left side of a step's display.
-fn step_lhs(k: &StepKind) -> String {
+pub(super) fn step_lhs(k: &StepKind) -> String {
     match k {
         StepKind::Quantity(q) => quantity(q),
         StepKind::Derivative(q, r) => format!(
@@ -335,7 +336,7 @@ pub(super) fn action_side(n: &str) -> String {
 }
 
 /// A step's value under the question's hypothesis.
-fn shown_value(doc: &Doc, v: &Value) -> Value {
+pub(super) fn shown_value(doc: &Doc, v: &Value) -> Value {
     match doc.under {
         Some(h) => v.under(h),
         None => v.clone(),
@@ -585,463 +586,6 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
     false
 }
 
-/// Shows a vector value computed by the engine, or cites it.
-fn show_vector(
-    doc: &mut Doc,
-    what: &str,
-    sentence: &str,
-    lhs: &str,
-    v: &crate::vector::Vector,
-    b: FrameId,
-) {
-    let value = Value::Vector {
-        basis: b,
-        components: v.express_in(&doc.m.frames, b),
-    };
-    let value = shown_value(doc, &value);
-    match doc.cited(lhs, &value) {
-        Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
-        }
-        None => {
-            let _ = writeln!(doc.o, "{sentence}");
-            doc.show_keyed(DisplayRole::Step, what, lhs, lhs, &value, false);
-        }
-    }
-}
-
-/// Shows a scalar value computed by the engine.
-fn show_scalar(doc: &mut Doc, what: &str, sentence: &str, lhs: &str, e: crate::expr::Expr) {
-    let value = shown_value(doc, &Value::Scalar(e));
-    let _ = writeln!(doc.o, "{sentence}");
-    doc.show_keyed(DisplayRole::Step, what, lhs, lhs, &value, false);
-}
-
-/// The short route a teacher takes for a projected dynamic moment δ(A,S/R)·u of one solid:
-/// at a point fixed in R on an axis fixed in R, the derivative of σ(A,S/R)·u; elsewhere
-/// (A ≠ G), the change of point to the centre of inertia, δ(G)·u + (AG ∧ m Γ(G))·u. Returns
-/// false when neither applies (the steps of the vector are then shown).
-fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
-    use crate::kinematics::{acceleration, omega, point_velocity};
-    let m = doc.m;
-    let q = &d.quantity;
-    let QuantityKind::DynamicMoment {
-        point: a,
-        motion: mo,
-    } = &q.kind
-    else {
-        return false;
-    };
-    let Ok(r) = crate::derivation::resolve(m, q) else {
-        return false;
-    };
-    let (Some((uf, ua)), [s], Some(pa)) = (r.projection, r.solids.as_slice(), r.point) else {
-        return false;
-    };
-    let rf = r.reference.unwrap_or(m.frames.ground());
-    let body = m.body(*s);
-    let u = crate::vector::Vector::along(uf, ua, m.reg.one());
-    let ul = basis_vector(ua.letter(), m.frame_name(uf));
-    let rl = frame(&mo.reference);
-    let sigma_a = quantity(&QuantityKind::KineticMoment {
-        point: a.clone(),
-        motion: mo.clone(),
-    });
-    let fixed_axis = omega(m, uf, rf).is_zero(&m.frames);
-    // δ(A) = dσ(A)/dt + V(A/R) ∧ m V(G): a point A at rest in R suffices.
-    let fixed_point = point_velocity(m, pa, rf).is_zero(&m.frames);
-    let ib = crate::torsor::inertia_basis(m, *s);
-    let Value::Scalar(result) = &d.value else {
-        return false;
-    };
-    if fixed_point && fixed_axis {
-        // The route must give the engine's value exactly, or it is not taken.
-        let sig = crate::torsor::kinetic_moment_solid(m, *s, pa, rf);
-        let proj = sig.dot(&m.frames, &u);
-        if &proj.dt() != result {
-            return false;
-        }
-        let om = omega(m, body.frame, rf);
-        let oml = omega_of(&mo.moving, &mo.reference);
-        show_vector(
-            doc,
-            &format!("Omega({})", mo),
-            &omega_sentence(m, mo),
-            &oml,
-            &om,
-            ib,
-        );
-        let il = format!("I_{{{}}}({})", point(a), mo.moving);
-        // σ(A) = I_A Ω only when the point of S at A is at rest; else the general formula.
-        let of_solid = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
-        let gn = m.point_name(body.centre).to_string();
-        let sentence = if of_solid {
-            format!(
-                "${}$ est un point de ${}$ fixe dans ${rl}$ : ${sigma_a} = {il}\\cdot{oml}$ :",
-                point(a),
-                solid(&mo.moving)
-            )
-        } else {
-            format!(
-                "${sigma_a} = {il}\\cdot{oml} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
-                mass_of(m, &mo.moving),
-                point(a),
-                point(&gn),
-                point(a),
-                mo.moving,
-                mo.reference
-            )
-        };
-        show_vector(
-            doc,
-            &format!("sigma({a},{mo})"),
-            &sentence,
-            &sigma_a,
-            &sig,
-            ib,
-        );
-        show_scalar(
-            doc,
-            &format!("sigma({a},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
-            &format!(
-                "${}$ est fixe dans ${rl}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_a}\\cdot {ul}\\right)$, avec :",
-                point(a),
-                quantity(&q.kind)
-            ),
-            &format!("{sigma_a}\\cdot {ul}"),
-            proj,
-        );
-        return true;
-    }
-    let g = body.centre;
-    if pa == g {
-        return false;
-    }
-    let dg = crate::torsor::dynamic_moment_solid(m, *s, g, rf).dot(&m.frames, &u);
-    let gam = acceleration(m, g, body.frame, rf);
-    let ag = crate::kinematics::position(m, pa, g);
-    let transport = ag
-        .cross(&m.frames, &gam.scale(&body.mass))
-        .dot(&m.frames, &u);
-    // δ(A)·u = δ(G)·u + (AG ∧ m Γ(G))·u must give the engine's value exactly.
-    if &(&dg + &transport) != result {
-        return false;
-    }
-    let gn = m.point_name(g).to_string();
-    let delta_g = QuantityKind::DynamicMoment {
-        point: gn.clone(),
-        motion: mo.clone(),
-    };
-    let gamma = QuantityKind::Acceleration {
-        point: gn.clone(),
-        motion: mo.clone(),
-    };
-    let mass = mass_of(m, &mo.moving);
-    let _ = writeln!(
-        doc.o,
-        "Changement de point vers le centre d'inertie : ${} \\cdot {ul} = {} \\cdot {ul} + \\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}$.\n",
-        quantity(&q.kind),
-        quantity(&delta_g),
-        point(a),
-        point(&gn),
-        quantity(&gamma)
-    );
-    let om = omega(m, body.frame, rf);
-    let oml = omega_of(&mo.moving, &mo.reference);
-    show_vector(
-        doc,
-        &format!("Omega({mo})"),
-        &omega_sentence(m, mo),
-        &oml,
-        &om,
-        ib,
-    );
-    let sigma_g = quantity(&QuantityKind::KineticMoment {
-        point: gn.clone(),
-        motion: mo.clone(),
-    });
-    let sig = crate::torsor::kinetic_moment_solid(m, *s, g, rf);
-    show_vector(
-        doc,
-        &format!("sigma({gn},{mo})"),
-        &format!(
-            "En ${}$, centre d'inertie : ${sigma_g} = I_{{{}}}({})\\cdot{oml}$ :",
-            point(&gn),
-            point(&gn),
-            mo.moving
-        ),
-        &sigma_g,
-        &sig,
-        ib,
-    );
-    show_scalar(
-        doc,
-        &format!("delta({gn},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
-        &format!(
-            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{sigma_g}\\right]_{{{rl}}}$ (centre d'inertie), projeté sur ${ul}$ :",
-            quantity(&delta_g)
-        ),
-        &format!("{} \\cdot {ul}", quantity(&delta_g)),
-        dg,
-    );
-    show_vector(
-        doc,
-        &format!("Gamma({gn},{mo})"),
-        &format!("Accélération de ${}$ :", point(&gn)),
-        &quantity(&gamma),
-        &gam,
-        r.basis,
-    );
-    show_scalar(
-        doc,
-        "transport",
-        "Terme de transport :",
-        &format!(
-            "\\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}",
-            point(a),
-            point(&gn),
-            quantity(&gamma)
-        ),
-        transport,
-    );
-    true
-}
-
-/// V(P,S/R) and Γ(P,S/R) have no steps of their own: the method sentence (derivative of the
-/// position from the ground origin, fixed in R), and for Γ the velocity first.
-fn position_route(doc: &mut Doc, d: &Derivation) {
-    let m = doc.m;
-    let (p, mo, accel) = match &d.quantity.kind {
-        QuantityKind::Velocity { point, motion } => (point, motion, false),
-        QuantityKind::Acceleration { point, motion } => (point, motion, true),
-        _ => return,
-    };
-    // d/dt O0P in R is V(P,S/R) only for P fixed in S, R the ground (where O0 is fixed).
-    let moving = m
-        .bodies
-        .iter()
-        .find(|b| b.name == mo.moving)
-        .map(|b| b.frame)
-        .or_else(|| m.frames.find(&mo.moving));
-    let (Some(pid), Some(sf), Some(rf)) = (m.points.find(p), moving, m.frames.find(&mo.reference))
-    else {
-        return;
-    };
-    if rf != m.frames.ground() || !crate::kinematics::is_fixed_in(m, pid, sf) {
-        return;
-    }
-    let o = m.point_name(m.points.origin()).to_string();
-    let rl = frame(&mo.reference);
-    let pos = format!("\\overrightarrow{{{}{}}}", point(&o), point(p));
-    let vk = QuantityKind::Velocity {
-        point: p.clone(),
-        motion: mo.clone(),
-    };
-    let vl = quantity(&vk);
-    if !accel {
-        let _ = writeln!(
-            doc.o,
-            "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{pos}\\right]_{{{rl}}}$ (${}$ fixe dans ${rl}$) :",
-            point(&o)
-        );
-        return;
-    }
-    // Γ: the velocity first (shown or cited), in the basis of the result.
-    let Value::Vector { basis, .. } = &d.value else {
-        return;
-    };
-    let vq = format!(
-        "V({p},{}/{}) in B{}",
-        mo.moving,
-        mo.reference,
-        m.frame_name(*basis)
-    );
-    let Ok(vd) = Quantity::parse(&vq)
-        .map_err(|e| e.to_string())
-        .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
-    else {
-        return;
-    };
-    let vv = shown_value(doc, &vd.value);
-    match doc.cited(&vl, &vv) {
-        Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${vl}$.\n");
-        }
-        None => {
-            let _ = writeln!(
-                doc.o,
-                "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{pos}\\right]_{{{rl}}}$ (${}$ fixe dans ${rl}$) :",
-                point(&o)
-            );
-            doc.show_keyed(DisplayRole::Step, &vq, &vl, &vl, &vv, false);
-        }
-    }
-    let _ = writeln!(
-        doc.o,
-        "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vl}\\right]_{{{rl}}}$ :",
-        quantity(&d.quantity.kind)
-    );
-}
-
-/// σ(A,S/R)·u for each solid of a set, each shown with the formula that gives it; returns
-/// their sum.
-fn kinetic_projections(
-    doc: &mut Doc,
-    solids: &[crate::mechanism::BodyId],
-    pa: crate::point::PointId,
-    rf: FrameId,
-    u: &crate::vector::Vector,
-    ul: &str,
-    reference: &str,
-) -> crate::expr::Expr {
-    let m = doc.m;
-    let a = m.point_name(pa).to_string();
-    let mut total = m.reg.zero();
-    for &s in solids {
-        let body = m.body(s);
-        let mo = Motion {
-            moving: body.name.clone(),
-            reference: reference.to_string(),
-        };
-        let sigma = quantity(&QuantityKind::KineticMoment {
-            point: a.clone(),
-            motion: mo.clone(),
-        });
-        let fixed = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
-        let oml = omega_of(&mo.moving, &mo.reference);
-        let sentence = if fixed {
-            format!(
-                "${}$ est un point de ${}$ fixe dans ${}$ : ${sigma} = I_{{{}}}({})\\cdot{oml}$ :",
-                point(&a),
-                solid(&mo.moving),
-                frame(reference),
-                point(&a),
-                mo.moving
-            )
-        } else {
-            let g = m.point_name(body.centre).to_string();
-            format!(
-                "${sigma} = {} + \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
-                quantity(&QuantityKind::KineticMoment {
-                    point: g.clone(),
-                    motion: mo.clone()
-                }),
-                point(&a),
-                point(&g),
-                mass_of(m, &mo.moving),
-                quantity(&QuantityKind::Velocity {
-                    point: g.clone(),
-                    motion: mo.clone()
-                })
-            )
-        };
-        let p = crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, u);
-        total = &total + &p;
-        let lhs = format!("{sigma} \\cdot {ul}");
-        let v = shown_value(doc, &Value::Scalar(p.clone()));
-        match doc.cited(&lhs, &v) {
-            Some(place) => {
-                let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
-            }
-            None => show_scalar(doc, &format!("sigma({a},{mo})"), &sentence, &lhs, p),
-        }
-    }
-    total
-}
-
-/// The short route for a projection on an axis u of the kinetic or dynamic moment of a set:
-/// σ(A,E/R)·u as the sum of the solids' projections; δ(A,E/R)·u, at a point A fixed in R
-/// and u fixed in R, as d/dt(σ(A,E/R)·u). Taken only when it gives the engine's value.
-fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
-    use crate::kinematics::{omega, point_velocity};
-    let m = doc.m;
-    let q = &d.quantity;
-    let (a, mo, dynamic) = match &q.kind {
-        QuantityKind::KineticMoment { point, motion } => (point, motion, false),
-        QuantityKind::DynamicMoment { point, motion } => (point, motion, true),
-        _ => return false,
-    };
-    let Ok(r) = crate::derivation::resolve(m, q) else {
-        return false;
-    };
-    let (Some((uf, ua)), Some(pa)) = (r.projection, r.point) else {
-        return false;
-    };
-    if r.solids.len() < 2 {
-        return false;
-    }
-    let Value::Scalar(result) = &d.value else {
-        return false;
-    };
-    let rf = r.reference.unwrap_or(m.frames.ground());
-    let u = crate::vector::Vector::along(uf, ua, m.reg.one());
-    let ul = basis_vector(ua.letter(), m.frame_name(uf));
-    let sigma_e = quantity(&QuantityKind::KineticMoment {
-        point: a.clone(),
-        motion: mo.clone(),
-    });
-    let sum: crate::expr::Expr = r
-        .solids
-        .iter()
-        .map(|&s| crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, &u))
-        .fold(m.reg.zero(), |acc, p| &acc + &p);
-    let members: Vec<String> = r
-        .solids
-        .iter()
-        .map(|&s| {
-            quantity(&QuantityKind::KineticMoment {
-                point: a.clone(),
-                motion: Motion {
-                    moving: m.body(s).name.clone(),
-                    reference: mo.reference.clone(),
-                },
-            })
-        })
-        .collect();
-    if !dynamic {
-        if &sum != result {
-            return false;
-        }
-        let _ = writeln!(
-            doc.o,
-            "Le moment cinétique de ${}$ est la somme de ceux de ses solides, ${sigma_e} = {}$ ; en projection sur ${ul}$ :\n",
-            solid(&mo.moving),
-            members.join(" + ")
-        );
-        kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);
-        return true;
-    }
-    let fixed = point_velocity(m, pa, rf).is_zero(&m.frames) && omega(m, uf, rf).is_zero(&m.frames);
-    if !fixed || &sum.dt() != result {
-        return false;
-    }
-    let lhs = format!("{sigma_e} \\cdot {ul}");
-    let _ = writeln!(
-        doc.o,
-        "${}$ est fixe dans ${}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_e}\\cdot {ul}\\right)$.\n",
-        point(a),
-        frame(&mo.reference),
-        quantity(&q.kind)
-    );
-    let v = shown_value(doc, &Value::Scalar(sum.clone()));
-    match doc.cited(&lhs, &v) {
-        Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
-        }
-        None => {
-            kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);
-            show_scalar(
-                doc,
-                &format!("sigma({a},{mo})"),
-                "d'où, en sommant :",
-                &lhs,
-                sum,
-            );
-        }
-    }
-    true
-}
-
 /// A requested quantity of the kinematics or kinetics: its steps, then the boxed result.
 pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &str) {
     let m = doc.m;
@@ -1164,138 +708,4 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
             names.as_ref(),
         );
     }
-}
-
-/// The PFD: for each theorem, the bilan of the external actions (once per isolated system),
-/// the theorem as one equality (dynamic side, actions), then the unknown or the equation of
-/// motion.
-pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
-    let m = doc.m;
-    let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
-    let mut k = 0;
-    let steps = &d.steps;
-    let mut last_equality: Option<(Value, Value)> = None;
-    while k < steps.len() {
-        // One theorem: actions…, projected dynamic side, external actions.
-        let start = k;
-        while k < steps.len() && matches!(steps[k].kind, StepKind::Action { .. }) {
-            k += 1;
-        }
-        let (Some(dyn_step), Some(ext_step)) = (steps.get(k), steps.get(k + 1)) else {
-            break;
-        };
-        let StepKind::External {
-            isolate,
-            point: at,
-            on: (f, a),
-        } = &ext_step.kind
-        else {
-            break;
-        };
-        let iso = action_side(isolate);
-        let iso_name = solid(isolate);
-        match doc.bilans.get(isolate).cloned() {
-            Some(place) => {
-                let _ = writeln!(
-                    doc.o,
-                    "On isole ${iso_name}$ ; le bilan des actions mécaniques extérieures est celui de {place}.\n"
-                );
-            }
-            None => {
-                let _ = writeln!(
-                    doc.o,
-                    "On isole ${iso_name}$. Bilan des actions mécaniques extérieures à ${iso_name}$ :"
-                );
-                for s in &steps[start..k] {
-                    // « le moteur (action moteur de 0 sur 1) », capitalised.
-                    let text = super::rich_text_or_escaped(&s.theorem);
-                    let mut cs = text.chars();
-                    let text = match cs.next() {
-                        Some(c) => c.to_uppercase().chain(cs).collect::<String>(),
-                        None => text,
-                    };
-                    let _ = writeln!(doc.o, "{text} :");
-                    let v = shown_value(doc, &s.value);
-                    let lhs = step_lhs(&s.kind);
-                    doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
-                }
-                let here = doc.here.clone();
-                doc.bilans.insert(isolate.clone(), here);
-            }
-        }
-        let theorem = match at {
-            Some(p) => format!(
-                "Théorème du moment dynamique appliqué à ${iso_name}$ en ${}$, en projection sur ${}$",
-                point(p),
-                basis_vector(*a, f)
-            ),
-            None => format!(
-                "Théorème de la résultante dynamique appliqué à ${iso_name}$, en projection sur ${}$",
-                basis_vector(*a, f)
-            ),
-        };
-        let _ = iso;
-        let dl = step_lhs(&dyn_step.kind);
-        let el = step_lhs(&ext_step.kind);
-        let dv = shown_value(doc, &dyn_step.value);
-        let ev = shown_value(doc, &ext_step.value);
-        // When the actions reduce to the unknown asked (C_m), the theorem gives it at once:
-        // « C_m = δ(O1,E/0)·z0 », boxed below, without writing the dynamic side twice.
-        if let (QuantityKind::Unknown(u), Value::Scalar(e)) = (&d.quantity.kind, &ev)
-            && m.reg.param(u).as_ref() == Some(e)
-            && k + 2 == steps.len()
-        {
-            let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$, soit :");
-            let id = d.quantity.to_string();
-            let hn = doc.under.map(|h| h.name.clone());
-            let here = doc.here.clone();
-            doc.results.push((id.clone(), hn.clone(), dv.clone(), here));
-            let lhs = format!("{} = {dl}", name(u));
-            doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &dv, None);
-            return;
-        }
-        let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$ :");
-        doc.show_equality(
-            DisplayRole::Step,
-            &dyn_step.label,
-            &dl,
-            &dv,
-            &el,
-            &ev,
-            false,
-        );
-        last_equality = Some((dv, ev));
-        k += 2;
-    }
-    let id = d.quantity.to_string();
-    let v = shown_value(doc, &d.value);
-    let hn = doc.under.map(|h| h.name.clone());
-    let here = doc.here.clone();
-    doc.results.push((id.clone(), hn.clone(), v.clone(), here));
-    match &d.quantity.kind {
-        QuantityKind::Eom(q) => {
-            // The equation of motion, dynamic side = actions, boxed; when the theorem's
-            // equality is already it, box that.
-            let Value::Scalar(e) = &v else { return };
-            let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
-            let (lhs, rhs) = match &last_equality {
-                Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => {
-                    (a.clone(), b.clone())
-                }
-                _ => split_equation(e),
-            };
-            doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
-        }
-        _ => {
-            let lhs = quantity(&d.quantity.kind);
-            doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
-        }
-    }
-    let _ = m;
-}
-
-/// An equation e = 0 as (terms with a rate) = −(the others).
-fn split_equation(e: &crate::expr::Expr) -> (crate::expr::Expr, crate::expr::Expr) {
-    let (with, without) = e.split_by_rates();
-    (with, -without)
 }

@@ -9,7 +9,10 @@
 mod document;
 mod figures;
 mod method;
+mod routes;
+mod simulation;
 mod text;
+mod theorems;
 
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,

@@ -1,0 +1,469 @@
+//! The short routes a teacher takes for a projected moment (d/dt(σ·u) at a fixed point on a
+//! fixed axis; the change of point to G; a set's σ·u as the sum of its solids'), and V, Γ of
+//! a point as derivatives of its position. Each route is taken only when its terms give the
+//! engine's value exactly.
+
+use super::document::{DisplayRole, Doc};
+use super::method::{mass_of, omega_of, omega_sentence, shown_value, solid};
+use super::{basis_vector, frame, point, quantity};
+use crate::derivation::{Derivation, Value, derive};
+use crate::frame::FrameId;
+use crate::quantity::{Motion, Quantity, QuantityKind};
+use std::fmt::Write;
+
+/// Shows a vector value computed by the engine, or cites it.
+fn show_vector(
+    doc: &mut Doc,
+    what: &str,
+    sentence: &str,
+    lhs: &str,
+    v: &crate::vector::Vector,
+    b: FrameId,
+) {
+    let value = Value::Vector {
+        basis: b,
+        components: v.express_in(&doc.m.frames, b),
+    };
+    let value = shown_value(doc, &value);
+    match doc.cited(lhs, &value) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+        }
+        None => {
+            let _ = writeln!(doc.o, "{sentence}");
+            doc.show_keyed(DisplayRole::Step, what, lhs, lhs, &value, false);
+        }
+    }
+}
+
+/// Shows a scalar value computed by the engine.
+fn show_scalar(doc: &mut Doc, what: &str, sentence: &str, lhs: &str, e: crate::expr::Expr) {
+    let value = shown_value(doc, &Value::Scalar(e));
+    let _ = writeln!(doc.o, "{sentence}");
+    doc.show_keyed(DisplayRole::Step, what, lhs, lhs, &value, false);
+}
+
+/// The short route a teacher takes for a projected dynamic moment δ(A,S/R)·u of one solid:
+/// at a point fixed in R on an axis fixed in R, the derivative of σ(A,S/R)·u; elsewhere
+/// (A ≠ G), the change of point to the centre of inertia, δ(G)·u + (AG ∧ m Γ(G))·u. Returns
+/// false when neither applies (the steps of the vector are then shown).
+pub(super) fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
+    use crate::kinematics::{acceleration, omega, point_velocity};
+    let m = doc.m;
+    let q = &d.quantity;
+    let QuantityKind::DynamicMoment {
+        point: a,
+        motion: mo,
+    } = &q.kind
+    else {
+        return false;
+    };
+    let Ok(r) = crate::derivation::resolve(m, q) else {
+        return false;
+    };
+    let (Some((uf, ua)), [s], Some(pa)) = (r.projection, r.solids.as_slice(), r.point) else {
+        return false;
+    };
+    let rf = r.reference.unwrap_or(m.frames.ground());
+    let body = m.body(*s);
+    let u = crate::vector::Vector::along(uf, ua, m.reg.one());
+    let ul = basis_vector(ua.letter(), m.frame_name(uf));
+    let rl = frame(&mo.reference);
+    let sigma_a = quantity(&QuantityKind::KineticMoment {
+        point: a.clone(),
+        motion: mo.clone(),
+    });
+    let fixed_axis = omega(m, uf, rf).is_zero(&m.frames);
+    // δ(A) = dσ(A)/dt + V(A/R) ∧ m V(G): a point A at rest in R suffices.
+    let fixed_point = point_velocity(m, pa, rf).is_zero(&m.frames);
+    let ib = crate::torsor::inertia_basis(m, *s);
+    let Value::Scalar(result) = &d.value else {
+        return false;
+    };
+    if fixed_point && fixed_axis {
+        // The route must give the engine's value exactly, or it is not taken.
+        let sig = crate::torsor::kinetic_moment_solid(m, *s, pa, rf);
+        let proj = sig.dot(&m.frames, &u);
+        if &proj.dt() != result {
+            return false;
+        }
+        let om = omega(m, body.frame, rf);
+        let oml = omega_of(&mo.moving, &mo.reference);
+        show_vector(
+            doc,
+            &format!("Omega({})", mo),
+            &omega_sentence(m, mo),
+            &oml,
+            &om,
+            ib,
+        );
+        let il = format!("I_{{{}}}({})", point(a), mo.moving);
+        // σ(A) = I_A Ω only when the point of S at A is at rest; else the general formula.
+        let of_solid = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
+        let gn = m.point_name(body.centre).to_string();
+        let sentence = if of_solid {
+            format!(
+                "${}$ est un point de ${}$ fixe dans ${rl}$ : ${sigma_a} = {il}\\cdot{oml}$ :",
+                point(a),
+                solid(&mo.moving)
+            )
+        } else {
+            format!(
+                "${sigma_a} = {il}\\cdot{oml} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
+                mass_of(m, &mo.moving),
+                point(a),
+                point(&gn),
+                point(a),
+                mo.moving,
+                mo.reference
+            )
+        };
+        show_vector(
+            doc,
+            &format!("sigma({a},{mo})"),
+            &sentence,
+            &sigma_a,
+            &sig,
+            ib,
+        );
+        show_scalar(
+            doc,
+            &format!("sigma({a},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
+            &format!(
+                "${}$ est fixe dans ${rl}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_a}\\cdot {ul}\\right)$, avec :",
+                point(a),
+                quantity(&q.kind)
+            ),
+            &format!("{sigma_a}\\cdot {ul}"),
+            proj,
+        );
+        return true;
+    }
+    let g = body.centre;
+    if pa == g {
+        return false;
+    }
+    let dg = crate::torsor::dynamic_moment_solid(m, *s, g, rf).dot(&m.frames, &u);
+    let gam = acceleration(m, g, body.frame, rf);
+    let ag = crate::kinematics::position(m, pa, g);
+    let transport = ag
+        .cross(&m.frames, &gam.scale(&body.mass))
+        .dot(&m.frames, &u);
+    // δ(A)·u = δ(G)·u + (AG ∧ m Γ(G))·u must give the engine's value exactly.
+    if &(&dg + &transport) != result {
+        return false;
+    }
+    let gn = m.point_name(g).to_string();
+    let delta_g = QuantityKind::DynamicMoment {
+        point: gn.clone(),
+        motion: mo.clone(),
+    };
+    let gamma = QuantityKind::Acceleration {
+        point: gn.clone(),
+        motion: mo.clone(),
+    };
+    let mass = mass_of(m, &mo.moving);
+    let _ = writeln!(
+        doc.o,
+        "Changement de point vers le centre d'inertie : ${} \\cdot {ul} = {} \\cdot {ul} + \\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}$.\n",
+        quantity(&q.kind),
+        quantity(&delta_g),
+        point(a),
+        point(&gn),
+        quantity(&gamma)
+    );
+    let om = omega(m, body.frame, rf);
+    let oml = omega_of(&mo.moving, &mo.reference);
+    show_vector(
+        doc,
+        &format!("Omega({mo})"),
+        &omega_sentence(m, mo),
+        &oml,
+        &om,
+        ib,
+    );
+    let sigma_g = quantity(&QuantityKind::KineticMoment {
+        point: gn.clone(),
+        motion: mo.clone(),
+    });
+    let sig = crate::torsor::kinetic_moment_solid(m, *s, g, rf);
+    show_vector(
+        doc,
+        &format!("sigma({gn},{mo})"),
+        &format!(
+            "En ${}$, centre d'inertie : ${sigma_g} = I_{{{}}}({})\\cdot{oml}$ :",
+            point(&gn),
+            point(&gn),
+            mo.moving
+        ),
+        &sigma_g,
+        &sig,
+        ib,
+    );
+    show_scalar(
+        doc,
+        &format!("delta({gn},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
+        &format!(
+            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{sigma_g}\\right]_{{{rl}}}$ (centre d'inertie), projeté sur ${ul}$ :",
+            quantity(&delta_g)
+        ),
+        &format!("{} \\cdot {ul}", quantity(&delta_g)),
+        dg,
+    );
+    show_vector(
+        doc,
+        &format!("Gamma({gn},{mo})"),
+        &format!("Accélération de ${}$ :", point(&gn)),
+        &quantity(&gamma),
+        &gam,
+        r.basis,
+    );
+    show_scalar(
+        doc,
+        "transport",
+        "Terme de transport :",
+        &format!(
+            "\\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}",
+            point(a),
+            point(&gn),
+            quantity(&gamma)
+        ),
+        transport,
+    );
+    true
+}
+
+/// V(P,S/R) and Γ(P,S/R) have no steps of their own: the method sentence (derivative of the
+/// position from the ground origin, fixed in R), and for Γ the velocity first.
+pub(super) fn position_route(doc: &mut Doc, d: &Derivation) {
+    let m = doc.m;
+    let (p, mo, accel) = match &d.quantity.kind {
+        QuantityKind::Velocity { point, motion } => (point, motion, false),
+        QuantityKind::Acceleration { point, motion } => (point, motion, true),
+        _ => return,
+    };
+    // d/dt O0P in R is V(P,S/R) only for P fixed in S, R the ground (where O0 is fixed).
+    let moving = m
+        .bodies
+        .iter()
+        .find(|b| b.name == mo.moving)
+        .map(|b| b.frame)
+        .or_else(|| m.frames.find(&mo.moving));
+    let (Some(pid), Some(sf), Some(rf)) = (m.points.find(p), moving, m.frames.find(&mo.reference))
+    else {
+        return;
+    };
+    if rf != m.frames.ground() || !crate::kinematics::is_fixed_in(m, pid, sf) {
+        return;
+    }
+    let o = m.point_name(m.points.origin()).to_string();
+    let rl = frame(&mo.reference);
+    let pos = format!("\\overrightarrow{{{}{}}}", point(&o), point(p));
+    let vk = QuantityKind::Velocity {
+        point: p.clone(),
+        motion: mo.clone(),
+    };
+    let vl = quantity(&vk);
+    if !accel {
+        let _ = writeln!(
+            doc.o,
+            "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{pos}\\right]_{{{rl}}}$ (${}$ fixe dans ${rl}$) :",
+            point(&o)
+        );
+        return;
+    }
+    // Γ: the velocity first (shown or cited), in the basis of the result.
+    let Value::Vector { basis, .. } = &d.value else {
+        return;
+    };
+    let vq = format!(
+        "V({p},{}/{}) in B{}",
+        mo.moving,
+        mo.reference,
+        m.frame_name(*basis)
+    );
+    let Ok(vd) = Quantity::parse(&vq)
+        .map_err(|e| e.to_string())
+        .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
+    else {
+        return;
+    };
+    let vv = shown_value(doc, &vd.value);
+    match doc.cited(&vl, &vv) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${vl}$.\n");
+        }
+        None => {
+            let _ = writeln!(
+                doc.o,
+                "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{pos}\\right]_{{{rl}}}$ (${}$ fixe dans ${rl}$) :",
+                point(&o)
+            );
+            doc.show_keyed(DisplayRole::Step, &vq, &vl, &vl, &vv, false);
+        }
+    }
+    let _ = writeln!(
+        doc.o,
+        "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vl}\\right]_{{{rl}}}$ :",
+        quantity(&d.quantity.kind)
+    );
+}
+
+/// σ(A,S/R)·u for each solid of a set, each shown with the formula that gives it; returns
+/// their sum.
+fn kinetic_projections(
+    doc: &mut Doc,
+    solids: &[crate::mechanism::BodyId],
+    pa: crate::point::PointId,
+    rf: FrameId,
+    u: &crate::vector::Vector,
+    ul: &str,
+    reference: &str,
+) -> crate::expr::Expr {
+    let m = doc.m;
+    let a = m.point_name(pa).to_string();
+    let mut total = m.reg.zero();
+    for &s in solids {
+        let body = m.body(s);
+        let mo = Motion {
+            moving: body.name.clone(),
+            reference: reference.to_string(),
+        };
+        let sigma = quantity(&QuantityKind::KineticMoment {
+            point: a.clone(),
+            motion: mo.clone(),
+        });
+        let fixed = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
+        let oml = omega_of(&mo.moving, &mo.reference);
+        let sentence = if fixed {
+            format!(
+                "${}$ est un point de ${}$ fixe dans ${}$ : ${sigma} = I_{{{}}}({})\\cdot{oml}$ :",
+                point(&a),
+                solid(&mo.moving),
+                frame(reference),
+                point(&a),
+                mo.moving
+            )
+        } else {
+            let g = m.point_name(body.centre).to_string();
+            format!(
+                "${sigma} = {} + \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+                quantity(&QuantityKind::KineticMoment {
+                    point: g.clone(),
+                    motion: mo.clone()
+                }),
+                point(&a),
+                point(&g),
+                mass_of(m, &mo.moving),
+                quantity(&QuantityKind::Velocity {
+                    point: g.clone(),
+                    motion: mo.clone()
+                })
+            )
+        };
+        let p = crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, u);
+        total = &total + &p;
+        let lhs = format!("{sigma} \\cdot {ul}");
+        let v = shown_value(doc, &Value::Scalar(p.clone()));
+        match doc.cited(&lhs, &v) {
+            Some(place) => {
+                let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+            }
+            None => show_scalar(doc, &format!("sigma({a},{mo})"), &sentence, &lhs, p),
+        }
+    }
+    total
+}
+
+/// The short route for a projection on an axis u of the kinetic or dynamic moment of a set:
+/// σ(A,E/R)·u as the sum of the solids' projections; δ(A,E/R)·u, at a point A fixed in R
+/// and u fixed in R, as d/dt(σ(A,E/R)·u). Taken only when it gives the engine's value.
+pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
+    use crate::kinematics::{omega, point_velocity};
+    let m = doc.m;
+    let q = &d.quantity;
+    let (a, mo, dynamic) = match &q.kind {
+        QuantityKind::KineticMoment { point, motion } => (point, motion, false),
+        QuantityKind::DynamicMoment { point, motion } => (point, motion, true),
+        _ => return false,
+    };
+    let Ok(r) = crate::derivation::resolve(m, q) else {
+        return false;
+    };
+    let (Some((uf, ua)), Some(pa)) = (r.projection, r.point) else {
+        return false;
+    };
+    if r.solids.len() < 2 {
+        return false;
+    }
+    let Value::Scalar(result) = &d.value else {
+        return false;
+    };
+    let rf = r.reference.unwrap_or(m.frames.ground());
+    let u = crate::vector::Vector::along(uf, ua, m.reg.one());
+    let ul = basis_vector(ua.letter(), m.frame_name(uf));
+    let sigma_e = quantity(&QuantityKind::KineticMoment {
+        point: a.clone(),
+        motion: mo.clone(),
+    });
+    let sum: crate::expr::Expr = r
+        .solids
+        .iter()
+        .map(|&s| crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, &u))
+        .fold(m.reg.zero(), |acc, p| &acc + &p);
+    let members: Vec<String> = r
+        .solids
+        .iter()
+        .map(|&s| {
+            quantity(&QuantityKind::KineticMoment {
+                point: a.clone(),
+                motion: Motion {
+                    moving: m.body(s).name.clone(),
+                    reference: mo.reference.clone(),
+                },
+            })
+        })
+        .collect();
+    if !dynamic {
+        if &sum != result {
+            return false;
+        }
+        let _ = writeln!(
+            doc.o,
+            "Le moment cinétique de ${}$ est la somme de ceux de ses solides, ${sigma_e} = {}$ ; en projection sur ${ul}$ :\n",
+            solid(&mo.moving),
+            members.join(" + ")
+        );
+        kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);
+        return true;
+    }
+    let fixed = point_velocity(m, pa, rf).is_zero(&m.frames) && omega(m, uf, rf).is_zero(&m.frames);
+    if !fixed || &sum.dt() != result {
+        return false;
+    }
+    let lhs = format!("{sigma_e} \\cdot {ul}");
+    let _ = writeln!(
+        doc.o,
+        "${}$ est fixe dans ${}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_e}\\cdot {ul}\\right)$.\n",
+        point(a),
+        frame(&mo.reference),
+        quantity(&q.kind)
+    );
+    let v = shown_value(doc, &Value::Scalar(sum.clone()));
+    match doc.cited(&lhs, &v) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+        }
+        None => {
+            kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);
+            show_scalar(
+                doc,
+                &format!("sigma({a},{mo})"),
+                "d'où, en sommant :",
+                &lhs,
+                sum,
+            );
+        }
+    }
+    true
+}

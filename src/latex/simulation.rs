@@ -1,0 +1,150 @@
+//! The simulations a question shows in the answer key: the assumed values, the curves, the
+//! maxima against the statement's figures.
+
+use super::{escape_text, name, rich_text_or_escaped};
+use crate::mechanism::Mechanism;
+use std::fmt::Write;
+
+/// A number as the French text writes it: three significant digits, decimal comma.
+fn french(v: f64) -> String {
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let digits = (2 - v.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    format!("{v:.digits$}").replace('.', "{,}")
+}
+
+/// The simulations of a question: the assumed values, the curves, the maxima against the
+/// statement's.
+pub(super) fn simulation_block(
+    o: &mut String,
+    m: &Mechanism,
+    sim: &crate::spec::wire::SimulationSpec,
+    file: &str,
+) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
+    let fail = |what: &str, e: String| crate::derivation::ResolveError {
+        quantity: what.to_string(),
+        message: e,
+    };
+    let mut runs = Vec::new();
+    for name in &sim.scenarios {
+        runs.push(crate::simulate::simulate(m, name).map_err(|e| fail(name, e.to_string()))?);
+    }
+    // The assumed values, as the statement gives none.
+    if let Some(first) = sim
+        .scenarios
+        .first()
+        .and_then(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
+    {
+        o.push_str(
+            "Le sujet ne donne pas de valeurs numériques : les simulations utilisent les valeurs \
+             supposées suivantes (unités SI).\n\n\\begin{center}\n\\begin{tabular}{llllll}\n",
+        );
+        // A value that differs between the scenarios (the friction f) is given for each, in
+        // the order of the scenarios.
+        let others: Vec<&crate::spec::wire::ScenarioSpec> = sim
+            .scenarios
+            .iter()
+            .filter_map(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
+            .collect();
+        let cells: Vec<String> = first
+            .values
+            .iter()
+            .map(|(k, v)| {
+                let mut vals: Vec<String> = Vec::new();
+                for sc in &others {
+                    let x = sc.values.get(k).copied().unwrap_or(*v);
+                    let t = french_sci(x);
+                    if !vals.contains(&t) {
+                        vals.push(t);
+                    }
+                }
+                format!("${} = {}$", name(k), vals.join(" \\text{ ou } "))
+            })
+            .collect();
+        for row in cells.chunks(6) {
+            let _ = writeln!(o, "{} \\\\", row.join(" & "));
+        }
+        o.push_str("\\end{tabular}\n\\end{center}\n");
+    }
+    for (name, sc) in sim.scenarios.iter().filter_map(|n| {
+        m.spec
+            .scenarios
+            .iter()
+            .find(|s| &s.name == n)
+            .map(|s| (n, s))
+    }) {
+        if let Some(d) = &sc.description {
+            let _ = writeln!(
+                o,
+                "\\textbf{{{}}} : {}\n",
+                rich_text_or_escaped(&m.scenario_label(name).unwrap_or_else(|| name.clone())),
+                rich_text_or_escaped(d)
+            );
+        }
+    }
+    // The legend names each run by its scenario's label (« sans frottement »).
+    let pairs: Vec<(&str, &crate::simulate::Run)> =
+        runs.iter().map(|r| (r.label.as_str(), r)).collect();
+    let ids: Vec<&str> = sim.plot.iter().map(String::as_str).collect();
+    let figure = crate::simulate::figure(&m.title, &pairs, &ids, true);
+    let _ = writeln!(
+        o,
+        "\\begin{{center}}\n\\includegraphics[width=0.72\\textwidth]{{{file}}}\n\\end{{center}}"
+    );
+    if let Some(col) = &sim.maximum {
+        let unit = runs
+            .first()
+            .and_then(|r| r.columns.iter().find(|c| &c.id == col))
+            .map(|c| format!(" ({})", escape_text(&c.unit)))
+            .unwrap_or_default();
+        let _ = writeln!(
+            o,
+            "\\begin{{center}}\n\\begin{{tabular}}{{lcc}}\nCas & ${}$ maximal calculé{unit} & \
+             ${}$ maximal du sujet{unit} \\\\\n\\hline",
+            name(col),
+            name(col)
+        );
+        for (scenario, run) in sim.scenarios.iter().zip(&runs) {
+            let (v, t) = run
+                .max_abs(col)
+                .ok_or_else(|| fail(scenario, format!("no column `{col}` in the run")))?;
+            let reference = sim
+                .reference
+                .get(scenario)
+                .map(|r| format!("${}$", french(*r)))
+                .unwrap_or_else(|| "--".to_string());
+            let _ = writeln!(
+                o,
+                "{} & ${}$ (à $t = {}$~s) & {} \\\\",
+                rich_text_or_escaped(
+                    &m.scenario_label(scenario)
+                        .unwrap_or_else(|| scenario.clone())
+                ),
+                french(v),
+                french(t),
+                reference
+            );
+        }
+        o.push_str("\\end{tabular}\n\\end{center}\n");
+    }
+    Ok(figure)
+}
+
+/// A value for the table of assumed values: plain when moderate, else a power of ten.
+fn french_sci(v: f64) -> String {
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let e = v.abs().log10().floor() as i32;
+    if (-2..=3).contains(&e) {
+        return format!("{v}").replace('.', "{,}");
+    }
+    let mant = v / 10f64.powi(e);
+    let mant = format!("{mant:.3}");
+    let mant = mant
+        .trim_end_matches('0')
+        .trim_end_matches('.')
+        .replace('.', "{,}");
+    format!("{mant} \\cdot 10^{{{e}}}")
+}
