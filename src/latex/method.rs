@@ -344,7 +344,7 @@ pub(super) fn shown_value(doc: &Doc, v: &Value) -> Value {
 }
 
 /// Writes the steps of a kinematic or kinetic derivation as the course shows them. Returns
-/// whether the last step displayed equals the result (so the result is not repeated).
+/// whether the result was boxed where it was derived (so it is not repeated).
 fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
     let m = doc.m;
     // The elements of a torsor result are boxed where they are derived (the torsor is then
@@ -413,10 +413,25 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
                     "{why} : le moment dynamique est la dérivée du moment cinétique dans ${}$ (cas particulier du cours) :",
                     frame(r)
                 );
-                let boxed = is_element(&delta, &next.value);
-                doc.show_keyed(DisplayRole::Step, &next.label, &lhs, &delta, &v, boxed);
-                last_is_result = i + 2 == n && delta == result_lhs;
+                // The last step that is the result itself is boxed as the result.
+                let is_result =
+                    i + 2 == n && delta == result_lhs && next.value.exprs() == d.value.exprs();
+                if is_result {
+                    let id = d.quantity.to_string();
+                    let hn = doc.under.map(|h| h.name.clone());
+                    let here = doc.here.clone();
+                    doc.results.push((id.clone(), hn.clone(), v.clone(), here));
+                    doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
+                    doc.remember(&delta, &v);
+                    last_is_result = true;
+                } else {
+                    let boxed = is_element(&delta, &next.value);
+                    doc.show_keyed(DisplayRole::Step, &next.label, &lhs, &delta, &v, boxed);
+                }
             }
+            // The derivative's own key too: a later projection cites it.
+            let dl = step_lhs(&s.kind);
+            doc.remember(&dl, &v);
             i += 2;
             continue;
         }
@@ -437,9 +452,8 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
             i += 1;
             continue;
         }
-        // The last step is the result itself: the result display shows it.
+        // The last step is the result itself: the result display (boxed) shows it.
         if i + 1 == n && lhs == result_lhs && d.value.exprs() == s.value.exprs() {
-            last_is_result = true;
             flush(doc, &mut cited);
             let _ = writeln!(doc.o, "{}", sentence(m, s));
             i += 1;
@@ -596,6 +610,13 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
         let v = shown_value(doc, &s.value);
         doc.cited(&step_lhs(&s.kind), &v).is_some()
     });
+    let last_is_result =
+        if !all_shown && (projected_moment_route(doc, d) || projected_set_route(doc, d)) {
+            false
+        } else {
+            position_route(doc, d);
+            steps(doc, d, lhs)
+        };
     // I_A(S) at a point other than G: Huygens, named before the result.
     if let QuantityKind::Inertia {
         point: a,
@@ -616,13 +637,6 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
             mass_of(m, sn)
         );
     }
-    let last_is_result =
-        if !all_shown && (projected_moment_route(doc, d) || projected_set_route(doc, d)) {
-            false
-        } else {
-            position_route(doc, d);
-            steps(doc, d, lhs)
-        };
     let id = d.quantity.to_string();
     let names = torsor_names(&d.quantity.kind);
     // Results under a hypothesis only once it has been stated (never before its question).
@@ -693,6 +707,10 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
                 doc.remember(lhs, &v);
                 continue;
             }
+        }
+        if h.is_none() && last_is_result {
+            // Already boxed where it was derived.
+            continue;
         }
         let hn = h.map(|h| h.name.clone());
         if names.is_none() || !matches!(v, Value::Torsor { .. }) {
