@@ -120,7 +120,26 @@ fn sentence(m: &Mechanism, s: &Step) -> String {
             });
             let i = format!("I_{{{}}}({})", point(a), mo.moving);
             let om = omega_of(&mo.moving, &mo.reference);
-            if t.starts_with("σ(G") {
+            let point_mass = m
+                .bodies
+                .iter()
+                .find(|b| b.name == mo.moving)
+                .filter(|b| b.inertia.is_none())
+                .map(|b| m.point_name(b.centre).to_string());
+            if let Some(p) = point_mass {
+                // σ(A) = AP ∧ m V(P): no inertia operator for a point mass.
+                format!(
+                    "${}$ est une masse ponctuelle : ${sigma} = \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+                    point(&p),
+                    point(a),
+                    point(&p),
+                    mass_of(m, &mo.moving),
+                    quantity(&Velocity {
+                        point: p.clone(),
+                        motion: mo.clone()
+                    })
+                )
+            } else if t.starts_with("σ(G") {
                 format!(
                     "${}$ est le centre d'inertie de ${}$ : ${sigma} = {i}\\cdot{om}$ :",
                     point(a),
@@ -433,6 +452,26 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
             let dl = step_lhs(&s.kind);
             doc.remember(&dl, &v);
             i += 2;
+            continue;
+        }
+        // A point mass: σ = AP ∧ m V(P) needs neither its Ω nor an inertia operator.
+        let point_mass = |sn: &str| m.bodies.iter().any(|b| b.name == sn && b.inertia.is_none());
+        let skip = match (&s.kind, d.steps.get(i + 1).map(|x| &x.kind)) {
+            (
+                StepKind::Quantity(QuantityKind::Omega(mo)),
+                Some(StepKind::Quantity(QuantityKind::Inertia { solid, .. })),
+            ) => point_mass(&mo.moving) && solid == &mo.moving,
+            (StepKind::Quantity(QuantityKind::Inertia { solid, .. }), _) => {
+                point_mass(solid)
+                    && matches!(
+                        d.steps.get(i + 1).map(|x| &x.kind),
+                        Some(StepKind::Quantity(QuantityKind::KineticMoment { .. }))
+                    )
+            }
+            _ => false,
+        };
+        if skip {
+            i += 1;
             continue;
         }
         let lhs = match &s.kind {

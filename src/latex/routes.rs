@@ -335,7 +335,20 @@ fn kinetic_projections(
         });
         let fixed = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
         let oml = omega_of(&mo.moving, &mo.reference);
-        let sentence = if fixed {
+        let sentence = if body.inertia.is_none() {
+            let p = m.point_name(body.centre).to_string();
+            format!(
+                "${}$ est une masse ponctuelle : ${sigma} = \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+                point(&p),
+                point(&a),
+                point(&p),
+                mass_of(m, &mo.moving),
+                quantity(&QuantityKind::Velocity {
+                    point: p.clone(),
+                    motion: mo.clone()
+                })
+            )
+        } else if fixed {
             format!(
                 "${}$ est un point de ${}$ fixe dans ${}$ : ${sigma} = I_{{{}}}({})\\cdot{oml}$ :",
                 point(&a),
