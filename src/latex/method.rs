@@ -5,7 +5,9 @@
 //! actions followed by one equality per theorem.
 
 use super::document::{DisplayRole, Doc};
-use super::routes::{position_route, projected_moment_route, projected_set_route};
+use super::routes::{
+    derived_step, position_route, position_sentence, projected_moment_route, projected_set_route,
+};
 use super::{basis_vector, frame, name, point, quantity};
 use crate::derivation::{Derivation, Step, StepKind, Value, derive};
 use crate::frame::FrameId;
@@ -566,19 +568,16 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
         return false;
     }
     let vq = format!("V({g},{}/{r}) in B{bn}", mo.moving);
-    let Ok(vd) = Quantity::parse(&vq)
-        .map_err(|e| e.to_string())
-        .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
-    else {
-        return false;
-    };
-    let vv = shown_value(doc, &vd.value);
-    let vk = QuantityKind::Velocity {
+    let vlhs = quantity(&QuantityKind::Velocity {
         point: g.clone(),
         motion: mo.clone(),
-    };
-    let vlhs = quantity(&vk);
-    if vv.exprs().iter().all(|e| e.is_zero()) {
+    });
+    // G fixed: one sentence says the resultant is zero.
+    if let Ok(vd) = Quantity::parse(&vq).map(|q| derive(m, &q))
+        && let Ok(vd) = vd
+        && vd.value.exprs().iter().all(|e| e.is_zero())
+    {
+        let vv = shown_value(doc, &vd.value);
         if doc.cited(&vlhs, &vv).is_none() {
             let _ = writeln!(
                 doc.o,
@@ -591,51 +590,19 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
         }
         return true;
     }
-    match doc.cited(&vlhs, &vv) {
-        Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${vlhs}$.\n");
-        }
-        None => {
-            let _ = writeln!(
-                doc.o,
-                "Dérivée dans ${}$ du vecteur position $\\overrightarrow{{{}{}}}$ (${}$ fixe dans ${}$) :",
-                frame(r),
-                point(&o),
-                point(&g),
-                point(&o),
-                frame(r)
-            );
-            doc.show_keyed(DisplayRole::Step, &vq, &vlhs, &vlhs, &vv, false);
-        }
-    }
-    if !dynamic {
+    if derived_step(doc, &vq, &vlhs, &position_sentence(&vlhs, &o, &g, r)).is_none() || !dynamic {
         return false;
     }
     let aq = format!("Gamma({g},{}/{r}) in B{bn}", mo.moving);
-    let Ok(ad) = Quantity::parse(&aq)
-        .map_err(|e| e.to_string())
-        .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
-    else {
-        return false;
-    };
-    let av = shown_value(doc, &ad.value);
     let alhs = quantity(&QuantityKind::Acceleration {
         point: g.clone(),
         motion: mo.clone(),
     });
-    match doc.cited(&alhs, &av) {
-        Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${alhs}$.\n");
-        }
-        None => {
-            let _ = writeln!(
-                doc.o,
-                "${alhs} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vlhs}\\right]_{{{}}}$ :",
-                frame(r)
-            );
-            doc.show_keyed(DisplayRole::Step, &aq, &alhs, &alhs, &av, false);
-        }
-    }
+    let sentence = format!(
+        "${alhs} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vlhs}\\right]_{{{}}}$ :",
+        frame(r)
+    );
+    derived_step(doc, &aq, &alhs, &sentence);
     false
 }
 

@@ -258,18 +258,13 @@ pub(super) fn position_route(doc: &mut Doc, d: &Derivation) {
     }
     let o = m.point_name(m.points.origin()).to_string();
     let rl = frame(&mo.reference);
-    let pos = format!("\\overrightarrow{{{}{}}}", point(&o), point(p));
     let vk = QuantityKind::Velocity {
         point: p.clone(),
         motion: mo.clone(),
     };
     let vl = quantity(&vk);
     if !accel {
-        let _ = writeln!(
-            doc.o,
-            "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{pos}\\right]_{{{rl}}}$ (${}$ fixe dans ${rl}$) :",
-            point(&o)
-        );
+        let _ = writeln!(doc.o, "{}", position_sentence(&vl, &o, p, &mo.reference));
         return;
     }
     // Γ: the velocity first (shown or cited), in the basis of the result.
@@ -282,31 +277,44 @@ pub(super) fn position_route(doc: &mut Doc, d: &Derivation) {
         mo.reference,
         m.frame_name(*basis)
     );
-    let Ok(vd) = Quantity::parse(&vq)
-        .map_err(|e| e.to_string())
-        .and_then(|q| derive(m, &q).map_err(|e| e.to_string()))
-    else {
+    if derived_step(doc, &vq, &vl, &position_sentence(&vl, &o, p, &mo.reference)).is_none() {
         return;
-    };
-    let vv = shown_value(doc, &vd.value);
-    match doc.cited(&vl, &vv) {
-        Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${vl}$.\n");
-        }
-        None => {
-            let _ = writeln!(
-                doc.o,
-                "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{pos}\\right]_{{{rl}}}$ (${}$ fixe dans ${rl}$) :",
-                point(&o)
-            );
-            doc.show_keyed(DisplayRole::Step, &vq, &vl, &vl, &vv, false);
-        }
     }
     let _ = writeln!(
         doc.o,
         "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vl}\\right]_{{{rl}}}$ :",
         quantity(&d.quantity.kind)
     );
+}
+
+/// « V(P,S/R) = [d/dt O0P]_R (O0 fixe dans R) : », the velocity of a point fixed in its solid.
+pub(super) fn position_sentence(vl: &str, o: &str, p: &str, r: &str) -> String {
+    format!(
+        "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\overrightarrow{{{}{}}}\\right]_{{{}}}$ (${}$ fixe dans ${}$) :",
+        point(o),
+        point(p),
+        frame(r),
+        point(o),
+        frame(r)
+    )
+}
+
+/// A quantity derived by the engine (`V(G2,2/0) in B2`) shown with its sentence, or cited
+/// where it was shown already; its value as shown, or None when it does not derive.
+pub(super) fn derived_step(doc: &mut Doc, text: &str, lhs: &str, sentence: &str) -> Option<Value> {
+    let q = Quantity::parse(text).ok()?;
+    let d = derive(doc.m, &q).ok()?;
+    let v = shown_value(doc, &d.value);
+    match doc.cited(lhs, &v) {
+        Some(place) => {
+            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+        }
+        None => {
+            let _ = writeln!(doc.o, "{sentence}");
+            doc.show_keyed(DisplayRole::Step, text, lhs, lhs, &v, false);
+        }
+    }
+    Some(v)
 }
 
 /// σ(A,S/R)·u for each solid of a set, each shown with the formula that gives it; returns
