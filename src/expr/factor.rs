@@ -1,0 +1,162 @@
+//! Factors between expressions: division by a number, the constant or parameter factor
+//! between two equations (`verify` accepts an equation up to such a factor).
+
+use super::*;
+
+impl Expr {
+    /// `self / c` when `c` is a nonzero rational number, none otherwise (the canonical form is
+    /// polynomial: it never divides by a variable).
+    pub fn div_constant(&self, c: &Expr) -> Option<Expr> {
+        let r = c.as_rational()?;
+        if r.is_zero() {
+            return None;
+        }
+        Some(self * &self.reg.constant(r.inv()))
+    }
+
+    /// The nonzero number k with `self = k · other`, if there is one (two equations `e = 0`
+    /// that differ by such a factor are the same equation).
+    pub fn constant_multiple_of(&self, other: &Expr) -> Option<Expr> {
+        if other.p.nterms() == 0 {
+            return None;
+        }
+        let (c, e) = (&other.p.coefficients[0], other.p.exponents(0));
+        let t = (0..self.p.nterms()).find(|&t| self.p.exponents(t) == e)?;
+        let k = self.reg.constant(&self.p.coefficients[t] / c);
+        (&k * other == *self).then_some(k)
+    }
+
+    /// The nonzero factor k = numerator / denominator, made of parameters only, with
+    /// `self = k · other`; none if there is no such factor (two equations `e = 0` that differ
+    /// by such a factor are the same equation wherever it is nonzero).
+    ///
+    /// « Parameters » are the spec's parameters and the cos and sin of its constant angle
+    /// parameters: never a coordinate, a rate or an unknown, so an equation multiplied by q̇
+    /// or cos q is another equation. The factor is found exactly: with μ the kinematic part
+    /// (coordinates, rates, unknowns) of a term of `other`, n and d the coefficients of μ in
+    /// `self` and `other` (polynomials in the parameters, d ≠ 0), `self = (n/d) · other` iff
+    /// d · self = n · other, a product of canonical forms compared structurally. n/d is then
+    /// reduced by its polynomial gcd, the denominator's first coefficient made 1.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into(), "l".into(), "g".into()],
+    ///     &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let derived = reg.parse("m*l^2*ddot(q) + m*g*l*sin(q)").unwrap();
+    /// let given = reg.parse("l*ddot(q) + g*sin(q)").unwrap();
+    /// let (n, d) = derived.parameter_ratio(&given).unwrap();
+    /// assert_eq!((n, d), (reg.parse("m*l").unwrap(), reg.one()));
+    /// // The other way round, the factor is 1/(m l).
+    /// let (n, d) = given.parameter_ratio(&derived).unwrap();
+    /// assert_eq!((n, d), (reg.one(), reg.parse("m*l").unwrap()));
+    /// // Multiplied by a rate or by cos q, it is another equation.
+    /// assert!(derived.parameter_ratio(&(&given * &reg.parse("dot(q)").unwrap())).is_none());
+    /// assert!(derived.parameter_ratio(&(&given * &reg.parse("cos(q)").unwrap())).is_none());
+    /// ```
+    pub fn parameter_ratio(&self, other: &Expr) -> Option<(Expr, Expr)> {
+        let theirs = other.by_kinematic_monomial();
+        let (mu, d) = theirs.first()?;
+        let n = self
+            .by_kinematic_monomial()
+            .into_iter()
+            .find(|(m, _)| m == mu)?
+            .1;
+        if d * self != &n * other {
+            return None;
+        }
+        Some(lowest_terms(n, d.clone()))
+    }
+
+    /// For a report when [`Expr::parameter_ratio`] finds none: the factor k = numerator /
+    /// denominator of parameters only for which the most kinematic monomials of `self` and
+    /// `k · other` have equal coefficients (a wrong sign in one term leaves the others
+    /// agreeing). None when they share no kinematic monomial.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into(), "l".into(), "g".into()],
+    ///     &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let derived = reg.parse("m*l^2*ddot(q) + m*l*dot(q)^2 + m*g*l*sin(q)").unwrap();
+    /// let wrong_sign = reg.parse("l*ddot(q) + dot(q)^2 - g*sin(q)").unwrap();
+    /// assert!(derived.parameter_ratio(&wrong_sign).is_none());
+    /// let (n, d) = derived.closest_parameter_ratio(&wrong_sign).unwrap();
+    /// assert_eq!((n, d), (reg.parse("m*l").unwrap(), reg.one()));
+    /// ```
+    pub fn closest_parameter_ratio(&self, other: &Expr) -> Option<(Expr, Expr)> {
+        /// Candidates tried (each is compared with every shared monomial).
+        const CANDIDATES: usize = 32;
+        let mine = self.by_kinematic_monomial();
+        let shared: Vec<(Expr, Expr)> = other
+            .by_kinematic_monomial()
+            .into_iter()
+            .filter_map(|(mu, d)| Some((mine.iter().find(|(m, _)| *m == mu)?.1.clone(), d)))
+            .collect();
+        // How many monomials n/d makes agree: n · d' = n' · d.
+        let agree = |n: &Expr, d: &Expr| shared.iter().filter(|(n2, d2)| n * d2 == n2 * d).count();
+        let mut best: Option<(usize, &Expr, &Expr)> = None;
+        for (n, d) in shared.iter().take(CANDIDATES) {
+            let k = agree(n, d);
+            if best.is_none_or(|(b, _, _)| k > b) {
+                best = Some((k, n, d));
+            }
+        }
+        best.map(|(_, n, d)| lowest_terms(n.clone(), d.clone()))
+    }
+
+    /// The terms grouped by their kinematic part μ (coordinates, rates, unknowns: every
+    /// variable but [`Registry::is_factor_variable`]), each with its coefficient, a polynomial
+    /// in the parameters; in the order of the canonical form's terms.
+    fn by_kinematic_monomial(&self) -> Vec<(Vec<u8>, Expr)> {
+        let reg = &self.reg;
+        let param: Vec<bool> = (0..reg.nvars())
+            .map(|i| reg.is_factor_variable(i))
+            .collect();
+        // (μ, terms of its coefficient: rational and exponents of the parameters).
+        type Terms = Vec<(Rational, Vec<u8>)>;
+        let mut groups: Vec<(Vec<u8>, Terms)> = Vec::new();
+        for (c, e) in self.terms() {
+            let (mu, parameters): (Vec<u8>, Vec<u8>) = e
+                .iter()
+                .zip(&param)
+                .map(|(&k, &p)| if p { (0, k) } else { (k, 0) })
+                .unzip();
+            match groups.iter_mut().find(|(m, _)| *m == mu) {
+                Some((_, terms)) => terms.push((c.clone(), parameters)),
+                None => groups.push((mu, vec![(c.clone(), parameters)])),
+            }
+        }
+        groups
+            .into_iter()
+            .map(|(mu, terms)| (mu, Expr::from_terms(reg, terms)))
+            .collect()
+    }
+
+    /// Whether the expression is a nonzero rational number.
+    pub fn is_nonzero_constant(&self) -> bool {
+        self.as_rational().is_some_and(|r| !r.is_zero())
+    }
+
+    /// The constant value if the expression is a rational number.
+    pub(crate) fn as_rational(&self) -> Option<Rational> {
+        if self.p.is_constant() {
+            Some(self.p.get_constant())
+        } else {
+            None
+        }
+    }
+}
+
+/// n/d in lowest terms (divided by their polynomial gcd), the denominator's first coefficient
+/// made 1.
+fn lowest_terms(n: Expr, d: Expr) -> (Expr, Expr) {
+    let g = n.p.gcd(&d.p);
+    let (np, dp) = match (n.p.try_div(&g), d.p.try_div(&g)) {
+        (Some(a), Some(b)) => (a, b),
+        _ => (n.p.clone(), d.p.clone()),
+    };
+    let (n, d) = (n.with(np), d.with(dp));
+    let unit = n.reg.constant(d.p.coefficients[0].inv());
+    (&n * &unit, &d * &unit)
+}
