@@ -1,0 +1,626 @@
+//! The variables of one mechanism (parameters, unknowns, coordinates and their rates) and the
+//! guard that keeps symbolica on one thread.
+
+use super::*;
+
+/// The variables of one mechanism: its parameters and time coordinates.
+///
+/// ```
+/// use torseur::expr::Registry;
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::new(
+///     &["m".to_string(), "L".to_string()],
+///     &[("theta".to_string(), CoordinateKind::Angle)],
+/// ).unwrap();
+/// let e = reg.parse("m*L^2*(sin(theta)^2 + cos(theta)^2)").unwrap();
+/// assert_eq!(e, reg.parse("L^2*m").unwrap());
+/// ```
+#[derive(Debug)]
+pub struct Registry {
+    /// Ownership of symbolica for this thread while the registry lives (also makes the
+    /// registry, and every expression, `!Send` and `!Sync`).
+    _guard: ThreadGuard,
+    pub(super) vars: Arc<Vec<PolyVariable>>,
+    pub(super) roles: Vec<VarRole>,
+    pub(super) role_index: HashMap<VarRole, usize>,
+    /// Parameters, then unknowns.
+    pub(super) parameters: Vec<String>,
+    pub(super) n_params: usize,
+    pub(super) param_var: HashMap<String, usize>,
+    /// The time coordinates, then the constant angle parameters.
+    pub(super) coords: Vec<CoordInfo>,
+    /// Number of time coordinates (the first entries of `coords`).
+    pub(super) n_coords: usize,
+    pub(super) coord_by_name: HashMap<String, CoordId>,
+}
+
+/// Symbols used for the rate functions dot(q), ddot(q), dddot(q).
+pub(super) fn rate_symbol(order: u8) -> Symbol {
+    match order {
+        1 => symbolica::symbol!("dot"),
+        2 => symbolica::symbol!("ddot"),
+        _ => symbolica::symbol!("dddot"),
+    }
+}
+
+/// How long a thread waits for another to finish with symbolica before getting an error.
+const THREAD_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
+
+/// The thread that uses symbolica in this process, if any.
+static OWNER: std::sync::Mutex<Option<std::thread::ThreadId>> = std::sync::Mutex::new(None);
+
+/// Releases the ownership when the owning thread exits.
+struct OwnerMark;
+
+impl Drop for OwnerMark {
+    fn drop(&mut self) {
+        let me = std::thread::current().id();
+        let mut owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
+        if *owner == Some(me) {
+            *owner = None;
+        }
+    }
+}
+
+thread_local! {
+    static MARK: OwnerMark = const { OwnerMark };
+}
+
+/// One thread at a time may use symbolica: its restricted mode aborts the process when a
+/// second thread uses it while the first is alive (threads one after another are fine). The
+/// first thread that creates a registry owns symbolica until it exits; another thread then
+/// gets a clear error instead of an abort. Registries and expressions are `!Send` and `!Sync`,
+/// so they never migrate. With `SYMBOLICA_LICENSE` set the limit does not apply.
+#[derive(Debug)]
+struct ThreadGuard {
+    pub(super) _not_send: std::marker::PhantomData<*const ()>,
+}
+
+impl ThreadGuard {
+    pub(super) fn acquire() -> Result<ThreadGuard, ExprError> {
+        let guard = ThreadGuard {
+            _not_send: std::marker::PhantomData,
+        };
+        if std::env::var_os("SYMBOLICA_LICENSE").is_some() {
+            return Ok(guard);
+        }
+        let me = std::thread::current().id();
+        // A thread that has just finished releases symbolica in its exit destructors: wait a
+        // little for that before refusing (serialised hand-over between threads).
+        let start = std::time::Instant::now();
+        let mut owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
+        while owner.is_some_and(|id| id != me) && start.elapsed() < THREAD_WAIT {
+            drop(owner);
+            std::thread::sleep(std::time::Duration::from_millis(1));
+            owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
+        }
+        match *owner {
+            Some(id) if id == me => {}
+            Some(id) => {
+                return Err(ExprError::Thread(format!(
+                    "thread {me:?} cannot use torseur while thread {id:?} is using it: \
+                     unlicensed symbolica allows one thread at a time (use torseur from one \
+                     thread, let the other thread finish first, or set SYMBOLICA_LICENSE)"
+                )));
+            }
+            None => {
+                *owner = Some(me);
+                MARK.with(|_| {});
+            }
+        }
+        Ok(guard)
+    }
+}
+
+/// A name usable in expressions (parameters, coordinates): an ASCII letter, then letters,
+/// digits or `_`, at most 32 characters. (`21` would read as a number.)
+///
+/// ```
+/// assert!(torseur::expr::check_identifier("theta1").is_ok());
+/// assert!(torseur::expr::check_identifier("21").is_err());
+/// assert!(torseur::expr::check_identifier("m-1").is_err());
+/// ```
+pub fn check_identifier(n: &str) -> Result<(), String> {
+    let mut chars = n.chars();
+    let first_ok = chars.next().is_some_and(|c| c.is_ascii_alphabetic());
+    if !first_ok || n.len() > 32 || !n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Err(format!(
+            "`{n}` is not a valid name for an expression: a letter, then letters, digits or `_` \
+             (at most 32 characters)"
+        ));
+    }
+    Ok(())
+}
+
+/// Longest expression text the parser accepts. A canonical form prints to a text that parses
+/// back to it whenever that text is within this length.
+pub const MAX_INPUT_LEN: usize = 20_000;
+
+/// Largest degree in one variable an expression can have (exponents are stored in a byte).
+/// Parsing refuses anything beyond it, so every expression's text parses back.
+pub const MAX_INPUT_DEGREE: u32 = 255;
+
+/// Largest degree in one variable of the expressions a spec gives (positions, masses, inertia
+/// entries, rates): mechanics multiplies them a few times, staying within [`MAX_INPUT_DEGREE`].
+pub const MAX_SPEC_DEGREE: u32 = 32;
+
+/// Names reserved by the expression syntax.
+pub const RESERVED: &[&str] = &["sin", "cos", "dot", "ddot", "dddot", "pi", "t"];
+
+impl Registry {
+    /// Declares parameters and coordinates (none with an imposed rate).
+    pub fn new(
+        parameters: &[String],
+        coords: &[(String, CoordinateKind)],
+    ) -> Result<Rc<Registry>, ExprError> {
+        let with_rates: Vec<(String, CoordinateKind, Option<String>)> =
+            coords.iter().map(|(n, k)| (n.clone(), *k, None)).collect();
+        Registry::with_rates(parameters, &with_rates)
+    }
+
+    /// Declares parameters and coordinates; a coordinate may have an imposed constant rate,
+    /// an expression in the parameters (`omega`), in which case q̇ is that expression and q̈ = 0.
+    pub fn with_rates(
+        parameters: &[String],
+        coords: &[(String, CoordinateKind, Option<String>)],
+    ) -> Result<Rc<Registry>, ExprError> {
+        Registry::with_unknowns(parameters, coords, &[], &[], &[])
+    }
+
+    /// [`Registry::with_rates`], plus the unknowns of the PFD (link components, a motor
+    /// torque: scalars that enter linearly and are solved for), the angles that also enter
+    /// as themselves (a torsion spring's −k(θ − θ0), a disc's centre at R θ x1), not only
+    /// through sin and cos, and the parameters that are constant angles (an incline α: it
+    /// gets cos α and sin α variables, with sin²α reduced like a coordinate's, and a zero
+    /// rate; α itself stays the parameter's variable).
+    pub fn with_unknowns(
+        parameters: &[String],
+        coords: &[(String, CoordinateKind, Option<String>)],
+        unknowns: &[String],
+        raw_angles: &[String],
+        angle_parameters: &[String],
+    ) -> Result<Rc<Registry>, ExprError> {
+        // Before any symbolica call: a second thread using symbolica concurrently would abort
+        // the process in its restricted mode.
+        let guard = ThreadGuard::acquire()?;
+        let mut vars: Vec<PolyVariable> = Vec::new();
+        let mut roles = Vec::new();
+        let mut seen: HashMap<String, ()> = HashMap::new();
+        let mut check = |n: &str| -> Result<(), ExprError> {
+            check_identifier(n).map_err(ExprError::Declaration)?;
+            if RESERVED.contains(&n) {
+                return Err(ExprError::Declaration(format!(
+                    "`{n}` is reserved by the expression syntax"
+                )));
+            }
+            if seen.insert(n.to_string(), ()).is_some() {
+                return Err(ExprError::Declaration(format!("`{n}` is declared twice")));
+            }
+            Ok(())
+        };
+        let mut infos = Vec::new();
+        for (i, (name, kind, rate)) in coords.iter().enumerate() {
+            check(name)?;
+            let id = CoordId(i);
+            let q = Atom::var(symbolica::symbol!(name.as_str()));
+            let mut info = CoordInfo {
+                name: name.clone(),
+                kind: *kind,
+                value: None,
+                trig: None,
+                rates: None,
+                imposed_rate: None,
+                constant: false,
+            };
+            match kind {
+                CoordinateKind::Angle => {
+                    // sin before cos: in lex order sin² leads sin² + cos² − 1.
+                    // A function variable holds the whole call, sin(q), not its argument.
+                    vars.push(PolyVariable::Function(
+                        Symbol::SIN,
+                        symbolica::function!(Symbol::SIN, q.clone()),
+                    ));
+                    roles.push(VarRole::Sin(id));
+                    vars.push(PolyVariable::Function(
+                        Symbol::COS,
+                        symbolica::function!(Symbol::COS, q.clone()),
+                    ));
+                    roles.push(VarRole::Cos(id));
+                    info.trig = Some((vars.len() - 1, vars.len() - 2));
+                    if raw_angles.contains(name) {
+                        vars.push(PolyVariable::Symbol(symbolica::symbol!(name.as_str())));
+                        roles.push(VarRole::Value(id));
+                        info.value = Some(vars.len() - 1);
+                    }
+                }
+                CoordinateKind::Length => {
+                    vars.push(PolyVariable::Symbol(symbolica::symbol!(name.as_str())));
+                    roles.push(VarRole::Value(id));
+                    info.value = Some(vars.len() - 1);
+                }
+            }
+            if rate.is_none() {
+                let mut r = [0; 3];
+                for (k, slot) in r.iter_mut().enumerate() {
+                    let order = k as u8 + 1;
+                    vars.push(PolyVariable::Function(
+                        rate_symbol(order),
+                        symbolica::function!(rate_symbol(order), q.clone()),
+                    ));
+                    roles.push(VarRole::Rate(id, order));
+                    *slot = vars.len() - 1;
+                }
+                info.rates = Some(r);
+            }
+            infos.push(info);
+        }
+        let n_coords = infos.len();
+        for (k, name) in angle_parameters.iter().enumerate() {
+            if !parameters.contains(name) {
+                return Err(ExprError::Declaration(format!(
+                    "the angle parameter `{name}` is not a parameter"
+                )));
+            }
+            if angle_parameters[..k].contains(name) {
+                return Err(ExprError::Declaration(format!(
+                    "`{name}` is declared twice"
+                )));
+            }
+            let id = CoordId(infos.len());
+            let a = Atom::var(symbolica::symbol!(name.as_str()));
+            vars.push(PolyVariable::Function(
+                Symbol::SIN,
+                symbolica::function!(Symbol::SIN, a.clone()),
+            ));
+            roles.push(VarRole::Sin(id));
+            vars.push(PolyVariable::Function(
+                Symbol::COS,
+                symbolica::function!(Symbol::COS, a),
+            ));
+            roles.push(VarRole::Cos(id));
+            infos.push(CoordInfo {
+                name: name.clone(),
+                kind: CoordinateKind::Angle,
+                value: None,
+                trig: Some((vars.len() - 1, vars.len() - 2)),
+                rates: None,
+                imposed_rate: None,
+                constant: true,
+            });
+        }
+        let mut param_var = HashMap::new();
+        let n_params = parameters.len();
+        let parameters: Vec<String> = parameters.iter().chain(unknowns).cloned().collect();
+        for (i, p) in parameters.iter().enumerate() {
+            check(p)?;
+            vars.push(PolyVariable::Symbol(symbolica::symbol!(p.as_str())));
+            roles.push(VarRole::Parameter(i));
+            param_var.insert(p.clone(), vars.len() - 1);
+        }
+        // Constant angle parameters are found by `angle`, not by `coord`.
+        let coord_by_name = infos
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (c.name.clone(), CoordId(i)))
+            .collect();
+        let role_index = roles.iter().enumerate().map(|(i, r)| (*r, i)).collect();
+        let mut reg = Registry {
+            _guard: guard,
+            vars: Arc::new(vars),
+            role_index,
+            roles,
+            parameters,
+            n_params,
+            param_var,
+            coords: infos,
+            n_coords,
+            coord_by_name,
+        };
+        // Imposed rates are expressions in the parameters: parse them with a registry that
+        // shares the same variable list.
+        if coords.iter().any(|c| c.2.is_some()) {
+            let base = Rc::new(Registry {
+                _guard: ThreadGuard::acquire()?,
+                vars: reg.vars.clone(),
+                roles: reg.roles.clone(),
+                role_index: reg.role_index.clone(),
+                parameters: reg.parameters.clone(),
+                n_params: reg.n_params,
+                param_var: reg.param_var.clone(),
+                coords: reg.coords.clone(),
+                n_coords: reg.n_coords,
+                coord_by_name: reg.coord_by_name.clone(),
+            });
+            for (i, (_, _, rate)) in coords.iter().enumerate() {
+                if let Some(r) = rate {
+                    let e = base.parse(r)?;
+                    if !e.is_time_independent() {
+                        return Err(ExprError::Unsupported {
+                            input: r.clone(),
+                            reason: "an imposed rate must be a constant (parameters only)"
+                                .to_string(),
+                        });
+                    }
+                    reg.coords[i].imposed_rate = Some(e.p);
+                }
+            }
+        }
+        Ok(Rc::new(reg))
+    }
+
+    /// The parameters, in declaration order.
+    pub fn parameters(&self) -> &[String] {
+        &self.parameters[..self.n_params]
+    }
+
+    /// The unknowns of the PFD, in declaration order.
+    pub fn unknowns(&self) -> &[String] {
+        &self.parameters[self.n_params..]
+    }
+
+    /// Name of the parameter or unknown of a [`VarRole::Parameter`] index.
+    pub fn scalar_name(&self, i: usize) -> &str {
+        &self.parameters[i]
+    }
+
+    /// Whether variable `i` may enter a factor between two equations
+    /// ([`Expr::parameter_ratio`]): a parameter, or the cos or sin of a constant angle
+    /// parameter; not a coordinate, a rate or an unknown.
+    pub fn is_factor_variable(&self, i: usize) -> bool {
+        match self.roles[i] {
+            VarRole::Parameter(k) => !self.is_unknown(k),
+            VarRole::Cos(q) | VarRole::Sin(q) => self.coords[q.0].constant,
+            VarRole::Value(_) | VarRole::Rate(..) => false,
+        }
+    }
+
+    /// Whether a [`VarRole::Parameter`] index is an unknown of the PFD.
+    pub fn is_unknown(&self, i: usize) -> bool {
+        i >= self.n_params
+    }
+
+    /// The time coordinates, in declaration order (not the constant angle parameters).
+    pub fn coordinates(&self) -> &[CoordInfo] {
+        &self.coords[..self.n_coords]
+    }
+
+    /// Time coordinate by name (not a constant angle parameter: it has no rate, no equation
+    /// of motion, no value in a sample's coordinates).
+    pub fn coord(&self, name: &str) -> Option<CoordId> {
+        self.coord_by_name
+            .get(name)
+            .copied()
+            .filter(|q| q.0 < self.n_coords)
+    }
+
+    /// An angle by name: an angle coordinate or a constant angle parameter (what sin, cos and
+    /// a rotation take).
+    pub fn angle(&self, name: &str) -> Option<CoordId> {
+        self.coord_by_name
+            .get(name)
+            .copied()
+            .filter(|q| self.coords[q.0].kind == CoordinateKind::Angle)
+    }
+
+    /// Coordinate (or constant angle parameter) information.
+    pub fn coord_info(&self, id: CoordId) -> &CoordInfo {
+        &self.coords[id.0]
+    }
+
+    /// Number of polynomial variables.
+    pub fn nvars(&self) -> usize {
+        self.vars.len()
+    }
+
+    /// The variable standing for `role`, if the registry has one.
+    pub fn index_of(&self, role: VarRole) -> Option<usize> {
+        self.role_index.get(&role).copied()
+    }
+
+    /// What variable `i` stands for.
+    pub fn role(&self, i: usize) -> VarRole {
+        self.roles[i]
+    }
+
+    pub(super) fn poly_zero(&self) -> Poly {
+        Poly::new(&Q, None, self.vars.clone())
+    }
+
+    pub(super) fn wrap(self: &Rc<Self>, p: Poly) -> Expr {
+        Expr {
+            p,
+            reg: self.clone(),
+        }
+    }
+
+    /// The polynomial variable `i` as an expression (see [`Registry::role`]).
+    pub fn variable(self: &Rc<Self>, i: usize) -> Expr {
+        self.var(i)
+    }
+
+    pub(super) fn var(self: &Rc<Self>, i: usize) -> Expr {
+        let mut e = vec![0u8; self.vars.len()];
+        e[i] = 1;
+        let p = self.poly_zero().monomial(Rational::one(), e);
+        self.wrap(p)
+    }
+
+    /// 0.
+    pub fn zero(self: &Rc<Self>) -> Expr {
+        self.wrap(self.poly_zero())
+    }
+
+    /// 1.
+    pub fn one(self: &Rc<Self>) -> Expr {
+        self.integer(1)
+    }
+
+    /// An integer constant.
+    pub fn integer(self: &Rc<Self>, n: i64) -> Expr {
+        self.rational(n, 1)
+    }
+
+    /// The rational constant n/d (d ≠ 0).
+    pub fn rational(self: &Rc<Self>, n: i64, d: i64) -> Expr {
+        let r = Rational::new(n, d);
+        self.constant(r)
+    }
+
+    pub(crate) fn constant(self: &Rc<Self>, r: Rational) -> Expr {
+        let p = self.poly_zero().constant(r);
+        self.wrap(p)
+    }
+
+    /// A parameter, by name.
+    pub fn param(self: &Rc<Self>, name: &str) -> Option<Expr> {
+        self.param_var.get(name).map(|&i| self.var(i))
+    }
+
+    /// cos q (for a length coordinate, which has none, this is 1: never used so).
+    pub fn cos(self: &Rc<Self>, q: CoordId) -> Expr {
+        match self.coords[q.0].trig {
+            Some((c, _)) => self.var(c),
+            None => self.one(),
+        }
+    }
+
+    /// sin q (0 for a length coordinate).
+    pub fn sin(self: &Rc<Self>, q: CoordId) -> Expr {
+        match self.coords[q.0].trig {
+            Some((_, s)) => self.var(s),
+            None => self.zero(),
+        }
+    }
+
+    /// q itself: a length coordinate, or an angle written as itself somewhere in the spec
+    /// (None for an angle that enters only by cos and sin).
+    pub fn value(self: &Rc<Self>, q: CoordId) -> Option<Expr> {
+        self.coords[q.0].value.map(|i| self.var(i))
+    }
+
+    /// q̇.
+    pub fn dot(self: &Rc<Self>, q: CoordId) -> Expr {
+        self.rate(q, 1)
+    }
+
+    /// q̈.
+    pub fn ddot(self: &Rc<Self>, q: CoordId) -> Expr {
+        self.rate(q, 2)
+    }
+
+    /// Derivative of order 1 to 3 of q.
+    pub fn rate(self: &Rc<Self>, q: CoordId, order: u8) -> Expr {
+        let c = &self.coords[q.0];
+        match (&c.rates, &c.imposed_rate) {
+            (Some(r), _) => self.var(r[(order.clamp(1, 3) - 1) as usize]),
+            (None, Some(w)) if order == 1 => self.wrap(w.clone()),
+            _ => self.zero(),
+        }
+    }
+
+    /// Compiles expressions of this registry into one fast evaluator (symbolica's optimised
+    /// instruction list: Horner schemes and common subexpressions). Its input is the value of
+    /// every variable, as [`Expr::eval`] takes it.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let e = reg.parse("m*cos(q)*dot(q)^2 + 1/2*m*ddot(q)").unwrap();
+    /// let mut c = reg.compile(&[&e]).unwrap();
+    /// let point: Vec<f64> = (0..reg.nvars()).map(|i| 0.3 + i as f64).collect();
+    /// let mut out = [0.0];
+    /// c.evaluate(&point, &mut out);
+    /// assert!((out[0] - e.eval(&point)).abs() < 1e-12);
+    /// ```
+    pub fn compile(&self, exprs: &[&Expr]) -> Result<Compiled, ExprError> {
+        self.compile_with(exprs, COMPILE_HORNER, COMPILE_CPE)
+    }
+
+    /// [`Registry::compile`] with explicit optimisation effort (Horner scheme iterations,
+    /// common-pair elimination iterations). One core: symbolica's restricted mode allows no
+    /// more.
+    pub fn compile_with(
+        &self,
+        exprs: &[&Expr],
+        horner: usize,
+        cpe: Option<usize>,
+    ) -> Result<Compiled, ExprError> {
+        // The factored presentation form (groups by kinematic monomial, common factors out)
+        // is a better starting point for the optimiser than the expanded polynomial.
+        let atoms: Vec<Atom> = exprs
+            .iter()
+            .map(|e| {
+                let text = e.presentation().to_string();
+                symbolica::try_parse!(&text).unwrap_or_else(|_| e.to_atom())
+            })
+            .collect();
+        let params: Vec<Atom> = self.vars.iter().map(|v| v.to_atom()).collect();
+        let ev = Atom::evaluator_multiple(&atoms, &params)
+            .cores(1)
+            .horner_iterations(horner)
+            .cpe_iterations(cpe)
+            .build()
+            .map_err(|e| ExprError::Declaration(format!("cannot compile: {e:?}")))?
+            .map_coeff(&|c| c.re.to_f64());
+        Ok(Compiled {
+            ev,
+            outputs: exprs.len(),
+        })
+    }
+
+    /// Parses an expression of the spec syntax (see DESIGN.md) into canonical form.
+    pub fn parse(self: &Rc<Self>, s: &str) -> Result<Expr, ExprError> {
+        parse::parse_scalar(self, s)
+    }
+
+    /// [`Registry::parse`], where `names` gives the value of the names that are neither
+    /// parameters, unknowns nor coordinates (a quantity written inside an equation, replaced by
+    /// a placeholder name); any other name is still an [`ExprError::UnknownName`].
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["m".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let w = reg.parse("m*dot(q)").unwrap();
+    /// let e = reg.parse_with("2*W - m*dot(q)", &|n| (n == "W").then(|| w.clone())).unwrap();
+    /// assert_eq!(e, w);
+    /// assert!(reg.parse_with("2*U", &|n| (n == "W").then(|| w.clone())).is_err());
+    /// ```
+    pub fn parse_with(
+        self: &Rc<Self>,
+        s: &str,
+        names: &dyn Fn(&str) -> Option<Expr>,
+    ) -> Result<Expr, ExprError> {
+        parse::parse_scalar_with(self, s, names)
+    }
+
+    /// Parses an angle that is a sum of angles with integer coefficients and a multiple of
+    /// π/2 (`pi/2 - q1`, `theta - alpha`, `2*q`): its terms, offset and exact cos and sin,
+    /// by the angle-addition formulas. What a frame's rotation takes (the spec then allows one
+    /// time coordinate in it).
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&[], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let a = reg.parse_angle("pi/2 - q").unwrap();
+    /// assert_eq!(a.quarter_turns, 1);
+    /// assert_eq!(a.cos, reg.parse("sin(q)").unwrap());
+    /// assert_eq!(a.sin, reg.parse("cos(q)").unwrap());
+    /// ```
+    pub fn parse_angle(self: &Rc<Self>, s: &str) -> Result<LinearAngle, ExprError> {
+        parse::parse_angle(self, s)
+    }
+
+    /// Parses a vector expression `d1*z0 + L1*y1`, where `basis_vector(name)` recognises the
+    /// basis vector names (returning a basis key and an axis index). Returns, per basis key,
+    /// the three components.
+    pub fn parse_vector<K: Ord + Copy>(
+        self: &Rc<Self>,
+        s: &str,
+        basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
+    ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
+        parse::parse_vector(self, s, basis_vector)
+    }
+}
