@@ -8,6 +8,7 @@
 
 mod document;
 mod figures;
+mod hypotheses;
 mod method;
 mod routes;
 mod simulation;

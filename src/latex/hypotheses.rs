@@ -1,0 +1,145 @@
+//! A hypothesis in the answer key, stated once: its text, the zeros its symmetries give and
+//! the particular inertia matrices; a later hypothesis with the same symmetries refers to it.
+
+use super::document::{DisplayRole, Doc};
+use super::{basis_vector, escape_text, name, point, rich_text_or_escaped};
+use crate::derivation::Value;
+use crate::inertia::Symmetry;
+use crate::mechanism::{Hypothesis, Mechanism};
+use crate::spec::wire::HypothesisSpec;
+use std::fmt::Write;
+
+fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) -> String {
+    let axes = ['x', 'y', 'z'];
+    match s {
+        Symmetry::Plane(n) => {
+            let others: Vec<String> = (0..3)
+                .filter(|&k| k != n.index())
+                .map(|k| basis_vector(axes[k], basis_frame))
+                .collect();
+            format!(
+                "le plan $({}, {}, {})$ est un plan de symétrie",
+                point(centre),
+                others[0],
+                others[1]
+            )
+        }
+        Symmetry::Revolution(a) => {
+            let _ = m;
+            format!(
+                "l'axe $({}, {})$ est un axe de révolution",
+                point(centre),
+                basis_vector(axes[a.index()], basis_frame)
+            )
+        }
+    }
+}
+
+/// A hypothesis, stated once: its text, the zeros its symmetries give (each justified by
+/// its plane or axis) and the particular inertia matrices; a later hypothesis with the same
+/// symmetries refers to the first and adds only what is new (constant rates).
+pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec) {
+    let m = d.m;
+    if d.stated.iter().any(|(n, _, _)| n == &h.name) {
+        return;
+    }
+    let _ = writeln!(
+        d.o,
+        "\\paragraph{{Hypothèse {}.}} {}\n",
+        escape_text(&h.name),
+        h.text
+            .as_deref()
+            .map(rich_text_or_escaped)
+            .unwrap_or_default()
+    );
+    let same = d
+        .stated
+        .iter()
+        .find(|(_, solids, _)| !solids.is_empty() && *solids == hs.symmetric_solids)
+        .map(|(n, _, e)| (n.clone(), e.clone()));
+    let old_effects: Vec<String>;
+    if let Some((other, effects)) = &same {
+        let _ = writeln!(
+            d.o,
+            "Les symétries sont celles de l'hypothèse {} : mêmes matrices d'inertie.\n",
+            escape_text(other)
+        );
+        old_effects = effects.clone();
+    } else {
+        for sname in &hs.symmetric_solids {
+            let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
+                continue;
+            };
+            let Some(i) = &b.inertia else { continue };
+            let bn = m.frame_name(i.basis).to_string();
+            let centre = m.point_name(i.point).to_string();
+            for s in &b.symmetries {
+                let entries: Vec<String> = s
+                    .zero_entries()
+                    .iter()
+                    .map(|&(r, c)| super::expr(&i.matrix[r][c]))
+                    .filter(|t| t != "0")
+                    .map(|t| format!("${}$", t.trim_start_matches('-')))
+                    .collect();
+                let _ = writeln!(
+                    d.o,
+                    "Pour le solide ${}$, {} : {}{}.\n",
+                    name(sname),
+                    symmetry_text(m, &bn, *s, &centre),
+                    if entries.is_empty() {
+                        "les produits d'inertie correspondants sont nuls".to_string()
+                    } else {
+                        format!("les produits d'inertie {} sont nuls", entries.join(", "))
+                    },
+                    if s.equal_moments().is_some() {
+                        " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
+                    } else {
+                        ""
+                    }
+                );
+            }
+            let under = Value::Matrix(i.clone()).under(h);
+            let lhs = format!("I_{{{}}}({})", point(&centre), name(sname));
+            let saved = d.under;
+            d.under = Some(h);
+            d.show_keyed(
+                DisplayRole::Inertia,
+                &format!("I({centre},{sname})"),
+                &lhs,
+                &lhs,
+                &under,
+                false,
+            );
+            d.under = saved;
+        }
+        // The symmetries' zeros are what the matrices show.
+        old_effects = h
+            .effects
+            .iter()
+            .filter(|e| !hs.symmetric_solids.is_empty() && !e.contains("dot("))
+            .cloned()
+            .collect();
+    }
+    let new_effects: Vec<&String> = h
+        .effects
+        .iter()
+        .filter(|e| !old_effects.contains(e))
+        .collect();
+    if !new_effects.is_empty() {
+        let eff: Vec<String> = new_effects
+            .iter()
+            .map(|e| {
+                let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
+                let lx = m.reg.parse(l).map(|x| super::expr(&x)).unwrap_or_default();
+                let rx = m.reg.parse(r).map(|x| super::expr(&x)).unwrap_or_default();
+                format!("${lx} = {rx}$")
+            })
+            .collect();
+        let _ = writeln!(d.o, "Sous cette hypothèse : {}.\n", eff.join(", "));
+    }
+    d.stated.push((
+        h.name.clone(),
+        hs.symmetric_solids.clone(),
+        h.effects.clone(),
+    ));
+}
