@@ -1,0 +1,259 @@
+//! Reading what the user typed: the expression syntax with quantities in the course's
+//! notation and unknowns of the PFD inside it.
+
+use super::*;
+
+/// Reads what the user typed: quantities written in the course's notation inside it are
+/// replaced by their derived values, unknowns of the PFD by their solved values, everything
+/// under the hypothesis.
+pub(super) struct Reader<'a> {
+    pub(super) m: &'a Mechanism,
+    pub(super) hypothesis: Option<&'a Hypothesis>,
+    pub(super) solution: Option<Solution>,
+    /// Quantities met, with their value (under the hypothesis).
+    pub(super) quantities: Vec<(Quantity, Expr)>,
+    /// Quantities and unknowns replaced, in the order met.
+    pub(super) substituted: Vec<String>,
+    /// Bare names met (outside quantities), for `-q Q` with Q an unknown.
+    pub(super) names: Vec<String>,
+}
+
+/// The functions of the expression syntax; any other `name(` starts a quantity.
+const SYNTAX_FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
+
+impl<'a> Reader<'a> {
+    pub(super) fn new(m: &'a Mechanism, hypothesis: Option<&'a Hypothesis>) -> Reader<'a> {
+        Reader {
+            m,
+            hypothesis,
+            solution: None,
+            quantities: Vec::new(),
+            substituted: Vec::new(),
+            names: Vec::new(),
+        }
+    }
+
+    pub(super) fn under(&self, e: Expr) -> Expr {
+        match self.hypothesis {
+            Some(h) => h.apply(&e),
+            None => e,
+        }
+    }
+
+    pub(super) fn solution(&mut self) -> Result<&Solution, VerifyError> {
+        if self.solution.is_none() {
+            self.solution = Some(crate::pfd::solve(self.m)?);
+        }
+        Ok(self.solution.as_ref().expect("solved"))
+    }
+
+    pub(super) fn note(&mut self, what: String) {
+        if !self.substituted.contains(&what) {
+            self.substituted.push(what);
+        }
+    }
+
+    /// One scalar text: quantities replaced by placeholder names, unknown names refused (all
+    /// named at once), parsed, unknowns replaced by their solved values, under the hypothesis.
+    pub(super) fn read(&mut self, text: &str) -> Result<Expr, VerifyError> {
+        let reg = self.m.reg.clone();
+        let known = |n: &str| reg.param(n).is_some() || reg.coord(n).is_some() || n == "pi";
+        // Placeholders: a prefix that neither the text nor any name of the spec holds.
+        let mut prefix = String::from("qty");
+        while text.contains(&prefix)
+            || reg
+                .parameters()
+                .iter()
+                .chain(reg.unknowns())
+                .any(|n| n.starts_with(&prefix))
+            || reg
+                .coordinates()
+                .iter()
+                .any(|c| c.name.starts_with(&prefix))
+        {
+            prefix.push('_');
+        }
+        let b = text.as_bytes();
+        let mut out = String::with_capacity(text.len());
+        let mut placeholders: Vec<(String, Expr)> = Vec::new();
+        let mut unknown: Vec<String> = Vec::new();
+        let mut i = 0;
+        while i < b.len() {
+            let c = b[i];
+            if c.is_ascii_digit() {
+                // A number, and a name glued to it (the parser refuses `2x`).
+                while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_' || b[i] == b'.')
+                {
+                    out.push(b[i] as char);
+                    i += 1;
+                }
+                continue;
+            }
+            if !(c.is_ascii_alphabetic() || c == b'_') {
+                // Only ASCII is allowed; the parser names any other character.
+                let ch = text[i..].chars().next().unwrap_or(' ');
+                out.push(ch);
+                i += ch.len_utf8();
+                continue;
+            }
+            let start = i;
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                i += 1;
+            }
+            let word = &text[start..i];
+            let mut j = i;
+            while j < b.len() && b[j].is_ascii_whitespace() {
+                j += 1;
+            }
+            let call = j < b.len() && b[j] == b'(';
+            if !call || SYNTAX_FUNCTIONS.contains(&word) {
+                if !call && !known(word) && !unknown.iter().any(|u| u == word) {
+                    unknown.push(word.to_string());
+                }
+                if !call && !self.names.iter().any(|n| n == word) {
+                    self.names.push(word.to_string());
+                }
+                out.push_str(word);
+                continue;
+            }
+            // A quantity: `name(...)`, then an optional projection `.x2`.
+            let mut depth = 0usize;
+            let mut end = j;
+            while end < b.len() {
+                match b[end] {
+                    b'(' => depth += 1,
+                    b')' => {
+                        depth -= 1;
+                        if depth == 0 {
+                            break;
+                        }
+                    }
+                    _ => {}
+                }
+                end += 1;
+            }
+            if end >= b.len() {
+                return Err(ExprError::Parse {
+                    input: text.to_string(),
+                    reason: "unbalanced parentheses".to_string(),
+                }
+                .into());
+            }
+            end += 1;
+            if end + 2 < b.len() + 1
+                && b.get(end) == Some(&b'.')
+                && b.get(end + 1)
+                    .is_some_and(|a| matches!(a, b'x' | b'y' | b'z'))
+                && b.get(end + 2)
+                    .is_some_and(|a| a.is_ascii_alphanumeric() || *a == b'_')
+            {
+                end += 2;
+                while end < b.len() && (b[end].is_ascii_alphanumeric() || b[end] == b'_') {
+                    end += 1;
+                }
+            }
+            let notation = &text[start..end];
+            let q = Quantity::parse(notation)?;
+            let value = self.quantity_value(&q, notation)?;
+            let name = format!("{prefix}{}", placeholders.len());
+            out.push_str(&name);
+            placeholders.push((name, value));
+            i = end;
+        }
+        if !unknown.is_empty() {
+            return Err(VerifyError::UnknownNames {
+                names: unknown,
+                input: text.to_string(),
+            });
+        }
+        let lookup = |n: &str| {
+            placeholders
+                .iter()
+                .find(|(p, _)| p == n)
+                .map(|(_, e)| e.clone())
+        };
+        let mut e = reg.parse_with(&out, &lookup).map_err(|err| match err {
+            // The user's text, not the one with placeholders.
+            ExprError::Parse { reason, .. } => ExprError::Parse {
+                input: text.to_string(),
+                reason,
+            },
+            ExprError::Unsupported { reason, .. } => ExprError::Unsupported {
+                input: text.to_string(),
+                reason,
+            },
+            other => other,
+        })?;
+        // Unknowns of the PFD: their solved values.
+        for v in 0..reg.nvars() {
+            let VarRole::Parameter(k) = reg.role(v) else {
+                continue;
+            };
+            if !reg.is_unknown(k) || !e.contains_var(v) {
+                continue;
+            }
+            let name = reg.scalar_name(k).to_string();
+            let value = self
+                .solution()?
+                .unknowns
+                .get(&name)
+                .cloned()
+                .ok_or_else(|| {
+                    VerifyError::Shape(format!(
+                        "`{name}` in `{text}`: no equation of the spec's pfd determines it"
+                    ))
+                })?;
+            e = e.substitute(v, &value);
+            self.note(name);
+        }
+        Ok(self.under(e))
+    }
+
+    /// The derived value of a scalar quantity written inside an expression.
+    pub(super) fn quantity_value(
+        &mut self,
+        q: &Quantity,
+        notation: &str,
+    ) -> Result<Expr, VerifyError> {
+        if let Some((_, v)) = self.quantities.iter().find(|(x, _)| x == q) {
+            return Ok(v.clone());
+        }
+        let value = derive_values(self.m, std::slice::from_ref(q))?
+            .pop()
+            .map(|d| d.value)
+            .ok_or_else(|| VerifyError::Shape("nothing derived".into()))?;
+        let Value::Scalar(e) = value else {
+            return Err(VerifyError::Shape(format!(
+                "`{notation}` is not a scalar: inside an expression, write a projection \
+                 (`.x2`), an unknown, an energy or an equation of motion"
+            )));
+        };
+        let e = self.under(e);
+        self.quantities.push((q.clone(), e.clone()));
+        self.note(q.to_string());
+        Ok(e)
+    }
+}
+
+/// Splits `[a, b, c]` (possibly nested) at its top-level commas.
+pub(super) fn split_list(s: &str) -> Option<Vec<String>> {
+    let t = s.trim();
+    let inner = t.strip_prefix('[')?.strip_suffix(']')?;
+    let mut out = Vec::new();
+    let mut depth = 0i32;
+    let mut cur = String::new();
+    for c in inner.chars() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            _ => {}
+        }
+        if c == ',' && depth == 0 {
+            out.push(std::mem::take(&mut cur));
+        } else {
+            cur.push(c);
+        }
+    }
+    out.push(cur);
+    Some(out)
+}
