@@ -2,6 +2,7 @@
 
 mod dynamics;
 mod locate;
+mod texts;
 mod validate;
 pub mod wire;
 
