@@ -511,14 +511,37 @@ fn environment(t: &[Tok]) -> (Vec<Vec<Vec<Tok>>>, &[Tok]) {
 
 /// The frame named by a `_{\mathcal{B}_{2}}` subscript.
 fn basis_subscript(t: &[Tok]) -> String {
-    let s: String = t
-        .iter()
-        .filter_map(|x| match x {
-            Tok::Letter(c) | Tok::Digit(c) => Some(*c),
-            _ => None,
-        })
-        .collect();
-    s.strip_prefix('B').unwrap_or(&s).to_string()
+    // The frame of the last `\mathcal{B}_{…}` in the subscript (`_{O_{2},\,\mathcal{B}_{1}}`
+    // names the point first); empty when there is none.
+    let at = (0..t.len()).rev().find(|&k| {
+        t[k] == Tok::Cmd("mathcal".into())
+            && t.get(k + 2) == Some(&Tok::Letter('B'))
+            && t.get(k + 4) == Some(&Tok::Sym('_'))
+    });
+    let Some(k) = at else {
+        return String::new();
+    };
+    let mut out = String::new();
+    let mut depth = 0;
+    for x in &t[k + 5..] {
+        match x {
+            Tok::Sym('{') => depth += 1,
+            Tok::Sym('}') => {
+                depth -= 1;
+                if depth <= 0 {
+                    break;
+                }
+            }
+            Tok::Letter(c) | Tok::Digit(c) => {
+                out.push(*c);
+                if depth == 0 {
+                    break;
+                }
+            }
+            _ => {}
+        }
+    }
+    out
 }
 
 /// Proves that a displayed formula equals its value; returns what is wrong otherwise.
@@ -590,11 +613,9 @@ fn prove(ctx: &Ctx, latex: &str, v: &Value) -> Result<(), String> {
                 // \left\{ \begin{array}{c|c} … \end{array} \right\}_{O,\,B}
                 assert!(is_cmd(rhs.first(), "left"), "torsor opens with \\left\\{{");
                 let (rows, rest) = environment(&rhs[2..]);
-                if basis_subscript(&rest[2..]).rsplit(',').next() != Some(f) {
-                    let b = basis_subscript(&rest[2..]);
-                    if !b.ends_with(f) {
-                        return Err(format!("torsor in basis {b}, engine {f}"));
-                    }
+                let b = basis_subscript(rest);
+                if b != f {
+                    return Err(format!("torsor in basis {b}, engine {f}"));
                 }
                 let col = |k: usize| -> Result<[Expr; 3], String> {
                     Ok([
@@ -827,6 +848,16 @@ fn the_reader_catches_a_wrong_sign() {
     assert!(prove(&ctx, "v &= \\left(L_{1} + L_{2}\\right)\\vec{x}_{2}", &vec).is_ok());
     assert!(prove(&ctx, "v &= L_{1} + L_{2}\\,\\vec{x}_{2}", &vec).is_err());
     assert!(prove(&ctx, "v &= \\left(L_{1} + L_{2}\\right)\\vec{x}_{1}", &vec).is_err());
+    let col = "\\begin{pmatrix} L_{1} + L_{2} \\\\ 0 \\\\ 0 \\end{pmatrix}_{\\mathcal{B}_{2}}";
+    assert!(prove(&ctx, &format!("v &= {col}"), &vec).is_ok());
+    assert!(
+        prove(
+            &ctx,
+            &format!("v &= {}", col.replace("B}_{2}", "B}_{1}")),
+            &vec
+        )
+        .is_err()
+    );
 }
 
 /// The strings of a JSON value (`canonical` or `presentation`), in `Value::exprs` order.
