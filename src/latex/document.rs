@@ -309,6 +309,11 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
         })?;
         let d = derive(m, &q)?;
         let title = quantity_title(&q);
+        // The heading names the basis asked: the same vector in B2 and in B1 reads apart.
+        let heading = match &q.basis {
+            Some(b) => format!("{title} \\text{{ dans }} {}", basis(b)),
+            None => title.clone(),
+        };
         match &q.kind {
             QuantityKind::Unknown(_) | QuantityKind::Eom(_) => pfd_block(doc, &d, &title),
             k => {
@@ -318,7 +323,7 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
                     QuantityKind::KineticEnergy(_) => quantity(k),
                     _ => title.clone(),
                 };
-                quantity_block(doc, &d, &title, &lhs)
+                quantity_block(doc, &d, &heading, &lhs)
             }
         }
     }
