@@ -7,6 +7,7 @@
 mod bilan;
 mod chain;
 mod check;
+mod corpus;
 mod derivation;
 mod eval;
 mod figures;
