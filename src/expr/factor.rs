@@ -133,6 +133,31 @@ impl Expr {
             .collect()
     }
 
+    /// The polynomial gcd of two expressions when it is not a number, its first coefficient
+    /// made positive and its numeric content 1 (cos and sin are independent variables here:
+    /// a common factor as written, m l of m l cos θ and m l sin θ).
+    pub fn polynomial_gcd(&self, other: &Expr) -> Option<Expr> {
+        let g = self.p.gcd(&other.p);
+        if g.is_constant() {
+            return None;
+        }
+        let mut content = g.coefficients[0].abs();
+        for c in &g.coefficients[1..] {
+            content = content.gcd(c);
+        }
+        let unit = if g.coefficients[0].is_negative() {
+            content.neg()
+        } else {
+            content
+        };
+        Some(self.with(g) * self.reg.constant(unit.inv()))
+    }
+
+    /// `self / d` when d divides it exactly as polynomials.
+    pub fn exact_div(&self, d: &Expr) -> Option<Expr> {
+        self.p.try_div(&d.p).map(|q| self.with(q))
+    }
+
     /// Whether the expression is a nonzero rational number.
     pub fn is_nonzero_constant(&self) -> bool {
         self.as_rational().is_some_and(|r| !r.is_zero())

@@ -12,12 +12,13 @@ mod eval;
 mod factor;
 mod flat;
 mod parse;
+pub(crate) mod present;
 pub(crate) mod print;
 mod registry;
 
 pub use flat::FlatEval;
 pub use parse::bare_names;
-pub use print::{Presentation, PresentationGroup};
+pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
 pub use registry::{
     MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry, check_identifier,
 };

@@ -637,7 +637,11 @@ const NOT_QUARTER_TURNS: &str = "a constant angle written with numbers must be a
      angle as a parameter with \"kind\": \"angle\"";
 
 /// (cos a, sin a) of a = Σ nᵢ aᵢ + k π/2.
-fn cos_sin(reg: &Rc<Registry>, terms: &[(CoordId, i64)], quarter_turns: i64) -> (Expr, Expr) {
+pub(super) fn cos_sin(
+    reg: &Rc<Registry>,
+    terms: &[(CoordId, i64)],
+    quarter_turns: i64,
+) -> (Expr, Expr) {
     let (mut c, mut s) = (reg.one(), reg.zero());
     for &(q, n) in terms {
         let (cn, sn) = multiple_angle(reg, q, n);

@@ -21,30 +21,6 @@ pub struct TermParts {
     pub rates: Vec<(CoordId, u8, u8)>,
 }
 
-impl TermParts {
-    /// A term holding only a kinematic monomial.
-    pub fn rates_only(rates: Vec<(CoordId, u8, u8)>) -> TermParts {
-        TermParts {
-            coef: Rational::one(),
-            params: vec![],
-            trig: vec![],
-            values: vec![],
-            rates,
-        }
-    }
-
-    /// Sign of the coefficient and its absolute value as (numerator, denominator) text.
-    pub fn coef_text(&self) -> (bool, String, String) {
-        let a = self.coef.abs();
-        let s = a.to_string();
-        let (n, d) = match s.split_once('/') {
-            Some((n, d)) => (n.to_string(), d.to_string()),
-            None => (s, "1".to_string()),
-        };
-        (self.coef.is_negative(), n, d)
-    }
-}
-
 /// Splits exponents into the parts of a term.
 pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
     let mut t = TermParts {
@@ -184,7 +160,7 @@ type Kinematic = Vec<(CoordId, u8, u8)>;
 
 /// One group of the presentation form: `factor · (rest) · kinematic`.
 #[derive(Debug, Clone)]
-pub struct PresentationGroup {
+pub struct GroupedTerm {
     /// Kinematic monomial: (coordinate, derivative order, exponent); empty for the part
     /// with no rate.
     pub kinematic: Vec<(CoordId, u8, u8)>,
@@ -195,27 +171,20 @@ pub struct PresentationGroup {
     pub rest: Expr,
 }
 
-/// The presentation form of an expression: groups by kinematic monomial, in reading order.
+/// The grouped form of an expression: groups by kinematic monomial, in reading order (the
+/// compiled evaluator's starting point; the printed form is [`super::present`]'s).
 #[derive(Debug, Clone)]
-pub struct Presentation {
+pub struct Grouped {
     /// The groups, q̈ first, then products of rates, then the rest.
-    pub groups: Vec<PresentationGroup>,
+    pub groups: Vec<GroupedTerm>,
     reg: Rc<Registry>,
 }
 
 impl Expr {
-    /// The presentation form: terms collected by kinematic monomial (q̈ᵢ, q̇ᵢq̇ⱼ), each group's
-    /// common factor (sign, rational, parameters and trigonometric factors) pulled out.
-    ///
-    /// ```
-    /// use torseur::expr::Registry;
-    /// use torseur::spec::wire::CoordinateKind;
-    /// let reg = Registry::new(&["m".into(), "L".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
-    /// let e = reg.parse("m*L^2*ddot(q) + m*L^2*cos(q)*sin(q)*dot(q)^2 - m*L*sin(q)*dot(q)^2").unwrap();
-    /// assert_eq!(e.presentation().to_string(),
-    ///     "m*L^2*ddot(q) + m*L*sin(q)*(L*cos(q) - 1)*dot(q)^2");
-    /// ```
-    pub fn presentation(&self) -> Presentation {
+    /// The grouped form: terms collected by kinematic monomial (q̈ᵢ, q̇ᵢq̇ⱼ), each group's
+    /// common factor (sign, rational, parameters and trigonometric factors) pulled out. Its
+    /// text is what symbolica's evaluator compiles (sin and cos of single angles only).
+    pub(crate) fn grouped(&self) -> Grouped {
         let reg = self.registry().clone();
         let terms = ordered_terms(self);
         let mut groups: Vec<(Kinematic, Vec<TermParts>)> = Vec::new();
@@ -263,14 +232,14 @@ impl Expr {
                         (&t.coef * &factor.coef.inv(), e)
                     })
                     .collect();
-                PresentationGroup {
+                GroupedTerm {
                     kinematic: kin,
                     factor,
                     rest: Expr::from_terms(&reg, rest_terms),
                 }
             })
             .collect();
-        Presentation { groups, reg }
+        Grouped { groups, reg }
     }
 }
 
@@ -317,14 +286,7 @@ fn common_factor(ts: &[TermParts]) -> TermParts {
     }
 }
 
-impl Presentation {
-    /// The registry of the expression.
-    pub fn registry(&self) -> &Rc<Registry> {
-        &self.reg
-    }
-}
-
-impl std::fmt::Display for Presentation {
+impl std::fmt::Display for Grouped {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let reg = &self.reg;
         let mut parts = Vec::new();

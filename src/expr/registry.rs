@@ -32,6 +32,9 @@ pub struct Registry {
     /// Number of time coordinates (the first entries of `coords`).
     pub(super) n_coords: usize,
     pub(super) coord_by_name: HashMap<String, CoordId>,
+    /// Rank of each parameter in the written order of a product (see
+    /// [`Registry::set_display_ranks`]).
+    display_ranks: std::cell::OnceCell<Vec<u32>>,
 }
 
 /// Symbols used for the rate functions dot(q), ddot(q), dddot(q).
@@ -315,6 +318,7 @@ impl Registry {
             coords: infos,
             n_coords,
             coord_by_name,
+            display_ranks: std::cell::OnceCell::new(),
         };
         // Imposed rates are expressions in the parameters: parse them with a registry that
         // shares the same variable list.
@@ -330,6 +334,7 @@ impl Registry {
                 coords: reg.coords.clone(),
                 n_coords: reg.n_coords,
                 coord_by_name: reg.coord_by_name.clone(),
+                display_ranks: std::cell::OnceCell::new(),
             });
             for (i, (_, _, rate)) in coords.iter().enumerate() {
                 if let Some(r) = rate {
@@ -372,6 +377,35 @@ impl Registry {
             VarRole::Cos(q) | VarRole::Sin(q) => self.coords[q.0].constant,
             VarRole::Value(_) | VarRole::Rate(..) => false,
         }
+    }
+
+    /// Sets the written order of the parameters in a product, once: `ranks[p]` for parameter
+    /// `p` (lower first; equal ranks keep the declaration order). The spec sets the course's
+    /// order from the units: masses, then accelerations (g), lengths, inertia moments, the
+    /// rest. Unknowns come after every parameter. A second call is ignored.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["L".into(), "m".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let e = reg.parse("L*m*ddot(q)").unwrap();
+    /// assert_eq!(e.presentation().to_string(), "L*m*ddot(q)");
+    /// reg.set_display_ranks(vec![2, 0]);
+    /// assert_eq!(e.presentation().to_string(), "m*L*ddot(q)");
+    /// ```
+    pub fn set_display_ranks(&self, ranks: Vec<u32>) {
+        let _ = self.display_ranks.set(ranks);
+    }
+
+    /// The written rank of parameter (or unknown) `p`: see [`Registry::set_display_ranks`].
+    pub fn display_rank(&self, p: usize) -> u32 {
+        if self.is_unknown(p) {
+            return u32::MAX;
+        }
+        self.display_ranks
+            .get()
+            .and_then(|r| r.get(p).copied())
+            .unwrap_or(u32::MAX - 1)
     }
 
     /// Whether a [`VarRole::Parameter`] index is an unknown of the PFD.
@@ -551,7 +585,7 @@ impl Registry {
         let atoms: Vec<Atom> = exprs
             .iter()
             .map(|e| {
-                let text = e.presentation().to_string();
+                let text = e.grouped().to_string();
                 symbolica::try_parse!(&text).unwrap_or_else(|_| e.to_atom())
             })
             .collect();

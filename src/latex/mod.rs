@@ -7,6 +7,7 @@
 //! loaded).
 
 mod document;
+mod expr;
 mod figures;
 mod hypotheses;
 mod method;
@@ -18,16 +19,16 @@ mod theorems;
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
 };
+pub(crate) use expr::is_product;
+pub use expr::{expr, expr_lines};
 pub use figures::{link_graph, link_text, rotation_figures};
 pub use text::{RichTextError, rich_text, rich_text_or_escaped};
 
 use crate::derivation::Value;
-use crate::expr::print::TermParts;
-use crate::expr::{CoordId, Expr, Presentation, Registry};
+use crate::expr::Expr;
 use crate::mechanism::Mechanism;
 use crate::quantity::{Motion, QuantityKind};
 use std::fmt::Write as _;
-use std::rc::Rc;
 
 const GREEK: &[&str] = &[
     "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
@@ -265,146 +266,6 @@ pub fn quantity(k: &QuantityKind) -> String {
     }
 }
 
-/// Factors of a term in the teacher's order: parameters, then trigonometry, then rates.
-fn factors(reg: &Registry, t: &TermParts) -> Vec<String> {
-    let pw = |b: String, k: u8| if k == 1 { b } else { format!("{b}^{{{k}}}") };
-    let mut f = Vec::new();
-    for &(p, k) in &t.params {
-        f.push(pw(name(reg.scalar_name(p)), k));
-    }
-    for &(q, is_cos, k) in &t.trig {
-        let fun = if is_cos { "\\cos" } else { "\\sin" };
-        let arg = name(&reg.coord_info(q).name);
-        // `\sin q_{1}` needs the space (`\sinq` is an undefined command); `\sin\theta` does not.
-        let sep = if arg.starts_with('\\') { "" } else { " " };
-        f.push(if k == 1 {
-            format!("{fun}{sep}{arg}")
-        } else {
-            format!("{fun}^{{{k}}}{sep}{arg}")
-        });
-    }
-    for &(q, k) in &t.values {
-        f.push(pw(name(&reg.coord_info(q).name), k));
-    }
-    for &(q, o, k) in &t.rates {
-        f.push(pw(rate(reg, q, o), k));
-    }
-    f
-}
-
-fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
-    let n = name(&reg.coord_info(q).name);
-    // \dot{\theta}_{1}: the accent on the head, the subscript after.
-    let (head, sub) = match n.split_once("_{") {
-        Some((h, s)) => (h.to_string(), format!("_{{{s}")),
-        None => (n.clone(), String::new()),
-    };
-    let acc = ["\\dot", "\\ddot", "\\dddot"][(order.clamp(1, 3) - 1) as usize];
-    format!("{acc}{{{head}}}{sub}")
-}
-
-/// One signed term; the sign is returned apart.
-fn term(reg: &Registry, t: &TermParts) -> (bool, String) {
-    let (neg, n, d) = t.coef_text();
-    let num = if d == "1" {
-        n.clone()
-    } else {
-        format!("\\frac{{{n}}}{{{d}}}")
-    };
-    let f = factors(reg, t);
-    let body = if f.is_empty() {
-        num
-    } else if n == "1" && d == "1" {
-        f.join("\\,")
-    } else {
-        format!("{num}\\,{}", f.join("\\,"))
-    };
-    (neg, body)
-}
-
-fn join(parts: &[(bool, String)]) -> String {
-    if parts.is_empty() {
-        return "0".to_string();
-    }
-    let mut o = String::new();
-    for (i, (neg, s)) in parts.iter().enumerate() {
-        o.push_str(match (i, neg) {
-            (0, true) => "-",
-            (0, false) => "",
-            (_, true) => " - ",
-            (_, false) => " + ",
-        });
-        o.push_str(s);
-    }
-    o
-}
-
-/// Plain (canonical-order) LaTeX of an expression.
-pub fn expr_plain(e: &Expr) -> String {
-    let reg = e.registry();
-    let parts: Vec<_> = crate::expr::print::ordered_terms(e)
-        .iter()
-        .map(|t| term(reg, t))
-        .collect();
-    join(&parts)
-}
-
-/// A group printed as a plain sum `a + b` (factor +1, no rate, several terms): whatever
-/// multiplies it needs parentheses.
-fn is_bare_sum(g: &crate::expr::print::PresentationGroup) -> bool {
-    let (neg, n, d) = g.factor.coef_text();
-    !neg && n == "1"
-        && d == "1"
-        && g.factor.params.is_empty()
-        && g.factor.trig.is_empty()
-        && g.kinematic.is_empty()
-        && g.rest.nterms() > 1
-}
-
-/// The groups of the presentation form, each as (negative, LaTeX).
-fn groups(p: &Presentation) -> Vec<(bool, String)> {
-    let reg: &Rc<Registry> = p.registry();
-    p.groups
-        .iter()
-        .map(|g| {
-            let (neg, head) = term(reg, &g.factor);
-            let rest_is_one = g.rest.is_one();
-            let mut f = Vec::new();
-            let bare = head == "1" && g.kinematic.is_empty();
-            if head != "1" || (rest_is_one && g.kinematic.is_empty()) {
-                f.push(head);
-            }
-            if !rest_is_one {
-                let r = expr_plain(&g.rest);
-                // A sum keeps its parentheses when anything multiplies it, and when the
-                // group's minus sign stands in front of it: -(a + b), never -a + b.
-                f.push(if g.rest.nterms() > 1 && (!bare || neg) {
-                    format!("\\left({r}\\right)")
-                } else {
-                    r
-                });
-            }
-            let kin = TermParts::rates_only(g.kinematic.clone());
-            f.extend(factors(reg, &kin));
-            (neg, f.join("\\,"))
-        })
-        .collect()
-}
-
-/// The presentation form in LaTeX (collected by q̈ and q̇q̇, common factors out).
-///
-/// ```
-/// use torseur::expr::Registry;
-/// use torseur::spec::wire::CoordinateKind;
-/// let reg = Registry::new(&["m".into(), "L".into()], &[("theta1".into(), CoordinateKind::Angle)]).unwrap();
-/// let e = reg.parse("m*L^2*ddot(theta1) - m*L*sin(theta1)*dot(theta1)^2").unwrap();
-/// assert_eq!(torseur::latex::expr(&e),
-///     "m\\,L^{2}\\,\\ddot{\\theta}_{1} - m\\,L\\,\\sin\\theta_{1}\\,\\dot{\\theta}_{1}^{2}");
-/// ```
-pub fn expr(e: &Expr) -> String {
-    join(&groups(&e.presentation()))
-}
-
 /// Approximate printed width of LaTeX math, in characters of the body text.
 pub(crate) fn width(s: &str) -> usize {
     let mut w = 0usize;
@@ -440,75 +301,6 @@ pub(crate) fn width(s: &str) -> usize {
     w
 }
 
-/// Unbreakable pieces of the presentation form: each group, or, for a group too wide for a
-/// line, its factor and the terms of its parenthesised coefficient one by one (`\Big(`
-/// and `\Big)` may span lines, `\left(` and `\right)` may not).
-fn atoms(e: &Expr, max: usize) -> Vec<String> {
-    let p = e.presentation();
-    let reg = p.registry().clone();
-    let mut out = Vec::new();
-    for (i, (g, (neg, whole))) in p.groups.iter().zip(groups(&p)).enumerate() {
-        let sign = |neg: bool, first: bool| match (first, neg) {
-            (true, true) => "-".to_string(),
-            (true, false) => String::new(),
-            (false, true) => " - ".to_string(),
-            (false, false) => " + ".to_string(),
-        };
-        if width(&whole) <= max || g.rest.nterms() <= 1 {
-            out.push(format!("{}{whole}", sign(neg, i == 0)));
-            continue;
-        }
-        let (_, head) = term(&reg, &g.factor);
-        let kin: Vec<String> = factors(&reg, &TermParts::rates_only(g.kinematic.clone()));
-        let terms: Vec<(bool, String)> = crate::expr::print::ordered_terms(&g.rest)
-            .iter()
-            .map(|t| term(&reg, t))
-            .collect();
-        let open = if head == "1" {
-            "\\Big(".to_string()
-        } else {
-            format!("{head}\\,\\Big(")
-        };
-        let n = terms.len();
-        for (k, (tn, ts)) in terms.into_iter().enumerate() {
-            let mut piece = String::new();
-            if k == 0 {
-                piece.push_str(&sign(neg, i == 0));
-                piece.push_str(&open);
-                piece.push_str(&format!("{}{ts}", if tn { "-" } else { "" }));
-            } else {
-                piece.push_str(&format!("{}{ts}", sign(tn, false)));
-            }
-            if k + 1 == n {
-                piece.push_str("\\Big)");
-                if !kin.is_empty() {
-                    piece.push_str(&format!("\\,{}", kin.join("\\,")));
-                }
-            }
-            out.push(piece);
-        }
-    }
-    if out.is_empty() {
-        out.push("0".to_string());
-    }
-    out
-}
-
-/// Lines of at most `max` width (as far as single terms allow), broken between groups and,
-/// when a group is too wide, inside its coefficient.
-pub fn expr_lines(e: &Expr, max: usize) -> Vec<String> {
-    let mut lines: Vec<String> = Vec::new();
-    let mut cur = String::new();
-    for piece in atoms(e, max) {
-        if !cur.is_empty() && width(&cur) + width(&piece) > max {
-            lines.push(std::mem::take(&mut cur));
-        }
-        cur.push_str(&piece);
-    }
-    lines.push(cur);
-    lines
-}
-
 /// A vector as a sum over its basis vectors, one line per component when long, inside an
 /// `aligned` block: `\left(...\right)\vec{x}_2 + ...`.
 pub fn vector_sum(
@@ -529,10 +321,7 @@ pub fn vector_sum(
         let ls = expr_lines(&c[k], max);
         // One product (a group that is not a bare sum) multiplies the basis vector without
         // parentheses; anything else is parenthesised.
-        let single_term = match c[k].presentation().groups.as_slice() {
-            [g] => !is_bare_sum(g),
-            _ => false,
-        };
+        let single_term = is_product(&c[k]);
         let sign = if first { "" } else { "+ " };
         if ls.len() == 1 && single_term {
             let s = &ls[0];

@@ -137,6 +137,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     }
     let reg = Registry::with_unknowns(&params, &coords, &unknowns, &raw_angles, &angle_params)
         .map_err(|e| at("coordinates", e.to_string()))?;
+    reg.set_display_ranks(spec.parameters.iter().map(display_rank).collect());
 
     // Frames, in an order where each parent comes first (the spec may list them in any order).
     name_ok("ground", &spec.ground)?;
@@ -714,4 +715,18 @@ pub fn parse_spec(text: &str) -> Result<SpecFile, SpecError> {
         message: e.to_string(),
     })?;
     Ok(spec)
+}
+
+/// The course's order of parameters in a written product, from their units: masses, then
+/// accelerations (g), lengths, inertia moments, then the rest (m g L, m2 L2², A + m h²).
+fn display_rank(p: &crate::spec::wire::ParameterSpec) -> u32 {
+    use crate::units::Dimension;
+    let d = p.unit.as_deref().and_then(|u| Dimension::parse(u).ok());
+    match d {
+        Some(Dimension::MASS) => 0,
+        Some(Dimension::ACCELERATION) => 1,
+        Some(Dimension::LENGTH) => 2,
+        Some(Dimension::INERTIA) => 3,
+        _ => 4,
+    }
 }

@@ -159,8 +159,11 @@ impl Reader<'_> {
     fn is_end(&self) -> bool {
         match self.peek() {
             None => true,
-            Some(Tok::Sym(c)) => matches!(c, '}' | ')' | '&' | '+' | '-' | '='),
-            Some(Tok::Cmd(c)) if c == "Big" => self.t.get(self.i + 1) == Some(&Tok::Sym(')')),
+            Some(Tok::Sym(c)) => matches!(c, '}' | ')' | ']' | '&' | '+' | '-' | '='),
+            Some(Tok::Cmd(c)) if c == "Big" => matches!(
+                self.t.get(self.i + 1),
+                Some(&Tok::Sym(')')) | Some(&Tok::Sym(']'))
+            ),
             Some(Tok::Cmd(c)) => matches!(c.as_str(), "right" | "\\" | "end"),
             _ => false,
         }
@@ -255,13 +258,15 @@ impl Reader<'_> {
             Tok::Cmd(c) => {
                 self.i += 1;
                 match c.as_str() {
-                    "left" => {
-                        self.expect(Tok::Sym('('))?;
-                        self.closed(&[Tok::Cmd("right".into()), Tok::Sym(')')])
-                    }
-                    "Big" => {
-                        self.expect(Tok::Sym('('))?;
-                        self.closed(&[Tok::Cmd("Big".into()), Tok::Sym(')')])
+                    // ( … ) or [ … ], closed by the same size.
+                    "left" | "Big" => {
+                        let close = match self.next()? {
+                            Tok::Sym('(') => ')',
+                            Tok::Sym('[') => ']',
+                            t => return Err(format!("\\{c} followed by {t:?}")),
+                        };
+                        let size = if c == "left" { "right" } else { "Big" };
+                        self.closed(&[Tok::Cmd(size.into()), Tok::Sym(close)])
                     }
                     "frac" => {
                         self.expect(Tok::Sym('{'))?;
@@ -272,9 +277,19 @@ impl Reader<'_> {
                     }
                     "sin" | "cos" => {
                         let k = self.exponent()?;
+                        self.skip_space();
                         let arg = match self.peek() {
                             Some(Tok::Sym('(')) | Some(Tok::Sym('{')) => self.primary()?,
                             Some(Tok::Cmd(c)) if c == "left" => self.primary()?,
+                            // \sin 2\theta_{2}: a multiple of an angle.
+                            Some(Tok::Digit(_)) => {
+                                let mut n = String::new();
+                                while let Some(Tok::Digit(d)) = self.peek() {
+                                    n.push(*d);
+                                    self.i += 1;
+                                }
+                                format!("{n}*{}", self.name()?)
+                            }
                             _ => self.name()?,
                         };
                         let f = format!("{c}({arg})");
@@ -805,6 +820,22 @@ fn every_printed_formula_is_the_engines_value() {
     }
     eprintln!("{proven} displayed formulas proven");
     assert!(proven > 300, "only {proven} formulas read back");
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+    /// The LaTeX of the presentation form of random expressions (sums of angles, powers,
+    /// products of sums) reads back, with this file's reader, to the same canonical form.
+    #[test]
+    fn the_latex_of_random_expressions_reads_back(e in super::properties::expression()) {
+        let m = super::regulator();
+        let ctx = Ctx::new(&m);
+        let exact = m.reg.parse(&e).unwrap();
+        let latex = format!("x &= {}", torseur::latex::expr(&exact));
+        let v = Value::Scalar(exact);
+        proptest::prop_assert!(prove(&ctx, &latex, &v).is_ok(), "{}: {:?}", latex, prove(&ctx, &latex, &v));
+    }
 }
 
 /// The reader can fail: a sign flipped in the printed LaTeX, a dropped parenthesis, a wrong

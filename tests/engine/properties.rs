@@ -18,7 +18,8 @@ fn atom() -> impl Strategy<Value = String> {
     ]
 }
 
-fn expression() -> impl Strategy<Value = String> {
+/// Random expression texts over the regulator's names.
+pub(crate) fn expression() -> impl Strategy<Value = String> {
     atom().prop_recursive(4, 24, 3, |inner| {
         prop_oneof![
             (inner.clone(), inner.clone()).prop_map(|(a, b)| format!("({a}) + ({b})")),
@@ -65,7 +66,10 @@ proptest! {
         let b = model.evaluate_expression(&e, &s).unwrap();
         prop_assert!((a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs())), "{e}: {a} vs {b}");
         // The text form of the canonical form parses back to the same canonical form.
-        prop_assert_eq!(m.reg.parse(&exact.to_string()).unwrap(), exact);
+        prop_assert_eq!(m.reg.parse(&exact.to_string()).unwrap(), exact.clone());
+        // So does the presentation form's (sin², cos 2θ, cos(θ2 − θ1), factored sums).
+        let shown = exact.presentation().to_string();
+        prop_assert_eq!(m.reg.parse(&shown).unwrap(), exact, "{}", shown);
     }
 
     #[test]

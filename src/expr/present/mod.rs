@@ -1,0 +1,457 @@
+//! The presentation engine: an expression as a teacher writes it, chosen among exactly
+//! equal forms by a documented cost. It sits on top of the canonical form and never feeds
+//! back into computation.
+//!
+//! For an expression, the terms are grouped by kinematic monomial (q̈ᵢ, q̇ᵢq̇ⱼ, none) as the
+//! course collects them. The coefficient of each group (a polynomial in the parameters, the
+//! length coordinates, cos qᵢ and sin qᵢ) is written four ways: as it is; with the
+//! trigonometric identities of [`rewrite`] applied to pairs of terms (cos(θ2 − θ1),
+//! sin(θ2 + θ1), cos 2q, sin² q kept rather than 1 − cos² q); the same with sin 2q for
+//! cos q sin q where the coefficient is even; and everywhere. Each of these is then written
+//! by [`search`] in its cheapest arrangement: flat, its content pulled out, collected by a
+//! leaf (a parameter group (C2 − B2 + m2 L2²) sin θ2 cos θ2, recursively), or factored by
+//! symbolica (m2 (L1 + L2 cos θ2)²). The cheapest of all is kept, by
+//! [`Form::cost`]: operations as `sympy.count_ops` counts them, then the number of leaves.
+//! Last, the content shared by every group may come out in front (m L (L θ̈ + g sin θ)) when
+//! that is cheaper.
+//!
+//! **A form is kept only if its exact value, rebuilt by the engine's arithmetic
+//! ([`Form::to_expr`]), is the canonical form it started from**; otherwise the plain grouped
+//! form is printed (this has never been observed; a debug build panics on it).
+//!
+//! The reading order of a product is: number, parameters in the course's order (masses,
+//! then g, lengths, inertia moments, the rest, as set by [`Registry::set_display_ranks`];
+//! declaration order otherwise), length coordinates, parenthesised sums, rates, then
+//! trigonometric functions. Sums are written lower degree first.
+//!
+//! Above [`SEARCH_LIMIT`] terms an expression is only grouped, each group's common factor
+//! out (the search would cost more than it gives on a chain's equations).
+
+mod form;
+mod rewrite;
+mod search;
+
+pub use form::{Angle, Cost, Factor, Form, Leaf, Product};
+
+use super::{Expr, Registry, VarRole};
+use rewrite::{Leaves, Mono, normalize};
+use std::cmp::Reverse;
+use std::fmt;
+use std::rc::Rc;
+use symbolica::domains::rational::Rational;
+
+/// Expressions with more canonical terms than this are grouped by kinematic monomial, their
+/// common factors out, without the search.
+pub const SEARCH_LIMIT: usize = 60;
+
+/// The presentation form of an expression, with its registry (for the names).
+#[derive(Debug, Clone)]
+pub struct Presentation {
+    form: Form,
+    reg: Rc<Registry>,
+}
+
+impl Presentation {
+    /// The tree.
+    pub fn form(&self) -> &Form {
+        &self.form
+    }
+
+    /// The registry of the expression.
+    pub fn registry(&self) -> &Rc<Registry> {
+        &self.reg
+    }
+}
+
+impl fmt::Display for Presentation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.form.text(&self.reg))
+    }
+}
+
+/// The reading order of a kinematic monomial (see [`kinematic_key`]).
+type GroupKey = (bool, Vec<(Reverse<u8>, usize, Reverse<u8>)>);
+
+/// A kinematic monomial: the rates of a term, highest derivative first.
+type Kinematic = Vec<(Leaf, u8)>;
+
+impl Expr {
+    /// The presentation form: the cheapest exactly-equal form found (see the module
+    /// documentation of `expr::present`).
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(
+    ///     &["m2".into(), "L1".into(), "L2".into(), "B2".into(), "C2".into(), "D2".into()],
+    ///     &[("theta1".into(), CoordinateKind::Angle), ("theta2".into(), CoordinateKind::Angle)],
+    /// ).unwrap();
+    /// let e = reg.parse("(B2*sin(theta2)^2 + C2*cos(theta2)^2 - D2*sin(2*theta2) \
+    ///     + m2*(L1 + L2*cos(theta2))^2)*ddot(theta1)").unwrap();
+    /// assert_eq!(e.presentation().to_string(),
+    ///     "(B2*sin(theta2)^2 + C2*cos(theta2)^2 - D2*sin(2*theta2) \
+    ///      + m2*(L1 + L2*cos(theta2))^2)*ddot(theta1)");
+    /// let d = reg.parse("3*m2*L2*cos(theta1)*cos(theta2) + 3*m2*L2*sin(theta1)*sin(theta2)").unwrap();
+    /// assert_eq!(d.presentation().to_string(), "3*m2*L2*cos(theta2 - theta1)");
+    /// ```
+    pub fn presentation(&self) -> Presentation {
+        let reg = self.registry().clone();
+        let cheap = self.nterms() > SEARCH_LIMIT;
+        let form = grouped(self, cheap);
+        let form = if form.to_expr(&reg) == *self {
+            form
+        } else {
+            debug_assert!(false, "a presentation form differs from its value: {self}");
+            grouped(self, true)
+        };
+        Presentation { form, reg }
+    }
+
+    /// The leaves of each canonical term.
+    fn monos(&self) -> Vec<Mono> {
+        let reg = self.registry();
+        self.terms()
+            .map(|(c, e)| {
+                let mut atoms: Vec<(Leaf, u8)> = e
+                    .iter()
+                    .enumerate()
+                    .filter(|x| *x.1 > 0)
+                    .map(|(i, &k)| {
+                        let a = match reg.role(i) {
+                            VarRole::Parameter(p) => Leaf::Param(p),
+                            VarRole::Value(q) => Leaf::Value(q),
+                            VarRole::Rate(q, o) => Leaf::Rate(q, o),
+                            VarRole::Cos(q) => Leaf::Cos(Angle::of(q)),
+                            VarRole::Sin(q) => Leaf::Sin(Angle::of(q)),
+                        };
+                        (a, k)
+                    })
+                    .collect();
+                atoms.sort();
+                Mono {
+                    coef: c.clone(),
+                    atoms,
+                }
+            })
+            .collect()
+    }
+}
+
+/// Ordering key of a kinematic monomial: higher derivatives first, then by coordinate; the
+/// part without rates last (m l² θ̈ + c θ̇ + m g l sin θ).
+fn kinematic_key(k: &Kinematic) -> GroupKey {
+    let mut v: Vec<_> = k
+        .iter()
+        .map(|(a, e)| match a {
+            Leaf::Rate(q, o) => (Reverse(*o), q.index(), Reverse(*e)),
+            _ => unreachable!("a kinematic monomial holds rates only"),
+        })
+        .collect();
+    v.sort();
+    (k.is_empty(), v)
+}
+
+/// The expression grouped by kinematic monomial, each coefficient written by the search (or
+/// only with its content out when `cheap`), then the content common to every group out when
+/// that is cheaper.
+fn grouped(e: &Expr, cheap: bool) -> Form {
+    let reg = e.registry();
+    let mut groups: Vec<(Kinematic, Vec<Mono>)> = Vec::new();
+    let mut index: std::collections::HashMap<Kinematic, usize> = Default::default();
+    for m in e.monos() {
+        let (kin, coef): (Leaves, Leaves) = m
+            .atoms
+            .into_iter()
+            .partition(|(a, _)| matches!(a, Leaf::Rate(..)));
+        let c = Mono {
+            coef: m.coef,
+            atoms: coef,
+        };
+        match index.get(&kin) {
+            Some(&i) => groups[i].1.push(c),
+            None => {
+                index.insert(kin.clone(), groups.len());
+                groups.push((kin, vec![c]));
+            }
+        }
+    }
+    groups.sort_by_key(|g| kinematic_key(&g.0));
+    let mut search = search::Search::new(reg);
+    let mut terms = Vec::new();
+    let mut units = Vec::new();
+    for (kin, ms) in groups {
+        let ms = normalize(ms);
+        if !cheap {
+            // The part without trigonometric functions and the rest, apart: (m1/3 + m2) L1² θ̈1
+            // stays whole when the part in cos(θ2 − θ1) θ̈1 joins another group.
+            let (plain, trig): (Vec<Mono>, Vec<Mono>) = ms
+                .iter()
+                .cloned()
+                .partition(|m| !m.atoms.iter().any(|x| x.0.is_trig()));
+            // A single plain term stays with the rest: (L1 + L2 cos θ2) θ̈1 is a distance.
+            let (plain, trig) = if plain.len() < 2 {
+                (vec![], ms.clone())
+            } else {
+                (plain, trig)
+            };
+            for part in [plain, trig] {
+                if !part.is_empty() {
+                    units.push((kin.clone(), coefficient_expr(reg, &part)));
+                }
+            }
+        }
+        let coef = if cheap {
+            search.content_only(ms)
+        } else {
+            best_coefficient(&mut search, ms, reg.coordinates().len())
+        };
+        if kin.is_empty() && coef.terms.len() > 1 {
+            // The part without rates is a plain sum: its terms stand in the sum.
+            terms.extend(coef.terms);
+        } else {
+            terms.push(times_rates(coef, kin));
+        }
+    }
+    let mut whole = Form { terms };
+    if cheap || whole.terms.len() < 2 {
+        return whole;
+    }
+    // Groups that share a factor, written once: m l (θ̈ cos θ − θ̇² sin θ).
+    let across = clustered(reg, &units, &mut search);
+    if across.cost() < whole.cost() {
+        whole = across;
+    }
+    // The content of every group out: m L (L θ̈ + g sin θ).
+    let all = e.monos();
+    let (g, common) = search::content(&all);
+    if common.is_empty() && g.abs().is_one() {
+        return whole;
+    }
+    let inner = Expr::from_terms(
+        reg,
+        all.iter()
+            .map(|m| {
+                let r = m.divided(&g, &common);
+                (r.coef.clone(), exponents(reg, &r))
+            })
+            .collect(),
+    );
+    // The factor in front does not nest what follows: its cost is the inner form's plus one
+    // operation per factor (m2 [−(L1 + L2 cos θ2) θ̈1 + 2 L2 θ̇1 θ̇2 sin θ2]).
+    let inner = grouped(&inner, false);
+    let n = common.len() + usize::from(!g.abs().is_one()) + usize::from(g.is_negative());
+    let (o, l) = inner.cost();
+    let out = search::wrap(g, common, inner);
+    if (o + n, l + n) < whole.cost() {
+        out
+    } else {
+        whole
+    }
+}
+
+/// A coefficient (monomials of plain leaves) as an expression.
+fn coefficient_expr(reg: &Rc<Registry>, ms: &[Mono]) -> Expr {
+    Expr::from_terms(
+        reg,
+        ms.iter()
+            .map(|m| (m.coef.clone(), exponents(reg, m)))
+            .collect(),
+    )
+}
+
+/// A unit of [`clustered`]: a kinematic monomial and (part of) its coefficient.
+type Unit = (Kinematic, Expr);
+
+/// `coefficient · κ` for units, those of one kinematic monomial added first; each coefficient
+/// written by the search. With the ordering key of its first kinematic monomial.
+fn unit_products(
+    reg: &Rc<Registry>,
+    units: &[&Unit],
+    search: &mut search::Search,
+) -> Vec<(GroupKey, Product)> {
+    let mut merged: Vec<(Kinematic, Expr)> = Vec::new();
+    for (k, c) in units {
+        match merged.iter_mut().find(|m| &m.0 == k) {
+            Some(m) => m.1 = &m.1 + c,
+            None => merged.push((k.clone(), c.clone())),
+        }
+    }
+    merged
+        .into_iter()
+        .filter(|m| !m.1.is_zero())
+        .map(|(k, c)| {
+            let f = best_coefficient(search, normalize(c.monos()), reg.coordinates().len());
+            (kinematic_key(&k), times_rates(f, k))
+        })
+        .collect()
+}
+
+/// The groups written with the factors they share pulled out once, greedily: among the
+/// polynomial gcds of two units' coefficients, the one that saves the most operations
+/// gathers every unit it divides (m l (θ̈ cos θ − θ̇² sin θ), (M + m)(ẍ + g sin α)); again
+/// on the rest until nothing is saved; what is left is written group by group.
+fn clustered(reg: &Rc<Registry>, units: &[Unit], search: &mut search::Search) -> Form {
+    let mut left: Vec<&Unit> = units.iter().collect();
+    let mut out: Vec<(GroupKey, Product)> = Vec::new();
+    loop {
+        let mut best: Option<(usize, Vec<usize>, Product, GroupKey)> = None;
+        for i in 0..left.len() {
+            for j in i + 1..left.len() {
+                let Some(d) = left[i].1.polynomial_gcd(&left[j].1) else {
+                    continue;
+                };
+                let members: Vec<usize> = (0..left.len())
+                    .filter(|&k| left[k].1.exact_div(&d).is_some())
+                    .collect();
+                let alone: Vec<&Unit> = members.iter().map(|&k| left[k]).collect();
+                let separate: usize = unit_products(reg, &alone, search)
+                    .iter()
+                    .map(|p| Form::single(p.1.clone()).cost().0)
+                    .sum::<usize>()
+                    + alone.len().saturating_sub(1);
+                let inner_units: Vec<Unit> = alone
+                    .iter()
+                    .map(|u| (u.0.clone(), u.1.exact_div(&d).expect("d divides it")))
+                    .collect();
+                let inner_refs: Vec<&Unit> = inner_units.iter().collect();
+                let mut inner = unit_products(reg, &inner_refs, search);
+                inner.sort_by(|a, b| a.0.cmp(&b.0));
+                let key = inner[0].0.clone();
+                let mut inner = Form {
+                    terms: inner.into_iter().map(|x| x.1).collect(),
+                };
+                form::positive_first(&mut inner.terms);
+                // The numbers the terms share come out too: m2 L1 L2/2 (…), not m2 L1 L2 (½ … + ½ …).
+                let mut n = inner.terms[0].coef.abs();
+                for t in &inner.terms[1..] {
+                    n = n.gcd(&t.coef);
+                }
+                let n = n.abs();
+                inner.terms.iter_mut().for_each(|t| t.coef = &t.coef / &n);
+                let df = best_coefficient(search, normalize(d.monos()), reg.coordinates().len());
+                let mut together = times_form(df, inner);
+                together.coef = &together.coef * &n;
+                let cost = Form::single(together.clone()).cost().0;
+                if cost < separate {
+                    let gain = separate - cost;
+                    if best.as_ref().is_none_or(|b| gain > b.0) {
+                        best = Some((gain, members, together, key));
+                    }
+                }
+            }
+        }
+        let Some((_, members, p, key)) = best else {
+            break;
+        };
+        out.push((key, p));
+        left = left
+            .into_iter()
+            .enumerate()
+            .filter(|(k, _)| !members.contains(k))
+            .map(|x| x.1)
+            .collect();
+    }
+    out.extend(unit_products(reg, &left, search));
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    let mut terms = Vec::new();
+    for (key, p) in out {
+        if key.0 && p.factors.len() == 1 && p.coef.is_one() {
+            // A sum without rates stands in the sum.
+            if let Factor::Sum(s) = &p.factors[0].0 {
+                terms.extend(s.terms.clone());
+                continue;
+            }
+        }
+        terms.push(p);
+    }
+    Form { terms }
+}
+
+/// `a · (b)` as one product, `b` a sum (or one product).
+fn times_form(a: Form, b: Form) -> Product {
+    let mut p = times_rates(a, vec![]);
+    match <[Product; 1]>::try_from(b.terms) {
+        Ok([q]) => {
+            p.coef = &p.coef * &q.coef;
+            p.factors.extend(q.factors);
+        }
+        Err(terms) => {
+            let mut inner = Form { terms };
+            if search::negative_majority(&inner) {
+                inner
+                    .terms
+                    .iter_mut()
+                    .for_each(|q| q.coef = -q.coef.clone());
+                p.coef = -p.coef.clone();
+            }
+            p.factors.push((Factor::Sum(inner), 1));
+        }
+    }
+    p
+}
+
+/// The exponent vector of a monomial of plain leaves (no compound angle).
+fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
+    let mut e = vec![0u8; reg.nvars()];
+    for (a, k) in &m.atoms {
+        let role = match a {
+            Leaf::Param(p) => VarRole::Parameter(*p),
+            Leaf::Value(q) => VarRole::Value(*q),
+            Leaf::Rate(q, o) => VarRole::Rate(*q, *o),
+            Leaf::Cos(x) => VarRole::Cos(x.terms()[0].0),
+            Leaf::Sin(x) => VarRole::Sin(x.terms()[0].0),
+        };
+        let i = reg
+            .index_of(role)
+            .expect("a leaf of a canonical term is a variable");
+        e[i] += k;
+    }
+    e
+}
+
+/// The cheapest of the coefficient's rewritings (see the module documentation).
+fn best_coefficient(search: &mut search::Search, ms: Vec<Mono>, n_coords: usize) -> Form {
+    let compound = rewrite::squares(rewrite::compound_angles(ms.clone(), n_coords));
+    let candidates = [
+        ms,
+        rewrite::double_sines(compound.clone(), false),
+        rewrite::double_sines(compound.clone(), true),
+        compound,
+    ];
+    let mut best: Option<Form> = None;
+    for c in candidates {
+        let f = search.best(c);
+        if best
+            .as_ref()
+            .is_none_or(|b| f.placed_cost() < b.placed_cost())
+        {
+            best = Some(f);
+        }
+    }
+    best.unwrap_or_default()
+}
+
+/// `coefficient · rates` as one product.
+fn times_rates(coef: Form, kin: Kinematic) -> Product {
+    let rates = kin.into_iter().map(|(a, k)| (Factor::Leaf(a), k));
+    match <[Product; 1]>::try_from(coef.terms) {
+        Ok([mut p]) => {
+            p.factors.extend(rates);
+            p
+        }
+        Err(terms) => {
+            let mut inner = Form { terms };
+            let mut coef = Rational::one();
+            if search::negative_majority(&inner) {
+                inner
+                    .terms
+                    .iter_mut()
+                    .for_each(|p| p.coef = -p.coef.clone());
+                coef = -coef;
+            }
+            let mut factors = vec![(Factor::Sum(inner), 1)];
+            factors.extend(rates);
+            Product { coef, factors }
+        }
+    }
+}

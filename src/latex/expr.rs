@@ -1,0 +1,249 @@
+//! Expressions in LaTeX: the presentation form ([`crate::expr::Presentation`]) with the
+//! course's typography (\sin^{2}\theta_{2}, \sin 2\theta_{2}, \cos(\theta_{2} - \theta_{1}),
+//! brackets around a sum that holds a parenthesised one), and its line breaking.
+
+use super::{name, width};
+use crate::expr::{Angle, CoordId, Expr, Factor, Form, Leaf, Product, Registry};
+
+/// A rate: \dot{\theta}_{1}, the accent on the head, the subscript after.
+fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
+    let n = name(&reg.coord_info(q).name);
+    let (head, sub) = match n.split_once("_{") {
+        Some((h, s)) => (h.to_string(), format!("_{{{s}")),
+        None => (n.clone(), String::new()),
+    };
+    let acc = ["\\dot", "\\ddot", "\\dddot"][(order.clamp(1, 3) - 1) as usize];
+    format!("{acc}{{{head}}}{sub}")
+}
+
+/// An angle: (text, whether it needs parentheses after sin or cos).
+fn angle(reg: &Registry, a: &Angle) -> (String, bool) {
+    let mut s = String::new();
+    for (i, &(q, k)) in a.terms().iter().enumerate() {
+        let n = name(&reg.coord_info(q).name);
+        let body = if k.abs() == 1 {
+            n
+        } else {
+            format!("{}{n}", k.abs())
+        };
+        s.push_str(match (i, k < 0) {
+            (0, _) => "",
+            (_, true) => " - ",
+            (_, false) => " + ",
+        });
+        s.push_str(&body);
+    }
+    (s, a.terms().len() > 1)
+}
+
+/// A leaf raised to `k`: \cos^{2}\theta_{2}, L_{2}^{2}, \dot{\theta}_{1}^{2}.
+fn leaf(reg: &Registry, l: &Leaf, k: u8) -> String {
+    let pw = |b: String| {
+        if k == 1 { b } else { format!("{b}^{{{k}}}") }
+    };
+    match l {
+        Leaf::Param(p) => pw(name(reg.scalar_name(*p))),
+        Leaf::Value(q) => pw(name(&reg.coord_info(*q).name)),
+        Leaf::Rate(q, o) => pw(rate(reg, *q, *o)),
+        Leaf::Cos(a) | Leaf::Sin(a) => {
+            let fun = if matches!(l, Leaf::Cos(_)) {
+                "\\cos"
+            } else {
+                "\\sin"
+            };
+            let fun = if k == 1 {
+                fun.to_string()
+            } else {
+                format!("{fun}^{{{k}}}")
+            };
+            let (arg, compound) = angle(reg, a);
+            if compound {
+                format!("{fun}\\left({arg}\\right)")
+            } else if arg.starts_with('\\') {
+                format!("{fun}{arg}")
+            } else {
+                // `\sin q_{1}`, `\sin 2\theta`: a space, never `\sinq`.
+                format!("{fun} {arg}")
+            }
+        }
+    }
+}
+
+/// Whether a sum holds a parenthesised sum (it is then written in brackets).
+fn nests(f: &Form) -> bool {
+    f.terms
+        .iter()
+        .any(|p| p.factors.iter().any(|(f, _)| matches!(f, Factor::Sum(_))))
+}
+
+fn sum_factor(reg: &Registry, s: &Form, k: u8) -> String {
+    let (l, r) = if nests(s) {
+        ("\\left[", "\\right]")
+    } else {
+        ("\\left(", "\\right)")
+    };
+    let body = format!("{l}{}{r}", form(reg, s));
+    if k == 1 {
+        body
+    } else {
+        format!("{body}^{{{k}}}")
+    }
+}
+
+fn coefficient(p: &Product) -> Option<String> {
+    let s = p.coef.abs().to_string();
+    match s.split_once('/') {
+        Some((n, d)) => Some(format!("\\frac{{{n}}}{{{d}}}")),
+        None if s == "1" => None,
+        None => Some(s),
+    }
+}
+
+/// The factors of a product, in reading order, each as LaTeX.
+fn factors(reg: &Registry, p: &Product) -> Vec<(bool, String)> {
+    let mut out: Vec<(bool, String)> = coefficient(p).into_iter().map(|c| (false, c)).collect();
+    for (f, k) in p.ordered(reg) {
+        out.push(match f {
+            Factor::Leaf(l) => (false, leaf(reg, l, *k)),
+            Factor::Sum(s) => (true, sum_factor(reg, s, *k)),
+        });
+    }
+    out
+}
+
+/// A product without its sign.
+fn product(reg: &Registry, p: &Product) -> String {
+    let f: Vec<String> = factors(reg, p).into_iter().map(|x| x.1).collect();
+    if f.is_empty() {
+        "1".to_string()
+    } else {
+        f.join("\\,")
+    }
+}
+
+fn sign(neg: bool, first: bool) -> &'static str {
+    match (first, neg) {
+        (true, true) => "-",
+        (true, false) => "",
+        (false, true) => " - ",
+        (false, false) => " + ",
+    }
+}
+
+/// A sum of products.
+pub(crate) fn form(reg: &Registry, f: &Form) -> String {
+    if f.terms.is_empty() {
+        return "0".to_string();
+    }
+    let mut o = String::new();
+    for (i, p) in f.terms.iter().enumerate() {
+        o.push_str(sign(p.coef.is_negative(), i == 0));
+        o.push_str(&product(reg, p));
+    }
+    o
+}
+
+/// The presentation form in LaTeX.
+///
+/// ```
+/// use torseur::expr::Registry;
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::new(&["m".into(), "L".into()], &[("theta1".into(), CoordinateKind::Angle)]).unwrap();
+/// let e = reg.parse("m*L^2*ddot(theta1) - m*L*sin(theta1)*dot(theta1)^2").unwrap();
+/// assert_eq!(torseur::latex::expr(&e),
+///     "m\\,L\\,\\left(L\\,\\ddot{\\theta}_{1} - \\dot{\\theta}_{1}^{2}\\,\\sin\\theta_{1}\\right)");
+/// ```
+pub fn expr(e: &Expr) -> String {
+    let p = e.presentation();
+    form(p.registry(), p.form())
+}
+
+/// Whether the presentation form is one product (it multiplies a basis vector without
+/// parentheses).
+pub(crate) fn is_product(e: &Expr) -> bool {
+    e.presentation().form().terms.len() == 1
+}
+
+/// Unbreakable pieces of the presentation form: each product, or, for a product too wide
+/// for a line, its factors before its widest sum, then that sum's terms one by one (`\Big(`
+/// and `\Big)` may span lines, `\left(` and `\right)` may not), then the factors after.
+fn pieces(e: &Expr, max: usize) -> Vec<String> {
+    let p = e.presentation();
+    let reg = p.registry();
+    let mut out = Vec::new();
+    for (i, t) in p.form().terms.iter().enumerate() {
+        let s = sign(t.coef.is_negative(), i == 0);
+        let whole = product(reg, t);
+        let fs = factors(reg, t);
+        let widest = fs
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| f.0)
+            .max_by_key(|(_, f)| width(&f.1))
+            .map(|(k, _)| k);
+        let Some(k) = widest.filter(|_| width(&whole) > max) else {
+            out.push(format!("{s}{whole}"));
+            continue;
+        };
+        let sum = t
+            .ordered(reg)
+            .into_iter()
+            .filter_map(|(f, e)| match f {
+                Factor::Sum(s) => Some((s, *e)),
+                Factor::Leaf(_) => None,
+            })
+            .max_by_key(|(s, e)| width(&sum_factor(reg, s, *e)))
+            .expect("a sum factor");
+        let (l, r) = if nests(sum.0) {
+            ("\\Big[", "\\Big]")
+        } else {
+            ("\\Big(", "\\Big)")
+        };
+        let before: Vec<&str> = fs[..k].iter().map(|x| x.1.as_str()).collect();
+        let after: Vec<&str> = fs[k + 1..].iter().map(|x| x.1.as_str()).collect();
+        let n = sum.0.terms.len();
+        for (j, q) in sum.0.terms.iter().enumerate() {
+            let mut piece = String::new();
+            if j == 0 {
+                piece.push_str(s);
+                for b in &before {
+                    piece.push_str(b);
+                    piece.push_str("\\,");
+                }
+                piece.push_str(l);
+            }
+            piece.push_str(sign(q.coef.is_negative(), j == 0));
+            piece.push_str(&product(reg, q));
+            if j + 1 == n {
+                piece.push_str(r);
+                if sum.1 > 1 {
+                    piece.push_str(&format!("^{{{}}}", sum.1));
+                }
+                for a in &after {
+                    piece.push_str("\\,");
+                    piece.push_str(a);
+                }
+            }
+            out.push(piece);
+        }
+    }
+    if out.is_empty() {
+        out.push("0".to_string());
+    }
+    out
+}
+
+/// Lines of at most `max` width (as far as single terms allow), broken between products
+/// and, when a product is too wide, inside its widest sum.
+pub fn expr_lines(e: &Expr, max: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut cur = String::new();
+    for piece in pieces(e, max) {
+        if !cur.is_empty() && width(&cur) + width(&piece) > max {
+            lines.push(std::mem::take(&mut cur));
+        }
+        cur.push_str(&piece);
+    }
+    lines.push(cur);
+    lines
+}
