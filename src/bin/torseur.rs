@@ -46,6 +46,10 @@ enum Command {
         /// Print the number of terms of each canonical form, and the time taken, on stderr.
         #[arg(long)]
         stats: bool,
+        /// The written form on stdout: `presentation` (as a teacher writes it) or `canonical`
+        /// (the expanded polynomial, for tools; the JSON has both).
+        #[arg(long, value_enum, default_value_t = Form::Presentation)]
+        form: Form,
     },
     /// The whole answer key (« corrigé ») as LaTeX, on stdout or in a file, optionally as PDF.
     AnswerKey {
@@ -128,6 +132,15 @@ enum Command {
         #[arg(long)]
         hypothesis: Option<String>,
     },
+}
+
+/// The written form of `derive`'s text.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum Form {
+    /// As a teacher writes it: sin² θ, cos(θ2 − θ1), m2 (L1 + L2 cos θ2)²
+    Presentation,
+    /// The canonical polynomial, expanded
+    Canonical,
 }
 
 /// How vectors are written in the answer key.
@@ -345,6 +358,7 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             json,
             latex,
             stats,
+            form,
         } => {
             let start = std::time::Instant::now();
             let m = load(&spec)?;
@@ -369,7 +383,11 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
                 let text = serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n";
                 write_atomic(&path, text.as_bytes())?;
             }
-            emit(&output::derive_text(&m, &ds))?;
+            let form = match form {
+                Form::Presentation => output::TextForm::Presentation,
+                Form::Canonical => output::TextForm::Canonical,
+            };
+            emit(&output::derive_text_in(&m, &ds, form))?;
             if stats {
                 let mut total = 0;
                 for d in &ds {

@@ -78,7 +78,7 @@ pub(super) struct Doc<'m> {
     style: VectorStyle,
     pub(super) o: String,
     displays: Vec<Display>,
-    inline: Vec<Inline>,
+    pub(super) inline: Vec<Inline>,
     /// Values already displayed: (left side, canonical value) → where (« la question 3 »).
     shown: HashMap<(String, String), String>,
     /// Isolated systems whose bilan of external actions is written → where.

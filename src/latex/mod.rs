@@ -301,6 +301,13 @@ pub(crate) fn width(s: &str) -> usize {
     w
 }
 
+/// Whether most terms of the presentation form are negative (a product counts once).
+fn mostly_negative(e: &Expr) -> bool {
+    let p = e.presentation();
+    let t = &p.form().terms;
+    t.len() > 1 && 2 * t.iter().filter(|p| p.coef.is_negative()).count() > t.len()
+}
+
 /// A vector as a sum over its basis vectors, one line per component when long, inside an
 /// `aligned` block: `\left(...\right)\vec{x}_2 + ...`.
 pub fn vector_sum(
@@ -318,11 +325,25 @@ pub fn vector_sum(
             continue;
         }
         let bv = basis_vector(axes[k], basis_frame);
-        let ls = expr_lines(&c[k], max);
+        // A sum whose terms are mostly negative is written − [...] (− [(L1 + L2 cos θ2) θ̇1²
+        // cos θ2 + L2 θ̇2²] y2, not + (−(L1 + L2 cos θ2) θ̇1² cos θ2 − L2 θ̇2²) y2).
+        let negated = mostly_negative(&c[k]);
+        let shown = if negated { -&c[k] } else { c[k].clone() };
+        let ls = expr_lines(&shown, max);
         // One product (a group that is not a bare sum) multiplies the basis vector without
         // parentheses; anything else is parenthesised.
-        let single_term = is_product(&c[k]);
-        let sign = if first { "" } else { "+ " };
+        let single_term = is_product(&shown);
+        let sign = match (first, negated) {
+            (true, false) => "",
+            (true, true) => "-",
+            (false, false) => "+ ",
+            (false, true) => "- ",
+        };
+        let (open_p, close_p) = if ls.iter().any(|l| l.contains("\\left(")) {
+            ("\\left[", "\\right]")
+        } else {
+            ("\\left(", "\\right)")
+        };
         if ls.len() == 1 && single_term {
             let s = &ls[0];
             let s = if !first && s.starts_with('-') {
@@ -332,7 +353,7 @@ pub fn vector_sum(
             };
             lines.push(format!("{s}\\,{bv}"));
         } else if ls.len() == 1 {
-            lines.push(format!("{sign}\\left({}\\right){bv}", ls[0]));
+            lines.push(format!("{sign}{open_p}{}{close_p}{bv}", ls[0]));
         } else {
             let n = ls.len();
             for (i, l) in ls.into_iter().enumerate() {

@@ -127,6 +127,19 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                 _ => split_equation(e),
             };
             doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
+            if let Some(f) = first_integral(e) {
+                let math = super::expr(&f);
+                let _ = writeln!(
+                    doc.o,
+                    "Cette équation exprime que la dérivée par rapport au temps de ${math}$ est nulle : cette \
+                     quantité se conserve au cours du mouvement (intégrale première).\n"
+                );
+                doc.inline.push(super::Inline {
+                    what: format!("first integral of {id}"),
+                    latex: math,
+                    value: Value::Scalar(f),
+                });
+            }
         }
         _ => {
             let lhs = quantity(&d.quantity.kind);
@@ -134,6 +147,24 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         }
     }
     let _ = m;
+}
+
+/// F with dF/dt = e exactly, when e = 0 is a first integral in disguise: F = Σ (coefficient
+/// of q̈ᵢ in e) q̇ᵢ, kept only if its time derivative is e (the top's d/dt[C (ψ̇ cos θ + φ̇)] = 0).
+fn first_integral(e: &crate::expr::Expr) -> Option<crate::expr::Expr> {
+    let reg = e.registry();
+    let mut f = reg.zero();
+    for c in reg.coordinates() {
+        if c.has_imposed_rate() {
+            continue;
+        }
+        let q = reg.coord(&c.name)?;
+        let a = e.partial_rate(q, 2);
+        if !a.is_zero() {
+            f = &f + &(&a * &reg.dot(q));
+        }
+    }
+    (!f.is_zero() && f.dt() == *e).then_some(f)
 }
 
 /// An equation e = 0 as (terms with a rate) = −(the others).

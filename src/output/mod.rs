@@ -20,8 +20,39 @@ fn triple(c: &[Expr; 3], f: &impl Fn(&Expr) -> String) -> Vec<String> {
     c.iter().map(f).collect()
 }
 
+/// Which written form the text output uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TextForm {
+    /// The presentation form: as a teacher writes it (sin² θ, cos(θ2 − θ1), m2 (L1 + L2 cos θ2)²).
+    #[default]
+    Presentation,
+    /// The canonical polynomial, expanded (for tools that compare texts).
+    Canonical,
+}
+
 /// A value as one line of text (presentation forms).
 pub fn value_text(m: &Mechanism, v: &Value) -> String {
+    value_text_in(m, v, TextForm::Presentation)
+}
+
+/// A value as one line of text, in the form asked.
+///
+/// ```
+/// use torseur::output::{TextForm, value_text_in};
+/// let m = torseur::spec::load(concat!(env!("CARGO_MANIFEST_DIR"),
+///     "/derivations/double_pendule.json")).unwrap();
+/// let q = torseur::quantity::Quantity::parse("V(G2,2/0).x2").unwrap();
+/// let d = torseur::derivation::derive_values(&m, &[q]).unwrap();
+/// assert_eq!(value_text_in(&m, &d[0].value, TextForm::Presentation),
+///     "L1*dot(theta1)*cos(theta2 - theta1) + 1/2*L2*dot(theta2)");
+/// assert_eq!(value_text_in(&m, &d[0].value, TextForm::Canonical),
+///     "L1*cos(theta1)*cos(theta2)*dot(theta1) + L1*sin(theta1)*sin(theta2)*dot(theta1) + 1/2*L2*dot(theta2)");
+/// ```
+pub fn value_text_in(m: &Mechanism, v: &Value, form: TextForm) -> String {
+    let present = |e: &Expr| match form {
+        TextForm::Presentation => present(e),
+        TextForm::Canonical => e.to_string(),
+    };
     let f = |e: &Expr| present(e);
     match v {
         Value::Scalar(e) => present(e),
@@ -62,14 +93,23 @@ pub fn value_text(m: &Mechanism, v: &Value) -> String {
 
 /// The text report of `torseur derive`: each quantity, then its forms under each hypothesis.
 pub fn derive_text(m: &Mechanism, ds: &[Derivation]) -> String {
+    derive_text_in(m, ds, TextForm::Presentation)
+}
+
+/// [`derive_text`] in the form asked.
+pub fn derive_text_in(m: &Mechanism, ds: &[Derivation], form: TextForm) -> String {
     let mut out = String::new();
     for d in ds {
-        out.push_str(&format!("{} = {}\n", d.quantity, value_text(m, &d.value)));
+        out.push_str(&format!(
+            "{} = {}\n",
+            d.quantity,
+            value_text_in(m, &d.value, form)
+        ));
         for h in &m.hypotheses {
             out.push_str(&format!(
                 "  under {}: {}\n",
                 h.name,
-                value_text(m, &d.value.under(h))
+                value_text_in(m, &d.value.under(h), form)
             ));
         }
     }

@@ -962,3 +962,32 @@ fn a_huge_input_is_quoted_by_an_excerpt_and_the_message_stays_short() {
     let line = error_line(&o);
     assert!(line.len() < 400, "{} bytes: {line}", line.len());
 }
+
+/// `derive --form canonical` prints the canonical polynomial (the JSON's `canonical` string);
+/// the default prints the presentation form (the JSON's `presentation` string), which differs.
+#[test]
+fn derive_prints_the_form_asked() {
+    let d = tmp();
+    let json = d.path().join("d.json");
+    let spec = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("derivations/double_pendule.json")
+        .to_string_lossy()
+        .into_owned();
+    let q = "V(G2,2/0).x2";
+    let o = run(&["derive", &spec, "-q", q, "--json", json.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let j: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let v = &j["quantities"][0]["value"];
+    let (canonical, shown) = (
+        v["canonical"].as_str().unwrap(),
+        v["presentation"].as_str().unwrap(),
+    );
+    assert_ne!(canonical, shown);
+    assert_eq!(stdout(&o), format!("{q} = {shown}\n"));
+    let o = run(&["derive", &spec, "-q", q, "--form", "canonical"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stdout(&o), format!("{q} = {canonical}\n"));
+    let o = run(&["derive", &spec, "-q", q, "--form", "expanded"]);
+    assert_eq!(o.status.code(), Some(2));
+}

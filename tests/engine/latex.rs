@@ -113,3 +113,61 @@ fn spec_text_cannot_inject_latex() {
     let escaped = tex.matches("\\{").count() as i64 - tex.matches("\\}").count() as i64;
     assert_eq!(depth, escaped);
 }
+
+/// The top's equations in ψ and φ are first integrals in disguise; the key says so, and the
+/// conserved quantities are the textbook's, derived by hand: the momentum about the spin axis
+/// C (ψ̇ cos θ + φ̇) (Euler's third equation with no torque about z2), and the momentum about
+/// the vertical σ(O)·z0 = (A + m h²) ψ̇ sin²θ + C cos θ (ψ̇ cos θ + φ̇). The pendulum on a cart,
+/// whose equations hold gravity and a push, has none.
+#[test]
+fn first_integrals_are_stated_with_the_textbook_quantities() {
+    let m = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/toupie.json"
+    ))
+    .unwrap();
+    let key = torseur::latex::answer_key_document(&m, torseur::latex::VectorStyle::Sum).unwrap();
+    let found = |id: &str| {
+        key.inline
+            .iter()
+            .find(|i| i.what == format!("first integral of {id}"))
+            .map(|i| match &i.value {
+                torseur::derivation::Value::Scalar(e) => e.clone(),
+                _ => panic!("a scalar"),
+            })
+    };
+    let spin = m.reg.parse("C*(dot(psi)*cos(theta) + dot(phi))").unwrap();
+    assert_eq!(found("eom(phi)"), Some(spin));
+    let vertical = m
+        .reg
+        .parse("(A + m*h^2)*dot(psi)*sin(theta)^2 + C*cos(theta)*(dot(psi)*cos(theta) + dot(phi))")
+        .unwrap();
+    assert_eq!(found("eom(psi)"), Some(vertical));
+    assert!(key.tex.contains("(intégrale première)"));
+    let cart = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/pendule_sur_chariot.json"
+    ))
+    .unwrap();
+    let key = torseur::latex::answer_key_document(&cart, torseur::latex::VectorStyle::Sum).unwrap();
+    assert!(!key.tex.contains("intégrale première"));
+}
+
+/// A kinetic energy is written as a sum of squares when one completes: the top's
+/// ½ (A + m h²)(θ̇² + ψ̇² sin²θ) + ½ C (ψ̇ cos θ + φ̇)², the textbook form (its value is the
+/// engine's, as every printed form; here the shape is what is checked).
+#[test]
+fn the_tops_kinetic_energy_is_written_as_squares() {
+    let m = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/toupie.json"
+    ))
+    .unwrap();
+    let q = torseur::quantity::Quantity::parse("Ec(3/0)").unwrap();
+    let d = torseur::derivation::derive_values(&m, &[q]).unwrap();
+    let e = d[0].value.exprs()[0].clone();
+    assert_eq!(
+        e.presentation().to_string(),
+        "1/2*(A + m*h^2)*(dot(psi)^2*sin(theta)^2 + dot(theta)^2) + 1/2*C*(dot(psi)*cos(theta) + dot(phi))^2"
+    );
+}

@@ -97,7 +97,13 @@ impl Expr {
     pub fn presentation(&self) -> Presentation {
         let reg = self.registry().clone();
         let cheap = self.nterms() > SEARCH_LIMIT;
-        let form = grouped(self, cheap);
+        let mut form = grouped(self, cheap);
+        if !cheap
+            && let Some(f) = completed_square(self)
+            && f.cost() < form.cost()
+        {
+            form = f;
+        }
         let form = if form.to_expr(&reg) == *self {
             form
         } else {
@@ -135,6 +141,74 @@ impl Expr {
             })
             .collect()
     }
+}
+
+/// A quadratic form in the rates (a kinetic energy) with one square completed, when a rate's
+/// square coefficient a divides its cross terms b q̇ q̇ⱼ: a (q̇ + Σ b/(2a) q̇ⱼ)² + the rest
+/// (the top: ½ C (ψ̇ cos θ + φ̇)² + ½ (A + m h²)(θ̇² + ψ̇² sin² θ)). Each rate is tried as
+/// the pivot; the cheapest result is returned.
+fn completed_square(e: &Expr) -> Option<Form> {
+    let reg = e.registry();
+    let rates: Vec<_> = reg
+        .coordinates()
+        .iter()
+        .filter(|c| !c.has_imposed_rate())
+        .filter_map(|c| reg.coord(&c.name))
+        .collect();
+    // Every term holds exactly two first derivatives, and nothing else of the kind.
+    let quadratic = e.terms().all(|(_, x)| {
+        let mut d = 0;
+        for (i, &k) in x.iter().enumerate() {
+            match reg.role(i) {
+                VarRole::Rate(_, 1) => d += k as u32,
+                VarRole::Rate(..) if k > 0 => return false,
+                _ => {}
+            }
+        }
+        d == 2
+    });
+    if !quadratic || rates.len() < 2 {
+        return None;
+    }
+    let half = reg.constant(Rational::new(1, 2));
+    let mut best: Option<Form> = None;
+    for &p in &rates {
+        let dp = e.partial_rate(p, 1);
+        let a = &dp.partial_rate(p, 1) * &half;
+        if a.is_zero() {
+            continue;
+        }
+        let two_a = &a * &reg.integer(2);
+        let mut s = reg.dot(p);
+        let mut crossed = false;
+        for &j in rates.iter().filter(|&&j| j != p) {
+            let b = dp.partial_rate(j, 1);
+            if b.is_zero() {
+                continue;
+            }
+            let Some(c) = b.exact_div(&two_a) else {
+                s = reg.zero();
+                break;
+            };
+            s = &s + &(&c * &reg.dot(j));
+            crossed = true;
+        }
+        if !crossed || s.is_zero() {
+            continue;
+        }
+        let rest = e - &(&a * &(&s * &s));
+        let mut search = search::Search::new(reg);
+        let af = best_coefficient(&mut search, normalize(a.monos()), reg.coordinates().len());
+        let mut square = times_rates(af, vec![]);
+        square.factors.push((Factor::Sum(grouped(&s, false)), 2));
+        let mut terms = grouped(&rest, false).terms;
+        terms.push(square);
+        let f = Form { terms };
+        if best.as_ref().is_none_or(|b| f.cost() < b.cost()) {
+            best = Some(f);
+        }
+    }
+    best
 }
 
 /// Ordering key of a kinematic monomial: higher derivatives first, then by coordinate; the
