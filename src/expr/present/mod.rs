@@ -301,26 +301,34 @@ fn grouped(e: &Expr, cheap: bool) -> Form {
     if common.is_empty() && g.abs().is_one() {
         return whole;
     }
-    let inner = Expr::from_terms(
-        reg,
-        all.iter()
-            .map(|m| {
-                let r = m.divided(&g, &common);
-                (r.coef.clone(), exponents(reg, &r))
-            })
-            .collect(),
-    );
-    // The factor in front does not nest what follows: its cost is the inner form's plus one
-    // operation per factor (m2 [−(L1 + L2 cos θ2) θ̈1 + 2 L2 θ̇1 θ̇2 sin θ2]).
-    let inner = grouped(&inner, false);
-    let n = common.len() + usize::from(!g.abs().is_one()) + usize::from(g.is_negative());
-    let (o, l) = inner.cost();
-    let out = search::wrap(g, common, inner);
-    if (o + n, l + n) < whole.cost() {
-        out
+    // Both signs in front are tried: m (g − h (…)) may be shorter than −m (h (…) − g).
+    let mut best = whole;
+    let signs = if g.is_negative() {
+        vec![g.clone(), g.abs()]
     } else {
-        whole
+        vec![g]
+    };
+    for g in signs {
+        let inner = Expr::from_terms(
+            reg,
+            all.iter()
+                .map(|m| {
+                    let r = m.divided(&g, &common);
+                    (r.coef.clone(), exponents(reg, &r))
+                })
+                .collect(),
+        );
+        // The factor in front does not nest what follows: its cost is the inner form's plus
+        // one operation per factor (m2 [−(L1 + L2 cos θ2) θ̈1 + 2 L2 θ̇1 θ̇2 sin θ2]).
+        let inner = grouped(&inner, false);
+        let n = common.len() + usize::from(!g.abs().is_one()) + usize::from(g.is_negative());
+        let (o, l) = inner.cost();
+        let out = search::wrap(g, common.clone(), inner);
+        if (o + n, l + n) < best.cost() {
+            best = out;
+        }
     }
+    best
 }
 
 /// A coefficient (monomials of plain leaves) as an expression.

@@ -3,7 +3,7 @@
 //! factorisation (perfect squares, products of sums). Memoised, with a budget.
 
 use super::super::Registry;
-use super::form::{Factor, Form, Leaf, Product, sort_terms};
+use super::form::{Factor, Form, Leaf, Product, positive_first, sort_terms};
 use super::rewrite::{Leaves, Mono, normalize};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -59,7 +59,14 @@ impl<'a> Search<'a> {
         if !common.is_empty() || !g.abs().is_one() {
             let inner: Vec<Mono> = ms.iter().map(|m| m.divided(&g, &common)).collect();
             let f = self.best(inner);
-            consider(wrap(g, common, f), &mut best);
+            consider(wrap(g.clone(), common.clone(), f), &mut best);
+            if g.is_negative() {
+                // The sign may stay inside: m (g − h (…)) rather than −m (h (…) − g).
+                let pos = g.abs();
+                let inner: Vec<Mono> = ms.iter().map(|m| m.divided(&pos, &common)).collect();
+                let f = self.best(inner);
+                consider(wrap(pos, common, f), &mut best);
+            }
         } else if ms.len() <= SEARCH_TERMS && self.spent < BUDGET {
             if g.is_negative() {
                 // Only a sign in common: −(a + b) is a candidate, not the rule.
@@ -336,6 +343,7 @@ pub(crate) fn wrap(g: Rational, leaves: Vec<(Leaf, u8)>, inner: Form) -> Form {
                 .for_each(|p| p.coef = -p.coef.clone());
             coef = -coef;
         }
+        positive_first(&mut inner.terms);
         factors.push((Factor::Sum(inner), 1));
     }
     Form::single(Product { coef, factors })
