@@ -114,7 +114,14 @@ fn presented(m: &Mechanism, p: &Pair) -> String {
         ),
         None => d,
     };
-    d.exprs()[0].presentation().to_string()
+    let e: &torseur::expr::Expr = d.exprs()[0];
+    assert_eq!(
+        e.presentation_candidate().to_expr(e.registry()),
+        e.clone(),
+        "the search's form of {} is exact",
+        p.quantity
+    );
+    e.presentation().to_string()
 }
 
 /// Issue 13's target: the printed form has at most the textbook form's operation count

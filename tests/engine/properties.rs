@@ -68,6 +68,8 @@ proptest! {
         // The text form of the canonical form parses back to the same canonical form.
         prop_assert_eq!(m.reg.parse(&exact.to_string()).unwrap(), exact.clone());
         // So does the presentation form's (sin², cos 2θ, cos(θ2 − θ1), factored sums).
+        // The search's form is exact before any check (the check never has to fall back).
+        prop_assert_eq!(exact.presentation_candidate().to_expr(exact.registry()), exact.clone());
         let shown = exact.presentation().to_string();
         prop_assert_eq!(m.reg.parse(&shown).unwrap(), exact, "{}", shown);
     }

@@ -96,6 +96,20 @@ impl Expr {
     /// ```
     pub fn presentation(&self) -> Presentation {
         let reg = self.registry().clone();
+        let form = self.presentation_candidate();
+        let form = if form.to_expr(&reg) == *self {
+            form
+        } else {
+            debug_assert!(false, "a presentation form differs from its value: {self}");
+            grouped(self, true)
+        };
+        Presentation { form, reg }
+    }
+
+    /// The form the search chooses, before the exactness check of [`Expr::presentation`]
+    /// (for the tests that require the check never to fail).
+    #[doc(hidden)]
+    pub fn presentation_candidate(&self) -> Form {
         let cheap = self.nterms() > SEARCH_LIMIT;
         let mut form = grouped(self, cheap);
         if !cheap
@@ -104,13 +118,7 @@ impl Expr {
         {
             form = f;
         }
-        let form = if form.to_expr(&reg) == *self {
-            form
-        } else {
-            debug_assert!(false, "a presentation form differs from its value: {self}");
-            grouped(self, true)
-        };
-        Presentation { form, reg }
+        form
     }
 
     /// The leaves of each canonical term.
@@ -437,7 +445,7 @@ fn clustered(reg: &Rc<Registry>, units: &[Unit], search: &mut search::Search) ->
     out.sort_by(|a, b| a.0.cmp(&b.0));
     let mut terms = Vec::new();
     for (key, p) in out {
-        if key.0 && p.factors.len() == 1 && p.coef.is_one() {
+        if key.0 && p.factors.len() == 1 && p.factors[0].1 == 1 && p.coef.is_one() {
             // A sum without rates stands in the sum.
             if let Factor::Sum(s) = &p.factors[0].0 {
                 terms.extend(s.terms.clone());
