@@ -42,6 +42,8 @@ mod sample;
 mod tests;
 #[cfg(test)]
 mod tests_pfd;
+#[cfg(test)]
+mod tests_regulator;
 
 use crate::quantity::Quantity;
 use crate::spec::wire::{CoordinateKind, SpecFile};
