@@ -1,0 +1,424 @@
+//! The PFD at a sample: the action terms of every link and action, each theorem's residual
+//! (dynamic side minus actions, affine in the unknowns), and the solve for the unknowns.
+
+use super::*;
+use std::ops::{Add, Mul, Neg};
+
+/// c + Σ uₖ aₖ: a scalar or a vector affine in the unknowns u.
+#[derive(Debug, Clone)]
+struct Lin<T> {
+    c: T,
+    a: Vec<T>,
+}
+
+impl<T> Lin<T>
+where
+    T: Copy + Add<Output = T> + Neg<Output = T> + Mul<f64, Output = T>,
+{
+    fn constant(c: T, zero: T, n: usize) -> Lin<T> {
+        Lin {
+            c,
+            a: vec![zero; n],
+        }
+    }
+
+    fn add(&mut self, other: &Lin<T>) {
+        self.c = self.c + other.c;
+        for (x, y) in self.a.iter_mut().zip(&other.a) {
+            *x = *x + *y;
+        }
+    }
+
+    fn neg(&self) -> Lin<T> {
+        self.map(|x| -*x)
+    }
+
+    /// Applies a linear map to the constant and every coefficient.
+    fn map<U>(&self, f: impl Fn(&T) -> U) -> Lin<U> {
+        Lin {
+            c: f(&self.c),
+            a: self.a.iter().map(&f).collect(),
+        }
+    }
+}
+
+impl Lin<Vector3<f64>> {
+    /// The largest norm of its constant and coefficients.
+    fn size(&self) -> f64 {
+        self.a.iter().fold(self.c.norm(), |s, v| s.max(v.norm()))
+    }
+}
+
+/// An action torsor {T(from→on)} at a point (ground components and position).
+#[derive(Debug, Clone)]
+struct Term {
+    from: Body,
+    on: Body,
+    point: Vector3<f64>,
+    resultant: Lin<Vector3<f64>>,
+    moment: Lin<Vector3<f64>>,
+}
+
+impl Term {
+    /// {T(on→from)} = −{T(from→on)}.
+    fn reaction(&self) -> Term {
+        Term {
+            from: self.on,
+            on: self.from,
+            point: self.point,
+            resultant: self.resultant.neg(),
+            moment: self.moment.neg(),
+        }
+    }
+}
+
+fn eval_err(what: String) -> impl Fn(String) -> NumericError {
+    move |message| NumericError::Evaluation {
+        what: what.clone(),
+        message,
+    }
+}
+
+fn body_frame(m: &NumericModel, b: Body) -> usize {
+    match b {
+        Body::Solid(s) => m.solids[s].frame,
+        Body::Frame(f) => f,
+    }
+}
+
+/// Evaluates a constant scalar.
+fn constant(node: &Node, vals: &Values, what: impl Fn() -> String) -> Result<f64, NumericError> {
+    expr::eval_scalar(node, &vals.constants()).map_err(eval_err(what()))
+}
+
+/// g⃗ in ground components (zero when gravity is neglected).
+fn gravity(m: &NumericModel, st: &State, vals: &Values) -> Result<Vector3<f64>, NumericError> {
+    let Some(node) = &m.dynamics.gravity else {
+        return Ok(Vector3::zeros());
+    };
+    let frames: Vec<Matrix3<f64>> = (0..m.frames.len()).map(|f| st.rot0(f)).collect();
+    let env = Env {
+        params: &vals.params,
+        coords: &[],
+        rates: &[],
+        frames: &frames,
+    };
+    expr::eval_vector(node, &env).map_err(eval_err("gravity".into()))
+}
+
+/// Every declared action (links and given actions) at the sampled instant, each followed by
+/// its reaction.
+fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, NumericError> {
+    let dy = &m.dynamics;
+    let n = dy.unknowns.len();
+    let zero = Lin::constant(Vector3::zeros(), Vector3::zeros(), n);
+    let mut out = Vec::new();
+    for (i, l) in dy.links.iter().enumerate() {
+        let rb = st.rot0(l.basis);
+        let mut resultant = zero.clone();
+        let mut moment = zero.clone();
+        for (k, idx) in &l.components {
+            let e = rb.column(k % 3).into_owned();
+            if *k < 3 {
+                resultant.a[*idx] = e;
+            } else {
+                moment.a[*idx] = e;
+            }
+        }
+        let [fa, fb] = l.between.map(|b| body_frame(m, b));
+        let u = rb.column(l.axis.unwrap_or(0)).into_owned();
+        let slider = l.kind == LinkKind::Slider;
+        if let Some(f) = &l.friction {
+            let f = constant(f, vals, || format!("friction of links[{i}]"))?;
+            if slider {
+                let [v, _] = kin::point_motion(st, l.point, fb, fa);
+                resultant.c -= u * (f * v.dot(&u));
+            } else {
+                let w = kin::omega(st, fb, fa);
+                moment.c -= u * (f * w.dot(&u));
+            }
+        }
+        if let Some(s) = &l.spring {
+            let k = constant(&s.stiffness, vals, || {
+                format!("stiffness of the spring of links[{i}]")
+            })?;
+            let q0 = match &s.free {
+                Some(q0) => constant(q0, vals, || {
+                    format!("free value of the spring of links[{i}]")
+                })?,
+                None => 0.0,
+            };
+            let push = u * (-k * (vals.coords[s.coord][0] - q0));
+            if slider {
+                resultant.c += push;
+            } else {
+                moment.c += push;
+            }
+        }
+        let t = Term {
+            from: l.between[0],
+            on: l.between[1],
+            point: st.pos0(l.point),
+            resultant,
+            moment,
+        };
+        out.push(t.reaction());
+        out.push(t);
+    }
+    // Given actions: the part free of unknowns, and each unknown's coefficient exactly (the
+    // expressions are affine in the unknowns: checked when the model is built).
+    let frames: Vec<Matrix3<f64>> = (0..m.frames.len()).map(|f| st.rot0(f)).collect();
+    let coords: Vec<f64> = vals.coords.iter().map(|c| c[0]).collect();
+    let rates: Vec<[f64; 2]> = vals.coords.iter().map(|c| [c[1], c[2]]).collect();
+    let env = Env {
+        params: &vals.params,
+        coords: &coords,
+        rates: &rates,
+        frames: &frames,
+    };
+    for (i, a) in dy.actions.iter().enumerate() {
+        let mut parts = [zero.clone(), zero.clone()];
+        for (part, (node, field)) in parts
+            .iter_mut()
+            .zip([(&a.resultant, "resultant"), (&a.moment, "moment")])
+        {
+            let Some(node) = node else { continue };
+            let run = |n: &Node| {
+                expr::eval_vector(n, &env).map_err(eval_err(format!("{field} of actions[{i}]")))
+            };
+            part.c = run(&expr::without_unknowns(node))?;
+            for k in &a.unknowns {
+                part.a[*k] = run(&expr::unknown_coefficient(node, *k))?;
+            }
+        }
+        let [resultant, moment] = parts;
+        let t = Term {
+            from: a.from,
+            on: a.on,
+            point: st.pos0(a.point),
+            resultant,
+            moment,
+        };
+        out.push(t.reaction());
+        out.push(t);
+    }
+    Ok(out)
+}
+
+/// The residual of a declared equation, dynamic side minus actions, and the size of the terms
+/// it sums (for the rounding noise).
+fn residual(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    terms: &[Term],
+    g: &Vector3<f64>,
+    t: &TheoremInfo,
+) -> Result<(Lin<f64>, f64), NumericError> {
+    let n = m.dynamics.unknowns.len();
+    let member = |b: Body| matches!(b, Body::Solid(s) if t.solids.contains(&s));
+    let p = st.pos0(t.point);
+    let u = st.rot0(t.on.0).column(t.on.1).into_owned();
+    let [_, _, rd, delta] = kin::kinetic(m, st, vals, &t.solids, 0, t.point)?;
+    let dynamic = if t.moment { delta } else { rd };
+    let mut size = dynamic.norm();
+    let mut sum = Lin::constant(Vector3::zeros(), Vector3::zeros(), n);
+    for term in terms {
+        if !member(term.on) || member(term.from) {
+            continue;
+        }
+        let part = if t.moment {
+            let arm = term.point - p;
+            let mut at_p = term.moment.clone();
+            at_p.add(&term.resultant.map(|r| arm.cross(r)));
+            at_p
+        } else {
+            term.resultant.clone()
+        };
+        size = size.max(part.size());
+        sum.add(&part);
+    }
+    // Gravity on every point mass of every member.
+    if g.norm() > 0.0 {
+        for s in &t.solids {
+            let f = m.solids[*s].frame;
+            let (rf, of) = (st.rot0(f), st.origin(f).map(|x| x.re));
+            for (mk, local) in cloud::solid_cloud(m, st, vals, *s)? {
+                let weight = g * mk;
+                let part = if t.moment {
+                    (of + rf * local - p).cross(&weight)
+                } else {
+                    weight
+                };
+                size = size.max(part.norm());
+                sum.c += part;
+            }
+        }
+    }
+    let actions = sum.map(|v| v.dot(&u));
+    let mut r = actions.neg();
+    r.c += dynamic.dot(&u);
+    Ok((r, size))
+}
+
+/// The solved PFD at one sample.
+struct Solution {
+    /// Value of each unknown that the equations without `eom` determine.
+    values: Vec<Option<f64>>,
+    /// Each declared equation's residual, coefficients of absent unknowns set to zero.
+    residuals: Vec<Lin<f64>>,
+}
+
+/// The value of the unknown `name` at the sample, solved from the equations without `eom`.
+pub(in crate::numeric) fn unknown(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    name: &str,
+) -> Result<f64, NumericError> {
+    let fail = |message: String| NumericError::Quantity {
+        quantity: name.to_string(),
+        message,
+    };
+    let dy = &m.dynamics;
+    let Some(k) = dy.unknown_index.get(name) else {
+        return Err(fail(format!(
+            "`{name}` is not an unknown of the PFD (its unknowns: {})",
+            if dy.unknowns.is_empty() {
+                "none".to_string()
+            } else {
+                dy.unknowns.join(", ")
+            }
+        )));
+    };
+    let solution = solve(m, st, vals)?.map_err(fail)?;
+    solution.values[*k].ok_or_else(|| {
+        fail(format!(
+            "the unknown `{name}` appears in no equation of the PFD without eom: nothing \
+             determines it"
+        ))
+    })
+}
+
+/// The residual of the equation of motion of coordinate `q` at the sample (q̈ the sample's),
+/// the unknowns solved from the equations without `eom` substituted.
+pub(in crate::numeric) fn eom(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    q: &str,
+) -> Result<f64, NumericError> {
+    let fail = |message: String| NumericError::Quantity {
+        quantity: format!("eom({q})"),
+        message,
+    };
+    let dy = &m.dynamics;
+    let Some(c) = m.coord_index.get(q) else {
+        return Err(fail(format!("`{q}` is not a time coordinate")));
+    };
+    let Some(i) = dy.theorems.iter().position(|t| t.eom == Some(*c)) else {
+        return Err(fail(format!("no equation of the PFD has eom `{q}`")));
+    };
+    let solution = solve(m, st, vals)?.map_err(fail)?;
+    let r = &solution.residuals[i];
+    let mut x = r.c;
+    for (k, a) in r.a.iter().enumerate() {
+        if *a == 0.0 {
+            continue;
+        }
+        let v = solution.values[k].ok_or_else(|| {
+            fail(format!(
+                "its equation still holds the unknown `{}`, which the equations without eom \
+                 do not determine",
+                dy.unknowns[k]
+            ))
+        })?;
+        x += a * v;
+    }
+    Ok(x)
+}
+
+/// Builds every declared equation at the sample and solves those without `eom`: the outer
+/// error is an evaluation failure, the inner one a system that cannot be solved.
+fn solve(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+) -> Result<Result<Solution, String>, NumericError> {
+    let dy = &m.dynamics;
+    let n = dy.unknowns.len();
+    let terms = terms(m, st, vals)?;
+    let g = gravity(m, st, vals)?;
+    let mut residuals = Vec::with_capacity(dy.theorems.len());
+    for t in &dy.theorems {
+        let (mut r, size) = residual(m, st, vals, &terms, &g, t)?;
+        for a in &mut r.a {
+            if a.abs() <= APPEARS * size {
+                *a = 0.0;
+            }
+        }
+        residuals.push(r);
+    }
+    let rows: Vec<usize> = (0..dy.theorems.len())
+        .filter(|i| dy.theorems[*i].eom.is_none())
+        .collect();
+    let cols: Vec<usize> = (0..n)
+        .filter(|k| rows.iter().any(|i| residuals[*i].a[*k] != 0.0))
+        .collect();
+    let listed = |ks: &[usize]| -> String {
+        if ks.is_empty() {
+            return "none".into();
+        }
+        ks.iter()
+            .map(|k| dy.unknowns[*k].as_str())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if rows.len() != cols.len() {
+        return Ok(Err(format!(
+            "the PFD's equations without eom must determine the unknowns that appear in them: \
+             {} equation(s) for {} unknown(s) ({})",
+            rows.len(),
+            cols.len(),
+            listed(&cols)
+        )));
+    }
+    let mut values = vec![None; n];
+    if !rows.is_empty() {
+        let k = rows.len();
+        let mut a = DMatrix::from_fn(k, k, |r, c| residuals[rows[r]].a[cols[c]]);
+        let mut b = DVector::from_fn(k, |r, _| -residuals[rows[r]].c);
+        // Scale rows then columns to unit largest entries, so that the pivot test is
+        // independent of units.
+        for r in 0..k {
+            let s = a.row(r).amax();
+            if s > 0.0 {
+                a.row_mut(r).scale_mut(1.0 / s);
+                b[r] /= s;
+            }
+        }
+        let col_scale: Vec<f64> = (0..k).map(|c| a.column(c).amax()).collect();
+        for (c, s) in col_scale.iter().enumerate() {
+            a.column_mut(c).scale_mut(1.0 / s);
+        }
+        let lu = a.lu();
+        let pivot = lu.u().diagonal().amin();
+        let singular = || {
+            format!(
+                "the PFD's equations without eom are singular at this sample: they do not \
+                 determine their unknowns ({})",
+                listed(&cols)
+            )
+        };
+        if pivot.is_nan() || pivot <= SINGULAR {
+            return Ok(Err(singular()));
+        }
+        let Some(y) = lu.solve(&b) else {
+            return Ok(Err(singular()));
+        };
+        for (c, col) in cols.iter().enumerate() {
+            values[*col] = Some(y[c] / col_scale[c]);
+        }
+    }
+    Ok(Ok(Solution { values, residuals }))
+}
