@@ -3,7 +3,7 @@
 //! brackets around a sum that holds a parenthesised one), and its line breaking.
 
 use super::{name, width};
-use crate::expr::{Angle, CoordId, Expr, Factor, Form, Leaf, Product, Registry};
+use crate::expr::{Angle, CoordId, Expr, Factor, Form, Leaf, Presentation, Product, Registry};
 
 /// A rate: \dot{\theta}_{1}, the accent on the head, the subscript after.
 fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
@@ -18,6 +18,11 @@ fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
 
 /// An angle: (text, whether it needs parentheses after sin or cos).
 fn angle(reg: &Registry, a: &Angle) -> (String, bool) {
+    // The first coefficient's sign is not written: only normalised angles are printed.
+    assert!(
+        a.terms().first().is_some_and(|t| t.1 > 0),
+        "an angle is printed normalised"
+    );
     let mut s = String::new();
     for (i, &(q, k)) in a.terms().iter().enumerate() {
         let n = name(&reg.coord_info(q).name);
@@ -158,17 +163,10 @@ pub fn expr(e: &Expr) -> String {
     form(p.registry(), p.form())
 }
 
-/// Whether the presentation form is one product (it multiplies a basis vector without
-/// parentheses).
-pub(crate) fn is_product(e: &Expr) -> bool {
-    e.presentation().form().terms.len() == 1
-}
-
 /// Unbreakable pieces of the presentation form: each product, or, for a product too wide
 /// for a line, its factors before its widest sum, then that sum's terms one by one (`\Big(`
 /// and `\Big)` may span lines, `\left(` and `\right)` may not), then the factors after.
-fn pieces(e: &Expr, max: usize) -> Vec<String> {
-    let p = e.presentation();
+fn pieces(p: &Presentation, max: usize) -> Vec<String> {
     let reg = p.registry();
     let mut out = Vec::new();
     for (i, t) in p.form().terms.iter().enumerate() {
@@ -236,9 +234,14 @@ fn pieces(e: &Expr, max: usize) -> Vec<String> {
 /// Lines of at most `max` width (as far as single terms allow), broken between products
 /// and, when a product is too wide, inside its widest sum.
 pub fn expr_lines(e: &Expr, max: usize) -> Vec<String> {
+    presentation_lines(&e.presentation(), max)
+}
+
+/// [`expr_lines`] of a presentation already computed.
+pub(crate) fn presentation_lines(p: &Presentation, max: usize) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
     let mut cur = String::new();
-    for piece in pieces(e, max) {
+    for piece in pieces(p, max) {
         if !cur.is_empty() && width(&cur) + width(&piece) > max {
             lines.push(std::mem::take(&mut cur));
         }

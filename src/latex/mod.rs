@@ -19,7 +19,6 @@ mod theorems;
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
 };
-pub(crate) use expr::is_product;
 pub use expr::{expr, expr_lines};
 pub use figures::{link_graph, link_text, rotation_figures};
 pub use text::{RichTextError, rich_text, rich_text_or_escaped};
@@ -302,8 +301,7 @@ pub(crate) fn width(s: &str) -> usize {
 }
 
 /// Whether most terms of the presentation form are negative (a product counts once).
-fn mostly_negative(e: &Expr) -> bool {
-    let p = e.presentation();
+fn mostly_negative(p: &crate::expr::Presentation) -> bool {
     let t = &p.form().terms;
     t.len() > 1 && 2 * t.iter().filter(|p| p.coef.is_negative()).count() > t.len()
 }
@@ -327,12 +325,17 @@ pub fn vector_sum(
         let bv = basis_vector(axes[k], basis_frame);
         // A sum whose terms are mostly negative is written − [...] (− [(L1 + L2 cos θ2) θ̇1²
         // cos θ2 + L2 θ̇2²] y2, not + (−(L1 + L2 cos θ2) θ̇1² cos θ2 − L2 θ̇2²) y2).
-        let negated = mostly_negative(&c[k]);
-        let shown = if negated { -&c[k] } else { c[k].clone() };
-        let ls = expr_lines(&shown, max);
+        let own = c[k].presentation();
+        let negated = mostly_negative(&own);
+        let shown = if negated {
+            (-&c[k]).presentation()
+        } else {
+            own
+        };
+        let ls = expr::presentation_lines(&shown, max);
         // One product (a group that is not a bare sum) multiplies the basis vector without
         // parentheses; anything else is parenthesised.
-        let single_term = is_product(&shown);
+        let single_term = shown.form().terms.len() == 1;
         let sign = match (first, negated) {
             (true, false) => "",
             (true, true) => "-",
@@ -345,11 +348,16 @@ pub fn vector_sum(
             ("\\left(", "\\right)")
         };
         if ls.len() == 1 && single_term {
-            let s = &ls[0];
-            let s = if !first && s.starts_with('-') {
-                format!("- {}", &s[1..])
-            } else {
-                format!("{sign}{s}")
+            // The product's own sign and the sign taken out combine.
+            let (inner_neg, body) = match ls[0].strip_prefix('-') {
+                Some(b) => (true, b),
+                None => (false, ls[0].as_str()),
+            };
+            let s = match (first, negated != inner_neg) {
+                (true, false) => body.to_string(),
+                (true, true) => format!("-{body}"),
+                (false, false) => format!("+ {body}"),
+                (false, true) => format!("- {body}"),
             };
             lines.push(format!("{s}\\,{bv}"));
         } else if ls.len() == 1 {

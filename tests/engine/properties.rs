@@ -10,6 +10,7 @@ fn atom() -> impl Strategy<Value = String> {
         Just("L1".to_string()),
         Just("A2".to_string()),
         Just("dot(theta1)".to_string()),
+        Just("dot(theta2)".to_string()),
         Just("ddot(theta2)".to_string()),
         (1i32..5).prop_map(|n| n.to_string()),
         (1i32..4, 2i32..5).prop_map(|(n, d)| format!("{n}/{d}")),

@@ -49,6 +49,11 @@ impl Angle {
     }
 
     fn text(&self, reg: &Registry) -> String {
+        // The first coefficient's sign is not written: only normalised angles are printed.
+        assert!(
+            self.0.first().is_some_and(|t| t.1 > 0),
+            "an angle is printed normalised"
+        );
         let mut s = String::new();
         for (i, &(q, k)) in self.0.iter().enumerate() {
             let name = &reg.coord_info(q).name;

@@ -501,6 +501,7 @@ fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
 
 /// The cheapest of the coefficient's rewritings (see the module documentation).
 fn best_coefficient(search: &mut search::Search, ms: Vec<Mono>, n_coords: usize) -> Form {
+    search.fresh_budget();
     let compound = rewrite::squares(rewrite::compound_angles(ms.clone(), n_coords));
     let candidates = [
         ms,

@@ -34,6 +34,12 @@ impl<'a> Search<'a> {
         }
     }
 
+    /// A fresh budget for the next coefficient (the memo is kept): a group written late
+    /// gets the same search as the first.
+    pub fn fresh_budget(&mut self) {
+        self.spent = 0;
+    }
+
     /// The cheapest form found for the sum of `ms` (normalised monomials).
     pub fn best(&mut self, ms: Vec<Mono>) -> Form {
         match ms.len() {
