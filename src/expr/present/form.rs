@@ -331,13 +331,36 @@ fn plain_var(reg: &Registry, f: &Factor) -> Option<(usize, bool)> {
 /// Reading-order key of a factor.
 pub(crate) fn factor_key(reg: &Registry, f: &Factor) -> (u8, u32, usize, u8, Vec<(CoordId, i32)>) {
     match f {
-        Factor::Leaf(Leaf::Param(p)) => (0, reg.display_rank(*p), *p, 0, vec![]),
-        Factor::Leaf(Leaf::Value(q)) => (1, 0, q.0, 0, vec![]),
-        Factor::Sum(s) => (2, u32::from(s.terms.iter().any(has_rates)), 0, 0, vec![]),
-        Factor::Leaf(Leaf::Rate(q, o)) => (3, 0, usize::MAX - *o as usize, q.0 as u8, vec![]),
+        // A group of parameters first, as a physical quantity ((M + m) g sin α,
+        // (C − A) ω², (A + m h²) θ̈); a sum with coordinates after the parameters
+        // (m2 (L1 + L2 cos θ2)²).
+        Factor::Sum(s)
+            if s.terms
+                .iter()
+                .all(|p| !p.factors.iter().any(|x| varies(&x.0))) =>
+        {
+            (0, 0, 0, 0, vec![])
+        }
+        Factor::Leaf(Leaf::Param(p)) => (1, reg.display_rank(*p), *p, 0, vec![]),
+        Factor::Leaf(Leaf::Value(q)) => (2, 0, q.0, 0, vec![]),
+        Factor::Sum(s) => (3, u32::from(s.terms.iter().any(has_rates)), 0, 0, vec![]),
+        Factor::Leaf(Leaf::Rate(q, o)) => (4, 0, usize::MAX - *o as usize, q.0 as u8, vec![]),
         // sin θ cos θ, as the course writes it.
-        Factor::Leaf(Leaf::Sin(a)) => (4, 0, 0, 0, a.0.clone()),
-        Factor::Leaf(Leaf::Cos(a)) => (4, 0, 1, 0, a.0.clone()),
+        Factor::Leaf(Leaf::Sin(a)) => (5, 0, 0, 0, a.0.clone()),
+        Factor::Leaf(Leaf::Cos(a)) => (5, 0, 1, 0, a.0.clone()),
+    }
+}
+
+/// Whether a factor depends on the motion or the geometry's angles: a coordinate, a rate, a
+/// trigonometric function, or a sum holding one.
+fn varies(f: &Factor) -> bool {
+    match f {
+        Factor::Leaf(Leaf::Param(_)) => false,
+        Factor::Leaf(_) => true,
+        Factor::Sum(s) => s
+            .terms
+            .iter()
+            .any(|p| p.factors.iter().any(|x| varies(&x.0))),
     }
 }
 

@@ -284,6 +284,13 @@ fn grouped(e: &Expr, cheap: bool) -> Form {
         }
         let coef = if cheap {
             search.content_only(ms)
+        } else if kin.is_empty() {
+            // The part without rates stands in the expression's own sum.
+            best_coefficient(
+                &mut search::Search::at_top(reg),
+                ms,
+                reg.coordinates().len(),
+            )
         } else {
             best_coefficient(&mut search, ms, reg.coordinates().len())
         };
@@ -514,7 +521,7 @@ fn best_coefficient(search: &mut search::Search, ms: Vec<Mono>, n_coords: usize)
         let f = search.best(c);
         if best
             .as_ref()
-            .is_none_or(|b| f.placed_cost() < b.placed_cost())
+            .is_none_or(|b| search.placed(&f) < search.placed(b))
         {
             best = Some(f);
         }

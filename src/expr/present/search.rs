@@ -21,6 +21,9 @@ const BUDGET: usize = 4000;
 
 pub(crate) struct Search<'a> {
     reg: &'a Registry,
+    /// The sums searched stand in the expression's own sum (the part without rates), not in
+    /// parentheses before rates: they are costed at depth 0.
+    top: bool,
     memo: HashMap<Vec<Mono>, Form>,
     spent: usize,
 }
@@ -29,8 +32,25 @@ impl<'a> Search<'a> {
     pub fn new(reg: &'a Registry) -> Search<'a> {
         Search {
             reg,
+            top: false,
             memo: HashMap::new(),
             spent: 0,
+        }
+    }
+
+    /// A search whose sums stand in the expression's own sum (see `top`).
+    pub fn at_top(reg: &'a Registry) -> Search<'a> {
+        let mut s = Search::new(reg);
+        s.top = true;
+        s
+    }
+
+    /// The cost of a coefficient where it will stand.
+    pub fn placed(&self, f: &Form) -> super::form::Cost {
+        if self.top {
+            f.cost_at(0)
+        } else {
+            f.placed_cost()
         }
     }
 
@@ -56,8 +76,10 @@ impl<'a> Search<'a> {
         self.spent += 1;
         let mut best = self.flat(&ms);
         // A coefficient is costed where it will stand: in parentheses, before its rates.
+        let top = self.top;
+        let placed = move |f: &Form| if top { f.cost_at(0) } else { f.placed_cost() };
         let consider = |f: Form, best: &mut Form| {
-            if f.placed_cost() < best.placed_cost() {
+            if placed(&f) < placed(best) {
                 *best = f;
             }
         };
