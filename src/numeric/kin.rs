@@ -30,6 +30,14 @@ impl Values {
             frames: &[],
         }
     }
+
+    /// The coordinates' values and their (q̇, q̈), as an [`Env`] takes them.
+    pub fn split(&self) -> (Vec<f64>, Vec<[f64; 2]>) {
+        (
+            self.coords.iter().map(|c| c[0]).collect(),
+            self.coords.iter().map(|c| [c[1], c[2]]).collect(),
+        )
+    }
 }
 
 /// Resolves a sample: every name known, every value present and finite, imposed rates kept.
@@ -502,8 +510,7 @@ pub(super) fn evaluate_expression(
             message: e,
         })?;
     let vals = values(m, sample)?;
-    let coords: Vec<f64> = vals.coords.iter().map(|c| c[0]).collect();
-    let rates: Vec<[f64; 2]> = vals.coords.iter().map(|c| [c[1], c[2]]).collect();
+    let (coords, rates) = vals.split();
     let env = Env {
         params: &vals.params,
         coords: &coords,

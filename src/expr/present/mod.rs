@@ -495,8 +495,12 @@ fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
             Leaf::Param(p) => VarRole::Parameter(*p),
             Leaf::Value(q) => VarRole::Value(*q),
             Leaf::Rate(q, o) => VarRole::Rate(*q, *o),
-            Leaf::Cos(x) => VarRole::Cos(x.terms()[0].0),
-            Leaf::Sin(x) => VarRole::Sin(x.terms()[0].0),
+            // Only single angles here: a compound angle is no variable of the registry.
+            Leaf::Cos(x) if x.is_simple() => VarRole::Cos(x.terms()[0].0),
+            Leaf::Sin(x) if x.is_simple() => VarRole::Sin(x.terms()[0].0),
+            Leaf::Cos(_) | Leaf::Sin(_) => {
+                unreachable!("a compound angle is not a variable of the canonical form")
+            }
         };
         let i = reg
             .index_of(role)

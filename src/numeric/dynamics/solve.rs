@@ -168,8 +168,7 @@ fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, Numer
     // Given actions: the part free of unknowns, and each unknown's coefficient exactly (the
     // expressions are affine in the unknowns: checked when the model is built).
     let frames: Vec<Matrix3<f64>> = (0..m.frames.len()).map(|f| st.rot0(f)).collect();
-    let coords: Vec<f64> = vals.coords.iter().map(|c| c[0]).collect();
-    let rates: Vec<[f64; 2]> = vals.coords.iter().map(|c| [c[1], c[2]]).collect();
+    let (coords, rates) = vals.split();
     let env = Env {
         params: &vals.params,
         coords: &coords,
