@@ -247,12 +247,12 @@ impl<'m> Doc<'m> {
         a: &crate::expr::Expr,
         b: &crate::expr::Expr,
     ) {
-        let (l, r) = if super::width(&super::expr(a)) <= super::LINE / 2 {
-            (a, b)
+        let a_tex = super::expr(a);
+        let (l, r, lhs) = if super::width(&a_tex) <= super::LINE / 2 {
+            (a, b, a_tex)
         } else {
-            (b, a)
+            (b, a, super::expr(b))
         };
-        let lhs = super::expr(l);
         let rv = Value::Scalar(r.clone());
         let body = super::value_within(self.m, self.style, &lhs, &rv, None, super::LINE - 6);
         self.record(role, what, body, &Value::Scalar(l.clone()), Some(rv), true);
