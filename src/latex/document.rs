@@ -19,6 +19,20 @@ use crate::spec::wire::QuestionSpec;
 use std::collections::HashMap;
 use std::fmt::Write;
 
+/// The preamble: 10 pt on A4 with 1.5 cm margins, tight display and heading spacing, a
+/// quantity's heading run into its first line (a corrigé is photocopied: every line counts).
+const PREAMBLE: &str = "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
+\\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
+\\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz,needspace}\n\\usepackage[margin=1.5cm]{geometry}\n\
+\\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.3em}\n\
+\\setlength{\\fboxsep}{3pt}\n\\setlength{\\multicolsep}{2pt}\n\\makeatletter\n\
+\\g@addto@macro\\normalsize{\\setlength{\\abovedisplayskip}{3pt plus 2pt}\\setlength{\\belowdisplayskip}{3pt plus 2pt}\
+\\setlength{\\abovedisplayshortskip}{1pt plus 2pt}\\setlength{\\belowdisplayshortskip}{1pt plus 2pt}}\n\
+\\renewcommand\\section{\\@startsection{section}{1}{\\z@}{-1.8ex \\@plus -.5ex \\@minus -.2ex}{0.6ex \\@plus .2ex}{\\normalfont\\large\\bfseries}}\n\
+\\renewcommand\\subsubsection{\\@startsection{subsubsection}{3}{\\z@}{-1.2ex \\@plus -.5ex \\@minus -.2ex}{-0.8em}{\\normalfont\\normalsize\\bfseries}}\n\
+\\renewcommand\\paragraph{\\@startsection{paragraph}{4}{\\z@}{1ex \\@plus .5ex \\@minus .2ex}{-1em}{\\normalfont\\normalsize\\bfseries}}\n\
+\\makeatother\n";
+
 fn align(body: &str) -> String {
     format!("\\begin{{align*}}\n{body}\n\\end{{align*}}\n")
 }
@@ -170,6 +184,73 @@ impl<'m> Doc<'m> {
             value: v.clone(),
             rhs,
         });
+    }
+
+    /// What `write` adds to the document, taken out of it (to be placed in a cell of
+    /// [`Doc::rows`]); the displays it records stay recorded, in order.
+    pub(super) fn capture(&mut self, write: impl FnOnce(&mut Self)) -> String {
+        let saved = std::mem::take(&mut self.o);
+        write(self);
+        std::mem::replace(&mut self.o, saved)
+    }
+
+    /// Cells side by side, each in a top-aligned minipage (two short torsors of a bilan,
+    /// two inertia operators): as many to a row as fit (`widths`: each cell's display width),
+    /// at most `most`. A single narrow cell is set as its caption beside its display. A
+    /// corrigé uses the width of the page.
+    pub(super) fn rows(&mut self, cells: &[String], widths: &[usize], most: usize) {
+        let w = widths.iter().copied().max().unwrap_or(0);
+        let per_row = if cells.len() > 2 && w + 4 <= super::LINE / 3 {
+            3
+        } else if w + 4 <= super::LINE / 2 {
+            2
+        } else {
+            1
+        }
+        .min(most);
+        if let ([c], 2) = (cells, per_row)
+            && let Some(at) = c.find("\\begin{align*}")
+        {
+            // « Solide 3 : masse m, … » on the left, its operator on the right.
+            let (caption, display) = c.split_at(at);
+            let _ = write!(
+                self.o,
+                "\\par\\noindent\n\\begin{{minipage}}[c]{{0.49\\linewidth}}\n{}\n\\end{{minipage}}\\hfill\n\
+                 \\begin{{minipage}}[c]{{0.49\\linewidth}}\n{}\\end{{minipage}}\n\\par\n",
+                caption.trim_end(),
+                display.trim_end()
+            );
+            return;
+        }
+        if per_row == 1 || cells.len() == 1 {
+            for c in cells {
+                self.o.push_str(c);
+            }
+            return;
+        }
+        let frac = if per_row == 2 { "0.49" } else { "0.32" };
+        for row in cells.chunks(per_row) {
+            self.o.push_str("\\par\\noindent\n");
+            for (k, c) in row.iter().enumerate() {
+                if k > 0 {
+                    self.o.push_str("\\hfill\n");
+                }
+                let _ = write!(
+                    self.o,
+                    "\\begin{{minipage}}[t]{{{frac}\\linewidth}}\n{}\\end{{minipage}}\n",
+                    c.trim_end()
+                );
+            }
+            self.o.push_str("\\par\n");
+        }
+    }
+
+    /// The printed width of the last display written.
+    pub(super) fn last_width(&self) -> usize {
+        self.displays
+            .last()
+            .map(|d| super::display_width(&d.latex))
+            .unwrap_or(0)
     }
 
     /// Writes `lhs = value` as a display, records it, and remembers it under `key_lhs`.
@@ -411,19 +492,13 @@ pub fn answer_key_document(
         results: Vec::new(),
     };
     let o = &mut doc.o;
-    o.push_str(
-        "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
-         \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
-         \\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz,needspace}\n\\usepackage[margin=1.6cm]{geometry}\n\
-         \\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.4em}\n\
-         \\setlength{\\fboxsep}{4pt}\n",
-    );
+    o.push_str(PREAMBLE);
+    // The title as a teacher's handout has it: one line, no page of its own.
     let _ = writeln!(
         o,
-        "\\title{{Corrigé -- {}}}\n\\author{{}}\n\\date{{}}",
+        "\\begin{{document}}\n\\begin{{center}}\n{{\\Large\\bfseries Corrigé -- {}\\par}}\n\\end{{center}}",
         escape_text(&m.title)
     );
-    o.push_str("\\begin{document}\n\\maketitle\n");
     if let Some(d) = &m.description {
         let _ = writeln!(o, "{}\n", rich_text_or_escaped(d));
     }
@@ -500,13 +575,29 @@ pub fn answer_key_document(
     }
     o.push_str("\\end{itemize}\n\\end{multicols}\n");
     // The figures planes of the rotations and the graph of links, side by side when small.
-    o.push_str(&rotation_figures(m));
-    o.push_str(&link_graph(m));
+    let planes = super::figures::rotation_pictures(m);
+    let graph = super::figures::link_picture(m);
+    let planes_width = planes.len() as f64 * (super::figures::PLANE_WIDTH + 0.5);
+    match graph {
+        Some((g, w)) if !planes.is_empty() && planes_width + w + 1.0 <= 17.5 => {
+            let _ = write!(
+                o,
+                "\\begin{{center}}\n{}\\hspace{{2em}}\n{g}\\end{{center}}\n",
+                planes.join("\\hspace{1.5em}\n")
+            );
+        }
+        _ => {
+            o.push_str(&rotation_figures(m));
+            o.push_str(&link_graph(m));
+        }
+    }
     doc.inline.extend(positions);
+    // Each solid's mass, centre and inertia operator; the operators side by side.
+    let mut cells = Vec::new();
+    let mut widths = Vec::new();
     for b in &m.bodies {
         let mass = super::expr(&b.mass);
-        let _ = write!(
-            doc.o,
+        let intro = format!(
             "Solide ${}$ : masse ${mass}$, centre d'inertie ${}$",
             name(&b.name),
             point(m.point_name(b.centre))
@@ -518,21 +609,27 @@ pub fn answer_key_document(
         });
         match &b.inertia {
             Some(i) => {
-                doc.o.push_str(", opérateur d'inertie\n");
                 let lhs = format!("I_{{{}}}({})", point(m.point_name(i.point)), name(&b.name));
                 let what = format!("I({},{})", m.point_name(i.point), b.name);
-                doc.show_keyed(
-                    DisplayRole::Inertia,
-                    &what,
-                    &lhs,
-                    &lhs,
-                    &Value::Matrix(i.clone()),
-                    false,
-                );
+                cells.push(doc.capture(|doc| {
+                    let _ = writeln!(doc.o, "{intro}, opérateur d'inertie");
+                    doc.show_keyed(
+                        DisplayRole::Inertia,
+                        &what,
+                        &lhs,
+                        &lhs,
+                        &Value::Matrix(i.clone()),
+                        false,
+                    );
+                }));
+                widths.push(doc.last_width());
             }
-            None => doc.o.push_str(" (masse ponctuelle).\n\n"),
+            None => {
+                let _ = writeln!(doc.o, "{intro} (masse ponctuelle).\n");
+            }
         }
     }
+    doc.rows(&cells, &widths, 2);
 
     model_hypotheses(&mut doc);
 
@@ -573,12 +670,18 @@ pub fn answer_key_document(
     })
 }
 
-/// The closing « Bilan »: each result of the key (in the order of the questions), where it
-/// is, its value when it is short, and its unit from the parameters' units.
+/// The closing « Bilan »: each result of the key (in the order of the questions), its value
+/// when it is short or the question where it is boxed, and its unit from the parameters'
+/// units. A long list is set in two tables side by side.
 fn bilan(doc: &mut Doc) {
     let m = doc.m;
     let dims = crate::units::Dimensions::of(m);
-    let mut rows: Vec<String> = Vec::new();
+    // (grandeur, résultat, unité, width of the résultat)
+    let mut rows: Vec<(String, String, String, usize)> = Vec::new();
+    let mut inline = Vec::new();
+    // (grandeur, hypotheses, résultat, unité, width of the résultat)
+    type Row = (String, Vec<Option<String>>, String, String, usize);
+    let mut merged: Vec<Row> = Vec::new();
     for (what, hyp, v, place) in &doc.results {
         let Ok(q) = Quantity::parse(what) else {
             continue;
@@ -598,26 +701,91 @@ fn bilan(doc: &mut Doc) {
         } else {
             unit(0)
         };
-        let title = quantity_title(&q);
-        let value = match v {
-            Value::Scalar(e) if super::width(&super::expr(e)) <= 34 => {
-                format!("${}$", super::expr(e))
-            }
-            _ => place.replacen("la ", "", 1),
+        let title = match &q.kind {
+            QuantityKind::Eom(c) => format!("\\text{{Éq. du mouvement en }} {}", name(c)),
+            _ => quantity_title(&q),
         };
-        let under = hyp
-            .as_deref()
-            .map(|h| format!(" ({})", escape_text(h)))
-            .unwrap_or_default();
-        rows.push(format!("${title}${under} & {value} & {unit} \\\\"));
+        // A short scalar is repeated (and recorded, to be proven like every formula); a
+        // long result or an equation of motion is found where it is boxed.
+        let short = match (v, &q.kind) {
+            (_, QuantityKind::Eom(_)) => None,
+            (Value::Scalar(e), _) => {
+                Some((e, super::expr(e))).filter(|(_, t)| super::width(t) <= 34)
+            }
+            _ => None,
+        };
+        let (value, w) = match short {
+            Some((e, t)) => {
+                inline.push(Inline {
+                    what: format!("bilan {what}"),
+                    latex: t.clone(),
+                    value: Value::Scalar(e.clone()),
+                });
+                let w = super::width(&t);
+                (format!("${t}$"), w)
+            }
+            None => {
+                let n = place.trim_start_matches("la question ");
+                (format!("voir Q{n}"), 7)
+            }
+        };
+        let under = hyp.as_deref().map(escape_text);
+        // The same result shown in general and under a hypothesis, both boxed in one
+        // question: one row.
+        match merged
+            .iter_mut()
+            .find(|r| r.0 == title && r.2 == value && r.3 == unit)
+        {
+            Some(r) => r.1.push(under),
+            None => merged.push((title, vec![under], value, unit, w)),
+        }
+    }
+    doc.inline.extend(inline);
+    for (title, unders, value, unit, w) in merged {
+        let under = match unders.as_slice() {
+            [None] => String::new(),
+            [Some(h)] => format!(" ({h})"),
+            hs => {
+                let names: Vec<String> = hs
+                    .iter()
+                    .map(|h| h.clone().unwrap_or_else(|| "général".to_string()))
+                    .collect();
+                format!(" ({})", names.join(" ; "))
+            }
+        };
+        rows.push((format!("${title}${under}"), value, unit, w));
     }
     if rows.is_empty() {
         return;
     }
+    let table = |rows: &[(String, String, String, usize)]| {
+        let body: Vec<String> = rows
+            .iter()
+            .map(|(t, v, u, _)| format!("{t} & {v} & {u} \\\\"))
+            .collect();
+        format!(
+            "\\begin{{tabular}}[t]{{@{{}}lll@{{}}}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n{}\n\\hline\n\\end{{tabular}}",
+            body.join("\n")
+        )
+    };
+    // Two or three tables side by side when the values are short and the list long.
+    let narrow = rows.iter().all(|r| r.3 <= 22);
+    let tables = match rows.len() {
+        n if n > 9 && rows.iter().all(|r| r.3 <= 8) => rows
+            .chunks(n.div_ceil(3))
+            .map(table)
+            .collect::<Vec<_>>()
+            .join("\\hfill\n"),
+        n if n > 6 && narrow => rows
+            .chunks(n.div_ceil(2))
+            .map(table)
+            .collect::<Vec<_>>()
+            .join("\\hfill\n"),
+        _ => format!("\\centering\n{}", table(&rows)),
+    };
     let _ = writeln!(
         doc.o,
-        "\\section*{{Bilan}}\n\\begin{{center}}\n\\renewcommand{{\\arraystretch}}{{1.5}}\n\\begin{{tabular}}{{lll}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n{}\n\\hline\n\\end{{tabular}}\n\\end{{center}}",
-        rows.join("\n")
+        "\\section*{{Bilan}}\n{{\\small\\renewcommand{{\\arraystretch}}{{1.15}}\\noindent\n{tables}\\par}}"
     );
 }
 

@@ -41,8 +41,22 @@ const VECTOR: f64 = 1.4;
 /// assert!(tex.contains("{$\\theta_{2}$}"));
 /// ```
 pub fn rotation_figures(m: &Mechanism) -> String {
-    let pictures: Vec<String> = m
-        .frames
+    let pictures = rotation_pictures(m);
+    if pictures.is_empty() {
+        return String::new();
+    }
+    format!(
+        "\\begin{{center}}\n{}\\end{{center}}\n",
+        pictures.join("\\hspace{1.5em}\n")
+    )
+}
+
+/// Printed width of one figure plane, in cm (arrows of 1.4 cm and their labels).
+pub(super) const PLANE_WIDTH: f64 = 2.8;
+
+/// The figures planes of [`rotation_figures`], one `tikzpicture` each.
+pub(super) fn rotation_pictures(m: &Mechanism) -> Vec<String> {
+    m.frames
         .ids()
         .skip(1)
         .filter_map(|f| {
@@ -58,14 +72,7 @@ pub fn rotation_figures(m: &Mechanism) -> String {
                 .find(|(_, clean)| *clean);
             Some(clean.unwrap_or(first).0)
         })
-        .collect();
-    if pictures.is_empty() {
-        return String::new();
-    }
-    format!(
-        "\\begin{{center}}\n{}\\end{{center}}\n",
-        pictures.join("\\hspace{1.5em}\n")
-    )
+        .collect()
 }
 
 /// One figure plane: the rotation of `child` from `parent`, its variable part drawn at
@@ -409,7 +416,7 @@ pub fn link_text(l: &LinkSpec) -> String {
 }
 
 /// Horizontal distance between the solids of two successive levels of the graph, in cm.
-const LEVEL: f64 = 4.4;
+const LEVEL: f64 = 4.0;
 
 /// Vertical distance between two branches of the graph, in cm.
 const BRANCH: f64 = 2.0;
@@ -426,9 +433,17 @@ const BRANCH: f64 = 2.0;
 /// assert!(tex.contains("bâti"));
 /// ```
 pub fn link_graph(m: &Mechanism) -> String {
+    match link_picture(m) {
+        Some((p, _)) => format!("\\begin{{center}}\n{p}\\end{{center}}\n"),
+        None => String::new(),
+    }
+}
+
+/// The `tikzpicture` of [`link_graph`] and its printed width in cm; none without links.
+pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
     let links = &m.spec.links;
     if links.is_empty() {
-        return String::new();
+        return None;
     }
     let ground = m.frame_name(m.frames.ground()).to_string();
     // Nodes in order of appearance, the ground first.
@@ -501,7 +516,7 @@ pub fn link_graph(m: &Mechanism) -> String {
     }
 
     let mut o = String::from(
-        "\\begin{center}\n\\begin{tikzpicture}[font=\\small]\n\
+        "\\begin{tikzpicture}[font=\\small]\n\
          \\tikzset{solide/.style={draw, circle, minimum size=0.75cm, inner sep=1pt}}\n",
     );
     for (i, s) in nodes.iter().enumerate() {
@@ -534,10 +549,12 @@ pub fn link_graph(m: &Mechanism) -> String {
         let _ = writeln!(
             o,
             "\\draw (n{a}) -- (n{b}) node[midway, sloped, {side}, align=center, \
-             text width=3.6cm, font=\\footnotesize] {{{}}};",
+             text width=3.4cm, font=\\footnotesize] {{{}}};",
             texts.join("\\\\ ")
         );
     }
-    o.push_str("\\end{tikzpicture}\n\\end{center}\n");
-    o
+    o.push_str("\\end{tikzpicture}\n");
+    // The deepest level, the node and the labels' overhang on both sides.
+    let deepest = depth.iter().copied().max().unwrap_or(0) as f64;
+    Some((o, deepest * LEVEL + 1.6))
 }

@@ -66,52 +66,59 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
         );
         old_effects = effects.clone();
     } else {
+        // Each solid's symmetries and its matrix, side by side.
+        let mut cells = Vec::new();
+        let mut widths = Vec::new();
         for sname in &hs.symmetric_solids {
             let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
                 continue;
             };
             let Some(i) = &b.inertia else { continue };
-            let bn = m.frame_name(i.basis).to_string();
-            let centre = m.point_name(i.point).to_string();
-            for s in &b.symmetries {
-                let entries: Vec<String> = s
-                    .zero_entries()
-                    .iter()
-                    .map(|&(r, c)| super::expr(&i.matrix[r][c]))
-                    .filter(|t| t != "0")
-                    .map(|t| format!("${}$", t.trim_start_matches('-')))
-                    .collect();
-                let _ = writeln!(
-                    d.o,
-                    "Pour le solide ${}$, {} : {}{}.\n",
-                    name(sname),
-                    symmetry_text(m, &bn, *s, &centre),
-                    if entries.is_empty() {
-                        "les produits d'inertie correspondants sont nuls".to_string()
-                    } else {
-                        format!("les produits d'inertie {} sont nuls", entries.join(", "))
-                    },
-                    if s.equal_moments().is_some() {
-                        " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
-                    } else {
-                        ""
-                    }
+            cells.push(d.capture(|d| {
+                let bn = m.frame_name(i.basis).to_string();
+                let centre = m.point_name(i.point).to_string();
+                for s in &b.symmetries {
+                    let entries: Vec<String> = s
+                        .zero_entries()
+                        .iter()
+                        .map(|&(r, c)| super::expr(&i.matrix[r][c]))
+                        .filter(|t| t != "0")
+                        .map(|t| format!("${}$", t.trim_start_matches('-')))
+                        .collect();
+                    let _ = writeln!(
+                        d.o,
+                        "Pour le solide ${}$, {} : {}{}.\n",
+                        name(sname),
+                        symmetry_text(m, &bn, *s, &centre),
+                        if entries.is_empty() {
+                            "les produits d'inertie correspondants sont nuls".to_string()
+                        } else {
+                            format!("les produits d'inertie {} sont nuls", entries.join(", "))
+                        },
+                        if s.equal_moments().is_some() {
+                            " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
+                        } else {
+                            ""
+                        }
+                    );
+                }
+                let under = Value::Matrix(i.clone()).under(h);
+                let lhs = format!("I_{{{}}}({})", point(&centre), name(sname));
+                let saved = d.under;
+                d.under = Some(h);
+                d.show_keyed(
+                    DisplayRole::Inertia,
+                    &format!("I({centre},{sname})"),
+                    &lhs,
+                    &lhs,
+                    &under,
+                    false,
                 );
-            }
-            let under = Value::Matrix(i.clone()).under(h);
-            let lhs = format!("I_{{{}}}({})", point(&centre), name(sname));
-            let saved = d.under;
-            d.under = Some(h);
-            d.show_keyed(
-                DisplayRole::Inertia,
-                &format!("I({centre},{sname})"),
-                &lhs,
-                &lhs,
-                &under,
-                false,
-            );
-            d.under = saved;
+                d.under = saved;
+            }));
+            widths.push(d.last_width());
         }
+        d.rows(&cells, &widths, 2);
         // The symmetries' zeros are what the matrices show.
         old_effects = h
             .effects

@@ -386,22 +386,45 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
         }
         _ => false,
     };
-    let mut cited: Vec<(String, String)> = Vec::new();
-    let flush = |doc: &mut Doc, cited: &mut Vec<(String, String)>| {
+    // (left side, where it was shown, its stage)
+    type Cited = (String, String, Option<(u8, String)>);
+    let mut cited: Vec<Cited> = Vec::new();
+    let flush = |doc: &mut Doc, cited: &mut Vec<Cited>| {
         if cited.is_empty() {
             return;
         }
+        // A value cited for what it was derived from is enough: δ(O,3/0) already holds
+        // Ω(3/0), I_O(3) and σ(O,3/0), cited before it in the same run.
+        let kept: Vec<(String, String)> = cited
+            .iter()
+            .enumerate()
+            .filter(|(j, (_, _, stage))| {
+                !cited[j + 1..]
+                    .iter()
+                    .any(|(_, _, later)| match (stage, later) {
+                        (Some((r, s)), Some((lr, ls))) => lr > r && ls == s,
+                        _ => false,
+                    })
+            })
+            .map(|(_, (l, p, _))| (l.clone(), p.clone()))
+            .collect();
+        cited.clear();
         let mut by_place: Vec<(String, Vec<String>)> = Vec::new();
-        for (lhs, place) in cited.drain(..) {
+        for (lhs, place) in kept {
             match by_place.iter_mut().find(|(p, _)| *p == place) {
                 Some((_, v)) => v.push(lhs),
                 None => by_place.push((place, vec![lhs])),
             }
         }
-        for (place, lhss) in by_place {
-            let list: Vec<String> = lhss.iter().map(|l| format!("${l}$")).collect();
-            let _ = writeln!(doc.o, "D'après {place} : {}.\n", french_list(&list));
-        }
+        // One sentence: « D'après la question 1 : Ω ; d'après la question 2 : I et σ. »
+        let parts: Vec<String> = by_place
+            .iter()
+            .map(|(place, lhss)| {
+                let list: Vec<String> = lhss.iter().map(|l| format!("${l}$")).collect();
+                format!("d'après {place} : {}", french_list(&list))
+            })
+            .collect();
+        let _ = writeln!(doc.o, "D{}.\n", &parts.join(" ; ")[1..]);
     };
     let n = d.steps.len();
     let mut i = 0;
@@ -426,7 +449,7 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
                 format!("${}$ est fixe dans ${}$", point(a), frame(r))
             };
             if let Some(place) = doc.cited(&delta, &v) {
-                cited.push((delta, place));
+                cited.push((delta, place, stage(&next.kind)));
             } else {
                 flush(doc, &mut cited);
                 let _ = writeln!(
@@ -489,7 +512,7 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
             _ => step_lhs(&s.kind),
         };
         if let Some(place) = doc.cited(&lhs, &v) {
-            cited.push((lhs, place));
+            cited.push((lhs, place, stage(&s.kind)));
             i += 1;
             continue;
         }
@@ -523,6 +546,29 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
     }
     flush(doc, &mut cited);
     last_is_result
+}
+
+/// Where a step stands in the derivation of a solid's dynamics, and of which solid: Ω, V,
+/// Γ and I first (1), then σ and Rc (2), then δ and Rd (3). A later stage of the same solid
+/// was derived from the earlier ones.
+fn stage(k: &StepKind) -> Option<(u8, String)> {
+    use QuantityKind as Q;
+    let StepKind::Quantity(q) = k else {
+        return None;
+    };
+    match q {
+        Q::Omega(mo) | Q::Velocity { motion: mo, .. } | Q::Acceleration { motion: mo, .. } => {
+            Some((1, mo.moving.clone()))
+        }
+        Q::Inertia { solid, .. } => Some((1, solid.clone())),
+        Q::KineticResultant(mo) | Q::KineticMoment { motion: mo, .. } => {
+            Some((2, mo.moving.clone()))
+        }
+        Q::DynamicResultant(mo) | Q::DynamicMoment { motion: mo, .. } => {
+            Some((3, mo.moving.clone()))
+        }
+        _ => None,
+    }
 }
 
 fn next_kind(k: &StepKind) -> QuantityKind {

@@ -300,6 +300,26 @@ pub(crate) fn width(s: &str) -> usize {
     w
 }
 
+/// Approximate printed width of a display body, in characters: its widest line; for an
+/// array or a matrix, what stands before it plus its widest row (and the subscript after).
+pub(crate) fn display_width(body: &str) -> usize {
+    let Some(at) = ["\\begin{array}", "\\begin{pmatrix}"]
+        .iter()
+        .filter_map(|e| body.find(e))
+        .min()
+    else {
+        return body.split("\\\\").map(width).max().unwrap_or(0);
+    };
+    let (head, inner) = body.split_at(at);
+    let inner = inner
+        .strip_prefix("\\begin{array}{c|c}")
+        .or_else(|| inner.strip_prefix("\\begin{pmatrix}"))
+        .unwrap_or(inner);
+    let end = inner.find("\\end{").unwrap_or(inner.len());
+    let rows = inner[..end].split("\\\\").map(width).max().unwrap_or(0);
+    width(head) + rows + 6
+}
+
 /// Whether most terms of the presentation form are negative (a product counts once).
 fn mostly_negative(p: &crate::expr::Presentation) -> bool {
     let t = &p.form().terms;
@@ -553,6 +573,10 @@ pub(crate) fn value_within(
                 .chain(moment.iter())
                 .all(|e| e.nterms() <= 1);
             let pn = point(m.point_name(*p));
+            if resultant.iter().chain(moment.iter()).all(|e| e.is_zero()) {
+                // The zero torsor, as the course writes it.
+                return format!("{lhs} &= \\left\\{{ 0 \\right\\}}");
+            }
             if short {
                 let rows: Vec<String> = (0..3)
                     .map(|k| format!("{} & {}", expr(&resultant[k]), expr(&moment[k])))

@@ -87,10 +87,14 @@ pub(super) fn simulation_block(
     let pairs: Vec<(&str, &crate::simulate::Run)> =
         runs.iter().map(|r| (r.label.as_str(), r)).collect();
     let ids: Vec<&str> = sim.plot.iter().map(String::as_str).collect();
-    let figure = crate::simulate::figure(&m.title, &pairs, &ids, true);
+    // Wide and short panels: the curves are read across time, and the page is the limit.
+    // The document's title is above; the figure needs none of its own.
+    let figure = crate::simulate::figure("", &pairs, &ids, true);
+    let panels = u32::try_from(figure.panels.len()).unwrap_or(1);
+    let figure = figure.size(1100, 60 + 160 * panels);
     let _ = writeln!(
         o,
-        "\\begin{{center}}\n\\includegraphics[width=0.72\\textwidth]{{{file}}}\n\\end{{center}}"
+        "\\begin{{center}}\n\\includegraphics[width=0.9\\textwidth]{{{file}}}\n\\end{{center}}"
     );
     if let Some(col) = &sim.maximum {
         let unit = runs

@@ -48,19 +48,26 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                     doc.o,
                     "On isole ${iso_name}$. Bilan des actions mécaniques extérieures à ${iso_name}$ :"
                 );
+                // Each action's line and torsor, side by side when they are short.
+                let mut cells = Vec::new();
+                let mut widths = Vec::new();
                 for s in &steps[start..k] {
-                    // « le moteur (action moteur de 0 sur 1) », capitalised.
-                    let text = super::rich_text_or_escaped(&s.theorem);
+                    // « Liaison pivot d'axe (O1, z0), action de S0 sur S1 », capitalised.
+                    let text = bilan_text(doc, s);
                     let mut cs = text.chars();
                     let text = match cs.next() {
                         Some(c) => c.to_uppercase().chain(cs).collect::<String>(),
                         None => text,
                     };
-                    let _ = writeln!(doc.o, "{text} :");
                     let v = shown_value(doc, &s.value);
                     let lhs = step_lhs(&s.kind);
-                    doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
+                    cells.push(doc.capture(|doc| {
+                        let _ = writeln!(doc.o, "{text} :");
+                        doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
+                    }));
+                    widths.push(doc.last_width());
                 }
+                doc.rows(&cells, &widths, 3);
                 let here = doc.here.clone();
                 doc.bilans.insert(isolate.clone(), here);
             }
@@ -87,9 +94,25 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
             && m.reg.param(u).as_ref() == Some(e)
             && k + 2 == steps.len()
         {
-            let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$, soit :");
             let id = d.quantity.to_string();
             let hn = doc.under.map(|h| h.name.clone());
+            // The dynamic side was just boxed (asked as a quantity of its own): the unknown
+            // is that value, said in words rather than printed a second time.
+            if let Some(place) = doc.cited(&dl, &dv) {
+                let place = if place == "ce qui précède" {
+                    "encadrée ci-dessus".to_string()
+                } else {
+                    format!("encadrée dans {place}")
+                };
+                let _ = writeln!(
+                    doc.o,
+                    "{theorem}, ${dl} = {el}$, soit ${} = {dl}$ (valeur {place}).\n",
+                    name(u)
+                );
+                doc.results.push((id, hn, dv.clone(), doc.here.clone()));
+                return;
+            }
+            let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$, soit :");
             let here = doc.here.clone();
             doc.results.push((id.clone(), hn.clone(), dv.clone(), here));
             let lhs = format!("{} = {dl}", name(u));
@@ -131,8 +154,8 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                 let math = super::expr(&f);
                 let _ = writeln!(
                     doc.o,
-                    "Cette équation exprime que la dérivée par rapport au temps de ${math}$ est nulle : cette \
-                     quantité se conserve au cours du mouvement (intégrale première).\n"
+                    "Intégrale première : cette équation dit que la dérivée par rapport au temps de \
+                     ${math}$ est nulle ; cette quantité se conserve.\n"
                 );
                 doc.inline.push(super::Inline {
                     what: format!("first integral of {id}"),
@@ -147,6 +170,30 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         }
     }
     let _ = m;
+}
+
+/// The bilan's line for an action, typeset: a link's action is named by its kind and
+/// geometry (« liaison pivot d'axe $(O_1, \vec{z}_0)$, action de $S_0$ sur $S_1$ »); other
+/// actions keep the derivation's wording (« pesanteur sur $S_1$ », « le moteur, action sur
+/// $S_1$ »).
+fn bilan_text(doc: &Doc, s: &crate::derivation::Step) -> String {
+    let m = doc.m;
+    if let StepKind::Action { from, on, .. } = &s.kind {
+        let between = |l: &&crate::spec::wire::LinkSpec| {
+            (l.between[0] == *from && l.between[1] == *on)
+                || (l.between[0] == *on && l.between[1] == *from)
+        };
+        let links: Vec<_> = m.spec.links.iter().filter(between).collect();
+        if let [l] = links.as_slice() {
+            return format!(
+                "liaison {}, action de ${}$ sur ${}$",
+                super::link_text(l),
+                solid(from),
+                solid(on)
+            );
+        }
+    }
+    super::rich_text_or_escaped(&s.theorem)
 }
 
 /// F with dF/dt = e exactly, when e = 0 is a first integral in disguise: F = Σ (coefficient

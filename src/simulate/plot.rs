@@ -145,7 +145,7 @@ impl Panel {
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
-    /// Title, above the panels.
+    /// Title, above the panels; none (and no room kept for it) when empty.
     pub title: String,
     /// X-axis label, with its unit, e.g. `"t (s)"`.
     pub x_label: String,
@@ -313,7 +313,12 @@ impl Figure {
 
         root.fill(&RGBColor(255, 255, 255)).map_err(plot_err)?;
         let body = root.margin(px(8.0), px(8.0), px(8.0), px(16.0));
-        let body = body.titled(&self.title, font(20.0)).map_err(plot_err)?;
+        // No title band for an empty title (a figure in a document has its caption there).
+        let body = if self.title.is_empty() {
+            body
+        } else {
+            body.titled(&self.title, font(20.0)).map_err(plot_err)?
+        };
 
         // Equal plotting heights; the bottom panel also holds the x tick labels and x label.
         let x_label_area = px(52.0);
@@ -359,6 +364,9 @@ impl Figure {
             }
             mesh.draw().map_err(plot_err)?;
 
+            // A legend that would repeat the one above (same series names) is left out.
+            let names = |p: &Panel| p.series.iter().map(|s| s.name.clone()).collect::<Vec<_>>();
+            let repeated = i > 0 && names(panel) == names(&self.panels[i - 1]);
             let mut labelled = false;
             for (c, series) in panel.series.iter().enumerate() {
                 let style = ShapeStyle {
@@ -371,7 +379,7 @@ impl Figure {
                     let anno = chart
                         .draw_series(LineSeries::new(run.iter().copied(), style))
                         .map_err(plot_err)?;
-                    if r == 0 && !series.name.is_empty() {
+                    if r == 0 && !repeated && !series.name.is_empty() {
                         let len = px(22.0) as i32;
                         anno.label(series.name.as_str()).legend(move |(x, y)| {
                             PathElement::new(vec![(x, y), (x + len, y)], style)

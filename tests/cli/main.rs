@@ -991,3 +991,55 @@ fn derive_prints_the_form_asked() {
     let o = run(&["derive", &spec, "-q", q, "--form", "expanded"]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// Issue 12's length: the regulator's corrigé in at most 5 pages with its seven questions,
+/// every other key of the library in at most 3, counted by pdflatex itself.
+#[test]
+fn every_answer_key_is_as_short_as_a_teachers() {
+    let d = tmp();
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations");
+    let mut specs: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    specs.sort();
+    assert!(specs.len() >= 12);
+    let mut counts = Vec::new();
+    for s in &specs {
+        let stem = s.file_stem().unwrap().to_str().unwrap().to_string();
+        let tex = d.path().join(format!("{stem}.tex"));
+        let o = run(&[
+            "answer-key",
+            s.to_str().unwrap(),
+            "-o",
+            tex.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{stem}: {}", stderr(&o));
+        let c = pdflatex(&tex);
+        assert!(c.status.success(), "{stem}: {}", stdout(&c));
+        // « Output written on x.pdf (5 pages, 123456 bytes). »
+        let log = stdout(&c);
+        let pages: usize = log
+            .split("Output written on")
+            .nth(1)
+            .and_then(|r| {
+                r.split_once('(')?
+                    .1
+                    .split_once(" page")
+                    .map(|x| x.0.trim().to_string())
+            })
+            .and_then(|n| n.parse().ok())
+            .unwrap_or_else(|| panic!("{stem}: no page count in pdflatex's output"));
+        let most = if stem == "regulateur_centrifuge" {
+            5
+        } else {
+            3
+        };
+        counts.push(format!("{stem} {pages}"));
+        assert!(
+            pages <= most,
+            "{stem}: {pages} pages, at most {most} ({counts:?})"
+        );
+    }
+}

@@ -625,8 +625,20 @@ fn prove(ctx: &Ctx, latex: &str, v: &Value) -> Result<(), String> {
                 (ctx.vector(&eqs[0].1, f)?, ctx.vector(&eqs[1].1, f)?)
             } else {
                 let rhs = &eqs[0].1;
-                // \left\{ \begin{array}{c|c} … \end{array} \right\}_{O,\,B}
+                // \left\{ \begin{array}{c|c} … \end{array} \right\}_{O,\,B}, or the zero
+                // torsor \left\{ 0 \right\}.
                 assert!(is_cmd(rhs.first(), "left"), "torsor opens with \\left\\{{");
+                if rhs.get(2) == Some(&Tok::Digit('0')) && is_cmd(rhs.get(3), "right") {
+                    let zero = || -> [Expr; 3] {
+                        [0, 1, 2].map(|_| ctx.scalar(&[Tok::Digit('0')]).unwrap())
+                    };
+                    let z = zero();
+                    for k in 0..3 {
+                        same(&format!("resultant {k}"), &z[k], &resultant[k])?;
+                        same(&format!("moment {k}"), &z[k], &moment[k])?;
+                    }
+                    return Ok(());
+                }
                 let (rows, rest) = environment(&rhs[2..]);
                 let b = basis_subscript(rest);
                 if b != f {
