@@ -327,12 +327,13 @@ pub(super) fn parse_vector<K: Ord + Copy>(
     reg: &Rc<Registry>,
     s: &str,
     basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
+    names: &dyn Fn(&str) -> Option<Expr>,
 ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
     let a = parse_atom(s)?;
     let w = Walker {
         reg,
         input: s,
-        names: &|_| None,
+        names,
     };
     let expanded = a.expand();
     let mut out: Vec<(K, [Expr; 3])> = Vec::new();

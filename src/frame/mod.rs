@@ -222,6 +222,21 @@ impl Frames {
         self.frames.iter().position(|f| f.name == name).map(FrameId)
     }
 
+    /// The basis vector named `x2` (an axis letter, then a frame name), if the frame exists.
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+    /// let (f, axis) = m.frames.basis_vector("y2").unwrap();
+    /// assert_eq!((m.frame_name(f), axis.letter()), ("2", 'y'));
+    /// assert!(m.frames.basis_vector("y9").is_none());
+    /// ```
+    pub fn basis_vector(&self, s: &str) -> Option<(FrameId, Axis)> {
+        let mut c = s.chars();
+        let axis = Axis::parse(&c.next()?.to_string())?;
+        let f = self.find(c.as_str())?;
+        Some((f, axis))
+    }
+
     /// All frame ids, ground first.
     pub fn ids(&self) -> impl Iterator<Item = FrameId> + '_ {
         (0..self.frames.len()).map(FrameId)

@@ -45,10 +45,7 @@ fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
 
 /// Splits `x2` into (axis, frame name) if the frame exists.
 pub(super) fn basis_vector(frames: &Frames, s: &str) -> Option<(FrameId, Axis)> {
-    let mut c = s.chars();
-    let axis = Axis::parse(&c.next()?.to_string())?;
-    let f = frames.find(c.as_str())?;
-    Some((f, axis))
+    frames.basis_vector(s)
 }
 
 /// The message refusing a scalar named like a basis vector (`x0` when frame `0` exists), if

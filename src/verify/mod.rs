@@ -296,43 +296,62 @@ impl fmt::Display for Verdict {
     }
 }
 
-/// Parses the hand-written value in the shape of the derived one: a scalar; `[x, y, z]` for a
-/// vector (components in the quantity's basis); `[[Rx, Ry, Rz], [Mx, My, Mz]]` for a torsor;
-/// three rows for an inertia matrix.
+/// Parses the hand-written value in the shape of the derived one: a scalar; a vector as
+/// `[x, y, z]` (components in the quantity's basis) or over any bases (`a*x1 + b*y2 - c*z0`);
+/// a torsor as `[R, M]`, each element written either way; three rows for an inertia matrix.
 fn parse_shaped(
     reader: &mut Reader,
     derived: &Value,
     text: &str,
 ) -> Result<Vec<Expr>, VerifyError> {
     let n = derived.exprs().len();
-    let flat: Vec<String> =
-        match derived {
-            Value::Scalar(_) => vec![text.to_string()],
-            Value::Vector { .. } => split_list(text)
-                .ok_or_else(|| VerifyError::Shape("a vector is written [x, y, z]".into()))?,
-            Value::Torsor { .. } | Value::Matrix(_) => {
-                let rows = split_list(text).ok_or_else(|| {
-                    VerifyError::Shape(
-                        "a torsor is written [[Rx, Ry, Rz], [Mx, My, Mz]], a matrix as three rows"
-                            .into(),
-                    )
-                })?;
-                let mut flat = Vec::new();
-                for r in rows {
-                    flat.extend(split_list(&r).ok_or_else(|| {
-                        VerifyError::Shape("each row is written [a, b, c]".into())
-                    })?);
+    // A vector of the torsor or the vector itself, in the quantity's basis.
+    let vector = |reader: &mut Reader, t: &str, b| -> Result<Vec<Expr>, VerifyError> {
+        match split_list(t) {
+            Some(list) if list.len() == 3 => list.iter().map(|s| reader.read(s.trim())).collect(),
+            Some(list) => Err(VerifyError::Shape(format!(
+                "expected 3 components, got {}",
+                list.len()
+            ))),
+            None => Ok(reader.read_vector(t.trim(), b)?.to_vec()),
+        }
+    };
+    let given: Vec<Expr> = match derived {
+        Value::Scalar(_) => vec![reader.read(text.trim())?],
+        Value::Vector { basis, .. } => vector(reader, text, *basis)?,
+        Value::Torsor { basis, .. } => {
+            let rows = split_list(text).filter(|r| r.len() == 2).ok_or_else(|| {
+                VerifyError::Shape(
+                    "a torsor is written [R, M]: [[Rx, Ry, Rz], [Mx, My, Mz]] or over the bases, \
+                     [a*x1 + b*y2, c*z0]"
+                        .into(),
+                )
+            })?;
+            let mut flat = vector(reader, &rows[0], *basis)?;
+            flat.extend(vector(reader, &rows[1], *basis)?);
+            flat
+        }
+        Value::Matrix(_) => {
+            let rows = split_list(text)
+                .ok_or_else(|| VerifyError::Shape("a matrix is written as three rows".into()))?;
+            let mut flat = Vec::new();
+            for r in rows {
+                let cells = split_list(&r)
+                    .ok_or_else(|| VerifyError::Shape("each row is written [a, b, c]".into()))?;
+                for c in cells {
+                    flat.push(reader.read(c.trim())?);
                 }
-                flat
             }
-        };
-    if flat.len() != n {
+            flat
+        }
+    };
+    if given.len() != n {
         return Err(VerifyError::Shape(format!(
             "expected {n} components, got {}",
-            flat.len()
+            given.len()
         )));
     }
-    flat.iter().map(|s| reader.read(s.trim())).collect()
+    Ok(given)
 }
 
 /// The hypothesis of that name.

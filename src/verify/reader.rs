@@ -56,8 +56,64 @@ impl<'a> Reader<'a> {
     /// One scalar text: quantities replaced by placeholder names, unknown names refused (all
     /// named at once), parsed, unknowns replaced by their solved values, under the hypothesis.
     pub(super) fn read(&mut self, text: &str) -> Result<Expr, VerifyError> {
+        let (out, placeholders) = self.prepare(text, &|_| false)?;
+        let lookup = |n: &str| {
+            placeholders
+                .iter()
+                .find(|(p, _)| p == n)
+                .map(|(_, e)| e.clone())
+        };
+        let e = self
+            .m
+            .reg
+            .parse_with(&out, &lookup)
+            .map_err(|err| users_text(err, text))?;
+        self.finish(e, text)
+    }
+
+    /// A vector typed over any bases (`a*x1 + b*y2 - c*z0`, quantities and unknowns inside
+    /// its coefficients), its components in basis `b`.
+    pub(super) fn read_vector(
+        &mut self,
+        text: &str,
+        b: crate::frame::FrameId,
+    ) -> Result<[Expr; 3], VerifyError> {
+        let m = self.m;
+        let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
+        let (out, placeholders) = self.prepare(text, &|n| bv(n).is_some())?;
+        let lookup = |n: &str| {
+            placeholders
+                .iter()
+                .find(|(p, _)| p == n)
+                .map(|(_, e)| e.clone())
+        };
+        let parts = self
+            .m
+            .reg
+            .parse_vector_with(&out, &bv, &lookup)
+            .map_err(|err| users_text(err, text))?;
+        let mut v = crate::vector::Vector::zero();
+        for (f, c) in parts {
+            let mut done = Vec::with_capacity(3);
+            for e in c {
+                done.push(self.finish(e, text)?);
+            }
+            let c: [Expr; 3] = done.try_into().expect("three components");
+            v.add_part(f, c);
+        }
+        Ok(v.express_in(&m.frames, b))
+    }
+
+    /// The text with every quantity replaced by a placeholder name, and the placeholders'
+    /// values; names that are neither the spec's nor `allowed` are refused, all at once.
+    fn prepare(
+        &mut self,
+        text: &str,
+        allowed: &dyn Fn(&str) -> bool,
+    ) -> Result<(String, Vec<(String, Expr)>), VerifyError> {
         let reg = self.m.reg.clone();
-        let known = |n: &str| reg.param(n).is_some() || reg.coord(n).is_some() || n == "pi";
+        let known =
+            |n: &str| reg.param(n).is_some() || reg.coord(n).is_some() || n == "pi" || allowed(n);
         // Placeholders: a prefix that neither the text nor any name of the spec holds.
         let mut prefix = String::from("qty");
         while text.contains(&prefix)
@@ -166,24 +222,13 @@ impl<'a> Reader<'a> {
                 input: text.to_string(),
             });
         }
-        let lookup = |n: &str| {
-            placeholders
-                .iter()
-                .find(|(p, _)| p == n)
-                .map(|(_, e)| e.clone())
-        };
-        let mut e = reg.parse_with(&out, &lookup).map_err(|err| match err {
-            // The user's text, not the one with placeholders.
-            ExprError::Parse { reason, .. } => ExprError::Parse {
-                input: text.to_string(),
-                reason,
-            },
-            ExprError::Unsupported { reason, .. } => ExprError::Unsupported {
-                input: text.to_string(),
-                reason,
-            },
-            other => other,
-        })?;
+        Ok((out, placeholders))
+    }
+
+    /// A value read from `text`: the unknowns of the PFD replaced by their solved values,
+    /// under the hypothesis.
+    fn finish(&mut self, mut e: Expr, text: &str) -> Result<Expr, VerifyError> {
+        let reg = self.m.reg.clone();
         // Unknowns of the PFD: their solved values.
         for v in 0..reg.nvars() {
             let VarRole::Parameter(k) = reg.role(v) else {
@@ -232,6 +277,21 @@ impl<'a> Reader<'a> {
         self.quantities.push((q.clone(), e.clone()));
         self.note(q.to_string());
         Ok(e)
+    }
+}
+
+/// A parse error about the user's text, not the one with placeholders.
+fn users_text(err: ExprError, text: &str) -> ExprError {
+    match err {
+        ExprError::Parse { reason, .. } => ExprError::Parse {
+            input: text.to_string(),
+            reason,
+        },
+        ExprError::Unsupported { reason, .. } => ExprError::Unsupported {
+            input: text.to_string(),
+            reason,
+        },
+        other => other,
     }
 }
 

@@ -231,3 +231,69 @@ fn the_point_mass_cart_pendulum_agrees_with_the_float_backend() {
     let report = torseur::check::check(&cart(), 10, 1).unwrap();
     assert!(report.passed(), "{report}");
 }
+
+// By hand, the regulator: O0G2 = d1 z0 + L1 y1 + L2 y2, Ω(1/0) = θ̇1 z0, Ω(2/0) = θ̇1 z0 + θ̇2 x1;
+// dy1/dt = θ̇1 z0 ∧ y1 = −θ̇1 x1, dy2/dt = Ω(2/0) ∧ y2 = −θ̇1 cos θ2 x1 + θ̇2 z2, so
+//   V(G2,2/0) = −(L1 + L2 cos θ2) θ̇1 x1 + L2 θ̇2 z2,
+// and V(O2,2/0) = d/dt(d1 z0 + L1 y1) = −L1 θ̇1 x1.
+const V_G2_OVER_BASES: &str = "-(L1 + L2*cos(theta2))*dot(theta1)*x1 + L2*dot(theta2)*z2";
+
+#[test]
+fn a_vector_typed_over_several_bases_is_read_in_the_quantitys_basis() {
+    let m = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/regulateur_centrifuge.json"
+    ))
+    .unwrap();
+    // Asked in B2 (x1 = x2) and in the ground basis: the same typed vector.
+    for q in ["V(G2,2/0)", "V(G2,2/0) in B0", "V(G2,2/0) in B1"] {
+        let v = verify(&m, q, V_G2_OVER_BASES, None).unwrap();
+        assert!(v.is_equivalent(), "{q}: {v}");
+    }
+    // z2 written over B1 (z2 = −sin θ2 y1 + cos θ2 z1), terms in any order, a basis vector
+    // repeated.
+    let mixed = "L2*dot(theta2)*(cos(theta2)*z1 - sin(theta2)*y1) - L1*dot(theta1)*x1 \
+                 - L2*cos(theta2)*dot(theta1)*x2";
+    assert!(
+        verify(&m, "V(G2,2/0)", mixed, None)
+            .unwrap()
+            .is_equivalent()
+    );
+    // A sign error in one term is caught, and the difference shown in the quantity's basis.
+    let wrong = "(L1 + L2*cos(theta2))*dot(theta1)*x1 + L2*dot(theta2)*z2";
+    let v = verify(&m, "V(G2,2/0) in B2", wrong, None).unwrap();
+    assert!(!v.is_equivalent());
+    assert_eq!(
+        v.difference[0],
+        ex(&m, "2*(L1 + L2*cos(theta2))*dot(theta1)")
+    );
+    assert!(v.difference[1].is_zero() && v.difference[2].is_zero());
+    // A torsor [R, M], each element over the bases or as a list.
+    let torsor = "[dot(theta2)*x1 + dot(theta1)*z0, -L1*dot(theta1)*x1]";
+    let v = verify(&m, "{V(2/0)}_O2", torsor, None).unwrap();
+    assert!(v.is_equivalent(), "{v}");
+    let half = "[dot(theta2)*x1 + dot(theta1)*z0, [-L1*dot(theta1), 0, 0]]";
+    assert!(
+        verify(&m, "{V(2/0)}_O2 in B1", half, None)
+            .unwrap()
+            .is_equivalent()
+    );
+}
+
+#[test]
+fn a_bad_vector_expression_is_refused_naming_what_is_wrong() {
+    let m = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/regulateur_centrifuge.json"
+    ))
+    .unwrap();
+    let refused = |text: &str| match verify(&m, "V(G2,2/0)", text, None) {
+        Err(e) => e.to_string(),
+        Ok(v) => panic!("{text} accepted: {v}"),
+    };
+    assert!(refused("L2*dot(theta2)").contains("basis vector"));
+    assert!(refused("L2*x1*y2").contains("two basis vectors"));
+    assert!(refused("L2*x1^2").contains("power"));
+    assert!(refused("L2*dot(theta2)*z7").contains("z7"));
+    assert!(refused("[1, 2]").contains("3 components"));
+}
