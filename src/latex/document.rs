@@ -24,7 +24,7 @@ use std::fmt::Write;
 const PREAMBLE: &str = "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
 \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
 \\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz,needspace}\n\\usepackage[margin=1.5cm]{geometry}\n\
-\\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.3em}\n\
+\\allowdisplaybreaks[1]\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.3em}\n\
 \\setlength{\\fboxsep}{3pt}\n\\setlength{\\multicolsep}{2pt}\n\\makeatletter\n\
 \\g@addto@macro\\normalsize{\\setlength{\\abovedisplayskip}{3pt plus 2pt}\\setlength{\\belowdisplayskip}{3pt plus 2pt}\
 \\setlength{\\abovedisplayshortskip}{1pt plus 2pt}\\setlength{\\belowdisplayshortskip}{1pt plus 2pt}}\n\
@@ -171,6 +171,11 @@ impl<'m> Doc<'m> {
         rhs: Option<Value>,
         boxed_display: bool,
     ) {
+        // A display continues its sentence's paragraph: a blank line before it would add a
+        // paragraph's skip above the display's own.
+        while self.o.ends_with("\n\n") {
+            self.o.pop();
+        }
         self.o.push_str(&if boxed_display {
             boxed(&body)
         } else {
@@ -194,7 +199,7 @@ impl<'m> Doc<'m> {
         std::mem::replace(&mut self.o, saved)
     }
 
-    /// Cells side by side, each in a top-aligned minipage (two short torsors of a bilan,
+    /// Cells side by side, each in a bottom-aligned minipage (the displays line up) (two short torsors of a bilan,
     /// two inertia operators): as many to a row as fit (`widths`: each cell's display width),
     /// at most `most`. A single narrow cell is set as its caption beside its display. A
     /// corrigé uses the width of the page.
@@ -237,7 +242,7 @@ impl<'m> Doc<'m> {
                 }
                 let _ = write!(
                     self.o,
-                    "\\begin{{minipage}}[t]{{{frac}\\linewidth}}\n{}\\end{{minipage}}\n",
+                    "\\begin{{minipage}}[b]{{{frac}\\linewidth}}\n{}\\end{{minipage}}\n",
                     c.trim_end()
                 );
             }
@@ -595,6 +600,7 @@ pub fn answer_key_document(
     // Each solid's mass, centre and inertia operator; the operators side by side.
     let mut cells = Vec::new();
     let mut widths = Vec::new();
+    let point_masses = m.bodies.iter().any(|b| b.inertia.is_none());
     for b in &m.bodies {
         let mass = super::expr(&b.mass);
         let intro = format!(
@@ -625,11 +631,19 @@ pub fn answer_key_document(
                 widths.push(doc.last_width());
             }
             None => {
-                let _ = writeln!(doc.o, "{intro} (masse ponctuelle).\n");
+                cells.push(format!("{intro} (masse ponctuelle).\n\n"));
+                widths.push(super::LINE);
             }
         }
     }
-    doc.rows(&cells, &widths, 2);
+    if point_masses {
+        // Keep the spec's order: solids with and without operator one after the other.
+        for c in &cells {
+            doc.o.push_str(c);
+        }
+    } else {
+        doc.rows(&cells, &widths, 2);
+    }
 
     model_hypotheses(&mut doc);
 
@@ -679,8 +693,8 @@ fn bilan(doc: &mut Doc) {
     // (grandeur, résultat, unité, width of the résultat)
     let mut rows: Vec<(String, String, String, usize)> = Vec::new();
     let mut inline = Vec::new();
-    // (grandeur, hypotheses, résultat, unité, width of the résultat)
-    type Row = (String, Vec<Option<String>>, String, String, usize);
+    // (grandeur, hypotheses, résultat, unité, width of the résultat, quantity)
+    type Row = (String, Vec<Option<String>>, String, String, usize, String);
     let mut merged: Vec<Row> = Vec::new();
     for (what, hyp, v, place) in &doc.results {
         let Ok(q) = Quantity::parse(what) else {
@@ -702,6 +716,12 @@ fn bilan(doc: &mut Doc) {
             unit(0)
         };
         let title = match &q.kind {
+            QuantityKind::Eom(c) if q.linear => {
+                format!(
+                    "\\text{{Éq. du mouvement en }} {} \\text{{ (linéarisée)}}",
+                    name(c)
+                )
+            }
             QuantityKind::Eom(c) => format!("\\text{{Éq. du mouvement en }} {}", name(c)),
             _ => quantity_title(&q),
         };
@@ -734,14 +754,14 @@ fn bilan(doc: &mut Doc) {
         // question: one row.
         match merged
             .iter_mut()
-            .find(|r| r.0 == title && r.2 == value && r.3 == unit)
+            .find(|r| r.5 == *what && r.2 == value && r.3 == unit)
         {
             Some(r) => r.1.push(under),
-            None => merged.push((title, vec![under], value, unit, w)),
+            None => merged.push((title, vec![under], value, unit, w, what.clone())),
         }
     }
     doc.inline.extend(inline);
-    for (title, unders, value, unit, w) in merged {
+    for (title, unders, value, unit, w, _) in merged {
         let under = match unders.as_slice() {
             [None] => String::new(),
             [Some(h)] => format!(" ({h})"),
@@ -753,7 +773,15 @@ fn bilan(doc: &mut Doc) {
                 format!(" ({})", names.join(" ; "))
             }
         };
-        rows.push((format!("${title}${under}"), value, unit, w));
+        // The row's printed width: the grandeur, the résultat, the unit.
+        let title_w = super::width(&title) + under.chars().count();
+        let unit_w = super::width(&unit).min(12);
+        rows.push((
+            format!("${title}${under}"),
+            value,
+            unit,
+            title_w + w + unit_w,
+        ));
     }
     if rows.is_empty() {
         return;
@@ -769,16 +797,25 @@ fn bilan(doc: &mut Doc) {
         )
     };
     // Two or three tables side by side when the values are short and the list long.
-    let narrow = rows.iter().all(|r| r.3 <= 22);
+    // (in \small, a line holds about 1.2 × LINE characters)
+    let widest = rows.iter().map(|r| r.3).max().unwrap_or(0);
+    let narrow = widest + 6 <= super::LINE * 6 / 10;
+    // Side by side, each table is scaled down to its share of the line if it is wider (the
+    // width estimate is rough; the page's margin is not).
+    let fit = |t: String, share: &str| {
+        format!(
+            "\\resizebox{{\\ifdim\\width>{share}\\linewidth {share}\\linewidth\\else\\width\\fi}}{{!}}{{{t}}}"
+        )
+    };
     let tables = match rows.len() {
-        n if n > 9 && rows.iter().all(|r| r.3 <= 8) => rows
+        n if n > 9 && widest + 6 <= super::LINE * 4 / 10 => rows
             .chunks(n.div_ceil(3))
-            .map(table)
+            .map(|c| fit(table(c), "0.32"))
             .collect::<Vec<_>>()
             .join("\\hfill\n"),
         n if n > 6 && narrow => rows
             .chunks(n.div_ceil(2))
-            .map(table)
+            .map(|c| fit(table(c), "0.49"))
             .collect::<Vec<_>>()
             .join("\\hfill\n"),
         _ => format!("\\centering\n{}", table(&rows)),

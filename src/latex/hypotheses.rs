@@ -77,25 +77,40 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
             cells.push(d.capture(|d| {
                 let bn = m.frame_name(i.basis).to_string();
                 let centre = m.point_name(i.point).to_string();
+                // One sentence per solid: its planes and axes, then the products they cancel.
+                let mut why = Vec::new();
+                let mut zeros: Vec<String> = Vec::new();
+                let mut equal = false;
                 for s in &b.symmetries {
-                    let entries: Vec<String> = s
+                    why.push(symmetry_text(m, &bn, *s, &centre));
+                    for t in s
                         .zero_entries()
                         .iter()
                         .map(|&(r, c)| super::expr(&i.matrix[r][c]))
                         .filter(|t| t != "0")
                         .map(|t| format!("${}$", t.trim_start_matches('-')))
-                        .collect();
+                    {
+                        if !zeros.contains(&t) {
+                            zeros.push(t);
+                        }
+                    }
+                    equal |= s.equal_moments().is_some();
+                }
+                if !why.is_empty() {
                     let _ = writeln!(
                         d.o,
                         "Pour le solide ${}$, {} : {}{}.\n",
                         name(sname),
-                        symmetry_text(m, &bn, *s, &centre),
-                        if entries.is_empty() {
+                        super::method::french_list(&why),
+                        if zeros.is_empty() {
                             "les produits d'inertie correspondants sont nuls".to_string()
                         } else {
-                            format!("les produits d'inertie {} sont nuls", entries.join(", "))
+                            format!(
+                                "les produits d'inertie {} sont nuls",
+                                super::method::french_list(&zeros)
+                            )
                         },
-                        if s.equal_moments().is_some() {
+                        if equal {
                             " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
                         } else {
                             ""

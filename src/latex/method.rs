@@ -586,7 +586,7 @@ fn mo_centre(m: &Mechanism, a: &str, mo: &Motion) -> bool {
 }
 
 /// « a, b et c ».
-fn french_list(items: &[String]) -> String {
+pub(super) fn french_list(items: &[String]) -> String {
     match items {
         [] => String::new(),
         [a] => a.clone(),

@@ -165,7 +165,7 @@ pub(super) fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
     let mass = mass_of(m, &mo.moving);
     let _ = writeln!(
         doc.o,
-        "Changement de point vers le centre d'inertie : ${} \\cdot {ul} = {} \\cdot {ul} + \\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}$.\n",
+        "Changement de point vers le centre d'inertie :\n\\[{} \\cdot {ul} = {} \\cdot {ul} + \\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}\\]",
         quantity(&q.kind),
         quantity(&delta_g),
         point(a),

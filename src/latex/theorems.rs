@@ -38,9 +38,14 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         let iso_name = solid(isolate);
         match doc.bilans.get(isolate).cloned() {
             Some(place) => {
+                let place = if place == doc.here {
+                    "établi ci-dessus".to_string()
+                } else {
+                    format!("celui de {place}")
+                };
                 let _ = writeln!(
                     doc.o,
-                    "On isole ${iso_name}$ ; le bilan des actions mécaniques extérieures est celui de {place}.\n"
+                    "On isole ${iso_name}$ ; le bilan des actions mécaniques extérieures est {place}.\n"
                 );
             }
             None => {

@@ -358,7 +358,9 @@ impl Figure {
                 .axis_style(grid(0, 1.0))
                 .set_all_tick_mark_size(px(5.0))
                 .x_labels(10)
-                .y_labels(8);
+                .y_labels(8)
+                .x_label_formatter(&tick_label)
+                .y_label_formatter(&tick_label);
             if bottom {
                 mesh.x_desc(self.x_label.as_str());
             }
@@ -391,7 +393,7 @@ impl Figure {
             if labelled {
                 chart
                     .configure_series_labels()
-                    .position(SeriesLabelPosition::UpperRight)
+                    .position(legend_corner(panel, x_range, y_range))
                     .margin(px(8.0))
                     .legend_area_size(px(28.0))
                     .label_font(font(13.0))
@@ -499,4 +501,41 @@ fn finite_runs(points: &[(f64, f64)]) -> Vec<Vec<(f64, f64)>> {
         runs.push(run);
     }
     runs
+}
+
+/// A tick value as the course prints numbers: a decimal comma, no useless zeros, never
+/// « -0 » (`2000`, `0,25`, `-1,5`).
+fn tick_label(v: &f64) -> String {
+    let r = (v * 1e9).round() / 1e9;
+    let r = if r == 0.0 { 0.0 } else { r };
+    format!("{r}").replace('.', ",")
+}
+
+/// The corner of a panel where the legend hides the fewest points of its curves.
+fn legend_corner(panel: &Panel, x: (f64, f64), y: (f64, f64)) -> SeriesLabelPosition {
+    let (w, h) = (x.1 - x.0, y.1 - y.0);
+    let corners = [
+        (SeriesLabelPosition::UpperRight, true, true),
+        (SeriesLabelPosition::UpperLeft, false, true),
+        (SeriesLabelPosition::LowerRight, true, false),
+        (SeriesLabelPosition::LowerLeft, false, false),
+    ];
+    let hidden = |right: bool, upper: bool| {
+        panel
+            .series
+            .iter()
+            .flat_map(|s| &s.points)
+            .filter(|(px, py)| {
+                let fx = (px - x.0) / w;
+                let fy = (py - y.0) / h;
+                (if right { fx >= 0.7 } else { fx <= 0.3 })
+                    && (if upper { fy >= 0.65 } else { fy <= 0.35 })
+            })
+            .count()
+    };
+    corners
+        .into_iter()
+        .min_by_key(|&(_, r, u)| hidden(r, u))
+        .map(|(c, _, _)| c)
+        .unwrap_or(SeriesLabelPosition::UpperRight)
 }
