@@ -123,8 +123,9 @@ enum Command {
         /// The quantity, in course notation; without it, --expr is an equation `lhs = rhs`.
         #[arg(long = "quantity", short = 'q')]
         quantity: Option<String>,
-        /// The hand-written value: a scalar, `[x, y, z]` in the quantity's basis, or
-        /// `[[Rx, Ry, Rz], [Mx, My, Mz]]` for a torsor; or an equation `lhs = rhs`. Quantities
+        /// The hand-written value: a scalar; a vector over any bases (`a*x1 + b*y2`) or
+        /// `[x, y, z]` in the quantity's basis; a torsor `[R, M]`, each element either way; or
+        /// an equation `lhs = rhs`. Quantities
         /// (`delta(O2,2/0).x2`, `eom(theta)`) and unknowns (`X01`, `C_m`) may be written in it.
         #[arg(long = "expr", short = 'e', allow_hyphen_values = true)]
         expr: String,

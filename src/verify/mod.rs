@@ -420,7 +420,7 @@ pub fn verify(
             _ if q.is_scalar() => relation(m, Some(&q), text, l, r, h),
             _ => Err(VerifyError::Shape(format!(
                 "`{q}` is not a scalar: an equation `lhs = rhs` is between scalars (write the \
-                 vector [x, y, z] in its basis, or project it: `.x2`)"
+                 vector alone, `a*x1 + b*y2` or [x, y, z] in its basis, or project it: `.x2`)"
             ))),
         };
     }

@@ -1,11 +1,17 @@
-//! The answer key is pinned by a committed golden file; re-approve a reviewed change with
-//! `TORSEUR_BLESS=1 cargo test --test engine latex`.
+//! The answer key is pinned by a committed golden file, and so are `derive`'s text and JSON;
+//! re-approve a reviewed change with `TORSEUR_BLESS=1 cargo test --release --test engine latex`.
 
 use super::*;
 
 fn golden(name: &str, actual: &str) {
+    golden_in("latex", name, actual)
+}
+
+/// Compares `actual` with the committed file `dir/name` (relative to the crate), or writes it
+/// under `TORSEUR_BLESS`.
+pub fn golden_in(dir: &str, name: &str, actual: &str) {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("latex")
+        .join(dir)
         .join(name);
     if std::env::var_os("TORSEUR_BLESS").is_some() {
         std::fs::write(&path, actual).unwrap();
@@ -170,4 +176,33 @@ fn the_tops_kinetic_energy_is_written_as_squares() {
         e.presentation().to_string(),
         "1/2*(A + m*h^2)*(dot(psi)^2*sin(theta)^2 + dot(theta)^2) + 1/2*C*(dot(psi)*cos(theta) + dot(phi))^2"
     );
+}
+
+/// `derive`'s outputs are pinned for every spec of the library: the text (the values by the
+/// fast route, as the CLI prints them without `--json`) and the JSON (the derivations with
+/// their steps, as `--json` writes them). Both routes print the same text.
+#[test]
+fn every_derive_output_matches_its_golden_files() {
+    let specs = specs_in(&["derivations"]);
+    assert!(specs.len() >= 12);
+    for p in specs {
+        let m = torseur::spec::load(&p).unwrap();
+        let stem = p.file_stem().unwrap().to_str().unwrap();
+        let fast = torseur::derivation::derive_values(&m, &m.quantities).unwrap();
+        let full: Vec<_> = m
+            .quantities
+            .iter()
+            .map(|q| torseur::derivation::derive(&m, q).unwrap())
+            .collect();
+        let text = torseur::output::derive_text(&m, &fast);
+        assert_eq!(
+            text,
+            torseur::output::derive_text(&m, &full),
+            "{stem}: the fast route and the derivation with steps print the same"
+        );
+        golden_in("tests/golden/derive", &format!("{stem}.txt"), &text);
+        let json =
+            serde_json::to_string_pretty(&torseur::output::derive_json(&m, &full)).unwrap() + "\n";
+        golden_in("tests/golden/derive", &format!("{stem}.json"), &json);
+    }
 }
