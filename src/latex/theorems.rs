@@ -14,6 +14,9 @@ use std::fmt::Write;
 pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
     let m = doc.m;
     let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
+    if linearised_from_above(doc, d) {
+        return;
+    }
     let mut k = 0;
     let steps = &d.steps;
     let mut last_equality: Option<(Value, Value)> = None;
@@ -175,6 +178,49 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         }
     }
     let _ = m;
+}
+
+/// A linearised equation of motion whose full equation was just boxed: the small-motion
+/// hypothesis in words, then the linear equation boxed, without repeating the theorem.
+fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
+    let m = doc.m;
+    let v = shown_value(doc, &d.value);
+    let (QuantityKind::Eom(q), true, Value::Scalar(e)) = (&d.quantity.kind, d.quantity.linear, &v)
+    else {
+        return false;
+    };
+    let full = crate::quantity::Quantity {
+        linear: false,
+        ..d.quantity.clone()
+    }
+    .to_string();
+    let hn = doc.under.map(|h| h.name.clone());
+    if !doc.results.iter().any(|r| r.0 == full && r.1 == hn) {
+        return false;
+    }
+    let small: Vec<String> = m
+        .dynamics
+        .small
+        .iter()
+        .map(|s| {
+            let c = name(&m.reg.coord_info(s.coord).name);
+            format!("${c}$ autour de ${}$", super::expr(&s.around))
+        })
+        .collect();
+    let _ = writeln!(
+        doc.o,
+        "Pour de petits mouvements ({}), au premier ordre ($\\sin$ d'un petit angle remplacé \
+         par l'angle, $\\cos$ par 1, les produits de petites quantités négligés), l'équation \
+         du mouvement en ${}$ devient :",
+        super::method::french_list(&small),
+        name(q)
+    );
+    let id = d.quantity.to_string();
+    doc.results
+        .push((id.clone(), hn.clone(), v.clone(), doc.here.clone()));
+    let (lhs, rhs) = split_equation(e);
+    doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
+    true
 }
 
 /// The bilan's line for an action, typeset: a link's action is named by its kind and
