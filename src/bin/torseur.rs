@@ -125,7 +125,7 @@ enum Command {
         quantity: Option<String>,
         /// The hand-written value: a scalar; a vector over any bases (`a*x1 + b*y2`) or
         /// `[x, y, z]` in the quantity's basis; a torsor `[R, M]`, each element either way; or
-        /// an equation `lhs = rhs`. Quantities
+        /// an equation `lhs = rhs`; `@FILE` reads it from FILE (a long text). Quantities
         /// (`delta(O2,2/0).x2`, `eom(theta)`) and unknowns (`X01`, `C_m`) may be written in it.
         #[arg(long = "expr", short = 'e', allow_hyphen_values = true)]
         expr: String,
@@ -594,6 +594,13 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             hypothesis,
         } => {
             let m = load(&spec)?;
+            // `@FILE`: a text too long for a command line (a chain's equation of motion).
+            let expr = match expr.strip_prefix('@') {
+                Some(file) => std::fs::read_to_string(file).map_err(|e| {
+                    bad_input(anyhow::anyhow!("--expr @{file}: cannot read the file: {e}"))
+                })?,
+                None => expr,
+            };
             let v = match &quantity {
                 Some(q) => torseur::verify::verify(&m, q, &expr, hypothesis.as_deref()),
                 None => torseur::verify::verify_equation(&m, &expr, hypothesis.as_deref()),

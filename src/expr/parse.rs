@@ -17,7 +17,10 @@ const MAX_POWER: i64 = 255;
 /// Only these characters can appear in an expression of the spec syntax.
 fn check_chars(s: &str) -> Result<(), String> {
     if s.len() > MAX_INPUT {
-        return Err(format!("longer than {MAX_INPUT} characters"));
+        return Err(format!(
+            "{} characters, longer than the {MAX_INPUT} a typed expression may have",
+            s.len()
+        ));
     }
     if s.trim().is_empty() {
         return Err("empty expression".to_string());
@@ -453,11 +456,24 @@ impl Walker<'_> {
                 })
             }
             AtomView::Add(a) => {
-                let mut acc = reg.zero();
+                // Summed pairwise: adding n terms one by one to a growing sum is quadratic
+                // (a chain's equation of motion holds 10^5 terms).
+                let mut parts = Vec::new();
                 for t in a.iter() {
-                    acc = acc + &self.scalar(t)?;
+                    parts.push(self.scalar(t)?);
                 }
-                Ok(acc)
+                while parts.len() > 1 {
+                    let mut next = Vec::with_capacity(parts.len().div_ceil(2));
+                    let mut it = parts.into_iter();
+                    while let Some(x) = it.next() {
+                        next.push(match it.next() {
+                            Some(y) => x + &y,
+                            None => x,
+                        });
+                    }
+                    parts = next;
+                }
+                Ok(parts.pop().unwrap_or_else(|| reg.zero()))
             }
             AtomView::Mul(m) => {
                 let mut acc = reg.one();

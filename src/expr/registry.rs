@@ -135,9 +135,12 @@ pub fn check_identifier(n: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// Longest expression text the parser accepts. A canonical form prints to a text that parses
-/// back to it whenever that text is within this length.
-pub const MAX_INPUT_LEN: usize = 20_000;
+/// Longest expression text the parser accepts: 16 MiB, which holds every derived result of
+/// the chains up to 8 links (the longest, an equation of motion of chain 8, prints to 3.5 MB)
+/// and sympy's printed equations of the same size; beyond it a text is refused, naming the
+/// bound. A canonical form prints to a text that parses back to it whenever that text is
+/// within this length.
+pub const MAX_INPUT_LEN: usize = 16 << 20;
 
 /// Largest degree in one variable an expression can have (exponents are stored in a byte).
 /// Parsing refuses anything beyond it, so every expression's text parses back.

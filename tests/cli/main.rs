@@ -1043,3 +1043,55 @@ fn every_answer_key_is_as_short_as_a_teachers() {
         );
     }
 }
+
+/// A derived result far past the old 20,000-character limit (chain 8's δ(O1,E1/0)·z0, 3.5 MB
+/// of canonical text) goes back through `verify -e @FILE` and is found equal; a missing file
+/// is bad input (exit 2), and so is a text past the stated bound.
+#[test]
+fn a_long_derived_result_is_read_back_from_a_file() {
+    let d = tmp();
+    let chain = Path::new(env!("CARGO_MANIFEST_DIR")).join("derivations/chain/chain_8.json");
+    let q = "delta(O1,E1/0).z0";
+    let o = run(&[
+        "derive",
+        chain.to_str().unwrap(),
+        "-q",
+        q,
+        "--form",
+        "canonical",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let value = text.trim_end().split_once(" = ").unwrap().1.to_string();
+    assert!(value.len() > 1_000_000, "{}", value.len());
+    let file = d.path().join("value.txt");
+    std::fs::write(&file, &value).unwrap();
+    let at = format!("@{}", file.display());
+    let v = run(&["verify", chain.to_str().unwrap(), "-q", q, "-e", &at]);
+    assert_eq!(v.status.code(), Some(0), "{}", stderr(&v));
+    assert!(stdout(&v).contains("equivalent"));
+    // One term changed: not equivalent, the difference shown.
+    let wrong = value.replacen("C1*ddot(q1)", "C1*ddot(q2)", 1);
+    assert_ne!(wrong, value);
+    std::fs::write(&file, &wrong).unwrap();
+    let v = run(&["verify", chain.to_str().unwrap(), "-q", q, "-e", &at]);
+    assert_eq!(v.status.code(), Some(1), "{}", stderr(&v));
+    assert!(
+        stdout(&v).contains("C1*(ddot(q2) - ddot(q1))"),
+        "{}",
+        stdout(&v)
+    );
+    let missing = format!("@{}", d.path().join("none.txt").display());
+    let v = run(&["verify", chain.to_str().unwrap(), "-q", q, "-e", &missing]);
+    assert_eq!(v.status.code(), Some(2));
+    assert!(
+        stderr(&v).contains("cannot read the file"),
+        "{}",
+        stderr(&v)
+    );
+    std::fs::write(&file, "m1 + ".repeat(torseur::expr::MAX_INPUT_LEN / 5 + 1)).unwrap();
+    let v = run(&["verify", chain.to_str().unwrap(), "-q", q, "-e", &at]);
+    assert_eq!(v.status.code(), Some(2));
+    assert!(stderr(&v).contains("16777216"), "{}", stderr(&v));
+    assert!(stderr(&v).len() < 2000);
+}
