@@ -723,7 +723,11 @@ fn bilan(doc: &mut Doc) {
                 )
             }
             QuantityKind::Eom(c) => format!("\\text{{Éq. du mouvement en }} {}", name(c)),
-            _ => quantity_title(&q),
+            // The same vector asked in two bases reads apart.
+            _ => match &q.basis {
+                Some(b) => format!("{} \\text{{ dans }} {}", quantity_title(&q), basis(b)),
+                None => quantity_title(&q),
+            },
         };
         // A short scalar is repeated (and recorded, to be proven like every formula); a
         // long result or an equation of motion is found where it is boxed.

@@ -549,7 +549,7 @@ pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
         let _ = writeln!(
             o,
             "\\draw (n{a}) -- (n{b}) node[midway, sloped, {side}, align=center, \
-             text width=3.4cm, font=\\footnotesize] {{{}}};",
+             text width=3.4cm, font=\\footnotesize\\hyphenpenalty10000\\relax] {{{}}};",
             texts.join("\\\\ ")
         );
     }
