@@ -436,7 +436,7 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
 }
 
 /// A quantity as a heading: \\overrightarrow{\\delta(O_2,2/0)}\\cdot\\vec{x}_2 for a projection.
-fn quantity_title(q: &Quantity) -> String {
+pub(super) fn quantity_title(q: &Quantity) -> String {
     if q.linear {
         let inner = Quantity {
             linear: false,
@@ -674,7 +674,7 @@ pub fn answer_key_document(
             }
         }
     }
-    bilan(&mut doc);
+    super::bilan::bilan(&mut doc);
     doc.o.push_str("\\end{document}\n");
     Ok(AnswerKey {
         tex: doc.o,
@@ -682,152 +682,6 @@ pub fn answer_key_document(
         displays: doc.displays,
         inline: doc.inline,
     })
-}
-
-/// The closing « Bilan »: each result of the key (in the order of the questions), its value
-/// when it is short or the question where it is boxed, and its unit from the parameters'
-/// units. A long list is set in two tables side by side.
-fn bilan(doc: &mut Doc) {
-    let m = doc.m;
-    let dims = crate::units::Dimensions::of(m);
-    // (grandeur, résultat, unité, width of the résultat)
-    let mut rows: Vec<(String, String, String, usize)> = Vec::new();
-    let mut inline = Vec::new();
-    // (grandeur, hypotheses, résultat, unité, width of the résultat, quantity)
-    type Row = (String, Vec<Option<String>>, String, String, usize, String);
-    let mut merged: Vec<Row> = Vec::new();
-    for (what, hyp, v, place) in &doc.results {
-        let Ok(q) = Quantity::parse(what) else {
-            continue;
-        };
-        let style = crate::units::unit_style(&q.kind);
-        let expected = crate::units::expected_dimension(m, &dims, &q);
-        let unit = |k: usize| {
-            expected
-                .component(k)
-                .map(|u| u.si_latex(style))
-                .filter(|u| !u.is_empty())
-                .map(|u| format!("${u}$"))
-                .unwrap_or_else(|| "--".to_string())
-        };
-        let unit = if q.kind.is_torsor() {
-            format!("{} ; {}", unit(0), unit(3))
-        } else {
-            unit(0)
-        };
-        let title = match &q.kind {
-            QuantityKind::Eom(c) if q.linear => {
-                format!(
-                    "\\text{{Éq. du mouvement en }} {} \\text{{ (linéarisée)}}",
-                    name(c)
-                )
-            }
-            QuantityKind::Eom(c) => format!("\\text{{Éq. du mouvement en }} {}", name(c)),
-            // The same vector asked in two bases reads apart.
-            _ => match &q.basis {
-                Some(b) => format!("{} \\text{{ dans }} {}", quantity_title(&q), basis(b)),
-                None => quantity_title(&q),
-            },
-        };
-        // A short scalar is repeated (and recorded, to be proven like every formula); a
-        // long result or an equation of motion is found where it is boxed.
-        let short = match (v, &q.kind) {
-            (_, QuantityKind::Eom(_)) => None,
-            (Value::Scalar(e), _) => {
-                Some((e, super::expr(e))).filter(|(_, t)| super::width(t) <= 34)
-            }
-            _ => None,
-        };
-        let (value, w) = match short {
-            Some((e, t)) => {
-                inline.push(Inline {
-                    what: format!("bilan {what}"),
-                    latex: t.clone(),
-                    value: Value::Scalar(e.clone()),
-                });
-                let w = super::width(&t);
-                (format!("${t}$"), w)
-            }
-            None => {
-                let n = place.trim_start_matches("la question ");
-                (format!("voir Q{n}"), 7)
-            }
-        };
-        let under = hyp.as_deref().map(escape_text);
-        // The same result shown in general and under a hypothesis, both boxed in one
-        // question: one row.
-        match merged
-            .iter_mut()
-            .find(|r| r.5 == *what && r.2 == value && r.3 == unit)
-        {
-            Some(r) => r.1.push(under),
-            None => merged.push((title, vec![under], value, unit, w, what.clone())),
-        }
-    }
-    doc.inline.extend(inline);
-    for (title, unders, value, unit, w, _) in merged {
-        let under = match unders.as_slice() {
-            [None] => String::new(),
-            [Some(h)] => format!(" ({h})"),
-            hs => {
-                let names: Vec<String> = hs
-                    .iter()
-                    .map(|h| h.clone().unwrap_or_else(|| "général".to_string()))
-                    .collect();
-                format!(" ({})", names.join(" ; "))
-            }
-        };
-        // The row's printed width: the grandeur, the résultat, the unit.
-        let title_w = super::width(&title) + under.chars().count();
-        let unit_w = super::width(&unit).min(12);
-        rows.push((
-            format!("${title}${under}"),
-            value,
-            unit,
-            title_w + w + unit_w,
-        ));
-    }
-    if rows.is_empty() {
-        return;
-    }
-    let table = |rows: &[(String, String, String, usize)]| {
-        let body: Vec<String> = rows
-            .iter()
-            .map(|(t, v, u, _)| format!("{t} & {v} & {u} \\\\"))
-            .collect();
-        format!(
-            "\\begin{{tabular}}[t]{{@{{}}lll@{{}}}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n{}\n\\hline\n\\end{{tabular}}",
-            body.join("\n")
-        )
-    };
-    // Two or three tables side by side when the values are short and the list long.
-    // (in \small, a line holds about 1.2 × LINE characters)
-    let widest = rows.iter().map(|r| r.3).max().unwrap_or(0);
-    let narrow = widest + 6 <= super::LINE * 6 / 10;
-    // Side by side, each table is scaled down to its share of the line if it is wider (the
-    // width estimate is rough; the page's margin is not).
-    let fit = |t: String, share: &str| {
-        format!(
-            "\\resizebox{{\\ifdim\\width>{share}\\linewidth {share}\\linewidth\\else\\width\\fi}}{{!}}{{{t}}}"
-        )
-    };
-    let tables = match rows.len() {
-        n if n > 9 && widest + 6 <= super::LINE * 4 / 10 => rows
-            .chunks(n.div_ceil(3))
-            .map(|c| fit(table(c), "0.32"))
-            .collect::<Vec<_>>()
-            .join("\\hfill\n"),
-        n if n > 6 && narrow => rows
-            .chunks(n.div_ceil(2))
-            .map(|c| fit(table(c), "0.49"))
-            .collect::<Vec<_>>()
-            .join("\\hfill\n"),
-        _ => format!("\\centering\n{}", table(&rows)),
-    };
-    let _ = writeln!(
-        doc.o,
-        "\\section*{{Bilan}}\n{{\\small\\renewcommand{{\\arraystretch}}{{1.15}}\\noindent\n{tables}\\par}}"
-    );
 }
 
 /// A vector as written in the spec, over the bases of its parts: `d_{1}\,\vec{z}_{0} +

@@ -6,6 +6,7 @@
 //! or [`rich_text`] where it may hold formulas (checked against a whitelist when the spec is
 //! loaded).
 
+mod bilan;
 mod document;
 mod expr;
 mod figures;
