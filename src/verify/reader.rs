@@ -57,12 +57,7 @@ impl<'a> Reader<'a> {
     /// named at once), parsed, unknowns replaced by their solved values, under the hypothesis.
     pub(super) fn read(&mut self, text: &str) -> Result<Expr, VerifyError> {
         let (out, placeholders) = self.prepare(text, &|_| false)?;
-        let lookup = |n: &str| {
-            placeholders
-                .iter()
-                .find(|(p, _)| p == n)
-                .map(|(_, e)| e.clone())
-        };
+        let lookup = |n: &str| placeholder(&placeholders, n);
         let e = self
             .m
             .reg
@@ -81,12 +76,7 @@ impl<'a> Reader<'a> {
         let m = self.m;
         let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
         let (out, placeholders) = self.prepare(text, &|n| bv(n).is_some())?;
-        let lookup = |n: &str| {
-            placeholders
-                .iter()
-                .find(|(p, _)| p == n)
-                .map(|(_, e)| e.clone())
-        };
+        let lookup = |n: &str| placeholder(&placeholders, n);
         let parts = self
             .m
             .reg
@@ -278,6 +268,14 @@ impl<'a> Reader<'a> {
         self.note(q.to_string());
         Ok(e)
     }
+}
+
+/// The value a placeholder name stands for.
+fn placeholder(placeholders: &[(String, Expr)], n: &str) -> Option<Expr> {
+    placeholders
+        .iter()
+        .find(|(p, _)| p == n)
+        .map(|(_, e)| e.clone())
 }
 
 /// A parse error about the user's text, not the one with placeholders.
