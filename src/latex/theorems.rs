@@ -108,7 +108,7 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
             // is that value, said in words rather than printed a second time.
             if let Some(place) = doc.cited(&dl, &dv) {
                 let place = if place == "ce qui précède" {
-                    "encadrée ci-dessus".to_string()
+                    "encadrée plus haut".to_string()
                 } else {
                     format!("encadrée dans {place}")
                 };
