@@ -18,6 +18,9 @@ pub(super) fn bilan(doc: &mut Doc) {
     // (grandeur, hypotheses, résultat, unité, width of the résultat, quantity)
     type Row = (String, Vec<Option<String>>, String, String, usize, String);
     let mut merged: Vec<Row> = Vec::new();
+    // A short list is one table, with room for a one-line result; a long one may be split
+    // into tables side by side, where only short results fit.
+    let longest = if doc.results.len() <= 6 { 60 } else { 34 };
     for (what, hyp, v, place) in &doc.results {
         let Ok(q) = Quantity::parse(what) else {
             continue;
@@ -56,7 +59,7 @@ pub(super) fn bilan(doc: &mut Doc) {
         let short = match (v, &q.kind) {
             (_, QuantityKind::Eom(_)) => None,
             (Value::Scalar(e), _) => {
-                Some((e, super::expr(e))).filter(|(_, t)| super::width(t) <= 34)
+                Some((e, super::expr(e))).filter(|(_, t)| super::width(t) <= longest)
             }
             _ => None,
         };
