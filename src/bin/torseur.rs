@@ -31,108 +31,132 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Closed forms of the spec's quantities (or of those given with --quantity).
-    Derive {
-        /// Problem spec (JSON).
-        spec: PathBuf,
-        /// A quantity in course notation, e.g. `delta(O2,2/0).x2`; repeatable.
-        #[arg(long = "quantity", short = 'q')]
-        quantities: Vec<String>,
-        /// Also write the full results (canonical and presentation forms, steps) as JSON.
-        #[arg(long)]
-        json: Option<PathBuf>,
-        /// Also write the answer key (LaTeX) of the spec's quantities.
-        #[arg(long)]
-        latex: Option<PathBuf>,
-        /// Print the number of terms of each canonical form, and the time taken, on stderr.
-        #[arg(long)]
-        stats: bool,
-        /// The written form on stdout: `presentation` (as a teacher writes it) or `canonical`
-        /// (the expanded polynomial, for tools; the JSON has both).
-        #[arg(long, value_enum, default_value_t = Form::Presentation)]
-        form: Form,
-    },
+    Derive(DeriveArgs),
     /// The whole answer key (« corrigé ») as LaTeX, on stdout or in a file, optionally as PDF.
-    AnswerKey {
-        /// Problem spec (JSON).
-        spec: PathBuf,
-        /// Output .tex file (stdout if absent).
-        #[arg(short = 'o', long = "output")]
-        output: Option<PathBuf>,
-        /// Also compile the PDF with pdflatex (next to the .tex file).
-        #[arg(long, requires = "output")]
-        pdf: bool,
-        /// How vectors are written: `sum` over the basis vectors, or `column` with the basis
-        /// as subscript (long vectors stay sums).
-        #[arg(long, value_enum, default_value_t = Vectors::Sum)]
-        vectors: Vectors,
-        /// Also write every displayed formula as JSON: what it shows, under which hypothesis,
-        /// its LaTeX exactly as printed, and the engine's value (canonical text).
-        #[arg(long)]
-        manifest: Option<PathBuf>,
-    },
+    AnswerKey(AnswerKeyArgs),
     /// Numbers: evaluates quantities at the values of a JSON file.
-    Eval {
-        /// Problem spec (JSON).
-        spec: PathBuf,
-        /// Values file: {"parameters":{..},"coordinates":{"q":[q,qdot,qddot]}}.
-        #[arg(long)]
-        at: PathBuf,
-        /// A quantity in course notation; repeatable.
-        #[arg(long = "quantity", short = 'q')]
-        quantities: Vec<String>,
-    },
+    Eval(EvalArgs),
     /// Symbolic results against the independent float backend, and every result of its
     /// quantity's dimension (exit 1 on a mismatch or a wrong dimension).
-    Check {
-        /// Problem spec (JSON).
-        spec: PathBuf,
-        /// Random samples per quantity.
-        #[arg(long, default_value_t = 20)]
-        samples: usize,
-        /// Seed of the random generator (reproducible runs).
-        #[arg(long, default_value_t = 1)]
-        seed: u64,
-        /// Print the report as JSON.
-        #[arg(long)]
-        json: bool,
-    },
+    Check(CheckArgs),
     /// Integrates the equations of motion for a scenario of the spec: CSV on stdout or in a
     /// file, plots as SVG and PNG.
-    Simulate {
-        /// Problem spec (JSON).
-        spec: PathBuf,
-        /// Scenario name (the spec's `scenarios`).
-        #[arg(long)]
-        scenario: String,
-        /// Output CSV file (stdout if absent).
-        #[arg(short = 'o', long = "output")]
-        output: Option<PathBuf>,
-        /// Plot as SVG (every coordinate and recorded quantity against time).
-        #[arg(long)]
-        plot: Option<PathBuf>,
-        /// Plot as PNG.
-        #[arg(long)]
-        png: Option<PathBuf>,
-    },
+    Simulate(SimulateArgs),
     /// Exact equivalence of a hand-written result or equation with the engine's (exit 1 if
     /// not): a value, an equation of motion up to a nonzero factor of parameters (reported),
     /// or a relation between quantities, unknowns and expressions.
-    Verify {
-        /// Problem spec (JSON).
-        spec: PathBuf,
-        /// The quantity, in course notation; without it, --expr is an equation `lhs = rhs`.
-        #[arg(long = "quantity", short = 'q')]
-        quantity: Option<String>,
-        /// The hand-written value: a scalar; a vector over any bases (`a*x1 + b*y2`) or
-        /// `[x, y, z]` in the quantity's basis; a torsor `[R, M]`, each element either way; or
-        /// an equation `lhs = rhs`; `@FILE` reads it from FILE (a long text). Quantities
-        /// (`delta(O2,2/0).x2`, `eom(theta)`) and unknowns (`X01`, `C_m`) may be written in it.
-        #[arg(long = "expr", short = 'e', allow_hyphen_values = true)]
-        expr: String,
-        /// Compare with the derived value under this hypothesis of the spec.
-        #[arg(long)]
-        hypothesis: Option<String>,
-    },
+    Verify(VerifyArgs),
+}
+
+// The arguments of `torseur derive`.
+#[derive(clap::Args)]
+struct DeriveArgs {
+    /// Problem spec (JSON).
+    spec: PathBuf,
+    /// A quantity in course notation, e.g. `delta(O2,2/0).x2`; repeatable.
+    #[arg(long = "quantity", short = 'q')]
+    quantities: Vec<String>,
+    /// Also write the full results (canonical and presentation forms, steps) as JSON.
+    #[arg(long)]
+    json: Option<PathBuf>,
+    /// Also write the answer key (LaTeX) of the spec's quantities.
+    #[arg(long)]
+    latex: Option<PathBuf>,
+    /// Print the number of terms of each canonical form, and the time taken, on stderr.
+    #[arg(long)]
+    stats: bool,
+    /// The written form on stdout: `presentation` (as a teacher writes it) or `canonical`
+    /// (the expanded polynomial, for tools; the JSON has both).
+    #[arg(long, value_enum, default_value_t = Form::Presentation)]
+    form: Form,
+}
+
+// The arguments of `torseur answerkey`.
+#[derive(clap::Args)]
+struct AnswerKeyArgs {
+    /// Problem spec (JSON).
+    spec: PathBuf,
+    /// Output .tex file (stdout if absent).
+    #[arg(short = 'o', long = "output")]
+    output: Option<PathBuf>,
+    /// Also compile the PDF with pdflatex (next to the .tex file).
+    #[arg(long, requires = "output")]
+    pdf: bool,
+    /// How vectors are written: `sum` over the basis vectors, or `column` with the basis
+    /// as subscript (long vectors stay sums).
+    #[arg(long, value_enum, default_value_t = Vectors::Sum)]
+    vectors: Vectors,
+    /// Also write every displayed formula as JSON: what it shows, under which hypothesis,
+    /// its LaTeX exactly as printed, and the engine's value (canonical text).
+    #[arg(long)]
+    manifest: Option<PathBuf>,
+}
+
+// The arguments of `torseur eval`.
+#[derive(clap::Args)]
+struct EvalArgs {
+    /// Problem spec (JSON).
+    spec: PathBuf,
+    /// Values file: {"parameters":{..},"coordinates":{"q":[q,qdot,qddot]}}.
+    #[arg(long)]
+    at: PathBuf,
+    /// A quantity in course notation; repeatable.
+    #[arg(long = "quantity", short = 'q')]
+    quantities: Vec<String>,
+}
+
+// The arguments of `torseur check`.
+#[derive(clap::Args)]
+struct CheckArgs {
+    /// Problem spec (JSON).
+    spec: PathBuf,
+    /// Random samples per quantity.
+    #[arg(long, default_value_t = 20)]
+    samples: usize,
+    /// Seed of the random generator (reproducible runs).
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Print the report as JSON.
+    #[arg(long)]
+    json: bool,
+}
+
+// The arguments of `torseur simulate`.
+#[derive(clap::Args)]
+struct SimulateArgs {
+    /// Problem spec (JSON).
+    spec: PathBuf,
+    /// Scenario name (the spec's `scenarios`).
+    #[arg(long)]
+    scenario: String,
+    /// Output CSV file (stdout if absent).
+    #[arg(short = 'o', long = "output")]
+    output: Option<PathBuf>,
+    /// Plot as SVG (every coordinate and recorded quantity against time).
+    #[arg(long)]
+    plot: Option<PathBuf>,
+    /// Plot as PNG.
+    #[arg(long)]
+    png: Option<PathBuf>,
+}
+
+// The arguments of `torseur verify`.
+#[derive(clap::Args)]
+struct VerifyArgs {
+    /// Problem spec (JSON).
+    spec: PathBuf,
+    /// The quantity, in course notation; without it, --expr is an equation `lhs = rhs`.
+    #[arg(long = "quantity", short = 'q')]
+    quantity: Option<String>,
+    /// The hand-written value: a scalar; a vector over any bases (`a*x1 + b*y2`) or
+    /// `[x, y, z]` in the quantity's basis; a torsor `[R, M]`, each element either way; or
+    /// an equation `lhs = rhs`; `@FILE` reads it from FILE (a long text). Quantities
+    /// (`delta(O2,2/0).x2`, `eom(theta)`) and unknowns (`X01`, `C_m`) may be written in it.
+    #[arg(long = "expr", short = 'e', allow_hyphen_values = true)]
+    expr: String,
+    /// Compare with the derived value under this hypothesis of the spec.
+    #[arg(long)]
+    hypothesis: Option<String>,
 }
 
 /// The written form of `derive`'s text.
@@ -336,6 +360,9 @@ fn compile_pdf(tex: &str, figures: &[(String, Vec<u8>)]) -> Result<Vec<u8>, Fail
     std::fs::read(dir.path().join("key.pdf")).map_err(bad_input)
 }
 
+/// Writes a command's text to stdout.
+type Emit<'a> = dyn FnMut(&str) -> Result<(), Failure> + 'a;
+
 fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
     if let Some(limit) = cli.timeout {
         watchdog(limit)?;
@@ -353,283 +380,302 @@ fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
             .map_err(|e| bad_input(anyhow!("cannot write to stdout: {e}")))
     };
     match cli.command {
-        Command::Derive {
-            spec,
-            quantities: qs,
-            json,
-            latex,
-            stats,
-            form,
-        } => {
-            let start = std::time::Instant::now();
-            let m = load(&spec)?;
-            let qs = quantities(&m, &qs)?;
-            let ds = if json.is_some() {
-                derive_all(&m, &qs)?
-            } else {
-                values_only(&m, &qs)?
-            };
-            if let Some(path) = latex {
-                let mut mq = m.clone();
-                mq.quantities = qs.clone();
-                let key =
-                    torseur::latex::answer_key_document(&mq, torseur::latex::VectorStyle::Sum)
-                        .map_err(bad_input)?;
-                let figures = render_figures(&key)?;
-                write_figures(&path, &figures)?;
-                write_atomic(&path, key.tex.as_bytes())?;
-            }
-            if let Some(path) = json {
-                let j = output::derive_json(&m, &ds);
-                let text = serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n";
-                write_atomic(&path, text.as_bytes())?;
-            }
-            let form = match form {
-                Form::Presentation => output::TextForm::Presentation,
-                Form::Canonical => output::TextForm::Canonical,
-            };
-            emit(&output::derive_text_in(&m, &ds, form))?;
-            if stats {
-                let mut total = 0;
-                for d in &ds {
-                    total += d.value.nterms();
-                    eprintln!("terms {:>9}  {}", d.value.nterms(), d.quantity);
-                }
+        Command::Derive(a) => run_derive(a, &mut emit),
+        Command::Eval(a) => run_eval(a, &mut emit),
+        Command::AnswerKey(a) => run_answer_key(a, &mut emit),
+        Command::Check(a) => run_check(a, &mut emit),
+        Command::Simulate(a) => run_simulate(a, &mut emit),
+        Command::Verify(a) => run_verify(a, &mut emit),
+    }
+}
+
+/// `torseur derive`: closed forms, as text, JSON and LaTeX.
+fn run_derive(a: DeriveArgs, emit: &mut Emit) -> Result<(), Failure> {
+    let DeriveArgs {
+        spec,
+        quantities: qs,
+        json,
+        latex,
+        stats,
+        form,
+    } = a;
+    let start = std::time::Instant::now();
+    let m = load(&spec)?;
+    let qs = quantities(&m, &qs)?;
+    let ds = if json.is_some() {
+        derive_all(&m, &qs)?
+    } else {
+        values_only(&m, &qs)?
+    };
+    if let Some(path) = latex {
+        let mut mq = m.clone();
+        mq.quantities = qs.clone();
+        let key = torseur::latex::answer_key_document(&mq, torseur::latex::VectorStyle::Sum)
+            .map_err(bad_input)?;
+        let figures = render_figures(&key)?;
+        write_figures(&path, &figures)?;
+        write_atomic(&path, key.tex.as_bytes())?;
+    }
+    if let Some(path) = json {
+        let j = output::derive_json(&m, &ds);
+        let text = serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n";
+        write_atomic(&path, text.as_bytes())?;
+    }
+    let form = match form {
+        Form::Presentation => output::TextForm::Presentation,
+        Form::Canonical => output::TextForm::Canonical,
+    };
+    emit(&output::derive_text_in(&m, &ds, form))?;
+    if stats {
+        let mut total = 0;
+        for d in &ds {
+            total += d.value.nterms();
+            eprintln!("terms {:>9}  {}", d.value.nterms(), d.quantity);
+        }
+        eprintln!(
+            "terms {total:>9}  total; {:.3} s",
+            start.elapsed().as_secs_f64()
+        );
+    }
+    Ok(())
+}
+
+/// `torseur eval`: numbers at the values of a JSON file.
+fn run_eval(a: EvalArgs, emit: &mut Emit) -> Result<(), Failure> {
+    let EvalArgs {
+        spec,
+        at,
+        quantities: qs,
+    } = a;
+    let m = load(&spec)?;
+    let text = std::fs::read_to_string(&at)
+        .with_context(|| format!("cannot read {}", at.display()))
+        .map_err(bad_input)?;
+    let values = output::Values::parse(&text).map_err(bad_input)?;
+    let qs = quantities(&m, &qs)?;
+    let ds = values_only(&m, &qs)?;
+    // Only the parameters and coordinates the results hold are demanded.
+    let exprs: Vec<&torseur::expr::Expr> = ds.iter().flat_map(|d| d.value.exprs()).collect();
+    let point = output::numeric_point_for(&m, &values, &exprs).map_err(bad_input)?;
+    let items: Vec<serde_json::Value> = ds
+        .iter()
+        .map(|d| output::eval_value(&m, &d.quantity.to_string(), &d.value, &point))
+        .collect();
+    let j = serde_json::json!({ "quantities": items });
+    emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))
+}
+
+/// `torseur answer-key`: the corrigé as LaTeX, with its figures, a PDF and a manifest.
+fn run_answer_key(a: AnswerKeyArgs, emit: &mut Emit) -> Result<(), Failure> {
+    let AnswerKeyArgs {
+        spec,
+        output,
+        pdf,
+        vectors,
+        manifest,
+    } = a;
+    let m = load(&spec)?;
+    let style = match vectors {
+        Vectors::Sum => torseur::latex::VectorStyle::Sum,
+        Vectors::Column => torseur::latex::VectorStyle::Column,
+    };
+    let key = torseur::latex::answer_key_document(&m, style).map_err(bad_input)?;
+    let figures = render_figures(&key)?;
+    let manifest_bytes =
+        serde_json::to_string_pretty(&output::manifest_json(&m, &key)).map_err(bad_input)? + "\n";
+    if let Some(path) = &manifest {
+        write_atomic(path, manifest_bytes.as_bytes())?;
+    }
+    let tex = key.tex;
+    match output {
+        None => {
+            if !figures.is_empty() {
                 eprintln!(
-                    "terms {total:>9}  total; {:.3} s",
-                    start.elapsed().as_secs_f64()
+                    "torseur: the key includes {} figure(s): give -o to write them",
+                    figures.len()
                 );
+            }
+            emit(&tex)
+        }
+        Some(path) => {
+            let pdf_bytes = if pdf {
+                Some(compile_pdf(&tex, &figures)?)
+            } else {
+                None
+            };
+            write_figures(&path, &figures)?;
+            write_atomic(&path, tex.as_bytes())?;
+            if let Some(bytes) = pdf_bytes {
+                write_atomic(&path.with_extension("pdf"), &bytes)?;
             }
             Ok(())
         }
-        Command::Eval {
-            spec,
-            at,
-            quantities: qs,
-        } => {
-            let m = load(&spec)?;
-            let text = std::fs::read_to_string(&at)
-                .with_context(|| format!("cannot read {}", at.display()))
-                .map_err(bad_input)?;
-            let values = output::Values::parse(&text).map_err(bad_input)?;
-            let qs = quantities(&m, &qs)?;
-            let ds = values_only(&m, &qs)?;
-            // Only the parameters and coordinates the results hold are demanded.
-            let exprs: Vec<&torseur::expr::Expr> =
-                ds.iter().flat_map(|d| d.value.exprs()).collect();
-            let point = output::numeric_point_for(&m, &values, &exprs).map_err(bad_input)?;
-            let items: Vec<serde_json::Value> = ds
-                .iter()
-                .map(|d| output::eval_value(&m, &d.quantity.to_string(), &d.value, &point))
-                .collect();
-            let j = serde_json::json!({ "quantities": items });
-            emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))
+    }
+}
+
+/// `torseur check`: the exact results against the float backend, and their dimensions.
+fn run_check(a: CheckArgs, emit: &mut Emit) -> Result<(), Failure> {
+    let CheckArgs {
+        spec,
+        samples,
+        seed,
+        json,
+    } = a;
+    let m = load(&spec)?;
+    let r = torseur::check::check(&m, samples.clamp(1, 100_000), seed).map_err(bad_input)?;
+    if json {
+        let rows: Vec<serde_json::Value> = r
+            .rows
+            .iter()
+            .map(|x| {
+                serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
+                        "worst_relative_error": x.worst, "sample": x.sample,
+                        "ok": x.worst <= torseur::check::TOLERANCE})
+            })
+            .collect();
+        let dims: Vec<serde_json::Value> = r
+            .dimensions
+            .iter()
+            .map(|x| {
+                serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
+                        "ok": x.error.is_none(),
+                        "error": x.error.as_ref().map(|e| e.to_string())})
+            })
+            .collect();
+        let j = serde_json::json!({"samples": r.samples, "seed": r.seed,
+                "tolerance": torseur::check::TOLERANCE, "passed": r.passed(), "quantities": rows,
+                "dimensions": dims});
+        emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))?;
+    } else {
+        emit(&format!("{r}\n"))?;
+    }
+    if r.passed() {
+        Ok(())
+    } else {
+        let mut problems = Vec::new();
+        let names: Vec<String> = r.failures().iter().map(|x| x.quantity.clone()).collect();
+        if !names.is_empty() {
+            problems.push(format!(
+                "symbolic and float results disagree: {}",
+                names.join(", ")
+            ));
         }
-        Command::AnswerKey {
-            spec,
-            output,
-            pdf,
-            vectors,
-            manifest,
-        } => {
-            let m = load(&spec)?;
-            let style = match vectors {
-                Vectors::Sum => torseur::latex::VectorStyle::Sum,
-                Vectors::Column => torseur::latex::VectorStyle::Column,
+        let wrong = r.dimension_failures();
+        if let Some(x) = wrong.first()
+            && let Some(e) = &x.error
+        {
+            let under = x
+                .hypothesis
+                .as_ref()
+                .map(|h| format!(" under {h}"))
+                .unwrap_or_default();
+            let more = match wrong.len() {
+                1 => String::new(),
+                n => format!(" ({} more in the report)", n - 1),
             };
-            let key = torseur::latex::answer_key_document(&m, style).map_err(bad_input)?;
-            let figures = render_figures(&key)?;
-            let manifest_bytes = serde_json::to_string_pretty(&output::manifest_json(&m, &key))
-                .map_err(bad_input)?
-                + "\n";
-            if let Some(path) = &manifest {
-                write_atomic(path, manifest_bytes.as_bytes())?;
-            }
-            let tex = key.tex;
-            match output {
-                None => {
-                    if !figures.is_empty() {
-                        eprintln!(
-                            "torseur: the key includes {} figure(s): give -o to write them",
-                            figures.len()
-                        );
-                    }
-                    emit(&tex)
-                }
-                Some(path) => {
-                    let pdf_bytes = if pdf {
-                        Some(compile_pdf(&tex, &figures)?)
-                    } else {
-                        None
-                    };
-                    write_figures(&path, &figures)?;
-                    write_atomic(&path, tex.as_bytes())?;
-                    if let Some(bytes) = pdf_bytes {
-                        write_atomic(&path.with_extension("pdf"), &bytes)?;
-                    }
-                    Ok(())
-                }
-            }
+            problems.push(format!("wrong dimension{under}: {e}{more}"));
         }
-        Command::Check {
-            spec,
-            samples,
-            seed,
-            json,
-        } => {
-            let m = load(&spec)?;
-            let r =
-                torseur::check::check(&m, samples.clamp(1, 100_000), seed).map_err(bad_input)?;
-            if json {
-                let rows: Vec<serde_json::Value> = r
-                    .rows
-                    .iter()
-                    .map(|x| {
-                        serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
-                            "worst_relative_error": x.worst, "sample": x.sample,
-                            "ok": x.worst <= torseur::check::TOLERANCE})
-                    })
-                    .collect();
-                let dims: Vec<serde_json::Value> = r
-                    .dimensions
-                    .iter()
-                    .map(|x| {
-                        serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
-                            "ok": x.error.is_none(),
-                            "error": x.error.as_ref().map(|e| e.to_string())})
-                    })
-                    .collect();
-                let j = serde_json::json!({"samples": r.samples, "seed": r.seed,
-                    "tolerance": torseur::check::TOLERANCE, "passed": r.passed(), "quantities": rows,
-                    "dimensions": dims});
-                emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))?;
-            } else {
-                emit(&format!("{r}\n"))?;
-            }
-            if r.passed() {
-                Ok(())
-            } else {
-                let mut problems = Vec::new();
-                let names: Vec<String> = r.failures().iter().map(|x| x.quantity.clone()).collect();
-                if !names.is_empty() {
-                    problems.push(format!(
-                        "symbolic and float results disagree: {}",
-                        names.join(", ")
-                    ));
-                }
-                let wrong = r.dimension_failures();
-                if let Some(x) = wrong.first()
-                    && let Some(e) = &x.error
-                {
-                    let under = x
-                        .hypothesis
-                        .as_ref()
-                        .map(|h| format!(" under {h}"))
-                        .unwrap_or_default();
-                    let more = match wrong.len() {
-                        1 => String::new(),
-                        n => format!(" ({} more in the report)", n - 1),
-                    };
-                    problems.push(format!("wrong dimension{under}: {e}{more}"));
-                }
-                Err(Failure {
-                    code: 1,
-                    error: anyhow!("{}", problems.join("\n")),
-                })
-            }
-        }
-        Command::Simulate {
-            spec,
-            scenario,
-            output,
-            plot,
-            png,
-        } => {
-            let m = load(&spec)?;
-            let run = torseur::simulate::simulate(&m, &scenario).map_err(bad_input)?;
-            let table = run.table().map_err(bad_input)?;
-            let ids: Vec<&str> = run
-                .columns
-                .iter()
-                .map(|c| c.id.as_str())
-                .filter(|id| !id.starts_with("int("))
-                .collect();
-            let fig = torseur::simulate::figure(
-                &format!("{} ({})", m.title, run.label),
-                &[(run.label.as_str(), &run)],
-                &ids,
-                true,
-            );
-            // Everything is computed before anything is written.
-            let svg = match &plot {
-                Some(_) => Some(fig.to_svg().map_err(bad_input)?),
-                None => None,
-            };
-            let png_bytes = match &png {
-                Some(_) => Some(fig.to_png(2).map_err(bad_input)?),
-                None => None,
-            };
-            let csv = table.to_csv();
-            if let (Some(p), Some(s)) = (&plot, &svg) {
-                write_atomic(p, s.as_bytes())?;
-            }
-            if let (Some(p), Some(b)) = (&png, &png_bytes) {
-                write_atomic(p, b)?;
-            }
-            eprintln!(
-                "simulate: {} points, {} evaluations, {} steps",
-                run.times.len(),
-                run.stats.evaluations,
-                run.stats.accepted_steps
-            );
-            match output {
-                None => emit(&csv),
-                Some(p) => write_atomic(&p, csv.as_bytes()),
-            }
-        }
-        Command::Verify {
-            spec,
-            quantity,
-            expr,
-            hypothesis,
-        } => {
-            let m = load(&spec)?;
-            // `@FILE`: a text too long for a command line (a chain's equation of motion).
-            let expr = match expr.strip_prefix('@') {
-                Some(file) => std::fs::read_to_string(file).map_err(|e| {
-                    bad_input(anyhow::anyhow!("--expr @{file}: cannot read the file: {e}"))
-                })?,
-                None => expr,
-            };
-            let v = match &quantity {
-                Some(q) => torseur::verify::verify(&m, q, &expr, hypothesis.as_deref()),
-                None => torseur::verify::verify_equation(&m, &expr, hypothesis.as_deref()),
-            }
-            .map_err(bad_input)?;
-            emit(&format!("{v}\n"))?;
-            for (k, d) in v
-                .difference
-                .iter()
-                .enumerate()
-                .filter(|(_, d)| !d.is_zero())
-            {
-                emit(&format!(
-                    "  component {} (LaTeX): {}\n",
-                    k + 1,
-                    torseur::latex::expr(d)
-                ))?;
-            }
-            if v.is_equivalent() {
-                Ok(())
-            } else {
-                Err(Failure {
-                    code: 1,
-                    error: match &v.equation {
-                        None => anyhow!("{} differs from the derived result", v.quantity),
-                        Some(eq) => anyhow!("`{eq}` is not equivalent to the engine's relation"),
-                    },
-                })
-            }
-        }
+        Err(Failure {
+            code: 1,
+            error: anyhow!("{}", problems.join("\n")),
+        })
+    }
+}
+
+/// `torseur simulate`: a scenario integrated in time, as CSV and plots.
+fn run_simulate(a: SimulateArgs, emit: &mut Emit) -> Result<(), Failure> {
+    let SimulateArgs {
+        spec,
+        scenario,
+        output,
+        plot,
+        png,
+    } = a;
+    let m = load(&spec)?;
+    let run = torseur::simulate::simulate(&m, &scenario).map_err(bad_input)?;
+    let table = run.table().map_err(bad_input)?;
+    let ids: Vec<&str> = run
+        .columns
+        .iter()
+        .map(|c| c.id.as_str())
+        .filter(|id| !id.starts_with("int("))
+        .collect();
+    let fig = torseur::simulate::figure(
+        &format!("{} ({})", m.title, run.label),
+        &[(run.label.as_str(), &run)],
+        &ids,
+        true,
+    );
+    // Everything is computed before anything is written.
+    let svg = match &plot {
+        Some(_) => Some(fig.to_svg().map_err(bad_input)?),
+        None => None,
+    };
+    let png_bytes = match &png {
+        Some(_) => Some(fig.to_png(2).map_err(bad_input)?),
+        None => None,
+    };
+    let csv = table.to_csv();
+    if let (Some(p), Some(s)) = (&plot, &svg) {
+        write_atomic(p, s.as_bytes())?;
+    }
+    if let (Some(p), Some(b)) = (&png, &png_bytes) {
+        write_atomic(p, b)?;
+    }
+    eprintln!(
+        "simulate: {} points, {} evaluations, {} steps",
+        run.times.len(),
+        run.stats.evaluations,
+        run.stats.accepted_steps
+    );
+    match output {
+        None => emit(&csv),
+        Some(p) => write_atomic(&p, csv.as_bytes()),
+    }
+}
+
+/// `torseur verify`: is a hand-written value or equation the engine's?
+fn run_verify(a: VerifyArgs, emit: &mut Emit) -> Result<(), Failure> {
+    let VerifyArgs {
+        spec,
+        quantity,
+        expr,
+        hypothesis,
+    } = a;
+    let m = load(&spec)?;
+    // `@FILE`: a text too long for a command line (a chain's equation of motion).
+    let expr = match expr.strip_prefix('@') {
+        Some(file) => std::fs::read_to_string(file)
+            .map_err(|e| bad_input(anyhow::anyhow!("--expr @{file}: cannot read the file: {e}")))?,
+        None => expr,
+    };
+    let v = match &quantity {
+        Some(q) => torseur::verify::verify(&m, q, &expr, hypothesis.as_deref()),
+        None => torseur::verify::verify_equation(&m, &expr, hypothesis.as_deref()),
+    }
+    .map_err(bad_input)?;
+    emit(&format!("{v}\n"))?;
+    for (k, d) in v
+        .difference
+        .iter()
+        .enumerate()
+        .filter(|(_, d)| !d.is_zero())
+    {
+        emit(&format!(
+            "  component {} (LaTeX): {}\n",
+            k + 1,
+            torseur::latex::expr(d)
+        ))?;
+    }
+    if v.is_equivalent() {
+        Ok(())
+    } else {
+        Err(Failure {
+            code: 1,
+            error: match &v.equation {
+                None => anyhow!("{} differs from the derived result", v.quantity),
+                Some(eq) => anyhow!("`{eq}` is not equivalent to the engine's relation"),
+            },
+        })
     }
 }
