@@ -24,7 +24,6 @@ pub use registry::{
 };
 
 use crate::excerpt::{bounded, excerpt};
-use crate::spec::wire::CoordinateKind;
 use std::collections::HashMap;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
@@ -34,6 +33,19 @@ use symbolica::atom::{Atom, AtomCore, Symbol};
 use symbolica::domains::rational::{Q, Rational, RationalField};
 use symbolica::poly::PolyVariable;
 use symbolica::poly::polynomial::MultivariatePolynomial;
+
+/// Kind of a time coordinate.
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize, serde::Serialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum CoordinateKind {
+    /// Enters through cos q and sin q, and as itself where an expression of the spec writes
+    /// it so (a disc's centre at `R*theta*x1`).
+    Angle,
+    /// Enters polynomially.
+    Length,
+}
 
 type Poly = MultivariatePolynomial<RationalField, u8>;
 

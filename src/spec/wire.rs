@@ -466,16 +466,8 @@ impl ParameterKind {
     }
 }
 
-/// Kind of a time coordinate.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
-#[serde(rename_all = "lowercase")]
-pub enum CoordinateKind {
-    /// Enters through cos q and sin q, and as itself where an expression of the spec writes
-    /// it so (a disc's centre at `R*theta*x1`).
-    Angle,
-    /// Enters polynomially.
-    Length,
-}
+/// Kind of a time coordinate (defined with the expressions, which need it; the spec reads it).
+pub use crate::expr::CoordinateKind;
 
 /// A time coordinate q(t).
 #[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]

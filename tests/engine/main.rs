@@ -13,6 +13,7 @@ mod eval;
 mod figures;
 mod kinematics;
 mod latex;
+mod layers;
 mod library;
 mod links;
 mod pfd;
