@@ -199,10 +199,11 @@ impl<'m> Doc<'m> {
         std::mem::replace(&mut self.o, saved)
     }
 
-    /// Cells side by side, each in a bottom-aligned minipage (the displays line up) (two short torsors of a bilan,
-    /// two inertia operators): as many to a row as fit (`widths`: each cell's display width),
-    /// at most `most`. A single narrow cell is set as its caption beside its display. A
-    /// corrigé uses the width of the page.
+    /// Cells side by side (two short torsors of a bilan, two inertia operators), each in a
+    /// bottom-aligned minipage so that their displays line up: as many to a row as fit
+    /// (`widths`: each cell's display width), at most `most`; cells in order, one under the
+    /// other, when one is as wide as the line. A single narrow cell is set as its caption
+    /// beside its display. A corrigé uses the width of the page.
     pub(super) fn rows(&mut self, cells: &[String], widths: &[usize], most: usize) {
         let w = widths.iter().copied().max().unwrap_or(0);
         let per_row = if cells.len() > 2 && w + 4 <= super::LINE / 3 {
@@ -442,7 +443,13 @@ pub(super) fn quantity_title(q: &Quantity) -> String {
             linear: false,
             ..q.clone()
         };
-        return format!("{} \\text{{ (linéarisé)}}", quantity_title(&inner));
+        // « équation … linéarisée », « moment … linéarisé ».
+        let agree = if matches!(q.kind, QuantityKind::Eom(_)) {
+            "e"
+        } else {
+            ""
+        };
+        return format!("{} \\text{{ (linéarisé{agree})}}", quantity_title(&inner));
     }
     match &q.projection {
         Some((f, axis)) => format!("{} \\cdot {}", quantity(&q.kind), basis_vector(*axis, f)),
@@ -600,7 +607,6 @@ pub fn answer_key_document(
     // Each solid's mass, centre and inertia operator; the operators side by side.
     let mut cells = Vec::new();
     let mut widths = Vec::new();
-    let point_masses = m.bodies.iter().any(|b| b.inertia.is_none());
     for b in &m.bodies {
         let mass = super::expr(&b.mass);
         let intro = format!(
@@ -631,19 +637,13 @@ pub fn answer_key_document(
                 widths.push(doc.last_width());
             }
             None => {
+                // A line of its own: the solids then stay in the spec's order.
                 cells.push(format!("{intro} (masse ponctuelle).\n\n"));
                 widths.push(super::LINE);
             }
         }
     }
-    if point_masses {
-        // Keep the spec's order: solids with and without operator one after the other.
-        for c in &cells {
-            doc.o.push_str(c);
-        }
-    } else {
-        doc.rows(&cells, &widths, 2);
-    }
+    doc.rows(&cells, &widths, 2);
 
     model_hypotheses(&mut doc);
 

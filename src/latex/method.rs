@@ -416,15 +416,7 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
                 None => by_place.push((place, vec![lhs])),
             }
         }
-        // One sentence: « D'après la question 1 : Ω ; d'après la question 2 : I et σ. »
-        let parts: Vec<String> = by_place
-            .iter()
-            .map(|(place, lhss)| {
-                let list: Vec<String> = lhss.iter().map(|l| format!("${l}$")).collect();
-                format!("d'après {place} : {}", french_list(&list))
-            })
-            .collect();
-        let _ = writeln!(doc.o, "D{}.\n", &parts.join(" ; ")[1..]);
+        let _ = writeln!(doc.o, "{}", citation(&by_place));
     };
     let n = d.steps.len();
     let mut i = 0;
@@ -546,6 +538,23 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
     }
     flush(doc, &mut cited);
     last_is_result
+}
+
+/// Values already shown, said in one sentence with where they are: « On reprend
+/// $\Omega(3/0)$ (question 1) et $I_O(3)$ (ci-dessus). »
+pub(super) fn citation(by_place: &[(String, Vec<String>)]) -> String {
+    let items: Vec<String> = by_place
+        .iter()
+        .map(|(place, lhss)| {
+            let list: Vec<String> = lhss.iter().map(|l| format!("${l}$")).collect();
+            let at = match place.as_str() {
+                "ce qui précède" => "ci-dessus",
+                p => p.strip_prefix("la ").or(p.strip_prefix("le ")).unwrap_or(p),
+            };
+            format!("{} ({at})", french_list(&list))
+        })
+        .collect();
+    format!("On reprend {}.\n", french_list(&items))
 }
 
 /// Where a step stands in the derivation of a solid's dynamics, and of which solid: Ω, V,

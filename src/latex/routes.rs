@@ -27,7 +27,11 @@ fn show_vector(
     let value = shown_value(doc, &value);
     match doc.cited(lhs, &value) {
         Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+            let _ = writeln!(
+                doc.o,
+                "{}",
+                super::method::citation(&[(place, vec![lhs.to_string()])])
+            );
         }
         None => {
             let _ = writeln!(doc.o, "{sentence}");
@@ -307,7 +311,11 @@ pub(super) fn derived_step(doc: &mut Doc, text: &str, lhs: &str, sentence: &str)
     let v = shown_value(doc, &d.value);
     match doc.cited(lhs, &v) {
         Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+            let _ = writeln!(
+                doc.o,
+                "{}",
+                super::method::citation(&[(place, vec![lhs.to_string()])])
+            );
         }
         None => {
             let _ = writeln!(doc.o, "{sentence}");
@@ -388,7 +396,11 @@ fn kinetic_projections(
         let v = shown_value(doc, &Value::Scalar(p.clone()));
         match doc.cited(&lhs, &v) {
             Some(place) => {
-                let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+                let _ = writeln!(
+                    doc.o,
+                    "{}",
+                    super::method::citation(&[(place, vec![lhs.to_string()])])
+                );
             }
             None => show_scalar(doc, &format!("sigma({a},{mo})"), &sentence, &lhs, p),
         }
@@ -473,7 +485,11 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
     let v = shown_value(doc, &Value::Scalar(sum.clone()));
     match doc.cited(&lhs, &v) {
         Some(place) => {
-            let _ = writeln!(doc.o, "D'après {place} : ${lhs}$.\n");
+            let _ = writeln!(
+                doc.o,
+                "{}",
+                super::method::citation(&[(place, vec![lhs.to_string()])])
+            );
         }
         None => {
             kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);

@@ -539,3 +539,41 @@ fn legend_corner(panel: &Panel, x: (f64, f64), y: (f64, f64)) -> SeriesLabelPosi
         .map(|(c, _, _)| c)
         .unwrap_or(SeriesLabelPosition::UpperRight)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ticks_are_printed_as_the_course_prints_numbers() {
+        assert_eq!(tick_label(&2000.0), "2000");
+        assert_eq!(tick_label(&0.25), "0,25");
+        assert_eq!(tick_label(&-1.5), "-1,5");
+        assert_eq!(tick_label(&-0.0), "0");
+        assert_eq!(tick_label(&-1e-12), "0");
+        assert_eq!(tick_label(&(0.1 + 0.2)), "0,3");
+    }
+
+    #[test]
+    fn the_legend_goes_where_the_curves_are_not() {
+        // A ramp from the lower left to a plateau at the top right: the upper left is free.
+        let ramp: Vec<(f64, f64)> = (0..=100)
+            .map(|k| {
+                let t = f64::from(k) / 100.0;
+                (t, (2.0 * t).min(1.0))
+            })
+            .collect();
+        let p = Panel::new("y").series(Series::new("a", ramp));
+        assert_eq!(
+            legend_corner(&p, (0.0, 1.0), (0.0, 1.0)),
+            SeriesLabelPosition::UpperLeft
+        );
+        // A curve along the bottom: the upper right, the default, is free.
+        let low: Vec<(f64, f64)> = (0..=100).map(|k| (f64::from(k) / 100.0, 0.0)).collect();
+        let p = Panel::new("y").series(Series::new("a", low));
+        assert_eq!(
+            legend_corner(&p, (0.0, 1.0), (0.0, 1.0)),
+            SeriesLabelPosition::UpperRight
+        );
+    }
+}

@@ -131,7 +131,7 @@ pub(super) fn pfd_names(
 }
 
 fn basis_vector(m: &Mechanism, path: &str, s: &str) -> Result<(FrameId, Axis), SpecError> {
-    super::validate::basis_vector(&m.frames, s).ok_or_else(|| {
+    m.frames.basis_vector(s).ok_or_else(|| {
         at(
             path,
             format!("`{s}` is not a basis vector (x, y or z followed by a frame name)"),
@@ -145,7 +145,7 @@ fn point(m: &Mechanism, path: String, name: &str) -> Result<crate::point::PointI
 }
 
 fn vector(m: &Mechanism, path: &str, text: &str) -> Result<(Vector, FrameId), SpecError> {
-    let bv = |s: &str| super::validate::basis_vector(&m.frames, s).map(|(f, a)| (f, a.index()));
+    let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
     let parts = m
         .reg
         .parse_vector(text, &bv)

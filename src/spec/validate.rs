@@ -43,11 +43,6 @@ fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
     check_name(n).map_err(|m| at(path, m))
 }
 
-/// Splits `x2` into (axis, frame name) if the frame exists.
-pub(super) fn basis_vector(frames: &Frames, s: &str) -> Option<(FrameId, Axis)> {
-    frames.basis_vector(s)
-}
-
 /// The message refusing a scalar named like a basis vector (`x0` when frame `0` exists), if
 /// `n` is one: in a vector expression the name could only be read as the basis vector.
 pub(super) fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
@@ -201,7 +196,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             ));
         }
     }
-    let bv = |s: &str| basis_vector(&frames, s).map(|(f, a)| (f, a.index()));
+    let bv = |s: &str| frames.basis_vector(s).map(|(f, a)| (f, a.index()));
 
     // Points, parents first.
     let origin_name = spec
@@ -371,7 +366,8 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                 SymmetrySpec::Plane { normal } => (normal, Symmetry::Plane),
                 SymmetrySpec::Revolution { axis } => (axis, Symmetry::Revolution),
             };
-            let (f, axis) = basis_vector(&frames, txt)
+            let (f, axis) = frames
+                .basis_vector(txt)
                 .ok_or_else(|| at(&sp, format!("`{txt}` is not a basis vector")))?;
             let Some(ine) = &inertia else {
                 return Err(at(&sp, "a point mass has no symmetry to declare"));

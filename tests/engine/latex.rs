@@ -74,7 +74,7 @@ fn the_key_shows_the_course_notation() {
         "$O_{1}$ est un point de $S_{1}$ fixe dans $\\mathcal{R}_{0}$",
         "Composition des vitesses de rotation",
         "Bilan des actions mécaniques extérieures à $E$",
-        "D'après la question 3",
+        "(question 3)",
         "\\begin{empheq}[box=\\fbox]{align*}",
         "Hypothèses du modèle.} Le référentiel $\\mathcal{R}_{0}$ est galiléen",
         "On se place sous l'hypothèse H2.",
@@ -213,4 +213,39 @@ fn every_derive_output_matches_its_golden_files() {
             serde_json::to_string_pretty(&torseur::output::derive_json(&m, &full)).unwrap() + "\n";
         golden_in("tests/golden/derive", &format!("{stem}.json"), &json);
     }
+}
+
+/// A value cited for a later step is cited alone, without what it was derived from: the top's
+/// δ(O,3/0) is d/dt σ(O,3/0) in R0 (Bour with Ω(2/0)), so its derivation cites σ(O,3/0) of
+/// question 2 and not I_O(3), which σ already holds; each projection of δ cites δ alone.
+#[test]
+fn a_citation_names_the_latest_value_of_each_solid_only() {
+    let m = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/toupie.json"
+    ))
+    .unwrap();
+    let tex = torseur::latex::answer_key(&m).unwrap();
+    let citations: Vec<&str> = tex
+        .lines()
+        .filter(|l| l.starts_with("On reprend "))
+        .collect();
+    assert!(
+        citations.contains(&"On reprend $\\overrightarrow{\\sigma(O,3/0)}$ (question 2)."),
+        "{citations:#?}"
+    );
+    assert_eq!(
+        citations
+            .iter()
+            .filter(|l| **l == "On reprend $\\overrightarrow{\\delta(O,3/0)}$ (ci-dessus).")
+            .count(),
+        2,
+        "{citations:#?}"
+    );
+    assert!(
+        !citations
+            .iter()
+            .any(|l| l.contains("\\sigma(O,3/0)") && l.contains("I_{O}(3)")),
+        "{citations:#?}"
+    );
 }
