@@ -20,7 +20,8 @@ pub use flat::FlatEval;
 pub use parse::bare_names;
 pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
 pub use registry::{
-    MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry, check_identifier,
+    MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry,
+    check_identifier,
 };
 
 use crate::excerpt::{bounded, excerpt};
@@ -288,6 +289,28 @@ impl Expr {
             let d = self.p.degree(i) as u32 * times + other.p.degree(i) as u32;
             d <= MAX_INPUT_DEGREE
         })
+    }
+
+    /// An upper bound on the terms of `self^n` before like terms combine: the fewer of the
+    /// multinomial count C(n + k − 1, k − 1) for k terms, and the monomials the degrees allow.
+    pub(crate) fn power_terms_bound(&self, n: u32) -> u128 {
+        let k = self.nterms() as u128;
+        if n == 0 || k <= 1 {
+            return 1;
+        }
+        // C(n + k − 1, n), stopped once past the bound.
+        let mut multinomial: u128 = 1;
+        for i in 1..=n as u128 {
+            multinomial = multinomial * (k - 1 + i) / i;
+            if multinomial > MAX_EXPANDED_TERMS {
+                break;
+            }
+        }
+        let mut monomials: u128 = 1;
+        for i in 0..self.reg.nvars() {
+            monomials = monomials.saturating_mul(self.p.degree(i) as u128 * n as u128 + 1);
+        }
+        multinomial.min(monomials)
     }
 
     /// Whether the variable `i` occurs.

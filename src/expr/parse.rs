@@ -338,63 +338,110 @@ pub(super) fn parse_vector<K: Ord + Copy>(
         input: s,
         names,
     };
-    let expanded = a.expand();
+    let is_basis = |v: AtomView| match v {
+        AtomView::Var(v) => basis_vector(v.get_symbol().get_stripped_name()),
+        _ => None,
+    };
     let mut out: Vec<(K, [Expr; 3])> = Vec::new();
-    let mut add = |k: K, axis: usize, e: Expr| {
-        if let Some(slot) = out.iter_mut().find(|(kk, _)| *kk == k) {
-            slot.1[axis] = &slot.1[axis] + &e;
-        } else {
-            let z = reg.zero();
-            let mut c = [z.clone(), z.clone(), z];
-            c[axis] = e;
-            out.push((k, c));
-        }
-    };
-    let view = expanded.as_view();
-    if let AtomView::Num(n) = view
-        && n.is_zero()
-    {
-        return Ok(out);
-    }
-    let terms: Vec<AtomView> = match view {
-        AtomView::Add(a) => a.iter().collect(),
-        other => vec![other],
-    };
-    for term in terms {
-        let factors: Vec<AtomView> = match term {
-            AtomView::Mul(m) => m.iter().collect(),
-            other => vec![other],
-        };
-        let mut found: Option<(K, usize)> = None;
-        let mut coef = reg.one();
-        for f in factors {
-            if let AtomView::Var(v) = f
-                && let Some(bv) = basis_vector(v.get_symbol().get_stripped_name())
-            {
-                if found.is_some() {
-                    return Err(w.unsupported("a term holds two basis vectors"));
-                }
-                found = Some(bv);
-                continue;
-            }
-            if let AtomView::Pow(p) = f
-                && let AtomView::Var(v) = p.get_base()
-                && basis_vector(v.get_symbol().get_stripped_name()).is_some()
-            {
-                return Err(w.unsupported("a basis vector cannot be raised to a power"));
-            }
-            coef = &coef * &w.scalar(f)?;
-        }
-        match found {
-            Some((k, axis)) => add(k, axis, coef),
-            None => {
-                return Err(w.unsupported(
-                    "every term of a vector must hold one basis vector (x0, y1, z2, …)",
-                ));
-            }
-        }
-    }
+    w.vector(a.as_view(), &is_basis, &mut out)?;
     Ok(out)
+}
+
+impl Walker<'_> {
+    /// Adds the vector written by `v` to `out`, walking the tree without expanding it (as
+    /// [`Walker::linear`] does for an angle): a sum of vectors, or a product of scalars and of
+    /// exactly one vector.
+    fn vector<K: Ord + Copy>(
+        &self,
+        v: AtomView,
+        basis: &dyn Fn(AtomView) -> Option<(K, usize)>,
+        out: &mut Vec<(K, [Expr; 3])>,
+    ) -> Result<(), ExprError> {
+        let mut parts = Vec::new();
+        self.vector_terms(v, basis, &self.reg.one(), &mut parts)?;
+        for (k, axis, e) in parts {
+            if let Some(slot) = out.iter_mut().find(|(kk, _)| *kk == k) {
+                slot.1[axis] = &slot.1[axis] + &e;
+            } else {
+                let z = self.reg.zero();
+                let mut c = [z.clone(), z.clone(), z];
+                c[axis] = e;
+                out.push((k, c));
+            }
+        }
+        Ok(())
+    }
+
+    /// The terms `(basis, axis, coefficient)` of `factor · v`.
+    fn vector_terms<K: Ord + Copy>(
+        &self,
+        v: AtomView,
+        basis: &dyn Fn(AtomView) -> Option<(K, usize)>,
+        factor: &Expr,
+        parts: &mut Vec<(K, usize, Expr)>,
+    ) -> Result<(), ExprError> {
+        if let Some((k, axis)) = basis(v) {
+            parts.push((k, axis, factor.clone()));
+            return Ok(());
+        }
+        match v {
+            AtomView::Add(a) => {
+                for t in a.iter() {
+                    self.vector_terms(t, basis, factor, parts)?;
+                }
+                Ok(())
+            }
+            AtomView::Mul(m) => {
+                let factors: Vec<AtomView> = m.iter().collect();
+                let with_vector: Vec<usize> = (0..factors.len())
+                    .filter(|&i| holds_basis_vector(factors[i], basis))
+                    .collect();
+                let [at] = with_vector[..] else {
+                    return Err(self.unsupported(if with_vector.is_empty() {
+                        NO_BASIS_VECTOR
+                    } else {
+                        "a term holds two basis vectors"
+                    }));
+                };
+                let mut scalar = factor.clone();
+                for (i, f) in factors.iter().enumerate() {
+                    if i != at {
+                        scalar = self.times(&scalar, &self.scalar(*f)?)?;
+                    }
+                }
+                self.vector_terms(factors[at], basis, &scalar, parts)
+            }
+            AtomView::Pow(p) if holds_basis_vector(p.get_base(), basis) => {
+                Err(self.unsupported("a basis vector cannot be raised to a power"))
+            }
+            AtomView::Num(n) if n.is_zero() => Ok(()),
+            _ if holds_basis_vector(v, basis) => Err(self.unsupported(
+                "a basis vector appears inside a function: only sums and products of vectors \
+                 are read",
+            )),
+            _ => Err(self.unsupported(NO_BASIS_VECTOR)),
+        }
+    }
+}
+
+/// Why a term of a vector without a basis vector is refused.
+const NO_BASIS_VECTOR: &str = "every term of a vector must hold one basis vector (x0, y1, z2, …)";
+
+/// Whether a basis vector occurs anywhere in `v`.
+fn holds_basis_vector<K>(v: AtomView, basis: &dyn Fn(AtomView) -> Option<K>) -> bool {
+    if basis(v).is_some() {
+        return true;
+    }
+    match v {
+        AtomView::Add(a) => a.iter().any(|t| holds_basis_vector(t, basis)),
+        AtomView::Mul(m) => m.iter().any(|t| holds_basis_vector(t, basis)),
+        AtomView::Pow(p) => {
+            let (b, e) = p.get_base_exp();
+            holds_basis_vector(b, basis) || holds_basis_vector(e, basis)
+        }
+        AtomView::Fun(f) => f.iter().any(|t| holds_basis_vector(t, basis)),
+        _ => false,
+    }
 }
 
 struct Walker<'a> {
@@ -417,6 +464,24 @@ impl Walker<'_> {
             "the expanded expression would have a degree over {} in one variable",
             super::MAX_INPUT_DEGREE
         ))
+    }
+
+    fn too_many_terms(&self) -> ExprError {
+        self.unsupported(&format!(
+            "the expanded expression would have over {} terms",
+            super::MAX_EXPANDED_TERMS
+        ))
+    }
+
+    /// `a * b`, refused when a degree or the number of terms would pass the bounds.
+    fn times(&self, a: &Expr, b: &Expr) -> Result<Expr, ExprError> {
+        if !a.product_fits(b, 1) {
+            return Err(self.degree_too_high());
+        }
+        if (a.nterms() as u128) * (b.nterms() as u128) > super::MAX_EXPANDED_TERMS {
+            return Err(self.too_many_terms());
+        }
+        Ok(a * b)
     }
 
     fn number(&self, v: AtomView) -> Result<Rational, ExprError> {
@@ -479,10 +544,7 @@ impl Walker<'_> {
                 let mut acc = reg.one();
                 for t in m.iter() {
                     let f = self.scalar(t)?;
-                    if !acc.product_fits(&f, 1) {
-                        return Err(self.degree_too_high());
-                    }
-                    acc = &acc * &f;
+                    acc = self.times(&acc, &f)?;
                 }
                 Ok(acc)
             }
@@ -500,6 +562,9 @@ impl Walker<'_> {
                     let b = self.scalar(base)?;
                     if !reg.zero().product_fits(&b, 0) || !b.product_fits(&reg.zero(), n as u32) {
                         return Err(self.degree_too_high());
+                    }
+                    if b.power_terms_bound(n as u32) > super::MAX_EXPANDED_TERMS {
+                        return Err(self.too_many_terms());
                     }
                     return Ok(b.pow(n as u32));
                 }
@@ -557,94 +622,149 @@ impl Walker<'_> {
     /// An angle as Σ nᵢ aᵢ (angle coordinates and constant angle parameters, integer nᵢ, like
     /// terms combined) and k π/2.
     fn linear_angle(&self, arg: AtomView) -> Result<(Vec<(CoordId, i64)>, i64), ExprError> {
-        let expanded = arg.expand();
-        let terms: Vec<AtomView> = match expanded.as_view() {
-            AtomView::Add(a) => a.iter().collect(),
-            AtomView::Num(n) if n.is_zero() => vec![],
-            other => vec![other],
-        };
-        let mut out: Vec<(CoordId, i64)> = Vec::new();
-        let mut pi_multiple = Rational::zero();
-        for t in terms {
-            let (coef, q) = self.angle_term(t)?;
-            match q {
-                AngleTerm::Pi => pi_multiple = &pi_multiple + &coef,
-                AngleTerm::Coord(q) => {
-                    if !coef.is_integer() {
-                        return Err(self.unsupported(
-                            "an angle takes integer multiples of the angle coordinates and \
-                             angle parameters",
-                        ));
-                    }
-                    let n = coef.to_f64() as i64;
-                    if n.abs() > MAX_POWER {
-                        return Err(self.unsupported("multiple angle too large"));
-                    }
-                    match out.iter_mut().find(|(x, _)| *x == q) {
-                        Some(slot) => slot.1 += n,
-                        None => out.push((q, n)),
-                    }
-                }
-            }
+        let lin = self.linear(arg)?;
+        if !lin.constant.is_zero() {
+            return Err(self.unsupported(NOT_QUARTER_TURNS));
         }
-        out.retain(|(_, n)| *n != 0);
-        if out.iter().any(|(_, n)| n.abs() > MAX_POWER) {
-            return Err(self.unsupported("multiple angle too large"));
+        let mut out: Vec<(CoordId, i64)> = Vec::new();
+        for (q, coef) in lin.coords {
+            if !coef.is_integer() {
+                return Err(self.unsupported(
+                    "an angle takes integer multiples of the angle coordinates and angle \
+                     parameters",
+                ));
+            }
+            if coef.is_zero() {
+                continue;
+            }
+            if coef.to_f64().abs() > MAX_POWER as f64 {
+                return Err(self.unsupported("multiple angle too large"));
+            }
+            out.push((q, coef.to_f64() as i64));
         }
         // Exact values for multiples of π/2 only.
-        let twice = &pi_multiple * &Rational::new(2, 1);
+        let twice = &lin.pi * &Rational::new(2, 1);
         if !twice.is_integer() || twice.to_f64().abs() > 1e15 {
             return Err(self.unsupported(NOT_QUARTER_TURNS));
         }
         Ok((out, twice.to_f64() as i64))
     }
 
-    fn angle_term(&self, t: AtomView) -> Result<(Rational, AngleTerm), ExprError> {
-        let factors: Vec<AtomView> = match t {
-            AtomView::Mul(m) => m.iter().collect(),
-            other => vec![other],
-        };
-        let mut coef = Rational::one();
-        let mut what: Option<AngleTerm> = None;
-        for f in factors {
-            match f {
-                AtomView::Num(_) => coef = &coef * &self.number(f)?,
-                AtomView::Var(v) => {
-                    let sym = v.get_symbol();
-                    let name = sym.get_stripped_name();
-                    let this = if sym == Symbol::PI || name == "pi" {
-                        AngleTerm::Pi
-                    } else {
-                        match self.reg.angle(name) {
-                            Some(q) => AngleTerm::Coord(q),
-                            None if self.reg.param(name).is_none()
-                                && self.reg.coord(name).is_none() =>
-                            {
-                                return Err(ExprError::UnknownName {
-                                    name: name.to_string(),
-                                    input: self.input.to_string(),
-                                });
-                            }
-                            None => {
-                                return Err(self.unsupported(&format!(
-                                    "`{name}` is not an angle: an angle is an angle coordinate \
-                                     or a parameter declared with \"kind\": \"angle\""
-                                )));
-                            }
-                        }
-                    };
-                    if what.is_some() {
-                        return Err(self.unsupported("sin and cos take a linear angle"));
-                    }
-                    what = Some(this);
+    /// The tree of an angle read as a linear form, walked without expanding it: symbolica's
+    /// `expand` of `cos((m*(m + L)^4 + L)^63)` ran for minutes before the argument could be
+    /// refused (found by the expression fuzzer). Only a number may multiply or be raised to a
+    /// power.
+    fn linear(&self, v: AtomView) -> Result<Linear, ExprError> {
+        let nonlinear = || self.unsupported("sin and cos take a linear angle");
+        match v {
+            AtomView::Num(_) => Ok(Linear::constant(self.number(v)?)),
+            AtomView::Var(var) => {
+                let sym = var.get_symbol();
+                let name = sym.get_stripped_name();
+                let mut lin = Linear::constant(Rational::zero());
+                if sym == Symbol::PI || name == "pi" {
+                    lin.pi = Rational::one();
+                    return Ok(lin);
                 }
-                _ => return Err(self.unsupported("sin and cos take a linear angle")),
+                match self.reg.angle(name) {
+                    Some(q) => {
+                        lin.coords.push((q, Rational::one()));
+                        Ok(lin)
+                    }
+                    None if self.reg.param(name).is_none() && self.reg.coord(name).is_none() => {
+                        Err(ExprError::UnknownName {
+                            name: name.to_string(),
+                            input: self.input.to_string(),
+                        })
+                    }
+                    None => Err(self.unsupported(&format!(
+                        "`{name}` is not an angle: an angle is an angle coordinate or a \
+                         parameter declared with \"kind\": \"angle\""
+                    ))),
+                }
+            }
+            AtomView::Add(a) => {
+                let mut sum = Linear::constant(Rational::zero());
+                for t in a.iter() {
+                    sum.add(self.linear(t)?);
+                }
+                Ok(sum)
+            }
+            AtomView::Mul(m) => {
+                let mut product = Linear::constant(Rational::one());
+                for f in m.iter() {
+                    let f = self.linear(f)?;
+                    product = match (product.as_constant(), f.as_constant()) {
+                        (Some(c), _) => f.scaled(&c),
+                        (None, Some(c)) => product.scaled(&c),
+                        (None, None) => return Err(nonlinear()),
+                    };
+                }
+                Ok(product)
+            }
+            AtomView::Pow(p) => {
+                let (base, exp) = p.get_base_exp();
+                let base = self.linear(base)?.as_constant().ok_or_else(nonlinear)?;
+                let e = self.number(exp)?;
+                if !e.is_integer() {
+                    return Err(nonlinear());
+                }
+                let n = e.to_f64() as i64;
+                if n < 0 && base.is_zero() {
+                    return Err(self.unsupported("division by zero"));
+                }
+                let power = if n >= 0 {
+                    base.pow(n as u64)
+                } else {
+                    base.inv().pow((-n) as u64)
+                };
+                Ok(Linear::constant(power))
+            }
+            _ => Err(nonlinear()),
+        }
+    }
+}
+
+/// A linear form Σ cᵢ aᵢ + p π + c read from an angle's tree.
+struct Linear {
+    coords: Vec<(CoordId, Rational)>,
+    pi: Rational,
+    constant: Rational,
+}
+
+impl Linear {
+    fn constant(c: Rational) -> Self {
+        Linear {
+            coords: Vec::new(),
+            pi: Rational::zero(),
+            constant: c,
+        }
+    }
+
+    /// The number this form is, if it holds no angle and no π.
+    fn as_constant(&self) -> Option<Rational> {
+        (self.pi.is_zero() && self.coords.iter().all(|(_, c)| c.is_zero()))
+            .then(|| self.constant.clone())
+    }
+
+    fn scaled(mut self, k: &Rational) -> Self {
+        for (_, c) in &mut self.coords {
+            *c = &*c * k;
+        }
+        self.pi = &self.pi * k;
+        self.constant = &self.constant * k;
+        self
+    }
+
+    fn add(&mut self, other: Linear) {
+        for (q, c) in other.coords {
+            match self.coords.iter_mut().find(|(x, _)| *x == q) {
+                Some(slot) => slot.1 = &slot.1 + &c,
+                None => self.coords.push((q, c)),
             }
         }
-        match what {
-            Some(w) => Ok((coef, w)),
-            None => Err(self.unsupported(NOT_QUARTER_TURNS)),
-        }
+        self.pi = &self.pi + &other.pi;
+        self.constant = &self.constant + &other.constant;
     }
 }
 
@@ -691,11 +811,6 @@ pub(super) fn parse_angle(reg: &Rc<Registry>, s: &str) -> Result<LinearAngle, Ex
         cos,
         sin,
     })
-}
-
-enum AngleTerm {
-    Pi,
-    Coord(CoordId),
 }
 
 /// (cos nq, sin nq) by repeated angle addition (de Moivre), for any integer n.

@@ -146,6 +146,12 @@ pub const MAX_INPUT_LEN: usize = 16 << 20;
 /// Parsing refuses anything beyond it, so every expression's text parses back.
 pub const MAX_INPUT_DEGREE: u32 = 255;
 
+/// Most terms a typed product or power may expand to before like terms combine (an upper
+/// bound computed from the factors, checked before multiplying). A canonical text never comes
+/// near it: it multiplies monomials only; `(m + L + k + x + y + z)^40` is refused, in no time, instead
+/// of expanding for minutes.
+pub const MAX_EXPANDED_TERMS: u128 = 500_000;
+
 /// Largest degree in one variable of the expressions a spec gives (positions, masses, inertia
 /// entries, rates): mechanics multiplies them a few times, staying within [`MAX_INPUT_DEGREE`].
 pub const MAX_SPEC_DEGREE: u32 = 32;

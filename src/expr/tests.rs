@@ -312,3 +312,63 @@ fn flat_evaluation_agrees_with_the_canonical_polynomial() {
         }
     }
 }
+
+#[test]
+fn regression_fuzz_a_huge_angle_is_refused_without_expanding_it() {
+    // Found by the expression fuzzer: the argument of cos was expanded by symbolica before it
+    // could be refused, and `(m (m + L)^4 + L)^63` has some 10^7 terms: 25 s and more.
+    let r = reg();
+    let started = std::time::Instant::now();
+    for bad in [
+        "cos(a +x pI/pi1jjj6/fNNNm -(m (m + L)^4+ L)^63*I6I/IIII-ze/2)",
+        "cos(a - (m (m + L)^4 + L)^63)",
+        "sin((a + b)^2)",
+        "cos(a*b)",
+        "cos(m*a)",
+        "cos(a/2)",
+        "cos(1)",
+        "cos(pi/3)",
+        "cos(sin(a))",
+    ] {
+        assert!(r.parse(bad).is_err(), "{bad}");
+    }
+    assert!(started.elapsed().as_secs() < 2, "{:?}", started.elapsed());
+    // Linear angles still read, however written: distributed, scaled, with π/2 multiples.
+    for (angle, same) in [
+        ("cos(2*(a - b) + b)", "cos(2*a - b)"),
+        ("sin((a + b)/2*4 - pi)", "-sin(2*a + 2*b)"),
+        ("cos(-(a - pi/2)*3)", "cos(3*a - 3*pi/2)"),
+        ("cos(2^2*a - 3*a)", "cos(a)"),
+        ("sin(a + b - a)", "sin(b)"),
+    ] {
+        assert_eq!(r.parse(angle).unwrap(), r.parse(same).unwrap(), "{angle}");
+    }
+    assert_eq!(
+        r.parse("sin(3*pi/2 + a)").unwrap(),
+        r.parse("-cos(a)").unwrap()
+    );
+}
+
+#[test]
+fn a_product_or_power_past_the_term_bound_is_refused_quickly() {
+    // Six terms to the 25th: C(30, 5) ≈ 1.4·10^5 terms is within the bound, to the 40th
+    // (≈ 1.2·10^6) it is not. Counted before multiplying, so the refusal is immediate.
+    let r = reg();
+    let started = std::time::Instant::now();
+    let big = "(m + L + k + x + cos(a) + cos(b))^40";
+    assert!(r.parse("(m + L + k + x + cos(a) + cos(b))^25").is_ok());
+    match r.parse(big) {
+        Err(ExprError::Unsupported { reason, .. }) => assert!(reason.contains("terms"), "{reason}"),
+        other => panic!("{big}: {other:?}"),
+    }
+    let product = "(m + L + k + x + cos(a) + cos(b))^20*(m + L + k + x + cos(a) - cos(b))^20";
+    assert!(r.parse(product).is_err(), "{product}");
+    assert!(started.elapsed().as_secs() < 2, "{:?}", started.elapsed());
+    // A bivariate power stays far under the bound whatever its exponent (its monomials are
+    // counted by degree), and is exact: (m + L)^2 − m^2 − 2 m L = L^2.
+    assert!(r.parse("(m*(m + L)^4 + L)^50").is_ok());
+    assert_eq!(
+        r.parse("(m + L)^2 - m^2 - 2*m*L").unwrap(),
+        r.parse("L^2").unwrap()
+    );
+}
