@@ -16,7 +16,6 @@
 //! assert_eq!(cm.value.exprs(), delta.value.exprs());
 //! ```
 
-use crate::derivation::{Derivation, ResolveError, Step, StepKind, Value, derive_values};
 use crate::expr::{CoordId, Expr};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::{omega, position, velocity};
@@ -198,21 +197,27 @@ pub fn external_actions(m: &Mechanism, s: &[BodyId]) -> Vec<Action> {
 
 /// The two sides of a theorem: the dynamic side (Rd·u or δ(P)·u) and each action's
 /// contribution (R·u or M(P)·u, moved to P by M(P) = M(A) + PA ∧ R).
+///
+/// The dynamic side is Σ m Γ(G_i)·u, or Σ δ(G_i)·u + m Γ(G_i)·(u ∧ PG_i) by transport from
+/// each centre of inertia, read from `cache`: a solid's δ(G) and m Γ(G) are computed once for
+/// all the theorems of a run.
 pub fn theorem_sides(
     m: &Mechanism,
     th: &Theorem,
-) -> Result<(Expr, Vec<(Action, Expr)>), ResolveError> {
-    let dynamic = derive_values(m, &[dynamic_quantity(m, th)])?
-        .pop()
-        .and_then(|d| match d.value {
-            Value::Scalar(e) => Some(e),
-            _ => None,
-        })
-        .ok_or_else(|| ResolveError {
-            quantity: theorem_label(m, th),
-            message: "the dynamic side is not a scalar".to_string(),
-        })?;
+    cache: &mut torsor::Cache,
+) -> (Expr, Vec<(Action, Expr)>) {
+    let g0 = m.frames.ground();
     let u = Vector::along(th.on.0, th.on.1, m.reg.one());
+    let dynamic = match th.kind {
+        TheoremKind::Resultant => th.solids.iter().fold(m.reg.zero(), |acc, &s| {
+            &acc + &cache.at_centre(m, s, g0, true).1.dot(&m.frames, &u)
+        }),
+        TheoremKind::Moment => {
+            torsor::moment_by_transport(m, cache, &th.solids, th.point, g0, true, Some(&u))
+                .1
+                .unwrap_or_else(|| m.reg.zero())
+        }
+    };
     let parts = external_actions(m, &th.solids)
         .into_iter()
         .map(|a| {
@@ -223,7 +228,7 @@ pub fn theorem_sides(
             (a, v)
         })
         .collect();
-    Ok((dynamic, parts))
+    (dynamic, parts)
 }
 
 /// The quantity of the dynamic side of a theorem (`delta(O1,E/0).z0`, `Rd(2/0).x0`).
@@ -247,14 +252,10 @@ pub fn dynamic_quantity(m: &Mechanism, th: &Theorem) -> Quantity {
     }
 }
 
-fn theorem_label(m: &Mechanism, th: &Theorem) -> String {
-    format!("{} = actions", dynamic_quantity(m, th))
-}
-
 /// The residual of a theorem: dynamic side minus the actions.
-pub fn residual(m: &Mechanism, th: &Theorem) -> Result<Expr, ResolveError> {
-    let (d, parts) = theorem_sides(m, th)?;
-    Ok(parts.iter().fold(d, |acc, (_, v)| &acc - v))
+pub fn residual(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache) -> Expr {
+    let (d, parts) = theorem_sides(m, th, cache);
+    parts.iter().fold(d, |acc, (_, v)| &acc - v)
 }
 
 /// Variable indices of the unknowns that occur in `e`.
@@ -267,7 +268,7 @@ fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<usize> {
 }
 
 /// (unknown name, variable index) of every unknown.
-fn unknown_vars(m: &Mechanism) -> Vec<(String, usize)> {
+pub fn unknown_vars(m: &Mechanism) -> Vec<(String, usize)> {
     let reg = &m.reg;
     let np = reg.parameters().len();
     reg.unknowns()
@@ -294,17 +295,19 @@ fn replace_linear(e: &Expr, v: usize, value: &Expr) -> Expr {
 /// them (a square system; pivots must be nonzero numbers, which projecting on the links'
 /// own bases gives), then each equation of motion has them substituted.
 pub fn solve(m: &Mechanism) -> Result<Solution, PfdError> {
-    solve_with_residuals(m).map(|(s, _)| s)
+    solve_with_residuals(m, &mut torsor::Cache::default()).map(|(s, _)| s)
 }
 
 /// [`solve`], also returning each declared theorem's residual (in the spec's order).
-fn solve_with_residuals(m: &Mechanism) -> Result<(Solution, Vec<Expr>), PfdError> {
-    let err = |e: ResolveError| PfdError(e.to_string());
+pub fn solve_with_residuals(
+    m: &Mechanism,
+    cache: &mut torsor::Cache,
+) -> Result<(Solution, Vec<Expr>), PfdError> {
     let mut residuals = Vec::with_capacity(m.dynamics.theorems.len());
     let mut rows: Vec<(usize, Expr)> = Vec::new();
     let mut eoms: Vec<(usize, Expr)> = Vec::new();
     for (i, th) in m.dynamics.theorems.iter().enumerate() {
-        let r = residual(m, th).map_err(err)?;
+        let r = residual(m, th, cache);
         check_linear(m, &r).map_err(|msg| PfdError(format!("pfd[{i}]: {msg}")))?;
         residuals.push(r.clone());
         if th.eom.is_some() {
@@ -465,172 +468,6 @@ pub fn lagrange(m: &Mechanism, q: CoordId) -> Expr {
         }
     }
     r
-}
-
-fn resolve_err(q: &Quantity, message: String) -> ResolveError {
-    ResolveError {
-        quantity: q.to_string(),
-        message,
-    }
-}
-
-/// A solid in a sentence: `$S_{2}$` for solid `2`, its name otherwise (free text).
-fn solid_text(n: &str) -> String {
-    if n.chars().all(|c| c.is_ascii_digit()) {
-        format!("$S_{{{n}}}$")
-    } else {
-        n.to_string()
-    }
-}
-
-/// The line of an action in the bilan of the external actions (free text for
-/// [`crate::latex::rich_text`]).
-fn bilan_line(a: &Action) -> String {
-    let (from, on) = (solid_text(&a.from_label), solid_text(&a.on_label));
-    if a.from_label == "pes" {
-        format!("pesanteur sur {on}")
-    } else if a.description.starts_with("liaison") || a.description.starts_with("encastrement") {
-        format!("{}, action de {from} sur {on}", a.description)
-    } else {
-        format!("{}, action sur {on}", a.label)
-    }
-}
-
-/// The steps of one theorem: each exterior action's torsor, the dynamic side, the actions'
-/// side.
-fn theorem_steps(m: &Mechanism, th: &Theorem, steps: &mut Vec<Step>) -> Result<(), ResolveError> {
-    let (dynamic, parts) = theorem_sides(m, th)?;
-    for (a, _) in &parts {
-        steps.push(Step {
-            label: format!("T({}->{})", a.from_label, a.on_label),
-            kind: StepKind::Action {
-                from: a.from_label.clone(),
-                on: a.on_label.clone(),
-                point: m.point_name(a.point).to_string(),
-            },
-            // The bilan's line, as the course words it: « liaison pivot d'axe (O1, z0),
-            // action de 0 sur 1 », « pesanteur sur $S_{1}$ », « le moteur, action de 0 sur 1 ».
-            theorem: bilan_line(a),
-            value: Value::Torsor {
-                point: a.point,
-                basis: a.basis,
-                resultant: a.resultant.express_in(&m.frames, a.basis),
-                moment: a.moment.express_in(&m.frames, a.basis),
-            },
-        });
-    }
-    let on = (m.frame_name(th.on.0).to_string(), th.on.1.letter());
-    let dq = dynamic_quantity(m, th);
-    let (theorem_name, at) = match th.kind {
-        TheoremKind::Resultant => (
-            "Théorème de la résultante dynamique".to_string(),
-            String::new(),
-        ),
-        TheoremKind::Moment => (
-            "Théorème du moment dynamique".to_string(),
-            format!(" en {}", m.point_name(th.point)),
-        ),
-    };
-    steps.push(Step {
-        label: dq.to_string(),
-        kind: StepKind::Projected(dq.kind.clone(), on.clone()),
-        theorem: format!(
-            "{theorem_name} appliqué à {}{at}, en projection sur {}{} : côté dynamique",
-            th.isolate, on.1, on.0
-        ),
-        value: Value::Scalar(dynamic),
-    });
-    let total = parts.iter().fold(m.reg.zero(), |acc, (_, v)| &acc + v);
-    steps.push(Step {
-        label: format!("actions on {}", th.isolate),
-        kind: StepKind::External {
-            isolate: th.isolate.clone(),
-            point: match th.kind {
-                TheoremKind::Resultant => None,
-                TheoremKind::Moment => Some(m.point_name(th.point).to_string()),
-            },
-            on,
-        },
-        theorem: "Somme des actions mécaniques extérieures, projetée".to_string(),
-        value: Value::Scalar(total),
-    });
-    Ok(())
-}
-
-/// Derives `Ec(S/0)`, an unknown (`C_m`) or `eom(q)`, with the steps of the PFD.
-pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
-    let mut steps = Vec::new();
-    let value = match &q.kind {
-        QuantityKind::KineticEnergy(mo) => {
-            let solids = m
-                .solids_of(&mo.moving)
-                .ok_or_else(|| resolve_err(q, format!("unknown solid or set `{}`", mo.moving)))?;
-            if m.frames.find(&mo.reference) != Some(m.frames.ground()) {
-                return Err(resolve_err(
-                    q,
-                    format!(
-                        "the kinetic energy is taken relative to the ground `{}`",
-                        m.frame_name(m.frames.ground())
-                    ),
-                ));
-            }
-            kinetic_energy(m, &solids)
-        }
-        QuantityKind::Unknown(name) => {
-            if !m.reg.unknowns().contains(name) {
-                return Err(resolve_err(
-                    q,
-                    format!(
-                        "`{name}` is not an unknown of the PFD (links' components, actions' unknowns)"
-                    ),
-                ));
-            }
-            let (sol, residuals) = solve_with_residuals(m).map_err(|e| resolve_err(q, e.0))?;
-            let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
-                resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
-            })?;
-            let var = unknown_vars(m)
-                .into_iter()
-                .find(|(n, _)| n == name)
-                .map(|(_, v)| v);
-            // The steps of the theorems that involve the unknown.
-            for (th, r) in m.dynamics.theorems.iter().zip(&residuals) {
-                if th.eom.is_none() && var.is_some_and(|v| !r.derivative(v).is_zero()) {
-                    theorem_steps(m, th, &mut steps)?;
-                }
-            }
-            v
-        }
-        QuantityKind::Eom(c) => {
-            let coord = m
-                .reg
-                .coord(c)
-                .ok_or_else(|| resolve_err(q, format!("unknown coordinate `{c}`")))?;
-            let th = m
-                .dynamics
-                .theorems
-                .iter()
-                .find(|t| t.eom == Some(coord))
-                .ok_or_else(|| {
-                    resolve_err(
-                        q,
-                        format!("no equation of `pfd` is marked `\"eom\": \"{c}\"`"),
-                    )
-                })?;
-            let sol = solve(m).map_err(|e| resolve_err(q, e.0))?;
-            theorem_steps(m, th, &mut steps)?;
-            sol.eom
-                .get(c)
-                .cloned()
-                .ok_or_else(|| resolve_err(q, format!("no equation of motion for `{c}`")))?
-        }
-        _ => return Err(resolve_err(q, "not a PFD quantity".to_string())),
-    };
-    Ok(Derivation {
-        quantity: q.clone(),
-        steps,
-        value: Value::Scalar(value),
-    })
 }
 
 /// Course name of a link kind (« pivot », « glissière »...).

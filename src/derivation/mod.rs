@@ -11,6 +11,9 @@ use crate::quantity::{Motion, Quantity, QuantityKind};
 use crate::torsor::{self, Torsor};
 use crate::vector::Vector;
 
+mod dynamics;
+pub use dynamics::Shared;
+
 /// A quantity that refers to unknown objects.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("{quantity}: {message}")]
@@ -300,7 +303,9 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
     let mut value: Option<Value> = None;
     use QuantityKind::*;
     match &q.kind {
-        KineticEnergy(_) | Unknown(_) | Eom(_) => return crate::pfd::derive(m, q),
+        KineticEnergy(_) | Unknown(_) | Eom(_) => {
+            return dynamics::derive(m, q, &mut Shared::default(), true);
+        }
         Omega(_) => {
             vector = Some(omega(m, r.moving_frame.unwrap_or(reference), reference));
         }
@@ -581,66 +586,6 @@ fn moment_steps(
     total
 }
 
-/// Per-solid results shared by the quantities of one run: the moment at the centre of inertia
-/// (σ(G) or δ(G)) and the resultant (m V(G) or m Γ(G)), by solid, reference frame and kind.
-#[derive(Debug, Default)]
-pub struct Cache {
-    centre: std::collections::HashMap<(BodyId, FrameId, bool), (Vector, Vector)>,
-}
-
-impl Cache {
-    /// (σ(G, S/R), m V(G, S/R)), or (δ(G, S/R), m Γ(G, S/R)) when `dynamic`.
-    ///
-    /// δ(G) = d/dt|R σ(G) with σ(G) = I_G(S)·Ω(S/R) written in the solid's basis, where I_G is
-    /// constant: the Bour formula there is Euler's I_G Ω̇ + Ω ∧ I_G Ω.
-    fn at_centre(
-        &mut self,
-        m: &Mechanism,
-        s: BodyId,
-        r: FrameId,
-        dynamic: bool,
-    ) -> &(Vector, Vector) {
-        self.centre.entry((s, r, dynamic)).or_insert_with(|| {
-            let b = m.body(s);
-            let sigma_g = torsor::kinetic_moment_solid(m, s, b.centre, r);
-            if dynamic {
-                let rd = acceleration(m, b.centre, b.frame, r).scale(&b.mass);
-                (sigma_g.derivative_in(&m.frames, r), rd)
-            } else {
-                (sigma_g, velocity(m, b.centre, b.frame, r).scale(&b.mass))
-            }
-        })
-    }
-}
-
-/// The moment at A by transport from each centre of inertia: M(A) = Σ M(G_i) + AG_i ∧ R_i
-/// (σ(A) = σ(G) + AG ∧ m V(G); δ(A) = δ(G) + AG ∧ m Γ(G)); projected on `u` when given, as
-/// M(G)·u + R·(u ∧ AG), which never builds the full vector.
-fn moment_by_transport(
-    m: &Mechanism,
-    cache: &mut Cache,
-    solids: &[BodyId],
-    a: PointId,
-    r: FrameId,
-    dynamic: bool,
-    u: Option<&Vector>,
-) -> (Vector, Option<Expr>) {
-    let mut total = Vector::zero();
-    let mut scalar = m.reg.zero();
-    for &s in solids {
-        let ag = m.points.vector(a, m.body(s).centre);
-        let (mg, res) = cache.at_centre(m, s, r, dynamic);
-        match u {
-            Some(u) => {
-                scalar =
-                    scalar + mg.dot(&m.frames, u) + res.dot(&m.frames, &u.cross(&m.frames, &ag));
-            }
-            None => total = total.add(mg).add(&ag.cross(&m.frames, res)),
-        }
-    }
-    (total, u.map(|_| scalar))
-}
-
 /// Values only, by the fastest exact route: kinetic and dynamic moments and torsors by
 /// transport from the centres of inertia (each solid's σ(G), δ(G), m V(G), m Γ(G) computed
 /// once for all the quantities), the rest as [`derive()`] does. The returned derivations have no
@@ -665,7 +610,7 @@ pub fn derive_values_with(
     qs: &[Quantity],
     mut done: impl FnMut(usize, &Quantity),
 ) -> Result<Vec<Derivation>, ResolveError> {
-    let mut cache = Cache::default();
+    let mut cache = Shared::default();
     let mut out = Vec::with_capacity(qs.len());
     for (k, q) in qs.iter().enumerate() {
         out.push(derive_value(m, q, &mut cache)?);
@@ -693,7 +638,7 @@ fn linearised(m: &Mechanism, q: &Quantity, d: Derivation) -> Result<Derivation, 
 fn derive_value(
     m: &Mechanism,
     q: &Quantity,
-    cache: &mut Cache,
+    cache: &mut Shared,
 ) -> Result<Derivation, ResolveError> {
     if q.linear {
         let inner = Quantity {
@@ -718,8 +663,15 @@ fn derive_value(
             let u = r
                 .projection
                 .map(|(f, axis)| Vector::along(f, axis, m.reg.one()));
-            let (v, s) =
-                moment_by_transport(m, cache, &r.solids, a, reference, dynamic, u.as_ref());
+            let (v, s) = torsor::moment_by_transport(
+                m,
+                &mut cache.centre,
+                &r.solids,
+                a,
+                reference,
+                dynamic,
+                u.as_ref(),
+            );
             Ok(done(match s {
                 Some(s) => Value::Scalar(s),
                 None => vec_value(m, &v, b),
@@ -727,9 +679,17 @@ fn derive_value(
         }
         KineticTorsor { .. } | DynamicTorsor { .. } => {
             let dynamic = matches!(q.kind, DynamicTorsor { .. });
-            let (mom, _) = moment_by_transport(m, cache, &r.solids, a, reference, dynamic, None);
+            let (mom, _) = torsor::moment_by_transport(
+                m,
+                &mut cache.centre,
+                &r.solids,
+                a,
+                reference,
+                dynamic,
+                None,
+            );
             let res = r.solids.iter().fold(Vector::zero(), |acc, &s| {
-                acc.add(&cache.at_centre(m, s, reference, dynamic).1)
+                acc.add(&cache.centre.at_centre(m, s, reference, dynamic).1)
             });
             Ok(done(torsor_value(
                 m,
@@ -740,6 +700,9 @@ fn derive_value(
                 },
                 b,
             )))
+        }
+        KineticEnergy(_) | Unknown(_) | Eom(_) => {
+            dynamics::derive(m, q, cache, false).map(|d| done(d.value))
         }
         _ => derive(m, q).map(|d| done(d.value)),
     }

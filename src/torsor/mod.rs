@@ -1,5 +1,6 @@
 //! Torsors {R, M(A)}: change of point, sums, and the kinetic and dynamic torsors of the course.
 
+use crate::expr::Expr;
 use crate::frame::FrameId;
 use crate::inertia::Inertia;
 use crate::kinematics::{acceleration, omega, point_velocity, position, velocity};
@@ -204,4 +205,64 @@ pub fn kinematic_torsor(m: &Mechanism, i: FrameId, j: FrameId, a: PointId) -> To
         resultant: omega(m, i, j),
         moment: velocity(m, a, i, j),
     }
+}
+
+/// Per-solid results shared by the quantities of one run: the moment at the centre of inertia
+/// (σ(G) or δ(G)) and the resultant (m V(G) or m Γ(G)), by solid, reference frame and kind.
+#[derive(Debug, Default)]
+pub struct Cache {
+    centre: std::collections::HashMap<(BodyId, FrameId, bool), (Vector, Vector)>,
+}
+
+impl Cache {
+    /// (σ(G, S/R), m V(G, S/R)), or (δ(G, S/R), m Γ(G, S/R)) when `dynamic`.
+    ///
+    /// δ(G) = d/dt|R σ(G) with σ(G) = I_G(S)·Ω(S/R) written in the solid's basis, where I_G is
+    /// constant: the Bour formula there is Euler's I_G Ω̇ + Ω ∧ I_G Ω.
+    pub fn at_centre(
+        &mut self,
+        m: &Mechanism,
+        s: BodyId,
+        r: FrameId,
+        dynamic: bool,
+    ) -> &(Vector, Vector) {
+        self.centre.entry((s, r, dynamic)).or_insert_with(|| {
+            let b = m.body(s);
+            let sigma_g = kinetic_moment_solid(m, s, b.centre, r);
+            if dynamic {
+                let rd = acceleration(m, b.centre, b.frame, r).scale(&b.mass);
+                (sigma_g.derivative_in(&m.frames, r), rd)
+            } else {
+                (sigma_g, velocity(m, b.centre, b.frame, r).scale(&b.mass))
+            }
+        })
+    }
+}
+
+/// The moment at A by transport from each centre of inertia: M(A) = Σ M(G_i) + AG_i ∧ R_i
+/// (σ(A) = σ(G) + AG ∧ m V(G); δ(A) = δ(G) + AG ∧ m Γ(G)); projected on `u` when given, as
+/// M(G)·u + R·(u ∧ AG), which never builds the full vector.
+pub fn moment_by_transport(
+    m: &Mechanism,
+    cache: &mut Cache,
+    solids: &[BodyId],
+    a: PointId,
+    r: FrameId,
+    dynamic: bool,
+    u: Option<&Vector>,
+) -> (Vector, Option<Expr>) {
+    let mut total = Vector::zero();
+    let mut scalar = m.reg.zero();
+    for &s in solids {
+        let ag = m.points.vector(a, m.body(s).centre);
+        let (mg, res) = cache.at_centre(m, s, r, dynamic);
+        match u {
+            Some(u) => {
+                scalar =
+                    scalar + mg.dot(&m.frames, u) + res.dot(&m.frames, &u.cross(&m.frames, &ag));
+            }
+            None => total = total.add(mg).add(&ag.cross(&m.frames, res)),
+        }
+    }
+    (total, u.map(|_| scalar))
 }

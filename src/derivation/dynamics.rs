@@ -1,0 +1,216 @@
+//! The derivations of the PFD's quantities, with the course's steps: the kinetic energy, an
+//! unknown of the links or actions (`C_m`, `X01`), an equation of motion (`eom(theta2)`).
+//! The PFD itself (actions, theorems, the linear solve) is [`crate::pfd`]; this module only
+//! records its steps, and shares one run's cache of δ(G), m Γ(G) and the solved system.
+
+use super::{Derivation, ResolveError, Step, StepKind, Value};
+use crate::expr::Expr;
+use crate::mechanism::Mechanism;
+use crate::pfd::{
+    Action, PfdError, Solution, Theorem, dynamic_quantity, kinetic_energy, solve_with_residuals,
+    theorem_sides, unknown_vars,
+};
+use crate::quantity::{Quantity, QuantityKind};
+use crate::spec::wire::TheoremKind;
+use crate::torsor;
+
+/// What the quantities of one run share: each solid's σ(G), δ(G), m V(G) and m Γ(G), and the
+/// PFD, solved once (with each theorem's residual, in the spec's order).
+#[derive(Debug, Default)]
+pub struct Shared {
+    /// Per-solid results at the centres of inertia.
+    pub centre: torsor::Cache,
+    pfd: Option<Result<(Solution, Vec<Expr>), PfdError>>,
+}
+
+impl Shared {
+    /// The solved PFD and its residuals, solved on first use.
+    fn pfd(&mut self, m: &Mechanism) -> Result<&(Solution, Vec<Expr>), PfdError> {
+        self.pfd
+            .get_or_insert_with(|| solve_with_residuals(m, &mut self.centre))
+            .as_ref()
+            .map_err(Clone::clone)
+    }
+}
+
+fn resolve_err(q: &Quantity, message: String) -> ResolveError {
+    ResolveError {
+        quantity: q.to_string(),
+        message,
+    }
+}
+
+/// A solid in a sentence: `$S_{2}$` for solid `2`, its name otherwise (free text).
+fn solid_text(n: &str) -> String {
+    if n.chars().all(|c| c.is_ascii_digit()) {
+        format!("$S_{{{n}}}$")
+    } else {
+        n.to_string()
+    }
+}
+
+/// The line of an action in the bilan of the external actions (free text for
+/// [`crate::latex::rich_text`]).
+fn bilan_line(a: &Action) -> String {
+    let (from, on) = (solid_text(&a.from_label), solid_text(&a.on_label));
+    if a.from_label == "pes" {
+        format!("pesanteur sur {on}")
+    } else if a.description.starts_with("liaison") || a.description.starts_with("encastrement") {
+        format!("{}, action de {from} sur {on}", a.description)
+    } else {
+        format!("{}, action sur {on}", a.label)
+    }
+}
+
+/// The steps of one theorem: each exterior action's torsor, the dynamic side, the actions'
+/// side.
+fn theorem_steps(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache, steps: &mut Vec<Step>) {
+    let (dynamic, parts) = theorem_sides(m, th, cache);
+    for (a, _) in &parts {
+        steps.push(Step {
+            label: format!("T({}->{})", a.from_label, a.on_label),
+            kind: StepKind::Action {
+                from: a.from_label.clone(),
+                on: a.on_label.clone(),
+                point: m.point_name(a.point).to_string(),
+            },
+            // The bilan's line, as the course words it: « liaison pivot d'axe (O1, z0),
+            // action de 0 sur 1 », « pesanteur sur $S_{1}$ », « le moteur, action de 0 sur 1 ».
+            theorem: bilan_line(a),
+            value: Value::Torsor {
+                point: a.point,
+                basis: a.basis,
+                resultant: a.resultant.express_in(&m.frames, a.basis),
+                moment: a.moment.express_in(&m.frames, a.basis),
+            },
+        });
+    }
+    let on = (m.frame_name(th.on.0).to_string(), th.on.1.letter());
+    let dq = dynamic_quantity(m, th);
+    let (theorem_name, at) = match th.kind {
+        TheoremKind::Resultant => (
+            "Théorème de la résultante dynamique".to_string(),
+            String::new(),
+        ),
+        TheoremKind::Moment => (
+            "Théorème du moment dynamique".to_string(),
+            format!(" en {}", m.point_name(th.point)),
+        ),
+    };
+    steps.push(Step {
+        label: dq.to_string(),
+        kind: StepKind::Projected(dq.kind.clone(), on.clone()),
+        theorem: format!(
+            "{theorem_name} appliqué à {}{at}, en projection sur {}{} : côté dynamique",
+            th.isolate, on.1, on.0
+        ),
+        value: Value::Scalar(dynamic),
+    });
+    let total = parts.iter().fold(m.reg.zero(), |acc, (_, v)| &acc + v);
+    steps.push(Step {
+        label: format!("actions on {}", th.isolate),
+        kind: StepKind::External {
+            isolate: th.isolate.clone(),
+            point: match th.kind {
+                TheoremKind::Resultant => None,
+                TheoremKind::Moment => Some(m.point_name(th.point).to_string()),
+            },
+            on,
+        },
+        theorem: "Somme des actions mécaniques extérieures, projetée".to_string(),
+        value: Value::Scalar(total),
+    });
+}
+
+/// Derives `Ec(S/0)`, an unknown (`C_m`) or `eom(q)`, with the steps of the PFD when
+/// `with_steps`.
+pub(super) fn derive(
+    m: &Mechanism,
+    q: &Quantity,
+    shared: &mut Shared,
+    with_steps: bool,
+) -> Result<Derivation, ResolveError> {
+    let mut steps = Vec::new();
+    let value = match &q.kind {
+        QuantityKind::KineticEnergy(mo) => {
+            let solids = m
+                .solids_of(&mo.moving)
+                .ok_or_else(|| resolve_err(q, format!("unknown solid or set `{}`", mo.moving)))?;
+            if m.frames.find(&mo.reference) != Some(m.frames.ground()) {
+                return Err(resolve_err(
+                    q,
+                    format!(
+                        "the kinetic energy is taken relative to the ground `{}`",
+                        m.frame_name(m.frames.ground())
+                    ),
+                ));
+            }
+            kinetic_energy(m, &solids)
+        }
+        QuantityKind::Unknown(name) => {
+            if !m.reg.unknowns().contains(name) {
+                return Err(resolve_err(
+                    q,
+                    format!(
+                        "`{name}` is not an unknown of the PFD (links' components, actions' unknowns)"
+                    ),
+                ));
+            }
+            let (sol, residuals) = shared.pfd(m).map_err(|e| resolve_err(q, e.0))?;
+            let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
+                resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
+            })?;
+            let residuals = if with_steps {
+                residuals.clone()
+            } else {
+                Vec::new()
+            };
+            let var = unknown_vars(m)
+                .into_iter()
+                .find(|(n, _)| n == name)
+                .map(|(_, v)| v);
+            // The steps of the theorems that involve the unknown.
+            for (th, r) in m.dynamics.theorems.iter().zip(&residuals) {
+                if th.eom.is_none() && var.is_some_and(|v| !r.derivative(v).is_zero()) {
+                    theorem_steps(m, th, &mut shared.centre, &mut steps);
+                }
+            }
+            v
+        }
+        QuantityKind::Eom(c) => {
+            let coord = m
+                .reg
+                .coord(c)
+                .ok_or_else(|| resolve_err(q, format!("unknown coordinate `{c}`")))?;
+            let th = m
+                .dynamics
+                .theorems
+                .iter()
+                .find(|t| t.eom == Some(coord))
+                .ok_or_else(|| {
+                    resolve_err(
+                        q,
+                        format!("no equation of `pfd` is marked `\"eom\": \"{c}\"`"),
+                    )
+                })?;
+            let value = shared
+                .pfd(m)
+                .map_err(|e| resolve_err(q, e.0))?
+                .0
+                .eom
+                .get(c)
+                .cloned()
+                .ok_or_else(|| resolve_err(q, format!("no equation of motion for `{c}`")))?;
+            if with_steps {
+                theorem_steps(m, th, &mut shared.centre, &mut steps);
+            }
+            value
+        }
+        _ => return Err(resolve_err(q, "not a PFD quantity".to_string())),
+    };
+    Ok(Derivation {
+        quantity: q.clone(),
+        steps,
+        value: Value::Scalar(value),
+    })
+}
