@@ -33,6 +33,7 @@
 // Matrix and vector code indexes components as the formulas do (I[i][j], u[k]).
 #![allow(clippy::needless_range_loop)]
 
+pub mod atomic;
 pub mod check;
 pub mod derivation;
 pub mod excerpt;
@@ -54,6 +55,7 @@ pub mod torsor;
 pub mod units;
 pub mod vector;
 pub mod verify;
+pub mod wire;
 
 pub use derivation::{Derivation, Value, derive};
 pub use expr::{Expr, Registry};

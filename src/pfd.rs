@@ -17,65 +17,16 @@
 //! ```
 
 use crate::expr::{CoordId, Expr};
-use crate::frame::{Axis, FrameId};
+use crate::frame::Axis;
 use crate::kinematics::{omega, position, velocity};
 use crate::mechanism::{BodyId, Mechanism};
-use crate::point::PointId;
 use crate::quantity::{Motion, Quantity, QuantityKind};
-use crate::spec::wire::{LinkKind, TheoremKind};
 use crate::torsor::{self, Torsor};
 use crate::vector::Vector;
+use crate::wire::{LinkKind, TheoremKind};
 use std::collections::BTreeMap;
 
-/// What exerts an action.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Source {
-    /// A solid of the spec.
-    Body(BodyId),
-    /// The ground, or anything outside the solids (gravity).
-    Outside,
-}
-
-/// The part of a link's action due to its spring (kept apart for the potential energy).
-#[derive(Debug, Clone)]
-pub struct SpringPart {
-    /// ½ k (q − q0)².
-    pub potential: Expr,
-    /// Its torsor at the link's point (on the second solid).
-    pub resultant: Vector,
-    /// Its moment at the link's point.
-    pub moment: Vector,
-}
-
-/// An action {T(from→on)} at a point, as the course writes it in the « bilan des actions
-/// mécaniques extérieures ».
-#[derive(Debug, Clone)]
-pub struct Action {
-    /// What exerts it, as written in {T(from→on)}: a solid or frame name, `pes` for gravity,
-    /// the action's name for a given action.
-    pub from_label: String,
-    /// The solid that receives it, as written.
-    pub on_label: String,
-    /// The solid that exerts it, if it is one.
-    pub from: Source,
-    /// The solid that receives it.
-    pub on: BodyId,
-    /// Point of reduction.
-    pub point: PointId,
-    /// Resultant.
-    pub resultant: Vector,
-    /// Moment at `point`.
-    pub moment: Vector,
-    /// Basis the torsor is written in.
-    pub basis: FrameId,
-    /// How the course describes it (« liaison pivot d'axe (O1, z0) »).
-    pub description: String,
-    /// How a sentence names it (« le moteur », « la pesanteur », « la liaison pivot entre 0
-    /// et 1 »): free text that may hold `$…$` formulas, for [`crate::latex::rich_text`].
-    pub label: String,
-    /// The spring's part, when the link has one.
-    pub spring: Option<SpringPart>,
-}
+pub use crate::mechanism::{Action, Dynamics, Small, Source, SpringPart, Theorem};
 
 impl Action {
     /// The torsor at its point.
@@ -110,36 +61,6 @@ impl Action {
             }),
         })
     }
-}
-
-/// One scalar equation of the PFD, as declared.
-#[derive(Debug, Clone)]
-pub struct Theorem {
-    /// Name of the isolated solid or set.
-    pub isolate: String,
-    /// Its solids.
-    pub solids: Vec<BodyId>,
-    /// Resultant or moment theorem.
-    pub kind: TheoremKind,
-    /// Point of the moment theorem (unused for the resultant).
-    pub point: PointId,
-    /// Projection vector.
-    pub on: (FrameId, Axis),
-    /// The coordinate whose equation of motion this is, if any.
-    pub eom: Option<CoordId>,
-}
-
-/// The actions and theorems of a mechanism.
-#[derive(Debug, Clone, Default)]
-pub struct Dynamics {
-    /// Gravity g⃗ (constant in the ground frame), if not neglected.
-    pub gravity: Option<Vector>,
-    /// Links and given actions, each as the action of its first solid on its second.
-    pub actions: Vec<Action>,
-    /// The declared equations, in order.
-    pub theorems: Vec<Theorem>,
-    /// Coordinates declared small, for `lin(...)`.
-    pub small: Vec<Small>,
 }
 
 /// The solved PFD: each unknown in closed form, each equation of motion as a residual.
@@ -187,7 +108,7 @@ pub fn external_actions(m: &Mechanism, s: &[BodyId]) -> Vec<Action> {
                 moment: Vector::zero(),
                 basis: m.frames.ground(),
                 description: "pesanteur, au centre d'inertie".to_string(),
-                label: crate::spec::wire::GRAVITY_LABEL.to_string(),
+                label: crate::wire::GRAVITY_LABEL.to_string(),
                 spring: None,
             });
         }
@@ -470,21 +391,6 @@ pub fn lagrange(m: &Mechanism, q: CoordId) -> Expr {
     r
 }
 
-/// Course name of a link kind (« pivot », « glissière »...).
-pub fn link_name(k: LinkKind) -> &'static str {
-    match k {
-        LinkKind::Fixed => "encastrement",
-        LinkKind::Pivot => "liaison pivot",
-        LinkKind::Slider => "liaison glissière",
-        LinkKind::PivotSlider => "liaison pivot glissant",
-        LinkKind::Ball => "liaison sphérique (rotule)",
-        LinkKind::Plane => "liaison appui plan",
-        LinkKind::Annular => "liaison sphère-cylindre (linéaire annulaire)",
-        LinkKind::Line => "liaison cylindre-plan (linéaire rectiligne)",
-        LinkKind::Point => "liaison sphère-plan (ponctuelle)",
-    }
-}
-
 /// Which of the six components (X, Y, Z, L, M, N in the link's basis) a perfect link
 /// transmits, given its axis (or normal) `a` and, for a line contact, its direction `d`.
 pub fn transmitted(k: LinkKind, a: Axis, d: Option<Axis>) -> [bool; 6] {
@@ -534,15 +440,6 @@ pub fn link_unknowns(name: &str, t: [bool; 6]) -> Vec<String> {
         .filter(|(_, on)| *on)
         .map(|(l, _)| format!("{l}{name}"))
         .collect()
-}
-
-/// A coordinate declared small, and the equilibrium value it moves around.
-#[derive(Debug, Clone)]
-pub struct Small {
-    /// The coordinate.
-    pub coord: CoordId,
-    /// Its equilibrium value (0 for an angle).
-    pub around: Expr,
 }
 
 /// The small-motion linearisation of `e` around the equilibrium of the `small` coordinates

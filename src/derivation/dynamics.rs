@@ -11,8 +11,8 @@ use crate::pfd::{
     theorem_sides, unknown_vars,
 };
 use crate::quantity::{Quantity, QuantityKind};
-use crate::spec::wire::TheoremKind;
 use crate::torsor;
+use crate::wire::TheoremKind;
 
 /// What the quantities of one run share: each solid's σ(G), δ(G), m V(G) and m Γ(G), and the
 /// PFD, solved once (with each theorem's residual, in the spec's order).

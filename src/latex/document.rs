@@ -15,7 +15,7 @@ use crate::derivation::{Value, derive};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::quantity::Quantity;
 use crate::quantity::QuantityKind;
-use crate::spec::wire::QuestionSpec;
+use crate::wire::QuestionSpec;
 use std::collections::HashMap;
 use std::fmt::Write;
 
@@ -519,8 +519,8 @@ pub fn answer_key_document(
     o.push_str("\\section*{Paramétrage}\n\\begin{multicols}{2}\n\\begin{itemize}\n");
     for c in &m.spec.coordinates {
         let kind = match c.kind {
-            crate::spec::wire::CoordinateKind::Angle => "angle",
-            crate::spec::wire::CoordinateKind::Length => "longueur",
+            crate::wire::CoordinateKind::Angle => "angle",
+            crate::wire::CoordinateKind::Length => "longueur",
         };
         let desc = c
             .description

@@ -8,7 +8,7 @@ use super::{basis_vector, name, point};
 use crate::expr::{CoordId, Registry};
 use crate::frame::{Axis, Rotation};
 use crate::mechanism::Mechanism;
-use crate::spec::wire::{LinkKind, LinkSpec};
+use crate::wire::{LinkKind, LinkSpec};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -399,7 +399,7 @@ pub fn link_text(l: &LinkSpec) -> String {
         },
         (LinkKind::Point, Some(a)) => format!("ponctuelle de normale $({p}, {a})$"),
         (kind, None) => {
-            let n = crate::pfd::link_name(kind);
+            let n = kind.course_name();
             format!(
                 "{} de centre ${p}$",
                 n.strip_prefix("liaison ").unwrap_or(n)

@@ -6,7 +6,7 @@ use super::{basis_vector, escape_text, name, point, rich_text_or_escaped};
 use crate::derivation::Value;
 use crate::inertia::Symmetry;
 use crate::mechanism::{Hypothesis, Mechanism};
-use crate::spec::wire::HypothesisSpec;
+use crate::wire::HypothesisSpec;
 use std::fmt::Write;
 
 fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) -> String {

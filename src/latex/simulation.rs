@@ -19,7 +19,7 @@ fn french(v: f64) -> String {
 pub(super) fn simulation_block(
     o: &mut String,
     m: &Mechanism,
-    sim: &crate::spec::wire::SimulationSpec,
+    sim: &crate::wire::SimulationSpec,
     file: &str,
 ) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
     let fail = |what: &str, e: String| crate::derivation::ResolveError {
@@ -42,7 +42,7 @@ pub(super) fn simulation_block(
         );
         // A value that differs between the scenarios (the friction f) is given for each, in
         // the order of the scenarios.
-        let others: Vec<&crate::spec::wire::ScenarioSpec> = sim
+        let others: Vec<&crate::wire::ScenarioSpec> = sim
             .scenarios
             .iter()
             .filter_map(|n| m.spec.scenarios.iter().find(|s| &s.name == n))

@@ -230,7 +230,7 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
 fn bilan_text(doc: &Doc, s: &crate::derivation::Step) -> String {
     let m = doc.m;
     if let StepKind::Action { from, on, .. } = &s.kind {
-        let between = |l: &&crate::spec::wire::LinkSpec| {
+        let between = |l: &&crate::wire::LinkSpec| {
             (l.between[0] == *from && l.between[1] == *on)
                 || (l.between[0] == *on && l.between[1] == *from)
         };

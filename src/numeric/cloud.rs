@@ -2,7 +2,7 @@
 
 use super::expr;
 use super::kin::{State, Values};
-use super::la::point_inertia;
+use super::la::{parts, point_inertia};
 use super::{NumericError, NumericModel};
 use nalgebra::{Matrix3, Vector3};
 
@@ -180,4 +180,50 @@ pub(super) fn symmetric_eigen(m: &Matrix3<f64>) -> ([f64; 3], Matrix3<f64>) {
         }
     }
     ([a[(0, 0)], a[(1, 1)], a[(2, 2)]], v)
+}
+
+/// Σ mₖ V, Σ mₖ APₖ ∧ V, Σ mₖ Γ, Σ mₖ APₖ ∧ Γ over the clouds of `solids`, motion relative
+/// to frame `j`, A = point `a`; ground components.
+pub(super) fn kinetic(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    solids: &[usize],
+    j: usize,
+    a: usize,
+) -> Result<[Vector3<f64>; 4], NumericError> {
+    let a_j = st.local0(j, &st.pos0(a));
+    let mut acc = [Vector3::zeros(); 4];
+    for s in solids {
+        let f = m.solids[*s].frame;
+        for (mk, u) in solid_cloud(m, st, vals, *s)? {
+            let [r, v, g] = parts(&st.track(f, &u, j));
+            let ap = r - a_j;
+            acc[0] += v * mk;
+            acc[1] += ap.cross(&v) * mk;
+            acc[2] += g * mk;
+            acc[3] += ap.cross(&g) * mk;
+        }
+    }
+    let rj = st.rot0(j);
+    Ok(acc.map(|x| rj * x))
+}
+
+/// Ec = Σ ½ mₖ |V(Pₖ/Rj)|² over the clouds of `solids`, motion relative to frame `j`.
+pub(super) fn kinetic_energy(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    solids: &[usize],
+    j: usize,
+) -> Result<f64, NumericError> {
+    let mut e = 0.0;
+    for s in solids {
+        let f = m.solids[*s].frame;
+        for (mk, u) in solid_cloud(m, st, vals, *s)? {
+            let [_, v, _] = parts(&st.track(f, &u, j));
+            e += 0.5 * mk * v.norm_squared();
+        }
+    }
+    Ok(e)
 }

@@ -37,6 +37,7 @@ pub(crate) mod expr;
 mod kin;
 mod la;
 mod model;
+mod quantities;
 mod sample;
 #[cfg(test)]
 mod tests;
@@ -46,7 +47,7 @@ mod tests_pfd;
 mod tests_regulator;
 
 use crate::quantity::Quantity;
-use crate::spec::wire::{CoordinateKind, SpecFile};
+use crate::wire::{CoordinateKind, SpecFile};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -275,7 +276,10 @@ impl NumericModel {
     /// assert_eq!(e.to_string(), "spec, at frames[0].parent: unknown frame `7`");
     /// ```
     pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
-        model::build(spec)
+        let mut model = model::build(spec)?;
+        model.dynamics = dynamics::build(spec, &model)?;
+        model::mark_positive(&mut model);
+        Ok(model)
     }
 
     /// Evaluates a quantity in course notation at `sample`.
@@ -323,7 +327,7 @@ impl NumericModel {
                 message: "the float backend computes full motions, not linearisations".into(),
             });
         }
-        kin::evaluate(self, q, sample, default_basis)
+        quantities::evaluate(self, q, sample, default_basis)
     }
 
     /// Draws a random physically valid sample, reproducible from the generator's state.
@@ -393,7 +397,7 @@ impl NumericModel {
     /// assert_eq!(v, 12.5);
     /// ```
     pub fn evaluate_expression(&self, text: &str, sample: &Sample) -> Result<f64, NumericError> {
-        kin::evaluate_expression(self, text, sample)
+        quantities::evaluate_expression(self, text, sample)
     }
 
     /// Names of the parameters, in the spec's order.

@@ -5,7 +5,7 @@ use super::{
     CoordInfo, FrameInfo, Hypothesis, InertiaInfo, NumericError, NumericModel, ParamInfo,
     PointInfo, SolidInfo, Symmetry,
 };
-use crate::spec::wire::{SpecFile, SymmetrySpec};
+use crate::wire::{SpecFile, SymmetrySpec};
 use std::collections::BTreeMap;
 
 pub(super) fn spec_err(path: impl Into<String>, message: impl Into<String>) -> NumericError {
@@ -572,7 +572,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         })
         .collect();
 
-    let mut model = NumericModel {
+    let model = NumericModel {
         params,
         coords,
         frames,
@@ -587,8 +587,12 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         solid_index,
         dynamics: Default::default(),
     };
-    model.dynamics = super::dynamics::build(spec, &model)?;
-    // Gravity, friction coefficients and stiffnesses are drawn positive, like lengths.
+    Ok(model)
+}
+
+/// Marks gravity, friction coefficients and stiffnesses, once the PFD is read, to be drawn
+/// positive, like lengths.
+pub(super) fn mark_positive(model: &mut NumericModel) {
     let dy = &model.dynamics;
     let mut positive = std::collections::BTreeSet::new();
     for node in dy.gravity.iter().chain(dy.links.iter().flat_map(|l| {
@@ -601,5 +605,4 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
     for i in positive {
         model.params[i].positive = true;
     }
-    Ok(model)
 }

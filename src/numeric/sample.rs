@@ -4,7 +4,7 @@ use super::cloud::{cloud_inertia, solid_cloud};
 use super::expr::{self, Node};
 use super::kin::{Values, state};
 use super::{NumericError, NumericModel, Sample};
-use crate::spec::wire::CoordinateKind;
+use crate::wire::CoordinateKind;
 use nalgebra::{Matrix3, Vector3};
 use rand::Rng;
 use std::collections::{BTreeMap, BTreeSet};

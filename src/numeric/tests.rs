@@ -4,7 +4,7 @@ use super::kin::{state, values};
 use super::tests_regulator::regulator_sample;
 use super::{NumValue, NumericError, NumericModel, Sample, cloud, la};
 use crate::quantity::Quantity;
-use crate::spec::wire::SpecFile;
+use crate::wire::SpecFile;
 use nalgebra::{Matrix3, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

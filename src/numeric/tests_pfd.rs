@@ -4,7 +4,7 @@
 
 use super::{NumValue, NumericError, NumericModel, Sample};
 use crate::quantity::Quantity;
-use crate::spec::wire::SpecFile;
+use crate::wire::SpecFile;
 use nalgebra::Vector3;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

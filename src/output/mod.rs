@@ -1,9 +1,8 @@
 //! Outputs: plain text and JSON of derived quantities, numeric evaluation, atomic files.
 
-mod atomic;
 mod eval;
 
-pub use atomic::write_atomic;
+pub use crate::atomic::write_atomic;
 pub use eval::{Values, ValuesError, eval_value, numeric_point, numeric_point_for};
 
 use crate::derivation::{Derivation, Value};

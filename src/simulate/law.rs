@@ -5,7 +5,7 @@
 //! exact, not a finite difference.
 
 use crate::numeric::expr::{self, Env, Name, Node};
-use crate::spec::wire::RatePiece;
+use crate::wire::RatePiece;
 use num_dual::{Dual64, DualNum};
 
 /// A piecewise rate law.

@@ -31,7 +31,7 @@ pub use table::{NumberFormat, Table, write_atomic};
 
 use crate::expr::Expr;
 use crate::mechanism::Mechanism;
-use crate::spec::wire::{CoordinateKind, ScenarioSpec};
+use crate::wire::{CoordinateKind, ScenarioSpec};
 use scenario::Plan;
 
 /// Why a simulation could not run.

@@ -6,7 +6,7 @@ use super::law::TimeLaw;
 use crate::expr::{Compiled, CoordId, Expr, VarRole};
 use crate::mechanism::Mechanism;
 use crate::pfd;
-use crate::spec::wire::ScenarioSpec;
+use crate::wire::ScenarioSpec;
 use nalgebra::{DMatrix, DVector};
 
 /// A coordinate whose motion is imposed: its rate law (and value by integration).

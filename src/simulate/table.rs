@@ -165,7 +165,7 @@ fn csv_field(s: &str) -> String {
 /// # Errors
 /// [`SimError::Io`] if the directory is not writable or the disk is full.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), SimError> {
-    crate::output::write_atomic(path, bytes).map_err(|source| SimError::Io {
+    crate::atomic::write_atomic(path, bytes).map_err(|source| SimError::Io {
         op: "write",
         path: path.to_path_buf(),
         source,

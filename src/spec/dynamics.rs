@@ -3,15 +3,13 @@
 
 use super::SpecError;
 use super::validate::{at, expr_err};
-use super::wire::{CoordinateKind, LinkKind, SpecFile, TheoremKind};
 use crate::expr::{Expr, Registry};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::{omega, velocity};
 use crate::mechanism::{BodyId, Mechanism};
-use crate::pfd::{
-    Action, Dynamics, Source, SpringPart, Theorem, link_name, link_unknowns, transmitted,
-};
+use crate::pfd::{Action, Dynamics, Source, SpringPart, Theorem, link_unknowns, transmitted};
 use crate::vector::Vector;
+use crate::wire::{CoordinateKind, LinkKind, SpecFile, TheoremKind};
 use std::collections::HashSet;
 use std::rc::Rc;
 
@@ -58,7 +56,7 @@ pub(super) fn pfd_names(
             (None, _) => {
                 return Err(at(
                     format!("{path}.axis"),
-                    format!("a {} needs its axis (or normal)", link_name(l.kind)),
+                    format!("a {} needs its axis (or normal)", l.kind.course_name()),
                 ));
             }
         };
@@ -314,7 +312,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
         let mut moment = Vector::new(basis, [ll, mm, nn]);
         let u = Vector::along(basis, axis, reg.one());
         let (fa, fb) = (frame_of_side(m, &from), m.body(on).frame);
-        let mut description = format!("{} ", link_name(l.kind));
+        let mut description = format!("{} ", l.kind.course_name());
         description.push_str(&match (l.kind, &l.axis) {
             (LinkKind::Ball, _) | (_, None) => format!("de centre {}", l.point),
             (LinkKind::Plane | LinkKind::Point | LinkKind::Line, Some(a)) => {

@@ -4,7 +4,8 @@ mod dynamics;
 mod locate;
 mod texts;
 mod validate;
-pub mod wire;
+/// The wire types, also at [`crate::wire`] (the spec's data, used by every layer).
+pub use crate::wire;
 
 pub use locate::locate;
 pub use validate::{build, parse_spec};

@@ -1,7 +1,7 @@
 //! The texts of a spec, with their JSON paths: the expressions (checked for size and
 //! degree) and the free texts (checked against the formula whitelist).
 
-use super::wire::SpecFile;
+use crate::wire::SpecFile;
 
 /// Every expression text of the spec with its JSON path (what may write an angle as itself).
 pub(super) fn expression_texts(spec: &SpecFile) -> Vec<(String, &str)> {

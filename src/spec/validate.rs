@@ -3,7 +3,6 @@
 
 use super::SpecError;
 use super::texts::{expression_texts, free_texts};
-use super::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
 use crate::expr::{ExprError, Registry};
 use crate::frame::{Angle, Axis, FrameId, Frames, Rotation};
 use crate::inertia::{Inertia, Symmetry};
@@ -11,6 +10,7 @@ use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
 use crate::point::{PointId, Points};
 use crate::quantity::{Quantity, check_name};
 use crate::vector::Vector;
+use crate::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
 use std::collections::{BTreeMap, HashSet};
 
 pub(super) fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
@@ -712,7 +712,7 @@ pub fn parse_spec(text: &str) -> Result<SpecFile, SpecError> {
 
 /// The course's order of parameters in a written product, from their units: masses, then
 /// accelerations (g), lengths, inertia moments, then the rest (m g L, m2 L2², A + m h²).
-fn display_rank(p: &crate::spec::wire::ParameterSpec) -> u32 {
+fn display_rank(p: &crate::wire::ParameterSpec) -> u32 {
     use crate::units::Dimension;
     let d = p.unit.as_deref().and_then(|u| Dimension::parse(u).ok());
     match d {

@@ -44,7 +44,7 @@ use crate::derivation::{Derivation, StepKind, Value};
 use crate::expr::{CoordId, Expr, Registry, VarRole};
 use crate::mechanism::Mechanism;
 use crate::quantity::{Quantity, QuantityKind};
-use crate::spec::wire::{CoordinateKind, ParameterKind, TheoremKind};
+use crate::wire::{CoordinateKind, ParameterKind, TheoremKind};
 use dimension::unit_or_one;
 use std::rc::Rc;
 

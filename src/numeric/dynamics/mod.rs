@@ -23,7 +23,7 @@ use super::expr::{self, Env, Node};
 use super::kin::{self, State, Values};
 use super::model::{Context, Names, spec_err};
 use super::{NumericError, NumericModel, cloud};
-use crate::spec::wire::{LinkKind, SpecFile, TheoremKind};
+use crate::wire::{LinkKind, SpecFile, TheoremKind};
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use std::collections::{BTreeMap, BTreeSet};
 

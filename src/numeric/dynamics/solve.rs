@@ -218,7 +218,7 @@ fn residual(
     let member = |b: Body| matches!(b, Body::Solid(s) if t.solids.contains(&s));
     let p = st.pos0(t.point);
     let u = st.rot0(t.on.0).column(t.on.1).into_owned();
-    let [_, _, rd, delta] = kin::kinetic(m, st, vals, &t.solids, 0, t.point)?;
+    let [_, _, rd, delta] = cloud::kinetic(m, st, vals, &t.solids, 0, t.point)?;
     let dynamic = if t.moment { delta } else { rd };
     let mut size = dynamic.norm();
     let mut sum = Lin::constant(Vector3::zeros(), Vector3::zeros(), n);

@@ -118,6 +118,28 @@ pub enum LinkKind {
     Point,
 }
 
+impl LinkKind {
+    /// The course's name of the link (« liaison pivot », « encastrement »...).
+    ///
+    /// ```
+    /// use torseur::wire::LinkKind;
+    /// assert_eq!(LinkKind::Pivot.course_name(), "liaison pivot");
+    /// ```
+    pub fn course_name(self) -> &'static str {
+        match self {
+            LinkKind::Fixed => "encastrement",
+            LinkKind::Pivot => "liaison pivot",
+            LinkKind::Slider => "liaison glissière",
+            LinkKind::PivotSlider => "liaison pivot glissant",
+            LinkKind::Ball => "liaison sphérique (rotule)",
+            LinkKind::Plane => "liaison appui plan",
+            LinkKind::Annular => "liaison sphère-cylindre (linéaire annulaire)",
+            LinkKind::Line => "liaison cylindre-plan (linéaire rectiligne)",
+            LinkKind::Point => "liaison sphère-plan (ponctuelle)",
+        }
+    }
+}
+
 /// A perfect link between two solids: its action torsor {T(first→second)} at `point` carries
 /// the unknowns X, Y, Z (resultant) and L, M, N (moment) suffixed by the link's name, as
 /// components in the basis of its axis vector; those it cannot transmit are zero.
@@ -165,7 +187,7 @@ impl LinkSpec {
         if let Some(l) = &self.label {
             return l.clone();
         }
-        let kind = crate::pfd::link_name(self.kind);
+        let kind = self.kind.course_name();
         let article = if kind.starts_with('e') { "l'" } else { "la " };
         format!(
             "{article}{kind} entre {} et {}",

@@ -5,9 +5,12 @@ use crate::frame::{FrameId, Frames};
 use crate::inertia::{Inertia, Symmetry};
 use crate::point::{PointId, Points};
 use crate::quantity::Quantity;
-use crate::spec::wire::SpecFile;
+use crate::wire::SpecFile;
 use std::collections::BTreeMap;
 use std::rc::Rc;
+
+mod dynamics;
+pub use dynamics::{Action, Dynamics, Small, Source, SpringPart, Theorem};
 
 /// Typed index of a solid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -81,7 +84,7 @@ pub struct Mechanism {
     /// Requested quantities.
     pub quantities: Vec<Quantity>,
     /// Actions, links and the declared equations of the PFD.
-    pub dynamics: crate::pfd::Dynamics,
+    pub dynamics: Dynamics,
     /// The spec it was built from (the float backend works from it).
     pub spec: SpecFile,
 }
@@ -135,7 +138,7 @@ impl Mechanism {
 
     /// How a sentence names the action `name` of the spec (« le moteur »): its `label`, or
     /// a default built from the name; `None` for an unknown action. Gravity's label is
-    /// [`crate::spec::wire::GRAVITY_LABEL`]. Free text that may hold `$…$` formulas, checked
+    /// [`crate::wire::GRAVITY_LABEL`]. Free text that may hold `$…$` formulas, checked
     /// when the spec was loaded: print it with [`crate::latex::rich_text`].
     ///
     /// ```

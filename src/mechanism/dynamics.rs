@@ -1,0 +1,98 @@
+//! The mechanical actions and theorems a spec declares, as data of the store: what the PFD
+//! ([`crate::pfd`]) isolates, sums and solves. Built by [`crate::spec`].
+
+use super::BodyId;
+use crate::expr::{CoordId, Expr};
+use crate::frame::{Axis, FrameId};
+use crate::point::PointId;
+use crate::vector::Vector;
+use crate::wire::TheoremKind;
+
+/// What exerts an action.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Source {
+    /// A solid of the spec.
+    Body(BodyId),
+    /// The ground, or anything outside the solids (gravity).
+    Outside,
+}
+
+/// The part of a link's action due to its spring (kept apart for the potential energy).
+#[derive(Debug, Clone)]
+pub struct SpringPart {
+    /// ½ k (q − q0)².
+    pub potential: Expr,
+    /// Its torsor at the link's point (on the second solid).
+    pub resultant: Vector,
+    /// Its moment at the link's point.
+    pub moment: Vector,
+}
+
+/// An action {T(from→on)} at a point, as the course writes it in the « bilan des actions
+/// mécaniques extérieures ».
+#[derive(Debug, Clone)]
+pub struct Action {
+    /// What exerts it, as written in {T(from→on)}: a solid or frame name, `pes` for gravity,
+    /// the action's name for a given action.
+    pub from_label: String,
+    /// The solid that receives it, as written.
+    pub on_label: String,
+    /// The solid that exerts it, if it is one.
+    pub from: Source,
+    /// The solid that receives it.
+    pub on: BodyId,
+    /// Point of reduction.
+    pub point: PointId,
+    /// Resultant.
+    pub resultant: Vector,
+    /// Moment at `point`.
+    pub moment: Vector,
+    /// Basis the torsor is written in.
+    pub basis: FrameId,
+    /// How the course describes it (« liaison pivot d'axe (O1, z0) »).
+    pub description: String,
+    /// How a sentence names it (« le moteur », « la pesanteur », « la liaison pivot entre 0
+    /// et 1 »): free text that may hold `$…$` formulas, for [`crate::latex::rich_text`].
+    pub label: String,
+    /// The spring's part, when the link has one.
+    pub spring: Option<SpringPart>,
+}
+
+/// One scalar equation of the PFD, as declared.
+#[derive(Debug, Clone)]
+pub struct Theorem {
+    /// Name of the isolated solid or set.
+    pub isolate: String,
+    /// Its solids.
+    pub solids: Vec<BodyId>,
+    /// Resultant or moment theorem.
+    pub kind: TheoremKind,
+    /// Point of the moment theorem (unused for the resultant).
+    pub point: PointId,
+    /// Projection vector.
+    pub on: (FrameId, Axis),
+    /// The coordinate whose equation of motion this is, if any.
+    pub eom: Option<CoordId>,
+}
+
+/// The actions and theorems of a mechanism.
+#[derive(Debug, Clone, Default)]
+pub struct Dynamics {
+    /// Gravity g⃗ (constant in the ground frame), if not neglected.
+    pub gravity: Option<Vector>,
+    /// Links and given actions, each as the action of its first solid on its second.
+    pub actions: Vec<Action>,
+    /// The declared equations, in order.
+    pub theorems: Vec<Theorem>,
+    /// Coordinates declared small, for `lin(...)`.
+    pub small: Vec<Small>,
+}
+
+/// A coordinate declared small, and the equilibrium value it moves around.
+#[derive(Debug, Clone)]
+pub struct Small {
+    /// The coordinate.
+    pub coord: CoordId,
+    /// Its equilibrium value (0 for an angle).
+    pub around: Expr,
+}

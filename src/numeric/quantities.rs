@@ -1,0 +1,273 @@
+//! The quantities of the course evaluated at a sample, from their definitions: sums over the
+//! clouds of points of each solid ([`super::cloud`]), the motion of the frames
+//! ([`super::kin`]) and the float PFD ([`super::dynamics`]).
+
+use super::cloud::{kinetic, kinetic_energy};
+use super::expr::{self, Env, Node};
+use super::kin::{State, Values, omega, point_motion, state, values};
+use super::la::{point_inertia, rows};
+use super::model::{Context, Names};
+use super::{NumValue, NumericError, NumericModel, Sample, cloud, dynamics};
+use crate::quantity::{Motion, Quantity, QuantityKind};
+use nalgebra::{Matrix3, Vector3};
+
+/// I(P, S) = Σ mₖ (|PPₖ|² Id − PPₖ PPₖᵀ), ground components.
+fn inertia(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    solids: &[usize],
+    p: usize,
+) -> Result<Matrix3<f64>, NumericError> {
+    let p0 = st.pos0(p);
+    let mut acc = Matrix3::zeros();
+    for s in solids {
+        let f = m.solids[*s].frame;
+        let (rf, of) = (st.rot0(f), st.origin(f).map(|x| x.re));
+        for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
+            acc += point_inertia(&(of + rf * u - p0)) * mk;
+        }
+    }
+    Ok(acc)
+}
+
+enum Raw {
+    Scalar(f64),
+    Vector(Vector3<f64>),
+    Matrix(Matrix3<f64>),
+    Torsor(String, Vector3<f64>, Vector3<f64>),
+}
+
+pub(super) fn evaluate(
+    m: &NumericModel,
+    q: &Quantity,
+    sample: &Sample,
+    default_basis: &str,
+) -> Result<NumValue, NumericError> {
+    let vals = values(m, sample)?;
+    let st = state(m, &vals)?;
+    let basis_name = q.basis.as_deref().unwrap_or(default_basis);
+    let frames = |mo: &Motion| -> Result<(usize, usize), NumericError> {
+        Ok((
+            m.body_frame(&mo.moving, q)?,
+            m.body_frame(&mo.reference, q)?,
+        ))
+    };
+    let kin = |mo: &Motion, a: usize| -> Result<[Vector3<f64>; 4], NumericError> {
+        let solids = m.solids_of(&mo.moving)?;
+        let j = m.body_frame(&mo.reference, q)?;
+        kinetic(m, &st, &vals, &solids, j, a)
+    };
+    use QuantityKind as K;
+    let raw = match &q.kind {
+        K::Omega(mo) => {
+            let (i, j) = frames(mo)?;
+            Raw::Vector(omega(&st, i, j))
+        }
+        K::Velocity { point, motion } | K::Acceleration { point, motion } => {
+            let (i, j) = frames(motion)?;
+            let [v, g] = point_motion(&st, m.point(point)?, i, j);
+            Raw::Vector(if matches!(q.kind, K::Velocity { .. }) {
+                v
+            } else {
+                g
+            })
+        }
+        K::Inertia { point, solid } => {
+            let solids = m.solids_of(solid)?;
+            Raw::Matrix(inertia(m, &st, &vals, &solids, m.point(point)?)?)
+        }
+        K::KineticResultant(mo) => Raw::Vector(kin(mo, 0)?[0]),
+        K::DynamicResultant(mo) => Raw::Vector(kin(mo, 0)?[2]),
+        K::KineticMoment { point, motion } => Raw::Vector(kin(motion, m.point(point)?)?[1]),
+        K::DynamicMoment { point, motion } => Raw::Vector(kin(motion, m.point(point)?)?[3]),
+        K::KinematicTorsor { motion, point } => {
+            let (i, j) = frames(motion)?;
+            let [v, _] = point_motion(&st, m.point(point)?, i, j);
+            Raw::Torsor(point.clone(), omega(&st, i, j), v)
+        }
+        K::KineticTorsor { motion, point } => {
+            let k = kin(motion, m.point(point)?)?;
+            Raw::Torsor(point.clone(), k[0], k[1])
+        }
+        K::DynamicTorsor { motion, point } => {
+            let k = kin(motion, m.point(point)?)?;
+            Raw::Torsor(point.clone(), k[2], k[3])
+        }
+        K::KineticEnergy(mo) => {
+            let solids = m.solids_of(&mo.moving)?;
+            let j = m.body_frame(&mo.reference, q)?;
+            Raw::Scalar(kinetic_energy(m, &st, &vals, &solids, j)?)
+        }
+        K::Unknown(name) => Raw::Scalar(dynamics::unknown(m, &st, &vals, name)?),
+        K::Eom(c) => Raw::Scalar(dynamics::eom(m, &st, &vals, c)?),
+    };
+    let not_finite = || NumericError::Quantity {
+        quantity: q.to_string(),
+        message: "the value is not finite at this sample".into(),
+    };
+    // The basis is only looked up when the result is written in it (not for a projection).
+    let rb = if q.projection.is_none() && !matches!(raw, Raw::Scalar(_)) {
+        st.rot0(m.frame(basis_name)?)
+    } else {
+        Matrix3::identity()
+    };
+    let rbt = rb.transpose();
+    let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+    match (raw, &q.projection) {
+        (Raw::Scalar(x), None) => {
+            if !x.is_finite() {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Scalar(x))
+        }
+        (Raw::Vector(v), Some((frame, axis))) => {
+            let k = match axis {
+                'x' => 0,
+                'y' => 1,
+                'z' => 2,
+                _ => {
+                    return Err(NumericError::Quantity {
+                        quantity: q.to_string(),
+                        message: format!("`{axis}` is not an axis"),
+                    });
+                }
+            };
+            let x = v.dot(&st.rot0(m.frame(frame)?).column(k));
+            if !x.is_finite() {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Scalar(x))
+        }
+        (Raw::Vector(v), None) => {
+            let value: [f64; 3] = (rbt * v).into();
+            if !finite(&value) {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Vector {
+                basis: basis_name.to_string(),
+                value,
+            })
+        }
+        (Raw::Matrix(mat), None) => {
+            let value = rows(&(rbt * mat * rb));
+            if !finite(value.as_flattened()) {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Matrix {
+                basis: basis_name.to_string(),
+                value,
+            })
+        }
+        (Raw::Torsor(point, r, mo), None) => {
+            let (resultant, moment): ([f64; 3], [f64; 3]) = ((rbt * r).into(), (rbt * mo).into());
+            if !finite(&resultant) || !finite(&moment) {
+                return Err(not_finite());
+            }
+            Ok(NumValue::Torsor {
+                point,
+                basis: basis_name.to_string(),
+                resultant,
+                moment,
+            })
+        }
+        (_, Some(_)) => Err(NumericError::Quantity {
+            quantity: q.to_string(),
+            message: "only a vector can be projected".into(),
+        }),
+    }
+}
+
+pub(super) fn evaluate_expression(
+    m: &NumericModel,
+    text: &str,
+    sample: &Sample,
+) -> Result<f64, NumericError> {
+    let names = Names {
+        params: &m.param_index,
+        coords: &m.coord_index,
+        frames: &m.frame_index,
+    };
+    let node: Node = names
+        .parse(text, Context::Instant)
+        .map_err(|e| NumericError::Evaluation {
+            what: format!("expression `{text}`"),
+            message: e,
+        })?;
+    let vals = values(m, sample)?;
+    let (coords, rates) = vals.split();
+    let env = Env {
+        params: &vals.params,
+        coords: &coords,
+        rates: &rates,
+        frames: &[],
+    };
+    let x = expr::eval_scalar(&node, &env).map_err(|e| NumericError::Evaluation {
+        what: format!("expression `{text}`"),
+        message: e,
+    })?;
+    if !x.is_finite() {
+        return Err(NumericError::Evaluation {
+            what: format!("expression `{text}`"),
+            message: "the value is not finite".into(),
+        });
+    }
+    Ok(x)
+}
+
+/// Names of the spec, looked up for a quantity.
+impl NumericModel {
+    fn frame(&self, name: &str) -> Result<usize, NumericError> {
+        self.frame_index
+            .get(name)
+            .copied()
+            .ok_or_else(|| NumericError::Unknown {
+                what: "frame".into(),
+                name: name.into(),
+            })
+    }
+
+    fn point(&self, name: &str) -> Result<usize, NumericError> {
+        self.point_index
+            .get(name)
+            .copied()
+            .ok_or_else(|| NumericError::Unknown {
+                what: "point".into(),
+                name: name.into(),
+            })
+    }
+
+    /// The frame carried by a solid, or a frame by name.
+    fn body_frame(&self, name: &str, q: &Quantity) -> Result<usize, NumericError> {
+        if let Some(s) = self.solid_index.get(name) {
+            return Ok(self.solids[*s].frame);
+        }
+        if let Some(f) = self.frame_index.get(name) {
+            return Ok(*f);
+        }
+        if self.sets.contains_key(name) {
+            return Err(NumericError::Quantity {
+                quantity: q.to_string(),
+                message: format!("`{name}` is a set: this quantity takes a solid or a frame"),
+            });
+        }
+        Err(NumericError::Unknown {
+            what: "solid or frame".into(),
+            name: name.into(),
+        })
+    }
+
+    /// The solids of a solid or set name.
+    fn solids_of(&self, name: &str) -> Result<Vec<usize>, NumericError> {
+        if let Some(s) = self.solid_index.get(name) {
+            return Ok(vec![*s]);
+        }
+        if let Some(list) = self.sets.get(name) {
+            return Ok(list.clone());
+        }
+        Err(NumericError::Unknown {
+            what: "solid or set".into(),
+            name: name.into(),
+        })
+    }
+}
