@@ -213,7 +213,7 @@ fn slider_on_a_rotating_arm_has_coriolis_acceleration() {
 const ROTOR: &str = r#"{
   "title": "rotor",
   "parameters": [{"name": "m", "unit": "kg"}, {"name": "a", "unit": "m"}, {"name": "l", "unit": "m"},
-                 {"name": "A"}, {"name": "C"}, {"name": "phi", "unit": "rad"}],
+                 {"name": "A"}, {"name": "C"}, {"name": "phi", "unit": "rad", "kind": "angle"}],
   "coordinates": [{"name": "t", "kind": "angle"}],
   "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}},
              {"name": "3", "parent": "1", "rotation": {"axis": "z", "angle": "phi"}}],

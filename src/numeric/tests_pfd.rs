@@ -470,7 +470,7 @@ fn link_kinds_transmit_their_components() {
 fn link_components_in_the_axis_basis() {
     let spec = json!({
         "title": "mass on a turned support",
-        "parameters": [{"name": "m", "unit": "kg"}, {"name": "g"}, {"name": "a"}],
+        "parameters": [{"name": "m", "unit": "kg"}, {"name": "g"}, {"name": "a", "kind": "angle"}],
         "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "x", "angle": "a"}}],
         "points": [{"name": "O", "position": "0"}],
         "solids": [{"name": "1", "frame": "0", "mass": "m", "centre": "O"}],

@@ -424,6 +424,12 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     for (i, h) in spec.hypotheses.iter().enumerate() {
         let path = format!("hypotheses[{i}]");
         name_ok(&format!("{path}.name"), &h.name)?;
+        if spec.hypotheses[..i].iter().any(|o| o.name == h.name) {
+            return Err(at(
+                format!("{path}.name"),
+                format!("the hypothesis `{}` is defined twice", h.name),
+            ));
+        }
         let mut subs = Vec::new();
         let mut effects = Vec::new();
         for (k, c) in h.constant_rates.iter().enumerate() {

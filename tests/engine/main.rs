@@ -16,6 +16,7 @@ mod latex;
 mod layers;
 mod library;
 mod links;
+mod parity;
 mod pfd;
 mod printed;
 mod properties;

@@ -218,7 +218,7 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
             .map_err(|e| spec_err(path, e))
     };
     // A name may become an unknown only if it means nothing else in expressions.
-    let free_name = |name: &str| -> Result<(), String> {
+    let identifier = |name: &str| -> Result<(), String> {
         let mut chars = name.chars();
         if !chars.next().is_some_and(|c| c.is_ascii_alphabetic())
             || !chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
@@ -229,6 +229,10 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
                  characters)"
             ));
         }
+        Ok(())
+    };
+    let free_name = |name: &str| -> Result<(), String> {
+        identifier(name)?;
         if name == expr::PI_NAME {
             return Err(format!("`{name}` is π"));
         }
@@ -434,18 +438,22 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
                 "an action is exerted by one solid on another",
             ));
         }
+        identifier(&a.name).map_err(|e| spec_err(format!("{path}.name"), e))?;
         let p = point(&a.point, format!("{path}.point"))?;
         let mut local = BTreeMap::new();
         for (k, u) in a.unknowns.iter().enumerate() {
             free_name(u).map_err(|e| spec_err(format!("{path}.unknowns[{k}]"), e))?;
-            let idx = match d.unknown_index.get(u) {
-                Some(idx) => *idx,
-                None => {
-                    d.unknown_index.insert(u.clone(), d.unknowns.len());
-                    d.unknowns.push(u.clone());
-                    d.unknowns.len() - 1
-                }
-            };
+            // One name, one unknown: an action's unknown named like a link's component (X01)
+            // or like another action's would silently merge two different forces.
+            if d.unknown_index.contains_key(u) {
+                return Err(spec_err(
+                    format!("{path}.unknowns[{k}]"),
+                    format!("the unknown `{u}` is declared twice"),
+                ));
+            }
+            d.unknown_index.insert(u.clone(), d.unknowns.len());
+            d.unknowns.push(u.clone());
+            let idx = d.unknowns.len() - 1;
             local.insert(u.clone(), idx);
         }
         let parse = |text: &Option<String>, field: &str| -> Result<Option<Node>, NumericError> {

@@ -1,0 +1,215 @@
+//! One verdict for both sides (issue 14): the exact side ([`torseur::spec::build`]) and the
+//! float backend ([`torseur::numeric::NumericModel::new`]) accept and refuse the same specs.
+//! The float backend reads the spec on its own, so that a convention it gets wrong cannot hide
+//! behind the exact side's; this test keeps the two readings from drifting apart on what a
+//! valid spec is.
+//!
+//! The corpus: every spec of the library, of `tests/specs/` and of the fuzz seeds, and
+//! mutations of each, made systematically in the sections both sides read (parameters,
+//! coordinates, frames, points, solids, sets, links, actions, gravity, the PFD, hypotheses):
+//! each name or expression replaced by an unknown name or by another name of the spec, each
+//! element of a list removed or duplicated. The sections only the exact side reads
+//! (quantities, questions, scenarios…) are emptied first, since the float backend has no
+//! opinion on them.
+
+use serde_json::Value;
+use torseur::numeric::NumericModel;
+
+/// The top-level keys the float backend does not read: what to derive and print, and the
+/// small coordinates of a linearisation (the float backend evaluates the full equations).
+const EXACT_ONLY: &[&str] = &[
+    "quantities",
+    "questions",
+    "scenarios",
+    "simulation",
+    "default_basis",
+    "small",
+];
+
+/// The verdicts of both sides on `spec` (`None` if it is not a spec's shape at all: both
+/// sides share that parse).
+fn verdicts(spec: &Value) -> Option<(Result<(), String>, Result<(), String>)> {
+    let text = spec.to_string();
+    let file = torseur::spec::parse_spec(&text).ok()?;
+    let exact = torseur::spec::build(&file)
+        .map(|_| ())
+        .map_err(|e| e.to_string());
+    let float = NumericModel::new(&file)
+        .map(|_| ())
+        .map_err(|e| e.to_string());
+    Some((exact, float))
+}
+
+/// Every string leaf under `v`, as a JSON pointer.
+fn string_leaves(v: &Value, at: String, out: &mut Vec<String>) {
+    match v {
+        Value::String(_) => out.push(at),
+        Value::Array(a) => {
+            for (i, x) in a.iter().enumerate() {
+                string_leaves(x, format!("{at}/{i}"), out);
+            }
+        }
+        Value::Object(o) => {
+            for (k, x) in o {
+                string_leaves(
+                    x,
+                    format!("{at}/{}", k.replace('~', "~0").replace('/', "~1")),
+                    out,
+                );
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Every list under `v`, as a JSON pointer.
+fn lists(v: &Value, at: String, out: &mut Vec<String>) {
+    match v {
+        Value::Array(a) => {
+            out.push(at.clone());
+            for (i, x) in a.iter().enumerate() {
+                lists(x, format!("{at}/{i}"), out);
+            }
+        }
+        Value::Object(o) => {
+            for (k, x) in o {
+                lists(
+                    x,
+                    format!("{at}/{}", k.replace('~', "~0").replace('/', "~1")),
+                    out,
+                );
+            }
+        }
+        _ => {}
+    }
+}
+
+/// The mutations of a spec.
+fn mutations(base: &Value) -> Vec<(String, Value)> {
+    let mut out = vec![("as written".to_string(), base.clone())];
+    let mut leaves = Vec::new();
+    string_leaves(base, String::new(), &mut leaves);
+    // The names of the spec, a few of which replace each leaf in turn.
+    let mut names: Vec<String> = leaves
+        .iter()
+        .filter(|p| p.ends_with("/name"))
+        .filter_map(|p| base.pointer(p)?.as_str().map(str::to_string))
+        .collect();
+    names.sort();
+    names.dedup();
+    for p in &leaves {
+        // Free texts, and the units: the exact side reads the units for its dimension checks;
+        // the float backend computes with numbers and has no use for them.
+        if p == "/title"
+            || p == "/$schema"
+            || p.contains("label")
+            || p.contains("description")
+            || p.ends_with("/text")
+            || p.ends_with("/unit")
+        {
+            continue;
+        }
+        let current = base.pointer(p).and_then(Value::as_str).unwrap_or_default();
+        let mut by: Vec<String> = vec!["zz".to_string()];
+        by.extend(
+            names
+                .iter()
+                .filter(|n| *n != current)
+                .step_by(3)
+                .take(3)
+                .cloned(),
+        );
+        for b in by {
+            let mut v = base.clone();
+            *v.pointer_mut(p).unwrap() = Value::String(b.clone());
+            out.push((format!("{p} = {b:?}"), v));
+        }
+    }
+    let mut ls = Vec::new();
+    lists(base, String::new(), &mut ls);
+    for p in ls {
+        let n = base
+            .pointer(&p)
+            .and_then(Value::as_array)
+            .map_or(0, Vec::len);
+        for i in 0..n {
+            let mut v = base.clone();
+            v.pointer_mut(&p).unwrap().as_array_mut().unwrap().remove(i);
+            out.push((format!("{p}/{i} removed"), v));
+            let mut v = base.clone();
+            let a = v.pointer_mut(&p).unwrap().as_array_mut().unwrap();
+            let x = a[i].clone();
+            a.insert(i, x);
+            out.push((format!("{p}/{i} duplicated"), v));
+        }
+    }
+    out
+}
+
+#[test]
+fn both_sides_accept_and_refuse_the_same_specs() {
+    let files = crate::specs_in(&["derivations", "tests/specs", "fuzz/seeds/spec"]);
+    let mut disagreements = Vec::new();
+    let (mut tried, mut refused) = (0, 0);
+    for f in &files {
+        let mut base: Value = serde_json::from_str(&std::fs::read_to_string(f).unwrap()).unwrap();
+        let Some(o) = base.as_object_mut() else {
+            continue;
+        };
+        for k in EXACT_ONLY {
+            o.remove(*k);
+        }
+        for (what, spec) in mutations(&base) {
+            let Some((exact, float)) = verdicts(&spec) else {
+                continue;
+            };
+            tried += 1;
+            if exact.is_err() {
+                refused += 1;
+            }
+            if exact.is_ok() != float.is_ok() {
+                disagreements.push(format!(
+                    "{} with {what}: exact {exact:?}, float {float:?}",
+                    f.file_name().unwrap().to_string_lossy()
+                ));
+            }
+        }
+    }
+    eprintln!("parity: {tried} specs, {refused} refused by both");
+    assert!(
+        tried > 1000 && refused > 100,
+        "{tried} tried, {refused} refused"
+    );
+    assert!(
+        disagreements.is_empty(),
+        "{} disagreements:\n{}",
+        disagreements.len(),
+        disagreements.join("\n")
+    );
+}
+
+/// The two cases issue 14 found: an action's unknown named like a link's component, and two
+/// actions sharing an unknown, were merged silently by the float backend. Both sides refuse
+/// them now, naming the unknown.
+#[test]
+fn an_unknown_declared_twice_is_refused_by_both_sides() {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("derivations/regulateur_centrifuge.json"),
+    )
+    .unwrap();
+    let base: Value = serde_json::from_str(&text).unwrap();
+    let mut like_a_link = base.clone();
+    like_a_link["actions"][0]["unknowns"][0] = Value::String("X01".into());
+    let mut shared = base.clone();
+    let mut twin = shared["actions"][0].clone();
+    twin["name"] = Value::String("moteur2".into());
+    shared["actions"].as_array_mut().unwrap().push(twin);
+    for (what, spec) in [("X01", like_a_link), ("C_m twice", shared)] {
+        let (exact, float) = verdicts(&spec).expect("a spec's shape");
+        for (side, v) in [("exact", exact), ("float", float)] {
+            let e = v.expect_err(what);
+            assert!(e.contains("declared twice"), "{what}, {side}: {e}");
+        }
+    }
+}
