@@ -1,4 +1,4 @@
-//! The two routes of `src/derivation.rs` agree exactly: `derive` (the answer key's route, the
+//! The two routes of `src/derivation/` agree exactly: `derive` (the answer key's route, the
 //! course's methodology step by step: σ at the point, then δ by derivation and the
 //! complementary term, the PFD through its theorems) and `derive_values` (the fast route:
 //! transport from the centres of inertia, one cache for the run).
