@@ -15,6 +15,7 @@ mod parse;
 pub(crate) mod present;
 pub(crate) mod print;
 mod registry;
+mod vector_text;
 
 pub use flat::FlatEval;
 pub use parse::bare_names;

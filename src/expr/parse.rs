@@ -227,7 +227,7 @@ pub fn bare_names(s: &str) -> Vec<String> {
 /// The functions of the expression syntax.
 const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
 
-fn parse_atom(s: &str) -> Result<Atom, ExprError> {
+pub(super) fn parse_atom(s: &str) -> Result<Atom, ExprError> {
     check_chars(s).map_err(|reason| ExprError::Parse {
         input: s.to_string(),
         reason,
@@ -326,133 +326,15 @@ pub(super) fn parse_scalar_with(
     .scalar(a.as_view())
 }
 
-pub(super) fn parse_vector<K: Ord + Copy>(
-    reg: &Rc<Registry>,
-    s: &str,
-    basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
-    names: &dyn Fn(&str) -> Option<Expr>,
-) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
-    let a = parse_atom(s)?;
-    let w = Walker {
-        reg,
-        input: s,
-        names,
-    };
-    let is_basis = |v: AtomView| match v {
-        AtomView::Var(v) => basis_vector(v.get_symbol().get_stripped_name()),
-        _ => None,
-    };
-    let mut out: Vec<(K, [Expr; 3])> = Vec::new();
-    w.vector(a.as_view(), &is_basis, &mut out)?;
-    Ok(out)
-}
-
-impl Walker<'_> {
-    /// Adds the vector written by `v` to `out`, walking the tree without expanding it (as
-    /// [`Walker::linear`] does for an angle): a sum of vectors, or a product of scalars and of
-    /// exactly one vector.
-    fn vector<K: Ord + Copy>(
-        &self,
-        v: AtomView,
-        basis: &dyn Fn(AtomView) -> Option<(K, usize)>,
-        out: &mut Vec<(K, [Expr; 3])>,
-    ) -> Result<(), ExprError> {
-        let mut parts = Vec::new();
-        self.vector_terms(v, basis, &self.reg.one(), &mut parts)?;
-        for (k, axis, e) in parts {
-            if let Some(slot) = out.iter_mut().find(|(kk, _)| *kk == k) {
-                slot.1[axis] = &slot.1[axis] + &e;
-            } else {
-                let z = self.reg.zero();
-                let mut c = [z.clone(), z.clone(), z];
-                c[axis] = e;
-                out.push((k, c));
-            }
-        }
-        Ok(())
-    }
-
-    /// The terms `(basis, axis, coefficient)` of `factor · v`.
-    fn vector_terms<K: Ord + Copy>(
-        &self,
-        v: AtomView,
-        basis: &dyn Fn(AtomView) -> Option<(K, usize)>,
-        factor: &Expr,
-        parts: &mut Vec<(K, usize, Expr)>,
-    ) -> Result<(), ExprError> {
-        if let Some((k, axis)) = basis(v) {
-            parts.push((k, axis, factor.clone()));
-            return Ok(());
-        }
-        match v {
-            AtomView::Add(a) => {
-                for t in a.iter() {
-                    self.vector_terms(t, basis, factor, parts)?;
-                }
-                Ok(())
-            }
-            AtomView::Mul(m) => {
-                let factors: Vec<AtomView> = m.iter().collect();
-                let with_vector: Vec<usize> = (0..factors.len())
-                    .filter(|&i| holds_basis_vector(factors[i], basis))
-                    .collect();
-                let [at] = with_vector[..] else {
-                    return Err(self.unsupported(if with_vector.is_empty() {
-                        NO_BASIS_VECTOR
-                    } else {
-                        "a term holds two basis vectors"
-                    }));
-                };
-                let mut scalar = factor.clone();
-                for (i, f) in factors.iter().enumerate() {
-                    if i != at {
-                        scalar = self.times(&scalar, &self.scalar(*f)?)?;
-                    }
-                }
-                self.vector_terms(factors[at], basis, &scalar, parts)
-            }
-            AtomView::Pow(p) if holds_basis_vector(p.get_base(), basis) => {
-                Err(self.unsupported("a basis vector cannot be raised to a power"))
-            }
-            AtomView::Num(n) if n.is_zero() => Ok(()),
-            _ if holds_basis_vector(v, basis) => Err(self.unsupported(
-                "a basis vector appears inside a function: only sums and products of vectors \
-                 are read",
-            )),
-            _ => Err(self.unsupported(NO_BASIS_VECTOR)),
-        }
-    }
-}
-
-/// Why a term of a vector without a basis vector is refused.
-const NO_BASIS_VECTOR: &str = "every term of a vector must hold one basis vector (x0, y1, z2, …)";
-
-/// Whether a basis vector occurs anywhere in `v`.
-fn holds_basis_vector<K>(v: AtomView, basis: &dyn Fn(AtomView) -> Option<K>) -> bool {
-    if basis(v).is_some() {
-        return true;
-    }
-    match v {
-        AtomView::Add(a) => a.iter().any(|t| holds_basis_vector(t, basis)),
-        AtomView::Mul(m) => m.iter().any(|t| holds_basis_vector(t, basis)),
-        AtomView::Pow(p) => {
-            let (b, e) = p.get_base_exp();
-            holds_basis_vector(b, basis) || holds_basis_vector(e, basis)
-        }
-        AtomView::Fun(f) => f.iter().any(|t| holds_basis_vector(t, basis)),
-        _ => false,
-    }
-}
-
-struct Walker<'a> {
-    reg: &'a Rc<Registry>,
-    input: &'a str,
+pub(super) struct Walker<'a> {
+    pub(super) reg: &'a Rc<Registry>,
+    pub(super) input: &'a str,
     /// Values of names the registry does not know (none but in [`parse_scalar_with`]).
-    names: &'a dyn Fn(&str) -> Option<Expr>,
+    pub(super) names: &'a dyn Fn(&str) -> Option<Expr>,
 }
 
 impl Walker<'_> {
-    fn unsupported(&self, reason: &str) -> ExprError {
+    pub(super) fn unsupported(&self, reason: &str) -> ExprError {
         ExprError::Unsupported {
             input: self.input.to_string(),
             reason: reason.to_string(),
@@ -474,7 +356,7 @@ impl Walker<'_> {
     }
 
     /// `a * b`, refused when a degree or the number of terms would pass the bounds.
-    fn times(&self, a: &Expr, b: &Expr) -> Result<Expr, ExprError> {
+    pub(super) fn times(&self, a: &Expr, b: &Expr) -> Result<Expr, ExprError> {
         if !a.product_fits(b, 1) {
             return Err(self.degree_too_high());
         }
@@ -494,7 +376,7 @@ impl Walker<'_> {
         Ok(p.get_constant())
     }
 
-    fn scalar(&self, v: AtomView) -> Result<Expr, ExprError> {
+    pub(super) fn scalar(&self, v: AtomView) -> Result<Expr, ExprError> {
         let reg = self.reg;
         match v {
             AtomView::Num(_) => Ok(reg.constant(self.number(v)?)),

@@ -664,7 +664,7 @@ impl Registry {
         s: &str,
         basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
     ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
-        parse::parse_vector(self, s, basis_vector, &|_| None)
+        vector_text::parse_vector(self, s, basis_vector, &|_| None)
     }
 
     /// [`Registry::parse_vector`], where `names` gives the value of names the registry does
@@ -694,6 +694,6 @@ impl Registry {
         basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
         names: &dyn Fn(&str) -> Option<Expr>,
     ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
-        parse::parse_vector(self, s, basis_vector, names)
+        vector_text::parse_vector(self, s, basis_vector, names)
     }
 }

@@ -31,6 +31,7 @@
 //! assert!(matches!(model.evaluate(&q, &sample, "0").unwrap(), NumValue::Torsor { .. }));
 //! ```
 
+mod checks;
 mod cloud;
 mod dynamics;
 pub(crate) mod expr;

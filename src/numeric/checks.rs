@@ -1,0 +1,292 @@
+//! The float backend's own checks of what a spec may say, made when its model is built, so
+//! that it refuses the same specs as the exact side (`tests/engine/parity.rs`) by its own
+//! reading: an angle of rotation, an inertia matrix (symmetric, fixed in its solid, made
+//! symmetric by a hypothesis).
+
+use super::expr::{self, Node};
+use super::{FrameInfo, SolidInfo};
+use crate::wire::SpecFile;
+use nalgebra::{Matrix3, Vector3};
+use std::collections::BTreeMap;
+
+/// An inertia operator is symmetric: entries [r][c] and [c][r] agree at two draws of the
+/// parameters (integers 2, 3, 5, … and then their squares: two polynomials that differ give
+/// different values there unless by coincidence at both).
+pub(super) fn symmetric(matrix: &[[Node; 3]; 3], nparams: usize) -> Result<(), String> {
+    for draw in 0..2 {
+        let params = check_draw(nparams, draw);
+        let env = expr::Env::<f64> {
+            params: &params,
+            coords: &[],
+            rates: &[],
+            frames: &[],
+        };
+        for (r, c) in [(0, 1), (0, 2), (1, 2)] {
+            let (a, b) = (
+                expr::eval_scalar(&matrix[r][c], &env)?,
+                expr::eval_scalar(&matrix[c][r], &env)?,
+            );
+            if (a - b).abs() > 1e-9 * a.abs().max(b.abs()).max(1.0) {
+                return Err(format!(
+                    "the inertia matrix is not symmetric: entries [{r}][{c}] and [{c}][{r}] differ"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The angle of an elementary rotation is, as the course turns its frames, an integer
+/// combination of angle coordinates and angle parameters plus a multiple of π/2 (a constant
+/// angle with exact cos and sin); anything else is refused.
+pub(super) fn linear_angle(
+    node: &Node,
+    angle_param: &dyn Fn(usize) -> bool,
+    angle_coord: &dyn Fn(usize) -> bool,
+) -> Result<(), String> {
+    // The form as (coefficient of each variable, constant), with the variables as
+    // (0, param) or (1, coordinate).
+    type Form = (BTreeMap<(u8, usize), f64>, f64);
+    fn walk(
+        n: &Node,
+        angle_param: &dyn Fn(usize) -> bool,
+        angle_coord: &dyn Fn(usize) -> bool,
+    ) -> Result<Form, String> {
+        let not_linear = || "an angle is an integer combination of angles and π/2".to_string();
+        let constant = |f: &Form| f.0.values().all(|c| *c == 0.0).then_some(f.1);
+        Ok(match n {
+            Node::Num(x) => (BTreeMap::new(), *x),
+            Node::Param(p) if angle_param(*p) => (BTreeMap::from([((0, *p), 1.0)]), 0.0),
+            Node::Coord(c) if angle_coord(*c) => (BTreeMap::from([((1, *c), 1.0)]), 0.0),
+            Node::Param(_) | Node::Coord(_) => {
+                return Err(
+                    "this name is not an angle: an angle is an angle coordinate or a \
+                            parameter declared with \"kind\": \"angle\""
+                        .to_string(),
+                );
+            }
+            Node::Neg(a) => {
+                let (v, k) = walk(a, angle_param, angle_coord)?;
+                (v.into_iter().map(|(x, c)| (x, -c)).collect(), -k)
+            }
+            Node::Add(a, b) | Node::Sub(a, b) => {
+                let sign = if matches!(n, Node::Sub(..)) {
+                    -1.0
+                } else {
+                    1.0
+                };
+                let (mut v, k) = walk(a, angle_param, angle_coord)?;
+                let (w, l) = walk(b, angle_param, angle_coord)?;
+                for (x, c) in w {
+                    *v.entry(x).or_insert(0.0) += sign * c;
+                }
+                (v, k + sign * l)
+            }
+            Node::Mul(a, b) => {
+                let (fa, fb) = (
+                    walk(a, angle_param, angle_coord)?,
+                    walk(b, angle_param, angle_coord)?,
+                );
+                let (f, k) = match (constant(&fa), constant(&fb)) {
+                    (Some(k), _) => (fb, k),
+                    (None, Some(k)) => (fa, k),
+                    (None, None) => return Err(not_linear()),
+                };
+                (f.0.into_iter().map(|(x, c)| (x, c * k)).collect(), f.1 * k)
+            }
+            Node::Div(a, b) => {
+                let fa = walk(a, angle_param, angle_coord)?;
+                let k = constant(&walk(b, angle_param, angle_coord)?).ok_or_else(not_linear)?;
+                (
+                    fa.0.into_iter().map(|(x, c)| (x, c / k)).collect(),
+                    fa.1 / k,
+                )
+            }
+            Node::Pow(a, e) => {
+                let k = constant(&walk(a, angle_param, angle_coord)?).ok_or_else(not_linear)?;
+                (BTreeMap::new(), k.powi(*e))
+            }
+            _ => return Err(not_linear()),
+        })
+    }
+    let (vars, k) = walk(node, angle_param, angle_coord)?;
+    if vars.values().any(|c| c.fract() != 0.0) {
+        return Err(
+            "an angle takes integer multiples of the angle coordinates and angle \
+                    parameters"
+                .to_string(),
+        );
+    }
+    let quarter_turns = k / std::f64::consts::FRAC_PI_2;
+    if (quarter_turns - quarter_turns.round()).abs() > 1e-9 {
+        return Err("a constant angle written with numbers must be a multiple of pi/2".to_string());
+    }
+    Ok(())
+}
+
+/// Parameter values for the checks at build time: integers 2, 3, 5, … (`draw` 0) and then
+/// their square roots shifted (`draw` 1), so that two polynomials that differ give different
+/// values at one of them unless by coincidence at both.
+fn check_draw(n: usize, draw: usize) -> Vec<f64> {
+    const PRIMES: [f64; 12] = [
+        2.0, 3.0, 5.0, 7.0, 11.0, 13.0, 17.0, 19.0, 23.0, 29.0, 31.0, 37.0,
+    ];
+    (0..n)
+        .map(|i| {
+            let p = PRIMES[i % PRIMES.len()] + (i / PRIMES.len()) as f64 / 7.0;
+            if draw == 0 { p } else { p.sqrt() + 0.5 }
+        })
+        .collect()
+}
+
+/// An inertia matrix given in a basis `b` other than its solid's frame `f` must describe the
+/// same body however the coordinates move: moved to f (I_f = C I_b Cᵀ, C = R_fᵀ R_b), it is
+/// the same at three positions of the mechanism. A basis turning relative to the solid is
+/// refused unless the matrix is of revolution about the relative rotation's axis.
+pub(super) fn fixed_in_solid(
+    frames: &[FrameInfo],
+    b: usize,
+    f: usize,
+    matrix: &[[Node; 3]; 3],
+    spec: &SpecFile,
+) -> Result<(), String> {
+    if b == f {
+        return Ok(());
+    }
+    let params = check_draw(spec.parameters.len(), 1);
+    let value = |node: &Node, coords: &[f64]| {
+        let env = expr::Env::<f64> {
+            params: &params,
+            coords,
+            rates: &[],
+            frames: &[],
+        };
+        expr::eval_scalar(node, &env)
+    };
+    let ib = Matrix3::from_fn(|r, c| value(&matrix[r][c], &[]).unwrap_or(f64::NAN));
+    let mut seen: Vec<Matrix3<f64>> = Vec::new();
+    for draw in 0..3 {
+        let coords: Vec<f64> = (0..spec.coordinates.len())
+            .map(|i| 0.3 + 0.7 * draw as f64 + 0.11 * i as f64)
+            .collect();
+        // Orientations down the tree, parents first: R_k = R_parent · Rot(axis, ±angle).
+        let mut rot: Vec<Matrix3<f64>> = Vec::with_capacity(frames.len());
+        for fr in frames {
+            let r = match &fr.rotation {
+                None if rot.is_empty() => Matrix3::identity(),
+                None => rot[fr.parent],
+                Some((axis, sign, angle)) => {
+                    let a = sign * value(angle, &coords)?;
+                    let axis = nalgebra::Unit::new_unchecked(Vector3::ith(*axis, 1.0));
+                    rot[fr.parent] * nalgebra::Rotation3::from_axis_angle(&axis, a).into_inner()
+                }
+            };
+            rot.push(r);
+        }
+        let c = rot[f].transpose() * rot[b];
+        seen.push(c * ib * c.transpose());
+    }
+    let size = ib.amax().max(1.0);
+    if seen.iter().all(|m| (m - seen[0]).amax() <= 1e-9 * size) {
+        Ok(())
+    } else {
+        Err(format!(
+            "the inertia matrix is given in basis {} which turns relative to the solid's frame \
+             {}: give it in the solid's basis (or in a basis where it is of revolution about \
+             the relative rotation axis)",
+            frames[b].name, frames[f].name
+        ))
+    }
+}
+
+/// A hypothesis that makes a solid symmetric imposes its symmetries on the written matrix: a
+/// product of inertia across a plane of symmetry (or about an axis of revolution) is zero,
+/// and the two moments about an axis of revolution are equal. Each imposed entry must be
+/// zero or equal already, or a single parameter that the hypothesis then sets.
+pub(super) fn symmetries_hold(solid: &SolidInfo, nparams: usize) -> Result<(), String> {
+    let Some(inr) = &solid.inertia else {
+        return Ok(());
+    };
+    // The parameter an entry is, up to its sign.
+    let single = |n: &Node| match n {
+        Node::Param(p) => Some(*p),
+        Node::Neg(a) => match **a {
+            Node::Param(p) => Some(p),
+            _ => None,
+        },
+        _ => None,
+    };
+    // Parameters the hypothesis has already set, and their value: no longer free.
+    let mut set: BTreeMap<usize, Node> = BTreeMap::new();
+    let draws: Vec<Vec<f64>> = (0..2).map(|d| check_draw(nparams, d)).collect();
+    let value = |n: &Node, params: &[f64]| {
+        let env = expr::Env::<f64> {
+            params,
+            coords: &[],
+            rates: &[],
+            frames: &[],
+        };
+        expr::eval_scalar(n, &env).unwrap_or(f64::NAN)
+    };
+    let same = |a: &Node, b: &Node| {
+        draws.iter().all(|p| {
+            let (x, y) = (value(a, p), value(b, p));
+            (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1.0)
+        })
+    };
+    let zero = Node::Num(0.0);
+    for sym in &solid.symmetries {
+        if sym.frame != inr.basis {
+            continue;
+        }
+        let k = sym.axis;
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        let mut zeros = vec![(k.min(i), k.max(i)), (k.min(j), k.max(j))];
+        if sym.revolution {
+            zeros.push((i.min(j), i.max(j)));
+        }
+        for (r, c) in zeros {
+            let e = &inr.matrix[r][c];
+            if same(e, &zero) {
+                continue;
+            }
+            match single(e) {
+                Some(p) => {
+                    set.entry(p).or_insert(Node::Num(0.0));
+                }
+                None => {
+                    return Err(format!(
+                        "the symmetries of solid {} make entry [{r}][{c}] zero, but it is `{}`, \
+                         which is not a single parameter",
+                        solid.name, inr.text[r][c]
+                    ));
+                }
+            }
+        }
+        if sym.revolution {
+            let (a, b) = (i.min(j), i.max(j));
+            // Through what the hypothesis has set already (B = A, then C = B is C = A).
+            let resolved = |n: &Node| match single(n).and_then(|p| set.get(&p)) {
+                Some(v) => v.clone(),
+                None => n.clone(),
+            };
+            let (ea, eb) = (resolved(&inr.matrix[a][a]), resolved(&inr.matrix[b][b]));
+            if same(&ea, &eb) {
+                continue;
+            }
+            match single(&eb).filter(|p| !set.contains_key(p)) {
+                Some(p) => {
+                    set.insert(p, ea);
+                }
+                None => {
+                    return Err(format!(
+                        "the axis of revolution of solid {} makes entries [{a}][{a}] and \
+                         [{b}][{b}] equal, but `{}` is not a single parameter",
+                        solid.name, inr.text[b][b]
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
