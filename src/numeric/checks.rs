@@ -110,6 +110,22 @@ pub(super) fn linear_angle(
         })
     }
     let (vars, k) = walk(node, angle_param, angle_coord)?;
+    if !k.is_finite() || vars.values().any(|c| !c.is_finite()) {
+        return Err("division by zero in an angle".to_string());
+    }
+    // A frame turns by ±q + a constant: one coordinate at most, with coefficient ±1.
+    let turning: Vec<f64> = vars
+        .iter()
+        .filter(|((kind, _), c)| *kind == 1 && **c != 0.0)
+        .map(|(_, c)| *c)
+        .collect();
+    if turning.len() > 1 || turning.iter().any(|c| c.abs() != 1.0) {
+        return Err(
+            "a coordinate enters a rotation angle with coefficient 1 or -1 (the angle \
+                    is ±q + a constant)"
+                .to_string(),
+        );
+    }
     if vars.values().any(|c| c.fract() != 0.0) {
         return Err(
             "an angle takes integer multiples of the angle coordinates and angle \

@@ -213,3 +213,34 @@ fn an_unknown_declared_twice_is_refused_by_both_sides() {
         }
     }
 }
+
+/// A rotation angle: both sides accept ±q plus an integer combination of angle parameters
+/// and a multiple of π/2, and refuse anything else, each by its own reading.
+#[test]
+fn both_sides_read_a_rotation_angle_alike() {
+    let spec = |angle: &str| -> Value {
+        serde_json::json!({
+            "title": "angle",
+            "parameters": [{"name": "m"}, {"name": "alpha", "kind": "angle"}],
+            "coordinates": [{"name": "q", "kind": "angle"}, {"name": "x", "kind": "length"}],
+            "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": angle}}]
+        })
+    };
+    let accepted = [
+        "q",
+        "-q + pi/2",
+        "q - 2*alpha",
+        "3*pi/2 - q + alpha",
+        "(q + alpha)*2 - q",
+    ];
+    let refused = [
+        "q/2", "2*q - pi", "q + 1", "q + 1/0", "q/0", "m*q", "sin(q)", "q*q", "x", "m", "q + pi/3",
+    ];
+    for (angles, ok) in [(&accepted[..], true), (&refused[..], false)] {
+        for a in angles {
+            let (exact, float) = verdicts(&spec(a)).expect("a spec's shape");
+            assert_eq!(exact.is_ok(), ok, "exact, {a}: {exact:?}");
+            assert_eq!(float.is_ok(), ok, "float, {a}: {float:?}");
+        }
+    }
+}
