@@ -156,24 +156,27 @@ pub(super) fn derive(
                     ),
                 ));
             }
-            let (sol, residuals) = shared.pfd(m).map_err(|e| resolve_err(q, e.0))?;
-            let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
-                resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
-            })?;
-            let residuals = if with_steps {
-                residuals.clone()
-            } else {
-                Vec::new()
-            };
             let var = unknown_vars(m)
                 .into_iter()
                 .find(|(n, _)| n == name)
                 .map(|(_, v)| v);
-            // The steps of the theorems that involve the unknown.
-            for (th, r) in m.dynamics.theorems.iter().zip(&residuals) {
-                if th.eom.is_none() && var.is_some_and(|v| !r.derivative(v).is_zero()) {
-                    theorem_steps(m, th, &mut shared.centre, &mut steps);
-                }
+            let (sol, residuals) = shared.pfd(m).map_err(|e| resolve_err(q, e.0))?;
+            let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
+                resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
+            })?;
+            // The theorems that involve the unknown, whose steps are recorded.
+            let cited: Vec<usize> = if with_steps {
+                (0..residuals.len())
+                    .filter(|&i| {
+                        m.dynamics.theorems[i].eom.is_none()
+                            && var.is_some_and(|v| !residuals[i].derivative(v).is_zero())
+                    })
+                    .collect()
+            } else {
+                Vec::new()
+            };
+            for i in cited {
+                theorem_steps(m, &m.dynamics.theorems[i], &mut shared.centre, &mut steps);
             }
             v
         }

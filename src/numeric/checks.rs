@@ -9,28 +9,54 @@ use crate::wire::SpecFile;
 use nalgebra::{Matrix3, Vector3};
 use std::collections::BTreeMap;
 
+/// The value of a node whose names are parameters (and coordinates, at `coords`).
+fn at(node: &Node, params: &[f64], coords: &[f64]) -> Result<f64, String> {
+    let env = expr::Env::<f64> {
+        params,
+        coords,
+        rates: &[],
+        frames: &[],
+    };
+    expr::eval_scalar(node, &env)
+}
+
+/// Whether two constant nodes agree at both draws of [`check_draw`].
+fn same(a: &Node, b: &Node, nparams: usize) -> Result<bool, String> {
+    for draw in 0..2 {
+        let p = check_draw(nparams, draw);
+        let (x, y) = (at(a, &p, &[])?, at(b, &p, &[])?);
+        if (x - y).abs() > 1e-9 * x.abs().max(y.abs()).max(1.0) {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+/// A name that expressions read: a letter, then letters, digits or `_`, at most 32
+/// characters.
+pub(super) fn identifier(name: &str) -> Result<(), String> {
+    let mut chars = name.chars();
+    if !chars.next().is_some_and(|c| c.is_ascii_alphabetic())
+        || !chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        || name.len() > 32
+    {
+        return Err(format!(
+            "`{name}` is not a valid name for an expression: a letter, then letters, digits or \
+             `_` (at most 32 characters)"
+        ));
+    }
+    Ok(())
+}
+
 /// An inertia operator is symmetric: entries [r][c] and [c][r] agree at two draws of the
 /// parameters (integers 2, 3, 5, … and then their squares: two polynomials that differ give
 /// different values there unless by coincidence at both).
 pub(super) fn symmetric(matrix: &[[Node; 3]; 3], nparams: usize) -> Result<(), String> {
-    for draw in 0..2 {
-        let params = check_draw(nparams, draw);
-        let env = expr::Env::<f64> {
-            params: &params,
-            coords: &[],
-            rates: &[],
-            frames: &[],
-        };
-        for (r, c) in [(0, 1), (0, 2), (1, 2)] {
-            let (a, b) = (
-                expr::eval_scalar(&matrix[r][c], &env)?,
-                expr::eval_scalar(&matrix[c][r], &env)?,
-            );
-            if (a - b).abs() > 1e-9 * a.abs().max(b.abs()).max(1.0) {
-                return Err(format!(
-                    "the inertia matrix is not symmetric: entries [{r}][{c}] and [{c}][{r}] differ"
-                ));
-            }
+    for (r, c) in [(0, 1), (0, 2), (1, 2)] {
+        if !same(&matrix[r][c], &matrix[c][r], nparams)? {
+            return Err(format!(
+                "the inertia matrix is not symmetric: entries [{r}][{c}] and [{c}][{r}] differ"
+            ));
         }
     }
     Ok(())
@@ -170,15 +196,7 @@ pub(super) fn fixed_in_solid(
         return Ok(());
     }
     let params = check_draw(spec.parameters.len(), 1);
-    let value = |node: &Node, coords: &[f64]| {
-        let env = expr::Env::<f64> {
-            params: &params,
-            coords,
-            rates: &[],
-            frames: &[],
-        };
-        expr::eval_scalar(node, &env)
-    };
+    let value = |node: &Node, coords: &[f64]| at(node, &params, coords);
     let ib = Matrix3::from_fn(|r, c| value(&matrix[r][c], &[]).unwrap_or(f64::NAN));
     let mut seen: Vec<Matrix3<f64>> = Vec::new();
     for draw in 0..3 {
@@ -234,22 +252,7 @@ pub(super) fn symmetries_hold(solid: &SolidInfo, nparams: usize) -> Result<(), S
     };
     // Parameters the hypothesis has already set, and their value: no longer free.
     let mut set: BTreeMap<usize, Node> = BTreeMap::new();
-    let draws: Vec<Vec<f64>> = (0..2).map(|d| check_draw(nparams, d)).collect();
-    let value = |n: &Node, params: &[f64]| {
-        let env = expr::Env::<f64> {
-            params,
-            coords: &[],
-            rates: &[],
-            frames: &[],
-        };
-        expr::eval_scalar(n, &env).unwrap_or(f64::NAN)
-    };
-    let same = |a: &Node, b: &Node| {
-        draws.iter().all(|p| {
-            let (x, y) = (value(a, p), value(b, p));
-            (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1.0)
-        })
-    };
+    let same = |a: &Node, b: &Node| same(a, b, nparams).unwrap_or(false);
     let zero = Node::Num(0.0);
     for sym in &solid.symmetries {
         if sym.frame != inr.basis {

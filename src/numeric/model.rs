@@ -1,6 +1,6 @@
 //! Building a [`NumericModel`] from a spec: names, frame and point trees, parsed expressions.
 
-use super::checks::{fixed_in_solid, linear_angle, symmetric, symmetries_hold};
+use super::checks::{fixed_in_solid, identifier, linear_angle, symmetric, symmetries_hold};
 use super::expr::{self, Kind, Name, Node};
 use super::{
     CoordInfo, FrameInfo, Hypothesis, InertiaInfo, NumericError, NumericModel, ParamInfo,
@@ -187,28 +187,12 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         spec.coordinates.iter().map(|c| c.name.as_str()),
         &mut coord_index,
     )?;
-    // A name that expressions read: a letter, then letters, digits or `_`.
-    for (path, list) in [
-        (
-            "parameters",
-            spec.parameters.iter().map(|p| &p.name).collect::<Vec<_>>(),
-        ),
-        (
-            "coordinates",
-            spec.coordinates.iter().map(|c| &c.name).collect(),
-        ),
-    ] {
-        for (i, n) in list.into_iter().enumerate() {
-            if !n.starts_with(|c: char| c.is_ascii_alphabetic()) || n.len() > 32 {
-                return Err(spec_err(
-                    format!("{path}[{i}].name"),
-                    format!(
-                        "`{n}` is not a valid name for an expression: a letter, then letters, \
-                         digits or `_` (at most 32 characters)"
-                    ),
-                ));
-            }
-        }
+    // A name that expressions read.
+    for (i, p) in spec.parameters.iter().enumerate() {
+        identifier(&p.name).map_err(|m| spec_err(format!("parameters[{i}].name"), m))?;
+    }
+    for (i, c) in spec.coordinates.iter().enumerate() {
+        identifier(&c.name).map_err(|m| spec_err(format!("coordinates[{i}].name"), m))?;
     }
     // `pi` is π in every expression, so it cannot name a parameter or a coordinate.
     for (path, what, i) in [

@@ -19,6 +19,7 @@
 //! them; an `eom` equation's residual, with those values substituted, is the equation of
 //! motion's value at the sample (q̈ is the sample's).
 
+use super::checks::identifier;
 use super::expr::{self, Env, Node};
 use super::kin::{self, State, Values};
 use super::model::{Context, Names, spec_err};
@@ -218,19 +219,6 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
             .map_err(|e| spec_err(path, e))
     };
     // A name may become an unknown only if it means nothing else in expressions.
-    let identifier = |name: &str| -> Result<(), String> {
-        let mut chars = name.chars();
-        if !chars.next().is_some_and(|c| c.is_ascii_alphabetic())
-            || !chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
-            || name.len() > 32
-        {
-            return Err(format!(
-                "`{name}` is not a valid name: a letter, then letters, digits or `_` (at most 32 \
-                 characters)"
-            ));
-        }
-        Ok(())
-    };
     let free_name = |name: &str| -> Result<(), String> {
         identifier(name)?;
         if name == expr::PI_NAME {
