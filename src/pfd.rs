@@ -16,7 +16,7 @@
 //! assert_eq!(cm.value.exprs(), delta.value.exprs());
 //! ```
 
-use crate::expr::{CoordId, Expr};
+use crate::expr::{CoordId, Expr, VarId};
 use crate::frame::Axis;
 use crate::kinematics::{omega, position, velocity};
 use crate::mechanism::{BodyId, Mechanism};
@@ -180,7 +180,7 @@ pub fn residual(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache) -> Expr 
 }
 
 /// Variable indices of the unknowns that occur in `e`.
-fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<usize> {
+fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<VarId> {
     unknown_vars(m)
         .into_iter()
         .filter(|&(_, v)| !e.derivative(v).is_zero())
@@ -189,7 +189,7 @@ fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<usize> {
 }
 
 /// (unknown name, variable index) of every unknown.
-pub fn unknown_vars(m: &Mechanism) -> Vec<(String, usize)> {
+pub fn unknown_vars(m: &Mechanism) -> Vec<(String, VarId)> {
     let reg = &m.reg;
     let np = reg.parameters().len();
     reg.unknowns()
@@ -203,7 +203,7 @@ pub fn unknown_vars(m: &Mechanism) -> Vec<(String, usize)> {
 }
 
 /// Replaces the unknown variable `v`, which enters `e` linearly, by `value`.
-fn replace_linear(e: &Expr, v: usize, value: &Expr) -> Expr {
+fn replace_linear(e: &Expr, v: VarId, value: &Expr) -> Expr {
     let c = e.derivative(v);
     if c.is_zero() {
         return e.clone();
@@ -237,7 +237,7 @@ pub fn solve_with_residuals(
             rows.push((i, r));
         }
     }
-    let mut cols: Vec<usize> = Vec::new();
+    let mut cols: Vec<VarId> = Vec::new();
     for (_, r) in &rows {
         for v in unknowns_in(m, r) {
             if !cols.contains(&v) {
@@ -245,7 +245,7 @@ pub fn solve_with_residuals(
             }
         }
     }
-    let names: BTreeMap<usize, String> = unknown_vars(m).into_iter().map(|(n, v)| (v, n)).collect();
+    let names: BTreeMap<VarId, String> = unknown_vars(m).into_iter().map(|(n, v)| (v, n)).collect();
     if cols.len() != rows.len() {
         let listed: Vec<&str> = cols.iter().map(|v| names[v].as_str()).collect();
         return Err(PfdError(format!(
@@ -257,7 +257,7 @@ pub fn solve_with_residuals(
         )));
     }
     // Gauss–Jordan elimination with numeric pivots.
-    let mut solved: Vec<(usize, Expr)> = Vec::new();
+    let mut solved: Vec<(VarId, Expr)> = Vec::new();
     let mut pending = rows;
     for &v in &cols {
         let pos = pending

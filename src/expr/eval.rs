@@ -20,8 +20,8 @@ impl Expr {
     /// // Variables: cos q, sin q, then the rates (unused here).
     /// let q: f64 = 0.3996;
     /// let mut point = vec![0.0; reg.nvars()];
-    /// point[reg.index_of(torseur::expr::VarRole::Cos(reg.coord("q").unwrap())).unwrap()] = q.cos();
-    /// point[reg.index_of(torseur::expr::VarRole::Sin(reg.coord("q").unwrap())).unwrap()] = q.sin();
+    /// point[reg.index_of(torseur::expr::VarRole::Cos(reg.coord("q").unwrap())).unwrap().index()] = q.cos();
+    /// point[reg.index_of(torseur::expr::VarRole::Sin(reg.coord("q").unwrap())).unwrap().index()] = q.sin();
     /// let want = (2.0 * q).cos().powi(12);
     /// assert!((e.eval(&point) - want).abs() < 1e-14 * want);
     /// ```

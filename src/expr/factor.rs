@@ -110,9 +110,7 @@ impl Expr {
     /// in the parameters; in the order of the canonical form's terms.
     fn by_kinematic_monomial(&self) -> Vec<(Vec<u8>, Expr)> {
         let reg = &self.reg;
-        let param: Vec<bool> = (0..reg.nvars())
-            .map(|i| reg.is_factor_variable(i))
-            .collect();
+        let param: Vec<bool> = reg.var_ids().map(|i| reg.is_factor_variable(i)).collect();
         // (μ, terms of its coefficient: rational and exponents of the parameters).
         type Terms = Vec<(Rational, Vec<u8>)>;
         let mut groups: Vec<(Vec<u8>, Terms)> = Vec::new();

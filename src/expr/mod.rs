@@ -62,6 +62,30 @@ impl CoordId {
     }
 }
 
+/// Typed index of a polynomial variable of a [`Registry`]: a parameter or an unknown, cos q or
+/// sin q, q itself, a rate (see [`Registry::role`]).
+///
+/// ```
+/// use torseur::expr::{Registry, VarRole};
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::new(&["m".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+/// let q = reg.coord("q").unwrap();
+/// let qdd = reg.index_of(VarRole::Rate(q, 2)).unwrap();
+/// assert_eq!(reg.role(qdd), VarRole::Rate(q, 2));
+/// // The coefficient of q̈ in m q̈ + m sin q: the partial derivative in that variable.
+/// let e = reg.parse("m*ddot(q) + m*sin(q)").unwrap();
+/// assert_eq!(e.derivative(qdd), reg.parse("m").unwrap());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct VarId(pub(crate) usize);
+
+impl VarId {
+    /// Index among the registry's variables.
+    pub fn index(self) -> usize {
+        self.0
+    }
+}
+
 /// Errors of the expression layer: parsing and unsupported forms.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ExprError {
@@ -124,8 +148,8 @@ pub struct CoordInfo {
 impl CoordInfo {
     /// The polynomial variable holding q itself, if the coordinate has one (a length, or an
     /// angle that enters as itself).
-    pub fn value_var(&self) -> Option<usize> {
-        self.value
+    pub fn value_var(&self) -> Option<VarId> {
+        self.value.map(VarId)
     }
 
     /// Whether the rate is imposed (q̇ given, q̈ = 0).
@@ -264,14 +288,14 @@ impl Expr {
     }
 
     /// The variable index if the expression is exactly one variable (coefficient 1).
-    pub fn single_variable(&self) -> Option<usize> {
+    pub fn single_variable(&self) -> Option<VarId> {
         if self.p.nterms() != 1 || !self.p.coefficients[0].is_one() {
             return None;
         }
         let e = self.p.exponents(0);
         let nz: Vec<usize> = (0..e.len()).filter(|&i| e[i] != 0).collect();
         match nz.as_slice() {
-            [i] if e[*i] == 1 => Some(*i),
+            [i] if e[*i] == 1 => Some(VarId(*i)),
             _ => None,
         }
     }
@@ -315,8 +339,8 @@ impl Expr {
     }
 
     /// Whether the variable `i` occurs.
-    pub(crate) fn contains_var(&self, i: usize) -> bool {
-        self.p.degree(i) > 0
+    pub(crate) fn contains_var(&self, i: VarId) -> bool {
+        self.p.degree(i.0) > 0
     }
 
     /// Brings a product back to canonical form: sin²q → 1 − cos²q for every angle.
@@ -406,11 +430,11 @@ impl Expr {
     /// Substitutes a variable by an expression (used by hypotheses: a product of inertia set
     /// to zero, two moments set equal, q̈ set to zero). Stays canonical when the value has no
     /// sine (which is the case of every hypothesis).
-    pub fn substitute(&self, var: usize, value: &Expr) -> Expr {
-        if self.p.degree(var) == 0 {
+    pub fn substitute(&self, var: VarId, value: &Expr) -> Expr {
+        if self.p.degree(var.0) == 0 {
             return self.clone();
         }
-        let p = self.p.replace_with_poly(var, &value.p);
+        let p = self.p.replace_with_poly(var.0, &value.p);
         self.with(Expr::reduce(p, &self.reg))
     }
 
@@ -427,7 +451,7 @@ impl Expr {
     /// ```
     pub fn split_by_rates(&self) -> (Expr, Expr) {
         let reg = self.registry();
-        let rate = |i: usize| matches!(reg.role(i), VarRole::Rate(..));
+        let rate = |i: usize| matches!(reg.role(VarId(i)), VarRole::Rate(..));
         let (mut with, mut without) = (Vec::new(), Vec::new());
         for (c, e) in self.terms() {
             let t = (c.clone(), e.to_vec());
@@ -474,11 +498,11 @@ impl Expr {
 
     /// Partial derivative with respect to polynomial variable `i`, every other variable held
     /// fixed (the coefficient of an unknown that enters linearly).
-    pub fn derivative(&self, i: usize) -> Expr {
-        if self.p.degree(i) == 0 {
+    pub fn derivative(&self, i: VarId) -> Expr {
+        if self.p.degree(i.0) == 0 {
             return self.zero_like();
         }
-        self.with(self.p.derivative(i))
+        self.with(self.p.derivative(i.0))
     }
 
     /// Partial derivative ∂/∂q with respect to a coordinate's value, its rates held fixed:
@@ -490,14 +514,14 @@ impl Expr {
         let mut acc = self.zero_like();
         if let Some((ci, si)) = c.trig {
             if self.p.degree(ci) > 0 {
-                acc = &acc - &(&self.derivative(ci) * &reg.sin(q));
+                acc = &acc - &(&self.derivative(VarId(ci)) * &reg.sin(q));
             }
             if self.p.degree(si) > 0 {
-                acc = &acc + &(&self.derivative(si) * &reg.cos(q));
+                acc = &acc + &(&self.derivative(VarId(si)) * &reg.cos(q));
             }
         }
         if let Some(vi) = c.value {
-            acc = &acc + &self.derivative(vi);
+            acc = &acc + &self.derivative(VarId(vi));
         }
         acc
     }
@@ -506,7 +530,7 @@ impl Expr {
     /// a coordinate whose rate is imposed (it has no rate variables).
     pub fn partial_rate(&self, q: CoordId, order: u8) -> Expr {
         match self.reg.coords[q.0].rates {
-            Some(r) => self.derivative(r[order as usize - 1]),
+            Some(r) => self.derivative(VarId(r[order as usize - 1])),
             None => self.zero_like(),
         }
     }

@@ -1,7 +1,7 @@
 //! Printing: the plain-text form (parsable back) and the presentation form, collected by
 //! kinematic monomials (q̈ᵢ, q̇ᵢq̇ⱼ) with the common parameter factor of each group pulled out.
 
-use super::{CoordId, Expr, Registry, VarRole};
+use super::{CoordId, Expr, Registry, VarId, VarRole};
 use std::cmp::Reverse;
 use std::rc::Rc;
 use symbolica::domains::rational::Rational;
@@ -34,7 +34,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
         if k == 0 {
             continue;
         }
-        match reg.role(i) {
+        match reg.role(VarId(i)) {
             VarRole::Parameter(p) => t.params.push((p, k)),
             VarRole::Cos(q) => t.trig.push((q, true, k)),
             VarRole::Sin(q) => t.trig.push((q, false, k)),
@@ -204,7 +204,7 @@ impl Expr {
                         let mut e = vec![0u8; reg.nvars()];
                         let strip = |e: &mut Vec<u8>, role: VarRole, k: u8| {
                             if let Some(i) = reg.index_of(role) {
-                                e[i] += k;
+                                e[i.index()] += k;
                             }
                         };
                         for &(p, k) in &t.params {

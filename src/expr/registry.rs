@@ -380,8 +380,8 @@ impl Registry {
     /// Whether variable `i` may enter a factor between two equations
     /// ([`Expr::parameter_ratio`]): a parameter, or the cos or sin of a constant angle
     /// parameter; not a coordinate, a rate or an unknown.
-    pub fn is_factor_variable(&self, i: usize) -> bool {
-        match self.roles[i] {
+    pub fn is_factor_variable(&self, i: VarId) -> bool {
+        match self.roles[i.0] {
             VarRole::Parameter(k) => !self.is_unknown(k),
             VarRole::Cos(q) | VarRole::Sin(q) => self.coords[q.0].constant,
             VarRole::Value(_) | VarRole::Rate(..) => false,
@@ -455,14 +455,19 @@ impl Registry {
         self.vars.len()
     }
 
+    /// Every polynomial variable, in order.
+    pub fn var_ids(&self) -> impl Iterator<Item = VarId> + use<> {
+        (0..self.vars.len()).map(VarId)
+    }
+
     /// The variable standing for `role`, if the registry has one.
-    pub fn index_of(&self, role: VarRole) -> Option<usize> {
-        self.role_index.get(&role).copied()
+    pub fn index_of(&self, role: VarRole) -> Option<VarId> {
+        self.role_index.get(&role).copied().map(VarId)
     }
 
     /// What variable `i` stands for.
-    pub fn role(&self, i: usize) -> VarRole {
-        self.roles[i]
+    pub fn role(&self, i: VarId) -> VarRole {
+        self.roles[i.0]
     }
 
     pub(super) fn poly_zero(&self) -> Poly {
@@ -477,8 +482,8 @@ impl Registry {
     }
 
     /// The polynomial variable `i` as an expression (see [`Registry::role`]).
-    pub fn variable(self: &Rc<Self>, i: usize) -> Expr {
-        self.var(i)
+    pub fn variable(self: &Rc<Self>, i: VarId) -> Expr {
+        self.var(i.0)
     }
 
     pub(super) fn var(self: &Rc<Self>, i: usize) -> Expr {

@@ -100,7 +100,7 @@ fn evaluation_matches_floating_point_trigonometry() {
     let (a, b) = (0.7_f64, -1.1_f64);
     let mut point = vec![0.0; r.nvars()];
     for i in 0..r.nvars() {
-        point[i] = match r.role(i) {
+        point[i] = match r.role(VarId(i)) {
             VarRole::Parameter(0) => 2.0,
             VarRole::Parameter(1) => 0.5,
             VarRole::Cos(CoordId(0)) => a.cos(),
@@ -143,7 +143,7 @@ fn substitution_of_a_hypothesis() {
     let r = reg();
     let e = r.parse("k*m + ddot(a)*L").unwrap();
     let k = r.param_var["k"];
-    let e2 = e.substitute(k, &r.zero());
+    let e2 = e.substitute(VarId(k), &r.zero());
     assert_eq!(e2, r.parse("ddot(a)*L").unwrap());
 }
 

@@ -1,6 +1,6 @@
 //! The store that owns a problem's registry, frames, points, solids, sets and hypotheses.
 
-use crate::expr::{Expr, Registry};
+use crate::expr::{Expr, Registry, VarId};
 use crate::frame::{FrameId, Frames};
 use crate::inertia::{Inertia, Symmetry};
 use crate::point::{PointId, Points};
@@ -41,8 +41,8 @@ pub struct Hypothesis {
     pub name: String,
     /// Statement as written in the spec.
     pub text: Option<String>,
-    /// Variable index and the value it takes.
-    pub substitutions: Vec<(usize, Expr)>,
+    /// The variable and the value it takes.
+    pub substitutions: Vec<(VarId, Expr)>,
     /// Human-readable list of what is set (`D2 = 0`, `ddot(theta1) = 0`).
     pub effects: Vec<String>,
 }

@@ -71,7 +71,9 @@ pub fn numeric_point_for(
     values: &Values,
     exprs: &[&Expr],
 ) -> Result<Vec<f64>, ValuesError> {
-    let needed: Vec<bool> = (0..m.reg.nvars())
+    let needed: Vec<bool> = m
+        .reg
+        .var_ids()
         .map(|i| exprs.iter().any(|e| e.contains_var(i)))
         .collect();
     point_where(
@@ -115,9 +117,9 @@ fn point_where(
         f64::NAN
     };
     let mut point = Vec::with_capacity(reg.nvars());
-    for i in 0..reg.nvars() {
+    for i in reg.var_ids() {
         let v = match reg.role(i) {
-            _ if !needed(i) => f64::NAN,
+            _ if !needed(i.index()) => f64::NAN,
             // Solved values never contain an unknown.
             VarRole::Parameter(k) if reg.is_unknown(k) => f64::NAN,
             VarRole::Parameter(k) => {
@@ -151,7 +153,7 @@ fn point_where(
                 }
             }
         };
-        let exempt = !needed(i)
+        let exempt = !needed(i.index())
             || match reg.role(i) {
                 VarRole::Rate(_, 3) => true,
                 VarRole::Parameter(k) => reg.is_unknown(k),
@@ -162,7 +164,10 @@ fn point_where(
             && missing_parameters.is_empty()
             && missing_coordinates.is_empty()
         {
-            return Err(ValuesError(format!("non-finite value for variable {i}")));
+            return Err(ValuesError(format!(
+                "non-finite value for variable {}",
+                i.index()
+            )));
         }
         point.push(v);
     }

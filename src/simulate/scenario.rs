@@ -78,8 +78,9 @@ impl Plan {
             }
         }
         let mut base = vec![0.0; reg.nvars()];
-        for i in 0..reg.nvars() {
-            match reg.role(i) {
+        for v in reg.var_ids() {
+            let i = v.index();
+            match reg.role(v) {
                 VarRole::Parameter(k) if !reg.is_unknown(k) => {
                     base[i] = sc.values[&reg.parameters()[k]];
                 }
@@ -228,7 +229,7 @@ impl Plan {
             ];
             for (role, x) in roles {
                 if let Some(i) = reg.index_of(role) {
-                    point[i] = x;
+                    point[i.index()] = x;
                 }
             }
         };

@@ -440,7 +440,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                 )
             })?;
             let dd = reg.ddot(q);
-            if let Some(v) = single_var(&dd) {
+            if let Some(v) = dd.single_variable() {
                 subs.push((v, reg.zero()));
                 effects.push(format!("ddot({c}) = 0"));
             }
@@ -458,7 +458,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                     if e.is_zero() {
                         continue;
                     }
-                    let v = single_var(e).or_else(|| single_var(&-e)).ok_or_else(|| {
+                    let v = e.single_variable().or_else(|| (-e).single_variable()).ok_or_else(|| {
                         at(
                             &sp,
                             format!(
@@ -482,7 +482,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                     let (ea, eb) = (resolve(&ine.matrix[a][a]), resolve(&ine.matrix[bb][bb]));
                     let (ea, eb) = (&ea, &eb);
                     if ea != eb {
-                        let v = single_var(eb).ok_or_else(|| {
+                        let v = eb.single_variable().ok_or_else(|| {
                             at(
                                 &sp,
                                 format!(
@@ -686,11 +686,6 @@ fn invariant_in_solid(
             frames.get(solid).name
         ))
     }
-}
-
-/// The variable index if the expression is exactly one variable with coefficient 1.
-fn single_var(e: &crate::expr::Expr) -> Option<usize> {
-    e.single_variable()
 }
 
 /// Reads a spec from JSON text, with the JSON path and line/column of a structural error.

@@ -41,7 +41,7 @@ mod dimension;
 pub use dimension::{Dimension, UnitError, UnitStyle};
 
 use crate::derivation::{Derivation, StepKind, Value};
-use crate::expr::{CoordId, Expr, Registry, VarRole};
+use crate::expr::{CoordId, Expr, Registry, VarId, VarRole};
 use crate::mechanism::Mechanism;
 use crate::quantity::{Quantity, QuantityKind};
 use crate::wire::{CoordinateKind, ParameterKind, TheoremKind};
@@ -129,7 +129,8 @@ impl Dimensions {
             CoordinateKind::Angle => Dimension::NONE,
             CoordinateKind::Length => Dimension::LENGTH,
         };
-        let vars = (0..reg.nvars())
+        let vars = reg
+            .var_ids()
             .map(|i| match reg.role(i) {
                 VarRole::Parameter(k) => {
                     let is_angle = !reg.is_unknown(k)
@@ -167,16 +168,9 @@ impl Dimensions {
             };
             d.set(&p.name, dim);
         }
-        let reg = &m.reg;
-        let np = reg.parameters().len();
-        let unknowns: Vec<(usize, String)> = reg
-            .unknowns()
-            .iter()
-            .enumerate()
-            .filter_map(|(k, n)| {
-                reg.index_of(VarRole::Parameter(np + k))
-                    .map(|v| (v, n.clone()))
-            })
+        let unknowns: Vec<(VarId, String)> = crate::pfd::unknown_vars(m)
+            .into_iter()
+            .map(|(n, v)| (v, n))
             .collect();
         let mut found: Vec<Option<Dimension>> = vec![None; unknowns.len()];
         for a in &m.dynamics.actions {
@@ -211,7 +205,7 @@ impl Dimensions {
     pub fn set(&mut self, name: &str, dimension: Option<Dimension>) -> bool {
         match self.scalar_var(name) {
             Some(i) => {
-                self.vars[i] = dimension;
+                self.vars[i.index()] = dimension;
                 true
             }
             None => false,
@@ -219,8 +213,8 @@ impl Dimensions {
     }
 
     /// The dimension of the polynomial variable `i` (see [`Registry::role`]), if known.
-    pub fn variable(&self, i: usize) -> Option<Dimension> {
-        self.vars.get(i).copied().flatten()
+    pub fn variable(&self, i: VarId) -> Option<Dimension> {
+        self.vars.get(i.index()).copied().flatten()
     }
 
     /// The dimension of a parameter or unknown by name, if known.
@@ -236,7 +230,7 @@ impl Dimensions {
         }
     }
 
-    fn scalar_var(&self, name: &str) -> Option<usize> {
+    fn scalar_var(&self, name: &str) -> Option<VarId> {
         let reg = &self.reg;
         let np = reg.parameters().len();
         let k = reg
@@ -258,7 +252,7 @@ fn term_dimension(exponents: &[u8], dims: &Dimensions) -> Option<Dimension> {
     let mut acc = Dimension::NONE;
     for (i, &k) in exponents.iter().enumerate() {
         if k != 0 {
-            acc = acc * dims.variable(i)?.pow(i32::from(k));
+            acc = acc * dims.vars.get(i).copied().flatten()?.pow(i32::from(k));
         }
     }
     Some(acc)

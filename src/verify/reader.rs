@@ -220,7 +220,7 @@ impl<'a> Reader<'a> {
     fn finish(&mut self, mut e: Expr, text: &str) -> Result<Expr, VerifyError> {
         let reg = self.m.reg.clone();
         // Unknowns of the PFD: their solved values.
-        for v in 0..reg.nvars() {
+        for v in reg.var_ids() {
             let VarRole::Parameter(k) = reg.role(v) else {
                 continue;
             };

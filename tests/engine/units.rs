@@ -400,10 +400,11 @@ fn every_quantity_of_every_spec_has_its_dimension_under_every_hypothesis() {
         let m = load(name);
         let dims = Dimensions::of(&m);
         // Every variable has a known dimension: nothing below is skipped.
-        for i in 0..m.reg.nvars() {
+        for i in m.reg.var_ids() {
             assert!(
                 dims.variable(i).is_some(),
-                "{name}: variable {i} ({:?}) has no dimension",
+                "{name}: variable {} ({:?}) has no dimension",
+                i.index(),
                 m.reg.role(i)
             );
         }

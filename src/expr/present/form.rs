@@ -325,7 +325,7 @@ fn plain_var(reg: &Registry, f: &Factor) -> Option<(usize, bool)> {
         Leaf::Sin(a) if a.is_simple() => (VarRole::Sin(a.0[0].0), true),
         _ => return None,
     };
-    reg.index_of(role).map(|i| (i, is_sin))
+    reg.index_of(role).map(|i| (i.index(), is_sin))
 }
 
 /// Reading-order key of a factor.

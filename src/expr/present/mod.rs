@@ -33,7 +33,7 @@ mod search;
 
 pub use form::{Angle, Cost, Factor, Form, Leaf, Product};
 
-use super::{Expr, Registry, VarRole};
+use super::{Expr, Registry, VarId, VarRole};
 use rewrite::{Leaves, Mono, normalize};
 use std::cmp::Reverse;
 use std::fmt;
@@ -131,7 +131,7 @@ impl Expr {
                     .enumerate()
                     .filter(|x| *x.1 > 0)
                     .map(|(i, &k)| {
-                        let a = match reg.role(i) {
+                        let a = match reg.role(VarId(i)) {
                             VarRole::Parameter(p) => Leaf::Param(p),
                             VarRole::Value(q) => Leaf::Value(q),
                             VarRole::Rate(q, o) => Leaf::Rate(q, o),
@@ -167,7 +167,7 @@ fn completed_square(e: &Expr) -> Option<Form> {
     let quadratic = e.terms().all(|(_, x)| {
         let mut d = 0;
         for (i, &k) in x.iter().enumerate() {
-            match reg.role(i) {
+            match reg.role(VarId(i)) {
                 VarRole::Rate(_, 1) => d += k as u32,
                 VarRole::Rate(..) if k > 0 => return false,
                 _ => {}
@@ -505,7 +505,7 @@ fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
         let i = reg
             .index_of(role)
             .expect("a leaf of a canonical term is a variable");
-        e[i] += k;
+        e[i.index()] += k;
     }
     e
 }
