@@ -21,7 +21,7 @@
 //!      + (m2*L1*L2*sin(theta2) + 1/2*(C2 - B2 + m2*L2^2)*sin(2*theta2) + D2*cos(2*theta2))*dot(theta1)^2",
 //! )?;
 //! assert_eq!(delta, by_hand);
-//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! # Ok::<(), torseur::Error>(())
 //! ```
 //!
 //! Layers: [`spec`] (JSON to [`mechanism::Mechanism`]), [`expr`] (the only module that uses
@@ -61,3 +61,58 @@ pub use derivation::{Derivation, Value, derive};
 pub use expr::{Expr, Registry};
 pub use mechanism::Mechanism;
 pub use quantity::Quantity;
+
+/// Every error of the library, for a caller that handles them alike: each variant is a
+/// module's own error, which keeps the user's objects (the JSON path of a spec, the quantity,
+/// the PFD's equation and unknowns) and converts with `?`.
+///
+/// ```
+/// fn motor_torque(path: &str) -> torseur::Result<torseur::expr::Expr> {
+///     let m = torseur::spec::load(path)?;
+///     let q = torseur::quantity::Quantity::parse("C_m")?;
+///     match torseur::derivation::derive(&m, &q)?.value {
+///         torseur::derivation::Value::Scalar(e) => Ok(e),
+///         _ => unreachable!("an unknown is a scalar"),
+///     }
+/// }
+/// assert!(motor_torque("derivations/regulateur_centrifuge.json").is_ok());
+/// let e = motor_torque("no/such/spec.json").unwrap_err();
+/// assert!(matches!(e, torseur::Error::Spec(_)), "{e}");
+/// ```
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A spec that cannot be read or built.
+    #[error(transparent)]
+    Spec(#[from] spec::SpecError),
+    /// A quantity written outside the course's notation.
+    #[error(transparent)]
+    Notation(#[from] quantity::NotationError),
+    /// A quantity naming what the spec does not have.
+    #[error(transparent)]
+    Resolve(#[from] derivation::ResolveError),
+    /// A PFD that cannot be solved as declared.
+    #[error(transparent)]
+    Pfd(#[from] pfd::PfdError),
+    /// An expression that cannot be read.
+    #[error(transparent)]
+    Expr(#[from] expr::ExprError),
+    /// A comparison that cannot be posed.
+    #[error(transparent)]
+    Verify(#[from] verify::VerifyError),
+    /// The float backend's check could not run.
+    #[error(transparent)]
+    Check(#[from] check::CheckError),
+    /// The float backend refused a spec or a quantity.
+    #[error(transparent)]
+    Numeric(#[from] numeric::NumericError),
+    /// A simulation that could not run.
+    #[error(transparent)]
+    Simulate(#[from] simulate::SimulateError),
+    /// A value that breaks homogeneity.
+    #[error(transparent)]
+    Dimension(#[from] units::DimensionError),
+}
+
+/// A result of the library (see [`Error`]).
+pub type Result<T> = std::result::Result<T, Error>;

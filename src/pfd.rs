@@ -72,10 +72,54 @@ pub struct Solution {
     pub eom: BTreeMap<String, Expr>,
 }
 
-/// Why the PFD cannot be solved as declared.
+/// Why the PFD cannot be solved as declared. `theorem` is the index of a declared equation
+/// (`pfd[theorem]` in the spec); the unknowns are named as in the spec.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{0}")]
-pub struct PfdError(pub String);
+pub enum PfdError {
+    /// Two unknowns multiply each other in an equation: the system is not linear in them.
+    #[error("pfd[{theorem}]: the unknowns {first} and {second} multiply each other")]
+    NotLinear {
+        /// The equation.
+        theorem: usize,
+        /// One unknown.
+        first: String,
+        /// The other.
+        second: String,
+    },
+    /// The equations without `eom` are not as many as the unknowns they hold.
+    #[error(
+        "{equations} equation(s) without `eom` for {} unknown(s) ({}): the system to solve \
+         must be square",
+        unknowns.len(),
+        unknowns.join(", ")
+    )]
+    NotSquare {
+        /// How many equations without `eom`.
+        equations: usize,
+        /// The unknowns they hold.
+        unknowns: Vec<String>,
+    },
+    /// No remaining equation has a number as the coefficient of this unknown.
+    #[error(
+        "cannot solve for {unknown}: its coefficient is not a number in any remaining \
+         equation (project the theorems on the basis of the link's axis)"
+    )]
+    NoNumericPivot {
+        /// The unknown.
+        unknown: String,
+    },
+    /// An equation of motion keeps an unknown that the other equations do not determine.
+    #[error(
+        "pfd[{theorem}]: the equation of motion still contains the unknown {unknown}, which \
+         the other equations do not determine"
+    )]
+    Undetermined {
+        /// The equation of motion.
+        theorem: usize,
+        /// The unknown left in it.
+        unknown: String,
+    },
+}
 
 /// The actions exterior to the solids `s`: the declared actions received by a member from a
 /// non-member (an action exerted by a member on a non-member is received as its opposite),
@@ -229,7 +273,11 @@ pub fn solve_with_residuals(
     let mut eoms: Vec<(usize, Expr)> = Vec::new();
     for (i, th) in m.dynamics.theorems.iter().enumerate() {
         let r = residual(m, th, cache);
-        check_linear(m, &r).map_err(|msg| PfdError(format!("pfd[{i}]: {msg}")))?;
+        check_linear(m, &r).map_err(|(first, second)| PfdError::NotLinear {
+            theorem: i,
+            first,
+            second,
+        })?;
         residuals.push(r.clone());
         if th.eom.is_some() {
             eoms.push((i, r));
@@ -247,14 +295,10 @@ pub fn solve_with_residuals(
     }
     let names: BTreeMap<VarId, String> = unknown_vars(m).into_iter().map(|(n, v)| (v, n)).collect();
     if cols.len() != rows.len() {
-        let listed: Vec<&str> = cols.iter().map(|v| names[v].as_str()).collect();
-        return Err(PfdError(format!(
-            "{} equation(s) without `eom` for {} unknown(s) ({}): the system to solve must be \
-             square",
-            rows.len(),
-            cols.len(),
-            listed.join(", ")
-        )));
+        return Err(PfdError::NotSquare {
+            equations: rows.len(),
+            unknowns: cols.iter().map(|v| names[v].clone()).collect(),
+        });
     }
     // Gauss–Jordan elimination with numeric pivots.
     let mut solved: Vec<(VarId, Expr)> = Vec::new();
@@ -264,11 +308,9 @@ pub fn solve_with_residuals(
             .iter()
             .position(|(_, r)| r.derivative(v).is_nonzero_constant());
         let Some(pos) = pos else {
-            return Err(PfdError(format!(
-                "cannot solve for {}: its coefficient is not a number in any remaining \
-                 equation (project the theorems on the basis of the link's axis)",
-                names[&v]
-            )));
+            return Err(PfdError::NoNumericPivot {
+                unknown: names[&v].clone(),
+            });
         };
         let (_, row) = pending.remove(pos);
         let c = row.derivative(v);
@@ -277,7 +319,9 @@ pub fn solve_with_residuals(
         let rest = &row - &(&c * &x);
         let value = (-&rest)
             .div_constant(&c)
-            .ok_or_else(|| PfdError("zero pivot".into()))?;
+            .ok_or_else(|| PfdError::NoNumericPivot {
+                unknown: names[&v].clone(),
+            })?;
         for (_, r) in pending.iter_mut() {
             *r = replace_linear(r, v, &value);
         }
@@ -297,11 +341,10 @@ pub fn solve_with_residuals(
         }
         let left = unknowns_in(m, &r);
         if let Some(v) = left.first() {
-            return Err(PfdError(format!(
-                "pfd[{i}]: the equation of motion still contains the unknown {}, which the \
-                 other equations do not determine",
-                names[v]
-            )));
+            return Err(PfdError::Undetermined {
+                theorem: i,
+                unknown: names[v].clone(),
+            });
         }
         let th = &m.dynamics.theorems[i];
         let q = th.eom.expect("eom equation");
@@ -310,14 +353,14 @@ pub fn solve_with_residuals(
     Ok((Solution { unknowns, eom }, residuals))
 }
 
-/// Unknowns must enter linearly: no term with two unknown factors.
-fn check_linear(m: &Mechanism, r: &Expr) -> Result<(), String> {
+/// Unknowns must enter linearly (no term with two unknown factors); else the two that multiply.
+fn check_linear(m: &Mechanism, r: &Expr) -> Result<(), (String, String)> {
     let vars = unknown_vars(m);
     for (n1, v1) in &vars {
         let d = r.derivative(*v1);
         for (n2, v2) in &vars {
             if !d.derivative(*v2).is_zero() {
-                return Err(format!("the unknowns {n1} and {n2} multiply each other"));
+                return Err((n1.clone(), n2.clone()));
             }
         }
     }

@@ -160,7 +160,7 @@ pub(super) fn derive(
                 .into_iter()
                 .find(|(n, _)| n == name)
                 .map(|(_, v)| v);
-            let (sol, residuals) = shared.pfd(m).map_err(|e| resolve_err(q, e.0))?;
+            let (sol, residuals) = shared.pfd(m).map_err(|e| resolve_err(q, e.to_string()))?;
             let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
                 resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
             })?;
@@ -198,7 +198,7 @@ pub(super) fn derive(
                 })?;
             let value = shared
                 .pfd(m)
-                .map_err(|e| resolve_err(q, e.0))?
+                .map_err(|e| resolve_err(q, e.to_string()))?
                 .0
                 .eom
                 .get(c)

@@ -63,7 +63,7 @@ impl Plan {
     ) -> Result<Plan, SimulateError> {
         let err = |s: String| SimulateError::Scenario(format!("scenario `{}`: {s}", sc.name));
         let reg = &m.reg;
-        let sol = pfd::solve(m).map_err(|e| err(e.0))?;
+        let sol = pfd::solve(m).map_err(|e| err(e.to_string()))?;
         for p in reg.parameters() {
             if !sc.values.contains_key(p) {
                 return Err(err(format!("no value for the parameter `{p}`")));

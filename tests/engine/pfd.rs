@@ -328,3 +328,54 @@ fn actions_are_labelled_for_the_sentences_of_the_key() {
         Some("la liaison pivot entre 1 et 2")
     );
 }
+
+/// A PFD that cannot be solved as declared says why, with the spec's own objects: the
+/// equation and the unknowns. The regulator's PFD changed two ways:
+/// - S1 isolated alone at O1 on z0: C_m with the moment of the pivot 12 on S1 (M12, N12 through
+///   x1 = x2 turned), one equation for three unknowns;
+/// - E's resultant projected on x1 and y1 (which turn with θ1) to find X01, Y01, written in
+///   B0: their coefficients are cos θ1 and sin θ1, never a number.
+#[test]
+fn an_unsolvable_pfd_names_its_equations_and_unknowns() {
+    use serde_json::{Value as J, json};
+    let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
+    let base: J = serde_json::from_str(&text).unwrap();
+    let with_pfd = |pfd: J| {
+        let mut v = base.clone();
+        v["pfd"] = pfd;
+        v["quantities"] = json!([]);
+        v["questions"] = json!([]);
+        load(&v.to_string())
+    };
+    let eom =
+        json!({"isolate": "2", "theorem": "moment", "point": "O2", "on": "x2", "eom": "theta2"});
+    let m = with_pfd(json!([
+        {"isolate": "1", "theorem": "moment", "point": "O1", "on": "z0"}, eom
+    ]));
+    match pfd::solve(&m) {
+        Err(pfd::PfdError::NotSquare {
+            equations,
+            unknowns,
+        }) => {
+            assert_eq!(equations, 1);
+            assert!(unknowns.contains(&"C_m".to_string()), "{unknowns:?}");
+            assert!(unknowns.len() > 1, "{unknowns:?}");
+        }
+        other => panic!("{other:?}"),
+    }
+    let m = with_pfd(json!([
+        {"isolate": "E", "theorem": "moment", "point": "O1", "on": "z0"},
+        {"isolate": "E", "theorem": "resultant", "on": "x1"},
+        {"isolate": "E", "theorem": "resultant", "on": "y1"},
+        eom
+    ]));
+    let e = pfd::solve(&m).unwrap_err();
+    assert!(
+        matches!(&e, pfd::PfdError::NoNumericPivot { unknown } if unknown == "X01" || unknown == "Y01"),
+        "{e:?}"
+    );
+    assert!(
+        e.to_string().contains("project the theorems on the basis"),
+        "{e}"
+    );
+}
