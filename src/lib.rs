@@ -24,16 +24,25 @@
 //! # Ok::<(), torseur::Error>(())
 //! ```
 //!
-//! Layers: [`spec`] (JSON to [`mechanism::Mechanism`]), [`expr`] (the only module that uses
-//! symbolica: canonical polynomial form), mechanics ([`frame`], [`vector`], [`point`],
-//! [`inertia`], [`kinematics`], [`torsor`]), [`derivation`] (steps with their theorems),
-//! [`pfd`] (actions, the Fundamental Principle of Dynamics, Lagrange), [`units`] (dimensions
-//! and homogeneity), [`output`] (text, JSON, numbers).
+//! The public surface, in layer order (ARCHITECTURE.md, « Layers », checked by a test):
+//! - [`expr`]: the only module that uses symbolica (the canonical polynomial form, parsing,
+//!   printing, the presentation form); [`wire`]: the spec's JSON data types;
+//! - mechanics: [`frame`], [`vector`], [`point`], [`inertia`], [`quantity`] (the course's
+//!   notation), [`mechanism`] (the store), [`kinematics`], [`torsor`];
+//! - [`pfd`] (actions, the Fundamental Principle of Dynamics, Lagrange), [`derivation`]
+//!   (steps with their theorems), [`units`] (dimensions and homogeneity);
+//! - [`numeric`] (the independent float backend), [`simulate`], [`latex`] (the answer key),
+//!   [`output`] (text, JSON, numbers), [`verify`], [`check`];
+//! - [`spec`] (JSON to [`mechanism::Mechanism`]); [`Error`] gathers every module's error.
+//!
+//! Utilities for the command line: [`lock`] (one symbolica process at a time) and
+//! [`excerpt`] (bounded quotes in messages). The atomic write is private, exposed as
+//! [`output::write_atomic`].
 #![deny(missing_docs)]
 // Matrix and vector code indexes components as the formulas do (I[i][j], u[k]).
 #![allow(clippy::needless_range_loop)]
 
-pub mod atomic;
+mod atomic;
 pub mod check;
 pub mod derivation;
 pub mod excerpt;

@@ -125,15 +125,6 @@ impl Vector {
         Vector::new(b, self.express_in(frames, b))
     }
 
-    /// The basis of the only part, if there is exactly one.
-    pub fn single_basis(&self) -> Option<FrameId> {
-        if self.parts.len() == 1 {
-            self.parts.keys().next().copied()
-        } else {
-            None
-        }
-    }
-
     /// Scalar product u · v. Each part of v is moved into the basis of each part of u.
     pub fn dot(&self, frames: &Frames, other: &Vector) -> Expr {
         let mut acc = frames.registry().zero();

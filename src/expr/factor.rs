@@ -14,18 +14,6 @@ impl Expr {
         Some(self * &self.reg.constant(r.inv()))
     }
 
-    /// The nonzero number k with `self = k · other`, if there is one (two equations `e = 0`
-    /// that differ by such a factor are the same equation).
-    pub fn constant_multiple_of(&self, other: &Expr) -> Option<Expr> {
-        if other.p.nterms() == 0 {
-            return None;
-        }
-        let (c, e) = (&other.p.coefficients[0], other.p.exponents(0));
-        let t = (0..self.p.nterms()).find(|&t| self.p.exponents(t) == e)?;
-        let k = self.reg.constant(&self.p.coefficients[t] / c);
-        (&k * other == *self).then_some(k)
-    }
-
     /// The nonzero factor k = numerator / denominator, made of parameters only, with
     /// `self = k · other`; none if there is no such factor (two equations `e = 0` that differ
     /// by such a factor are the same equation wherever it is nonzero).

@@ -42,11 +42,6 @@ impl Axis {
         }
     }
 
-    /// Axis from a component index.
-    pub fn from_index(i: usize) -> Axis {
-        [Axis::X, Axis::Y, Axis::Z][i % 3]
-    }
-
     /// Letter as written in the course.
     pub fn letter(self) -> char {
         ['x', 'y', 'z'][self.index()]

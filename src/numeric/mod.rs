@@ -406,11 +406,6 @@ impl NumericModel {
         self.params.iter().map(|p| p.name.as_str())
     }
 
-    /// Names of the time coordinates, in the spec's order.
-    pub fn coordinate_names(&self) -> impl Iterator<Item = &str> {
-        self.coords.iter().map(|c| c.name.as_str())
-    }
-
     /// Names of the unknowns of the PFD (never parameters, so never in a [`Sample`]): the
     /// transmitted components of the links in order (X, Y, Z, L, M, N followed by the link's
     /// name), then the actions' unknowns in order of first appearance.

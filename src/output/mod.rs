@@ -29,11 +29,6 @@ pub enum TextForm {
     Canonical,
 }
 
-/// A value as one line of text (presentation forms).
-pub fn value_text(m: &Mechanism, v: &Value) -> String {
-    value_text_in(m, v, TextForm::Presentation)
-}
-
 /// A value as one line of text, in the form asked.
 ///
 /// ```
