@@ -235,12 +235,11 @@ fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<VarId> {
 /// (unknown name, variable index) of every unknown.
 pub fn unknown_vars(m: &Mechanism) -> Vec<(String, VarId)> {
     let reg = &m.reg;
-    let np = reg.parameters().len();
     reg.unknowns()
         .iter()
-        .enumerate()
-        .filter_map(|(k, n)| {
-            reg.index_of(crate::expr::VarRole::Parameter(np + k))
+        .filter_map(|n| {
+            let p = reg.param_id(n)?;
+            reg.index_of(crate::expr::VarRole::Parameter(p))
                 .map(|v| (n.clone(), v))
         })
         .collect()

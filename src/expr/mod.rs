@@ -62,6 +62,29 @@ impl CoordId {
     }
 }
 
+/// Typed index of a parameter of a [`Registry`], or beyond the parameters of an unknown of
+/// the PFD (see [`Registry::param_id`]).
+///
+/// ```
+/// use torseur::expr::{Registry, VarRole};
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::with_unknowns(&["m".into()], &[], &["C_m".into()], &[], &[]).unwrap();
+/// let cm = reg.param_id("C_m").unwrap();
+/// assert!(reg.is_unknown(cm) && !reg.is_unknown(reg.param_id("m").unwrap()));
+/// assert_eq!(reg.scalar_name(cm), "C_m");
+/// let v = reg.index_of(VarRole::Parameter(cm)).unwrap();
+/// assert_eq!(reg.variable(v), reg.parse("C_m").unwrap());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct ParamId(pub(crate) usize);
+
+impl ParamId {
+    /// Index among the parameters, then the unknowns.
+    pub fn index(self) -> usize {
+        self.0
+    }
+}
+
 /// Typed index of a polynomial variable of a [`Registry`]: a parameter or an unknown, cos q or
 /// sin q, q itself, a rate (see [`Registry::role`]).
 ///
@@ -175,7 +198,7 @@ impl CoordInfo {
 pub enum VarRole {
     /// A constant parameter (index in [`Registry::parameters`]), or beyond them an unknown
     /// of the PFD (index − number of parameters in [`Registry::unknowns`]).
-    Parameter(usize),
+    Parameter(ParamId),
     /// cos q of an angle coordinate (or of a constant angle parameter).
     Cos(CoordId),
     /// sin q of an angle coordinate (or of a constant angle parameter).

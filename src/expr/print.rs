@@ -1,7 +1,7 @@
 //! Printing: the plain-text form (parsable back) and the presentation form, collected by
 //! kinematic monomials (q̈ᵢ, q̇ᵢq̇ⱼ) with the common parameter factor of each group pulled out.
 
-use super::{CoordId, Expr, Registry, VarId, VarRole};
+use super::{CoordId, Expr, ParamId, Registry, VarId, VarRole};
 use std::cmp::Reverse;
 use std::rc::Rc;
 use symbolica::domains::rational::Rational;
@@ -11,8 +11,8 @@ use symbolica::domains::rational::Rational;
 pub struct TermParts {
     /// Rational coefficient.
     pub coef: Rational,
-    /// (parameter index, exponent), in declaration order.
-    pub params: Vec<(usize, u8)>,
+    /// (parameter, exponent), in declaration order.
+    pub params: Vec<(ParamId, u8)>,
     /// (coordinate, is_cos, exponent): trigonometric factors.
     pub trig: Vec<(CoordId, bool, u8)>,
     /// (coordinate, exponent): length coordinates.
@@ -64,7 +64,7 @@ fn rate_key(rates: &[(CoordId, u8, u8)]) -> Vec<(Reverse<u8>, CoordId, Reverse<u
 type OtherKey = (
     bool,
     u32,
-    Vec<(usize, Reverse<u8>)>,
+    Vec<(ParamId, Reverse<u8>)>,
     Vec<(CoordId, bool, Reverse<u8>)>,
 );
 

@@ -306,7 +306,7 @@ impl Registry {
         for (i, p) in parameters.iter().enumerate() {
             check(p)?;
             vars.push(PolyVariable::Symbol(symbolica::symbol!(p.as_str())));
-            roles.push(VarRole::Parameter(i));
+            roles.push(VarRole::Parameter(ParamId(i)));
             param_var.insert(p.clone(), vars.len() - 1);
         }
         // Constant angle parameters are found by `angle`, not by `coord`.
@@ -372,9 +372,14 @@ impl Registry {
         &self.parameters[self.n_params..]
     }
 
-    /// Name of the parameter or unknown of a [`VarRole::Parameter`] index.
-    pub fn scalar_name(&self, i: usize) -> &str {
-        &self.parameters[i]
+    /// Name of a parameter or unknown.
+    pub fn scalar_name(&self, i: ParamId) -> &str {
+        &self.parameters[i.0]
+    }
+
+    /// A parameter or an unknown of the PFD by name.
+    pub fn param_id(&self, name: &str) -> Option<ParamId> {
+        self.parameters.iter().position(|p| p == name).map(ParamId)
     }
 
     /// Whether variable `i` may enter a factor between two equations
@@ -407,19 +412,19 @@ impl Registry {
     }
 
     /// The written rank of parameter (or unknown) `p`: see [`Registry::set_display_ranks`].
-    pub fn display_rank(&self, p: usize) -> u32 {
+    pub fn display_rank(&self, p: ParamId) -> u32 {
         if self.is_unknown(p) {
             return u32::MAX;
         }
         self.display_ranks
             .get()
-            .and_then(|r| r.get(p).copied())
+            .and_then(|r| r.get(p.0).copied())
             .unwrap_or(u32::MAX - 1)
     }
 
-    /// Whether a [`VarRole::Parameter`] index is an unknown of the PFD.
-    pub fn is_unknown(&self, i: usize) -> bool {
-        i >= self.n_params
+    /// Whether a parameter slot holds an unknown of the PFD.
+    pub fn is_unknown(&self, i: ParamId) -> bool {
+        i.0 >= self.n_params
     }
 
     /// The time coordinates, in declaration order (not the constant angle parameters).

@@ -101,8 +101,8 @@ fn evaluation_matches_floating_point_trigonometry() {
     let mut point = vec![0.0; r.nvars()];
     for i in 0..r.nvars() {
         point[i] = match r.role(VarId(i)) {
-            VarRole::Parameter(0) => 2.0,
-            VarRole::Parameter(1) => 0.5,
+            VarRole::Parameter(ParamId(0)) => 2.0,
+            VarRole::Parameter(ParamId(1)) => 0.5,
             VarRole::Cos(CoordId(0)) => a.cos(),
             VarRole::Sin(CoordId(0)) => a.sin(),
             VarRole::Rate(CoordId(1), 1) => b,

@@ -110,9 +110,9 @@ fn point_where(
         }
     }
     let (mut missing_parameters, mut missing_coordinates) = (Vec::new(), Vec::new());
-    let miss = |list: &mut Vec<String>, name: &String| {
-        if !list.contains(name) {
-            list.push(name.clone());
+    let miss = |list: &mut Vec<String>, name: &str| {
+        if !list.iter().any(|x| x == name) {
+            list.push(name.to_string());
         }
         f64::NAN
     };
@@ -123,7 +123,7 @@ fn point_where(
             // Solved values never contain an unknown.
             VarRole::Parameter(k) if reg.is_unknown(k) => f64::NAN,
             VarRole::Parameter(k) => {
-                let name = &reg.parameters()[k];
+                let name = reg.scalar_name(k);
                 match values.parameters.get(name) {
                     Some(v) => *v,
                     None => miss(&mut missing_parameters, name),

@@ -82,7 +82,7 @@ impl Plan {
             let i = v.index();
             match reg.role(v) {
                 VarRole::Parameter(k) if !reg.is_unknown(k) => {
-                    base[i] = sc.values[&reg.parameters()[k]];
+                    base[i] = sc.values[reg.scalar_name(k)];
                 }
                 // cos and sin of a constant angle parameter.
                 VarRole::Cos(q) if reg.coord_info(q).is_constant() => {

@@ -231,19 +231,8 @@ impl Dimensions {
     }
 
     fn scalar_var(&self, name: &str) -> Option<VarId> {
-        let reg = &self.reg;
-        let np = reg.parameters().len();
-        let k = reg
-            .parameters()
-            .iter()
-            .position(|p| p == name)
-            .or_else(|| {
-                reg.unknowns()
-                    .iter()
-                    .position(|u| u == name)
-                    .map(|k| np + k)
-            })?;
-        reg.index_of(VarRole::Parameter(k))
+        let k = self.reg.param_id(name)?;
+        self.reg.index_of(VarRole::Parameter(k))
     }
 }
 

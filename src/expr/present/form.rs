@@ -1,7 +1,7 @@
 //! The presentation tree: sums of signed products of atoms and parenthesised sums, its
 //! operation count, its exact value, and its plain text (parsable back).
 
-use super::super::{CoordId, Expr, Registry, VarRole};
+use super::super::{CoordId, Expr, ParamId, Registry, VarRole};
 use std::cmp::Ordering;
 use std::rc::Rc;
 use symbolica::domains::rational::Rational;
@@ -75,8 +75,8 @@ impl Angle {
 /// A leaf of the presentation tree.
 #[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Leaf {
-    /// A parameter or an unknown ([`VarRole::Parameter`] index).
-    Param(usize),
+    /// A parameter or an unknown.
+    Param(ParamId),
     /// A length coordinate, or an angle written as itself.
     Value(CoordId),
     /// q̇ (order 1), q̈ (order 2)…
@@ -341,7 +341,7 @@ pub(crate) fn factor_key(reg: &Registry, f: &Factor) -> (u8, u32, usize, u8, Vec
         {
             (0, 0, 0, 0, vec![])
         }
-        Factor::Leaf(Leaf::Param(p)) => (1, reg.display_rank(*p), *p, 0, vec![]),
+        Factor::Leaf(Leaf::Param(p)) => (1, reg.display_rank(*p), p.0, 0, vec![]),
         Factor::Leaf(Leaf::Value(q)) => (2, 0, q.0, 0, vec![]),
         Factor::Sum(s) => (3, u32::from(s.terms.iter().any(has_rates)), 0, 0, vec![]),
         Factor::Leaf(Leaf::Rate(q, o)) => (4, 0, usize::MAX - *o as usize, q.0 as u8, vec![]),
@@ -424,7 +424,7 @@ type ProductKey = (
     bool,
     bool,
     u32,
-    Vec<(u32, usize, std::cmp::Reverse<u8>)>,
+    Vec<(u32, ParamId, std::cmp::Reverse<u8>)>,
     Vec<(u8, Vec<(CoordId, i32)>)>,
 );
 
@@ -457,7 +457,7 @@ fn collect_key(
     p: &Product,
     power: u32,
     degree: &mut u32,
-    params: &mut Vec<(u32, usize, std::cmp::Reverse<u8>)>,
+    params: &mut Vec<(u32, ParamId, std::cmp::Reverse<u8>)>,
     trig: &mut Vec<(u8, Vec<(CoordId, i32)>)>,
 ) {
     for (f, k) in &p.factors {
