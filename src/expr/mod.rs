@@ -22,7 +22,7 @@ pub use parse::bare_names;
 pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
 pub use registry::{
     MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry,
-    check_identifier,
+    RegistryBuilder, check_identifier,
 };
 
 use crate::excerpt::{bounded, excerpt};
@@ -68,7 +68,7 @@ impl CoordId {
 /// ```
 /// use torseur::expr::{Registry, VarRole};
 /// use torseur::spec::wire::CoordinateKind;
-/// let reg = Registry::with_unknowns(&["m".into()], &[], &["C_m".into()], &[], &[]).unwrap();
+/// let reg = Registry::builder().parameters(&["m".into()]).unknowns(&["C_m".into()]).build().unwrap();
 /// let cm = reg.param_id("C_m").unwrap();
 /// assert!(reg.is_unknown(cm) && !reg.is_unknown(reg.param_id("m").unwrap()));
 /// assert_eq!(reg.scalar_name(cm), "C_m");

@@ -33,8 +33,8 @@ pub struct Registry {
     pub(super) n_coords: usize,
     pub(super) coord_by_name: HashMap<String, CoordId>,
     /// Rank of each parameter in the written order of a product (see
-    /// [`Registry::set_display_ranks`]).
-    display_ranks: std::cell::OnceCell<Vec<u32>>,
+    /// [`RegistryBuilder::display_ranks`]).
+    display_ranks: Vec<u32>,
 }
 
 /// Symbols used for the rate functions dot(q), ddot(q), dddot(q).
@@ -159,39 +159,129 @@ pub const MAX_SPEC_DEGREE: u32 = 32;
 /// Names reserved by the expression syntax.
 pub const RESERVED: &[&str] = &["sin", "cos", "dot", "ddot", "dddot", "pi", "t"];
 
+/// The declarations of a [`Registry`], which [`RegistryBuilder::build`] turns into the
+/// registry once: its variables are fixed from then on.
+///
+/// ```
+/// use torseur::expr::Registry;
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::builder()
+///     .parameters(&["L".into(), "m".into(), "w".into()])
+///     .coordinate("q", CoordinateKind::Angle)
+///     .coordinate_with_rate("phi", CoordinateKind::Angle, "w")
+///     .unknowns(&["C_m".into()])
+///     .display_ranks(vec![2, 0, 1]) // m before L in a product, as the course writes it
+///     .build()
+///     .unwrap();
+/// assert_eq!(reg.parse("L*m*ddot(q)").unwrap().presentation().to_string(), "m*L*ddot(q)");
+/// assert_eq!(reg.parse("dot(phi)").unwrap(), reg.parse("w").unwrap());
+/// assert!(reg.parse("ddot(phi)").unwrap().is_zero());
+/// assert_eq!(reg.unknowns(), ["C_m"]);
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct RegistryBuilder {
+    parameters: Vec<String>,
+    coords: Vec<(String, CoordinateKind, Option<String>)>,
+    unknowns: Vec<String>,
+    raw_angles: Vec<String>,
+    angle_parameters: Vec<String>,
+    display_ranks: Vec<u32>,
+}
+
+impl RegistryBuilder {
+    /// The constant parameters, in order.
+    pub fn parameters(mut self, names: &[String]) -> Self {
+        self.parameters.extend_from_slice(names);
+        self
+    }
+
+    /// A time coordinate.
+    pub fn coordinate(mut self, name: &str, kind: CoordinateKind) -> Self {
+        self.coords.push((name.to_string(), kind, None));
+        self
+    }
+
+    /// A time coordinate whose rate is imposed: q̇ is `rate`, an expression in the parameters
+    /// (`omega`), and q̈ = 0.
+    pub fn coordinate_with_rate(mut self, name: &str, kind: CoordinateKind, rate: &str) -> Self {
+        self.coords
+            .push((name.to_string(), kind, Some(rate.to_string())));
+        self
+    }
+
+    /// The unknowns of the PFD (link components, a motor torque): scalars that enter
+    /// linearly and are solved for.
+    pub fn unknowns(mut self, names: &[String]) -> Self {
+        self.unknowns.extend_from_slice(names);
+        self
+    }
+
+    /// The angle coordinates that also enter as themselves (a torsion spring's −k(θ − θ0), a
+    /// disc's centre at R θ x1), not only through sin and cos.
+    pub fn raw_angles(mut self, names: &[String]) -> Self {
+        self.raw_angles.extend_from_slice(names);
+        self
+    }
+
+    /// The parameters that are constant angles (an incline α): each gets cos α and sin α
+    /// variables, with sin²α reduced like a coordinate's, and a zero rate; α itself stays
+    /// the parameter's variable.
+    pub fn angle_parameters(mut self, names: &[String]) -> Self {
+        self.angle_parameters.extend_from_slice(names);
+        self
+    }
+
+    /// The written order of the parameters in a product: `ranks[p]` for parameter `p`
+    /// (lower first; equal ranks keep the declaration order). The spec sets the course's
+    /// order from the units: masses, then accelerations (g), lengths, inertia moments, the
+    /// rest. Unknowns come after every parameter.
+    pub fn display_ranks(mut self, ranks: Vec<u32>) -> Self {
+        self.display_ranks = ranks;
+        self
+    }
+
+    /// The registry: its variables, in a fixed order.
+    pub fn build(self) -> Result<Rc<Registry>, ExprError> {
+        Registry::build(self)
+    }
+}
+
 impl Registry {
-    /// Declares parameters and coordinates (none with an imposed rate).
+    /// Declares parameters and coordinates (none with an imposed rate): the short form of
+    /// [`Registry::builder`].
     pub fn new(
         parameters: &[String],
         coords: &[(String, CoordinateKind)],
     ) -> Result<Rc<Registry>, ExprError> {
-        let with_rates: Vec<(String, CoordinateKind, Option<String>)> =
-            coords.iter().map(|(n, k)| (n.clone(), *k, None)).collect();
-        Registry::with_rates(parameters, &with_rates)
+        coords
+            .iter()
+            .fold(Registry::builder().parameters(parameters), |b, (n, k)| {
+                b.coordinate(n, *k)
+            })
+            .build()
     }
 
-    /// Declares parameters and coordinates; a coordinate may have an imposed constant rate,
-    /// an expression in the parameters (`omega`), in which case q̇ is that expression and q̈ = 0.
-    pub fn with_rates(
-        parameters: &[String],
-        coords: &[(String, CoordinateKind, Option<String>)],
-    ) -> Result<Rc<Registry>, ExprError> {
-        Registry::with_unknowns(parameters, coords, &[], &[], &[])
+    /// Declarations to build a registry from, one by one.
+    pub fn builder() -> RegistryBuilder {
+        RegistryBuilder::default()
     }
 
-    /// [`Registry::with_rates`], plus the unknowns of the PFD (link components, a motor
-    /// torque: scalars that enter linearly and are solved for), the angles that also enter
-    /// as themselves (a torsion spring's −k(θ − θ0), a disc's centre at R θ x1), not only
-    /// through sin and cos, and the parameters that are constant angles (an incline α: it
-    /// gets cos α and sin α variables, with sin²α reduced like a coordinate's, and a zero
-    /// rate; α itself stays the parameter's variable).
-    pub fn with_unknowns(
-        parameters: &[String],
-        coords: &[(String, CoordinateKind, Option<String>)],
-        unknowns: &[String],
-        raw_angles: &[String],
-        angle_parameters: &[String],
-    ) -> Result<Rc<Registry>, ExprError> {
+    fn build(b: RegistryBuilder) -> Result<Rc<Registry>, ExprError> {
+        let RegistryBuilder {
+            parameters,
+            coords,
+            unknowns,
+            raw_angles,
+            angle_parameters,
+            display_ranks,
+        } = b;
+        let (parameters, coords, unknowns, raw_angles, angle_parameters) = (
+            &parameters[..],
+            &coords[..],
+            &unknowns[..],
+            &raw_angles[..],
+            &angle_parameters[..],
+        );
         // Before any symbolica call: a second thread using symbolica concurrently would abort
         // the process in its restricted mode.
         let guard = ThreadGuard::acquire()?;
@@ -327,7 +417,7 @@ impl Registry {
             coords: infos,
             n_coords,
             coord_by_name,
-            display_ranks: std::cell::OnceCell::new(),
+            display_ranks,
         };
         // Imposed rates are expressions in the parameters: parse them with a registry that
         // shares the same variable list.
@@ -343,7 +433,7 @@ impl Registry {
                 coords: reg.coords.clone(),
                 n_coords: reg.n_coords,
                 coord_by_name: reg.coord_by_name.clone(),
-                display_ranks: std::cell::OnceCell::new(),
+                display_ranks: Vec::new(),
             });
             for (i, (_, _, rate)) in coords.iter().enumerate() {
                 if let Some(r) = rate {
@@ -393,33 +483,12 @@ impl Registry {
         }
     }
 
-    /// Sets the written order of the parameters in a product, once: `ranks[p]` for parameter
-    /// `p` (lower first; equal ranks keep the declaration order). The spec sets the course's
-    /// order from the units: masses, then accelerations (g), lengths, inertia moments, the
-    /// rest. Unknowns come after every parameter. A second call is ignored.
-    ///
-    /// ```
-    /// use torseur::expr::Registry;
-    /// use torseur::spec::wire::CoordinateKind;
-    /// let reg = Registry::new(&["L".into(), "m".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
-    /// let e = reg.parse("L*m*ddot(q)").unwrap();
-    /// assert_eq!(e.presentation().to_string(), "L*m*ddot(q)");
-    /// reg.set_display_ranks(vec![2, 0]);
-    /// assert_eq!(e.presentation().to_string(), "m*L*ddot(q)");
-    /// ```
-    pub fn set_display_ranks(&self, ranks: Vec<u32>) {
-        let _ = self.display_ranks.set(ranks);
-    }
-
-    /// The written rank of parameter (or unknown) `p`: see [`Registry::set_display_ranks`].
+    /// The written rank of parameter (or unknown) `p`: see [`RegistryBuilder::display_ranks`].
     pub fn display_rank(&self, p: ParamId) -> u32 {
         if self.is_unknown(p) {
             return u32::MAX;
         }
-        self.display_ranks
-            .get()
-            .and_then(|r| r.get(p.0).copied())
-            .unwrap_or(u32::MAX - 1)
+        self.display_ranks.get(p.0).copied().unwrap_or(u32::MAX - 1)
     }
 
     /// Whether a parameter slot holds an unknown of the PFD.

@@ -70,11 +70,11 @@ fn time_derivative_follows_the_chain_rule() {
 
 #[test]
 fn imposed_rate_replaces_dot_and_kills_ddot() {
-    let r = Registry::with_rates(
-        &["w".into()],
-        &[("a".into(), CoordinateKind::Angle, Some("w".into()))],
-    )
-    .unwrap();
+    let r = Registry::builder()
+        .parameters(&["w".into()])
+        .coordinate_with_rate("a", CoordinateKind::Angle, "w")
+        .build()
+        .unwrap();
     assert_eq!(r.parse("dot(a)").unwrap(), r.parse("w").unwrap());
     assert!(r.parse("ddot(a)").unwrap().is_zero());
     assert_eq!(

@@ -107,11 +107,6 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         .filter(|p| p.kind == ParameterKind::Angle)
         .map(|p| p.name.clone())
         .collect();
-    let coords: Vec<(String, CoordinateKind, Option<String>)> = spec
-        .coordinates
-        .iter()
-        .map(|c| (c.name.clone(), c.kind, c.rate.clone()))
-        .collect();
     let (unknowns, mut raw_angles) = super::dynamics::pfd_names(spec, &names)?;
     // An angle coordinate written as itself (a disc's centre at R*theta*x1) gets a variable
     // of its own besides cos and sin.
@@ -127,9 +122,21 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             }
         }
     }
-    let reg = Registry::with_unknowns(&params, &coords, &unknowns, &raw_angles, &angle_params)
+    let reg = spec
+        .coordinates
+        .iter()
+        .fold(Registry::builder().parameters(&params), |b, c| {
+            match &c.rate {
+                Some(rate) => b.coordinate_with_rate(&c.name, c.kind, rate),
+                None => b.coordinate(&c.name, c.kind),
+            }
+        })
+        .unknowns(&unknowns)
+        .raw_angles(&raw_angles)
+        .angle_parameters(&angle_params)
+        .display_ranks(spec.parameters.iter().map(display_rank).collect())
+        .build()
         .map_err(|e| at("coordinates", e.to_string()))?;
-    reg.set_display_ranks(spec.parameters.iter().map(display_rank).collect());
 
     // Frames, in an order where each parent comes first (the spec may list them in any order).
     name_ok("ground", &spec.ground)?;

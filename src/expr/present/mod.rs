@@ -20,7 +20,7 @@
 //! form is printed (this has never been observed; a debug build panics on it).
 //!
 //! The reading order of a product is: number, parameters in the course's order (masses,
-//! then g, lengths, inertia moments, the rest, as set by [`Registry::set_display_ranks`];
+//! then g, lengths, inertia moments, the rest, as set by [`RegistryBuilder::display_ranks`](super::RegistryBuilder::display_ranks);
 //! declaration order otherwise), length coordinates, parenthesised sums, rates, then
 //! trigonometric functions. Sums are written lower degree first.
 //!
