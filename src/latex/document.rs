@@ -21,10 +21,12 @@ use std::fmt::Write;
 
 /// The preamble: 10 pt on A4 with 1.5 cm margins, tight display and heading spacing, a
 /// quantity's heading run into its first line (a corrigé is photocopied: every line counts).
+/// A page break just after a display costs a little (`\postdisplaypenalty`), so that a boxed
+/// result is not left alone at the top of a page when a break between paragraphs is near.
 const PREAMBLE: &str = "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
 \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
 \\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz,needspace}\n\\usepackage[margin=1.5cm]{geometry}\n\
-\\allowdisplaybreaks[1]\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.3em}\n\
+\\allowdisplaybreaks[1]\n\\postdisplaypenalty=300\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.3em}\n\
 \\setlength{\\fboxsep}{3pt}\n\\setlength{\\multicolsep}{2pt}\n\\makeatletter\n\
 \\g@addto@macro\\normalsize{\\setlength{\\abovedisplayskip}{3pt plus 2pt}\\setlength{\\belowdisplayskip}{3pt plus 2pt}\
 \\setlength{\\abovedisplayshortskip}{1pt plus 2pt}\\setlength{\\belowdisplayshortskip}{1pt plus 2pt}}\n\
