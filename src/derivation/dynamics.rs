@@ -34,10 +34,7 @@ impl Shared {
 }
 
 fn resolve_err(q: &Quantity, message: String) -> ResolveError {
-    ResolveError {
-        quantity: q.to_string(),
-        message,
-    }
+    ResolveError::new(q, message)
 }
 
 /// A solid in a sentence: `$S_{2}$` for solid `2`, its name otherwise (free text).
@@ -135,7 +132,7 @@ pub(super) fn derive(
         QuantityKind::KineticEnergy(mo) => {
             let solids = m
                 .solids_of(&mo.moving)
-                .ok_or_else(|| resolve_err(q, format!("unknown solid or set `{}`", mo.moving)))?;
+                .ok_or_else(|| ResolveError::unknown(q, "solid or set", &mo.moving))?;
             if m.frames.find(&mo.reference) != Some(m.frames.ground()) {
                 return Err(resolve_err(
                     q,
@@ -160,7 +157,7 @@ pub(super) fn derive(
                 .into_iter()
                 .find(|(n, _)| n == name)
                 .map(|(_, v)| v);
-            let (sol, residuals) = shared.pfd(m).map_err(|e| resolve_err(q, e.to_string()))?;
+            let (sol, residuals) = shared.pfd(m).map_err(|e| ResolveError::new(q, e))?;
             let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
                 resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
             })?;
@@ -184,7 +181,7 @@ pub(super) fn derive(
             let coord = m
                 .reg
                 .coord(c)
-                .ok_or_else(|| resolve_err(q, format!("unknown coordinate `{c}`")))?;
+                .ok_or_else(|| ResolveError::unknown(q, "coordinate", c))?;
             let th = m
                 .dynamics
                 .theorems
@@ -198,7 +195,7 @@ pub(super) fn derive(
                 })?;
             let value = shared
                 .pfd(m)
-                .map_err(|e| resolve_err(q, e.to_string()))?
+                .map_err(|e| ResolveError::new(q, e))?
                 .0
                 .eom
                 .get(c)

@@ -14,14 +14,70 @@ use crate::vector::Vector;
 mod dynamics;
 pub use dynamics::Shared;
 
-/// A quantity that refers to unknown objects.
+/// A quantity that cannot be derived: it names what the spec does not have, or its PFD
+/// cannot be solved.
+///
+/// ```
+/// use torseur::derivation::{Unresolved, derive};
+/// use torseur::quantity::Quantity;
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let e = derive(&m, &Quantity::parse("V(Q,2/0)").unwrap()).unwrap_err();
+/// assert_eq!(e.reason, Unresolved::UnknownName { what: "point", name: "Q".into() });
+/// assert_eq!(e.to_string(), "V(Q,2/0): unknown point `Q`");
+/// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{quantity}: {message}")]
+#[error("{quantity}: {reason}")]
 pub struct ResolveError {
     /// The quantity as written.
     pub quantity: String,
-    /// What is unknown.
-    pub message: String,
+    /// Why it cannot be derived.
+    pub reason: Unresolved,
+}
+
+/// Why a quantity cannot be derived.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum Unresolved {
+    /// A name the spec does not declare.
+    #[error("unknown {what} `{name}`")]
+    UnknownName {
+        /// What was looked for (`point`, `solid or frame`, `coordinate`…).
+        what: &'static str,
+        /// The name as written.
+        name: String,
+    },
+    /// The PFD cannot be solved as declared.
+    #[error(transparent)]
+    Pfd(#[from] crate::pfd::PfdError),
+    /// Anything else, said in a sentence.
+    #[error("{0}")]
+    Other(String),
+}
+
+impl ResolveError {
+    /// `quantity` cannot be derived, for `reason`.
+    pub fn new(quantity: &impl std::fmt::Display, reason: impl Into<Unresolved>) -> Self {
+        ResolveError {
+            quantity: quantity.to_string(),
+            reason: reason.into(),
+        }
+    }
+
+    /// `quantity` names an unknown `what` (a point, a solid…) called `name`.
+    pub fn unknown(quantity: &impl std::fmt::Display, what: &'static str, name: &str) -> Self {
+        ResolveError::new(
+            quantity,
+            Unresolved::UnknownName {
+                what,
+                name: name.to_string(),
+            },
+        )
+    }
+}
+
+impl From<String> for Unresolved {
+    fn from(s: String) -> Self {
+        Unresolved::Other(s)
+    }
 }
 
 /// A quantity with its names resolved to ids.
@@ -43,22 +99,10 @@ pub struct Resolved {
 
 /// Resolves the names of a quantity in a mechanism.
 pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
-    let err = |msg: String| ResolveError {
-        quantity: q.to_string(),
-        message: msg,
-    };
-    let frame = |n: &str| {
-        m.frame_of(n)
-            .ok_or_else(|| err(format!("unknown solid or frame `{n}`")))
-    };
-    let point = |n: &str| {
-        m.point(n)
-            .ok_or_else(|| err(format!("unknown point `{n}`")))
-    };
-    let solids = |n: &str| {
-        m.solids_of(n)
-            .ok_or_else(|| err(format!("unknown solid or set `{n}`")))
-    };
+    let unknown = |what: &'static str, n: &str| ResolveError::unknown(q, what, n);
+    let frame = |n: &str| m.frame_of(n).ok_or_else(|| unknown("solid or frame", n));
+    let point = |n: &str| m.point(n).ok_or_else(|| unknown("point", n));
+    let solids = |n: &str| m.solids_of(n).ok_or_else(|| unknown("solid or set", n));
     let mut r = Resolved {
         point: None,
         moving_frame: None,
@@ -90,9 +134,7 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
         }
         Inertia { point: p, solid } => {
             r.point = Some(point(p)?);
-            let b = m
-                .find_body(solid)
-                .ok_or_else(|| err(format!("unknown solid `{solid}`")))?;
+            let b = m.find_body(solid).ok_or_else(|| unknown("solid", solid))?;
             r.solids = vec![b];
             r.basis = torsor::inertia_basis(m, b);
         }
@@ -110,20 +152,20 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
         r.basis = m
             .frames
             .find(b)
-            .ok_or_else(|| err(format!("unknown basis `B{b}`")))?;
+            .ok_or_else(|| unknown("basis", &format!("B{b}")))?;
     }
     if let Some((f, axis)) = &q.projection {
         // Intermediate steps are written in the basis of the projection vector.
         let fid = m
             .frames
             .find(f)
-            .ok_or_else(|| err(format!("unknown basis vector `{axis}{f}`")))?;
+            .ok_or_else(|| unknown("basis vector", &format!("{axis}{f}")))?;
         if q.basis.is_none() {
             r.basis = fid;
         }
         r.projection = Some((
             fid,
-            Axis::parse(&axis.to_string()).ok_or_else(|| err("bad axis".into()))?,
+            Axis::parse(&axis.to_string()).ok_or_else(|| unknown("axis", &axis.to_string()))?,
         ));
     }
     Ok(r)
@@ -622,11 +664,10 @@ pub fn derive_values_with(
 /// The linearised value of a derivation (its steps are kept as derived).
 fn linearised(m: &Mechanism, q: &Quantity, d: Derivation) -> Result<Derivation, ResolveError> {
     if m.dynamics.small.is_empty() {
-        return Err(ResolveError {
-            quantity: q.to_string(),
-            message: "the spec declares no small coordinates (`small`) to linearise around"
-                .to_string(),
-        });
+        return Err(ResolveError::new(
+            q,
+            "the spec declares no small coordinates (`small`) to linearise around".to_string(),
+        ));
     }
     Ok(Derivation {
         quantity: q.clone(),

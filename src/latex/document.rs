@@ -392,10 +392,8 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
         );
     }
     for text in &qs.quantities {
-        let q = Quantity::parse(text).map_err(|e| crate::derivation::ResolveError {
-            quantity: text.clone(),
-            message: e.to_string(),
-        })?;
+        let q = Quantity::parse(text)
+            .map_err(|e| crate::derivation::ResolveError::new(text, e.to_string()))?;
         let d = derive(m, &q)?;
         let title = quantity_title(&q);
         // The heading names the basis asked: the same vector in B2 and in B1 reads apart.
@@ -417,10 +415,8 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
         }
     }
     for e in &qs.equations {
-        let q = Quantity::parse(&e.quantity).map_err(|er| crate::derivation::ResolveError {
-            quantity: e.quantity.clone(),
-            message: er.to_string(),
-        })?;
+        let q = Quantity::parse(&e.quantity)
+            .map_err(|er| crate::derivation::ResolveError::new(&e.quantity, er.to_string()))?;
         let d = derive(m, &q)?;
         if let Some(r) = &e.reason {
             let _ = writeln!(doc.o, "{} :", rich_text_or_escaped(r));

@@ -22,10 +22,7 @@ pub(super) fn simulation_block(
     sim: &crate::wire::SimulationSpec,
     file: &str,
 ) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
-    let fail = |what: &str, e: String| crate::derivation::ResolveError {
-        quantity: what.to_string(),
-        message: e,
-    };
+    let fail = |what: &str, e: String| crate::derivation::ResolveError::new(&what, e);
     let mut runs = Vec::new();
     for name in &sim.scenarios {
         runs.push(crate::simulate::simulate(m, name).map_err(|e| fail(name, e.to_string()))?);
