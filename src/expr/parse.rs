@@ -236,9 +236,17 @@ pub(super) fn parse_atom(s: &str) -> Result<Atom, ExprError> {
         input: s.to_string(),
         reason,
     })?;
+    // symbolica's message draws a caret under the text on further lines: its first line
+    // says what and where, which is what an error message of ours quotes.
     symbolica::try_parse!(&exact).map_err(|e| ExprError::Parse {
         input: s.to_string(),
-        reason: e.to_string(),
+        reason: e
+            .to_string()
+            .lines()
+            .next()
+            .unwrap_or_default()
+            .trim_start_matches("Error at line 1, ")
+            .to_string(),
     })
 }
 

@@ -28,9 +28,10 @@ pub enum SpecError {
         message: String,
     },
     /// Not JSON, or not the spec's shape.
-    #[error("{}", shown(&format!("at {}", excerpt(path)), Some((*line, *column)), message))]
+    #[error("{}", shown(&json_place(path), Some((*line, *column)), message))]
     Json {
-        /// JSON path of the value (`solids[1].mass`).
+        /// JSON path of the value (`solids[1].mass`); empty for a JSON syntax error, which
+        /// only has a line and column.
         path: String,
         /// 1-based line.
         line: usize,
@@ -52,6 +53,15 @@ pub enum SpecError {
 }
 
 /// `place (line l, column c): message`, bounded.
+/// « at solids[1].mass », or « in the JSON text » where there is no path.
+fn json_place(path: &str) -> String {
+    if path.is_empty() {
+        "in the JSON text".to_string()
+    } else {
+        format!("at {}", excerpt(path))
+    }
+}
+
 fn shown(place: &str, location: Option<(usize, usize)>, message: &str) -> String {
     let at = location
         .map(|(l, c)| format!(" (line {l}, column {c})"))

@@ -702,20 +702,29 @@ pub fn parse_spec(text: &str) -> Result<SpecFile, SpecError> {
     let spec: SpecFile = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
-        SpecError::Json {
-            path,
-            line: inner.line(),
-            column: inner.column(),
-            message: inner.to_string(),
-        }
+        // A syntax error has no path (`?`); the line and column say where.
+        let path = if inner.is_syntax() || inner.is_eof() || path == "?" {
+            String::new()
+        } else {
+            path
+        };
+        json_error(path, &inner)
     })?;
-    de.end().map_err(|e| SpecError::Json {
-        path: ".".to_string(),
+    de.end().map_err(|e| json_error(String::new(), &e))?;
+    Ok(spec)
+}
+
+/// A JSON error at `path`, its message without serde_json's « at line L column C » (the
+/// error prints the line and column once, after the path).
+fn json_error(path: String, e: &serde_json::Error) -> SpecError {
+    let text = e.to_string();
+    let suffix = format!(" at line {} column {}", e.line(), e.column());
+    SpecError::Json {
+        path,
         line: e.line(),
         column: e.column(),
-        message: e.to_string(),
-    })?;
-    Ok(spec)
+        message: text.strip_suffix(&suffix).unwrap_or(&text).to_string(),
+    }
 }
 
 /// The course's order of parameters in a written product, from their units: masses, then

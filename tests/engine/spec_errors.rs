@@ -482,3 +482,32 @@ fn every_error_message_is_bounded_and_names_its_path() {
         assert_bounded(&refused(v), "scenarios[0].duration", limit);
     }
 }
+
+/// Found by a new user's try (session 6): the line and column were printed twice, a JSON
+/// syntax error was placed « at ? », and a bad operator quoted symbolica's caret drawing over
+/// three lines. Each message is now one line, with the place once.
+#[test]
+fn a_json_or_syntax_error_says_its_place_once_on_one_line() {
+    let mut v = base();
+    v["solids"][1].as_object_mut().unwrap().remove("mass");
+    let missing = refused(v).to_string();
+    assert_eq!(missing.matches("line").count(), 1, "{missing}");
+    assert!(missing.contains("missing field `mass`"), "{missing}");
+
+    let text = base().to_string();
+    let broken = text.replacen("\"ground\"", "\"ground\" \"", 1);
+    let syntax = from_str(&broken).unwrap_err().to_string();
+    assert!(
+        syntax.starts_with("in the JSON text (line 1, column"),
+        "{syntax}"
+    );
+    assert_eq!(syntax.matches("line").count(), 1, "{syntax}");
+
+    let mut v = base();
+    v["points"][0]["position"] = serde_json::json!("-L1**x1");
+    let op = refused(v).to_string();
+    assert!(
+        !op.contains('\n') && op.contains("missing left-hand side"),
+        "{op}"
+    );
+}
