@@ -35,22 +35,37 @@ pub(super) fn chain(m: &Mechanism, f: FrameId, r: FrameId) -> Option<Vec<FrameId
 }
 
 /// « Composition des vitesses de rotation : Ω(2/0) = Ω(2/1) + Ω(1/0) » along the frames that
-/// turn, or « D'après le paramétrage » for one rotation.
+/// turn, through their common ancestor when neither frame holds the other (Ω(2/1) =
+/// Ω(2/0) + Ω(0/1)), or « D'après le paramétrage » for one rotation.
 pub(super) fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
     let (Some(f), Some(r)) = (m.frames.find(&mo.moving), m.frames.find(&mo.reference)) else {
         return "Composition des vitesses de rotation :".to_string();
     };
-    let Some(c) = chain(m, f, r) else {
+    // Up from f to the first frame that is also an ancestor of r (the root at worst), then
+    // down to r: Ω(f/r) = Σ Ω(k/parent k) on f's side + Σ Ω(parent k/k) on r's side.
+    let up_r = chain(m, r, m.frames.ground()).unwrap_or_default();
+    let Some(up_f) = chain(m, f, m.frames.ground()) else {
         return "Composition des vitesses de rotation :".to_string();
     };
-    let turning: Vec<(FrameId, FrameId)> = c
+    let Some(c) = up_f.iter().position(|x| up_r.contains(x)) else {
+        return "Composition des vitesses de rotation :".to_string();
+    };
+    let c_in_r = up_r.iter().position(|x| *x == up_f[c]).unwrap_or(0);
+    let turns = |a: FrameId, b: FrameId| {
+        m.frames.get(a).rotation.is_some() && !crate::kinematics::omega(m, a, b).is_zero(&m.frames)
+    };
+    let mut turning: Vec<(FrameId, FrameId)> = up_f[..=c]
         .windows(2)
-        .filter(|w| {
-            m.frames.get(w[0]).rotation.is_some()
-                && !crate::kinematics::omega(m, w[0], w[1]).is_zero(&m.frames)
-        })
+        .filter(|w| turns(w[0], w[1]))
         .map(|w| (w[0], w[1]))
         .collect();
+    turning.extend(
+        up_r[..=c_in_r]
+            .windows(2)
+            .rev()
+            .filter(|w| turns(w[0], w[1]))
+            .map(|w| (w[1], w[0])),
+    );
     if turning.len() <= 1 {
         return "D'après le paramétrage :".to_string();
     }
@@ -697,6 +712,13 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
             point(&g),
             mass_of(m, sn)
         );
+    }
+    // Ω asked by itself has no steps: its method is the composition along the frames (or
+    // the paramétrage, for one rotation).
+    if let QuantityKind::Omega(mo) = &d.quantity.kind
+        && d.steps.is_empty()
+    {
+        let _ = writeln!(doc.o, "{}", omega_sentence(m, mo));
     }
     let id = d.quantity.to_string();
     let names = torsor_names(&d.quantity.kind);

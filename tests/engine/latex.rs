@@ -249,3 +249,48 @@ fn a_citation_names_the_latest_value_of_each_solid_only() {
         "{citations:#?}"
     );
 }
+
+/// The composition of rotation vectors a key states (« Ω(2/1) = Ω(2/0) + Ω(0/1) ») is an
+/// identity: read back from the LaTeX, the sum of the named terms, each derived on its own, is
+/// the left side, exactly. A wrong chain of frames (a missing or reversed term) fails.
+#[test]
+fn every_stated_composition_of_rotations_holds() {
+    use torseur::derivation::{Value, derive_values};
+    use torseur::quantity::Quantity;
+    let omegas = |s: &str| -> Vec<String> {
+        s.split("\\overrightarrow{\\Omega(")
+            .skip(1)
+            .map(|t| t[..t.find(")}").unwrap()].to_string())
+            .collect()
+    };
+    let mut checked = 0;
+    for p in specs_in(&["derivations"]) {
+        let m = torseur::spec::load(&p).unwrap();
+        let tex = torseur::latex::answer_key(&m).unwrap();
+        for line in tex
+            .lines()
+            .filter(|l| l.starts_with("Composition des vitesses de rotation, $"))
+        {
+            let names = omegas(line);
+            assert!(names.len() >= 3, "{line}");
+            let qs: Vec<Quantity> = names
+                .iter()
+                .map(|n| Quantity::parse(&format!("Omega({n}) in B0")).unwrap())
+                .collect();
+            let vs: Vec<[Expr; 3]> = derive_values(&m, &qs)
+                .unwrap()
+                .into_iter()
+                .map(|d| match d.value {
+                    Value::Vector { components, .. } => components,
+                    other => panic!("{other:?}"),
+                })
+                .collect();
+            for k in 0..3 {
+                let sum = vs[1..].iter().fold(m.reg.zero(), |acc, v| &acc + &v[k]);
+                assert_eq!(sum, vs[0][k], "{}: {line}", p.display());
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked >= 4, "{checked} compositions");
+}
