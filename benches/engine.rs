@@ -41,6 +41,7 @@ fn regulator(c: &mut Criterion) {
     let values = Values {
         parameters: sample.parameters.clone(),
         coordinates: sample.coordinates.clone(),
+        ..Default::default()
     };
     let point = numeric_point(&m, &values).unwrap();
     let mut out = [0.0; 3];

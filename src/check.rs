@@ -8,8 +8,9 @@ use crate::numeric::{NumericError, NumericModel, Sample};
 use crate::output::{Values, ValuesError, numeric_point};
 use crate::quantity::Quantity;
 use crate::units::{DimensionError, Dimensions, check_value};
-use rand::SeedableRng;
+use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use std::collections::BTreeMap;
 use std::fmt;
 
 /// Agreement demanded between the two sides (relative).
@@ -189,6 +190,13 @@ pub fn compare(
     rng: &mut ChaCha8Rng,
 ) -> Result<CheckRow, CheckError> {
     let evaluated = as_evaluated(m, q)?;
+    // An action of the bilan holds the unknowns of its links: each sample gives every unknown
+    // of the PFD a random value, the same on both sides (a component the projection drops
+    // may hold one that the value does not).
+    let held: Vec<String> = match q.kind.action() {
+        Some(_) => m.reg.unknowns().to_vec(),
+        None => Vec::new(),
+    };
     let default = m.frame_name(m.default_basis).to_string();
     let mut row = CheckRow {
         quantity: q.to_string(),
@@ -201,13 +209,20 @@ pub fn compare(
             Some(h) => model.sample_under(rng, &h.name)?,
             None => model.sample(rng)?,
         };
+        let unknowns: BTreeMap<String, f64> = held
+            .iter()
+            .map(|n| (n.clone(), rng.random_range(-2.0..2.0)))
+            .collect();
         let values = Values {
             parameters: s.parameters.clone(),
             coordinates: s.coordinates.clone(),
+            unknowns,
         };
         let point = numeric_point(m, &values)?;
         let sym: Vec<f64> = symbolic.exprs().iter().map(|e| e.eval(&point)).collect();
-        let num = model.evaluate(&evaluated, &s, &default)?.numbers();
+        let num = model
+            .evaluate_with(&evaluated, &s, &values.unknowns, &default)?
+            .numbers();
         let err = relative_error(&sym, &num);
         if err.is_nan() || err > row.worst {
             row.worst = err;

@@ -38,14 +38,21 @@ impl Action {
         }
     }
 
-    /// The mutual action {T(on→from)} = −{T(from→on)} (only for a solid source).
+    /// The mutual action {T(on→from)} = −{T(from→on)} (only for a solid source). A given
+    /// action keeps its name: the motor's {T(moteur→1)} has the reaction {T(moteur→0)}.
     fn reversed(&self) -> Option<Action> {
         let Source::Body(b) = self.from else {
             return None;
         };
+        let link = self.from_label == self.exerted_by;
         Some(Action {
-            from_label: self.on_label.clone(),
-            on_label: self.from_label.clone(),
+            from_label: if link {
+                self.on_label.clone()
+            } else {
+                self.from_label.clone()
+            },
+            on_label: self.exerted_by.clone(),
+            exerted_by: self.on_label.clone(),
             from: Source::Body(self.on),
             on: b,
             point: self.point,
@@ -145,6 +152,7 @@ pub fn external_actions(m: &Mechanism, s: &[BodyId]) -> Vec<Action> {
             out.push(Action {
                 from_label: "pes".to_string(),
                 on_label: body.name.clone(),
+                exerted_by: "pes".to_string(),
                 from: Source::Outside,
                 on: b,
                 point: body.centre,
@@ -158,6 +166,58 @@ pub fn external_actions(m: &Mechanism, s: &[BodyId]) -> Vec<Action> {
         }
     }
     out
+}
+
+/// The actions `from` exerts on the solids `on` (a solid or a set named `on_name`), as the
+/// « bilan des actions mécaniques extérieures » lists them: `from` is matched against each
+/// exterior action's source as written there (a solid or frame for its links, `pes` for
+/// gravity, a given action's name), and `ext` takes them all (the course's Ē→E).
+///
+/// ```
+/// use torseur::pfd::actions_of;
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let e = m.solids_of("E").unwrap();
+/// assert_eq!(actions_of(&m, "0", &e, "E").unwrap().len(), 1);
+/// assert_eq!(actions_of(&m, "pes", &e, "E").unwrap().len(), 2);
+/// assert!(actions_of(&m, "ext", &e, "E").unwrap().len() >= 4);
+/// assert_eq!(actions_of(&m, "2", &e, "E").unwrap_err(),
+///     "`2` is part of `E`: its actions on `E` are internal");
+/// ```
+pub fn actions_of(
+    m: &Mechanism,
+    from: &str,
+    on: &[BodyId],
+    on_name: &str,
+) -> Result<Vec<Action>, String> {
+    let all = external_actions(m, on);
+    if from == "ext" {
+        return Ok(all);
+    }
+    let chosen: Vec<Action> = all
+        .iter()
+        .filter(|a| a.from_label == from)
+        .cloned()
+        .collect();
+    if !chosen.is_empty() {
+        return Ok(chosen);
+    }
+    if m.find_body(from).is_some_and(|b| on.contains(&b)) {
+        return Err(format!(
+            "`{from}` is part of `{on_name}`: its actions on `{on_name}` are internal"
+        ));
+    }
+    let mut sources: Vec<&str> = Vec::new();
+    for a in &all {
+        if !sources.contains(&a.from_label.as_str()) {
+            sources.push(&a.from_label);
+        }
+    }
+    sources.push("ext");
+    Err(format!(
+        "no action of `{from}` on `{on_name}` is declared (the actions on `{on_name}` come \
+         from: {})",
+        sources.join(", ")
+    ))
 }
 
 /// The two sides of a theorem: the dynamic side (Rd·u or δ(P)·u) and each action's

@@ -17,6 +17,26 @@ impl fmt::Display for Motion {
     }
 }
 
+/// An action {T(from→on)}: what `from` exerts on the solid or set `on`.
+///
+/// `from` is written as the answer key's « bilan des actions mécaniques extérieures » writes
+/// it: a solid or frame (the links between it and `on`), `pes` (gravity), the name of a given
+/// action (`moteur`), or `ext` for the sum of every action exterior to `on` (the course's
+/// Ē→E).
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct ActionRef {
+    /// What exerts it.
+    pub from: String,
+    /// The solid or set that receives it.
+    pub on: String,
+}
+
+impl fmt::Display for ActionRef {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}->{}", self.from, self.on)
+    }
+}
+
 /// What is asked for, before any basis or projection. Fields are the notation's arguments:
 /// `point` a point name, `motion` a motion i/j, `solid` a solid name.
 #[allow(missing_docs)]
@@ -51,6 +71,12 @@ pub enum QuantityKind {
     /// eom(q): the equation of motion of coordinate q, as the expression equal to zero
     /// (dynamic side minus actions, unknowns eliminated).
     Eom(String),
+    /// R(from→on): the resultant of an action, the unknowns of links kept as unknowns.
+    ActionResultant(ActionRef),
+    /// M(A, from→on): the moment at A of an action.
+    ActionMoment { point: String, action: ActionRef },
+    /// {T(from→on)}_A: the torsor of an action at A.
+    ActionTorsor { action: ActionRef, point: String },
 }
 
 /// A requested quantity: a kind, an optional basis to express it in, an optional projection.
@@ -86,6 +112,11 @@ impl Quantity {
     /// assert_eq!(q.projection, Some(("2".to_string(), 'x')));
     /// assert_eq!(q.to_string(), "delta(O2,2/0).x2");
     /// assert!(Quantity::parse("delta(O2;2/0)").is_err());
+    /// // Actions: as the bilan writes them, `ext` for every action exterior to a set.
+    /// for q in ["R(0->1)", "M(A,pes->2).y1", "M(O1,ext->E).z0", "{T(0->1)}_O1 in B1"] {
+    ///     assert_eq!(Quantity::parse(q).unwrap().to_string(), q);
+    /// }
+    /// assert!(Quantity::parse("M(A,0/1)").is_err());
     /// // Found by the fuzzer: a long name of multi-byte characters is an error, not a panic.
     /// assert!(Quantity::parse("Omega(߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰/0)").is_err());
     /// ```
@@ -141,20 +172,25 @@ impl Quantity {
         let kind = if !core.contains('(') && crate::expr::check_identifier(&core).is_ok() {
             QuantityKind::Unknown(core.clone())
         } else if let Some(rest) = core.strip_prefix('{') {
-            // {C(2/0)}_O2
+            // {C(2/0)}_O2, {T(0->1)}_O1
             let (inner, point) = rest
                 .split_once("}_")
                 .ok_or_else(|| err("a torsor is written {C(S/R)}_A"))?;
             check_name(point).map_err(|r| err(&r))?;
             let (letter, args) =
                 call(inner).ok_or_else(|| err("a torsor is written {C(S/R)}_A"))?;
-            let motion = motion(args).map_err(|r| err(&r))?;
             let point = point.to_string();
-            match letter {
-                "V" => QuantityKind::KinematicTorsor { motion, point },
-                "C" => QuantityKind::KineticTorsor { motion, point },
-                "D" => QuantityKind::DynamicTorsor { motion, point },
-                _ => return Err(err("torsors are {V(..)}, {C(..)} and {D(..)}")),
+            if letter == "T" {
+                let action = action(args).map_err(|r| err(&r))?;
+                QuantityKind::ActionTorsor { action, point }
+            } else {
+                let motion = motion(args).map_err(|r| err(&r))?;
+                match letter {
+                    "V" => QuantityKind::KinematicTorsor { motion, point },
+                    "C" => QuantityKind::KineticTorsor { motion, point },
+                    "D" => QuantityKind::DynamicTorsor { motion, point },
+                    _ => return Err(err("torsors are {V(..)}, {C(..)}, {D(..)} and {T(..)}")),
+                }
             }
         } else {
             let (name, args) = call(&core).ok_or_else(|| err("expected name(arguments)"))?;
@@ -179,6 +215,17 @@ impl Quantity {
                     }
                 }
                 "Ec" => QuantityKind::KineticEnergy(motion(args).map_err(|r| err(&r))?),
+                "R" => QuantityKind::ActionResultant(action(args).map_err(|r| err(&r))?),
+                "M" => {
+                    let (p, a) = args
+                        .split_once(',')
+                        .ok_or_else(|| err("a moment of an action is written M(A,from->on)"))?;
+                    check_name(p).map_err(|r| err(&r))?;
+                    QuantityKind::ActionMoment {
+                        point: p.to_string(),
+                        action: action(a).map_err(|r| err(&r))?,
+                    }
+                }
                 "eom" => {
                     crate::expr::check_identifier(args).map_err(|r| err(&r))?;
                     QuantityKind::Eom(args.to_string())
@@ -197,8 +244,8 @@ impl Quantity {
                 other => {
                     return Err(err(&format!(
                         "unknown quantity `{other}` (known: Omega, V, Gamma, I, Rc, sigma, Rd, \
-                         delta, Ec, eom, {{V(..)}}_A, {{C(..)}}_A, {{D(..)}}_A, or the name \
-                         of an unknown)"
+                         delta, Ec, eom, R, M, {{V(..)}}_A, {{C(..)}}_A, {{D(..)}}_A, \
+                         {{T(..)}}_A, or the name of an unknown)"
                     )));
                 }
             }
@@ -242,6 +289,16 @@ impl Quantity {
 }
 
 impl QuantityKind {
+    /// The action involved, if any.
+    pub fn action(&self) -> Option<&ActionRef> {
+        match self {
+            QuantityKind::ActionResultant(a)
+            | QuantityKind::ActionMoment { action: a, .. }
+            | QuantityKind::ActionTorsor { action: a, .. } => Some(a),
+            _ => None,
+        }
+    }
+
     /// Whether this is a whole torsor.
     pub fn is_torsor(&self) -> bool {
         matches!(
@@ -249,6 +306,7 @@ impl QuantityKind {
             QuantityKind::KinematicTorsor { .. }
                 | QuantityKind::KineticTorsor { .. }
                 | QuantityKind::DynamicTorsor { .. }
+                | QuantityKind::ActionTorsor { .. }
         )
     }
 
@@ -273,7 +331,12 @@ impl QuantityKind {
             | KineticTorsor { motion, .. }
             | DynamicTorsor { motion, .. } => Some(motion),
             KineticEnergy(m) => Some(m),
-            Inertia { .. } | Unknown(_) | Eom(_) => None,
+            Inertia { .. }
+            | Unknown(_)
+            | Eom(_)
+            | ActionResultant(_)
+            | ActionMoment { .. }
+            | ActionTorsor { .. } => None,
         }
     }
 }
@@ -296,6 +359,9 @@ impl fmt::Display for QuantityKind {
             KineticEnergy(m) => write!(f, "Ec({m})"),
             Unknown(name) => write!(f, "{name}"),
             Eom(q) => write!(f, "eom({q})"),
+            ActionResultant(a) => write!(f, "R({a})"),
+            ActionMoment { point, action } => write!(f, "M({point},{action})"),
+            ActionTorsor { action, point } => write!(f, "{{T({action})}}_{point}"),
         }
     }
 }
@@ -339,6 +405,18 @@ fn motion(s: &str) -> Result<Motion, String> {
     Ok(Motion {
         moving: a.to_string(),
         reference: b.to_string(),
+    })
+}
+
+fn action(s: &str) -> Result<ActionRef, String> {
+    let (a, b) = s
+        .split_once("->")
+        .ok_or_else(|| format!("expected an action from->on, got `{s}`"))?;
+    check_name(a)?;
+    check_name(b)?;
+    Ok(ActionRef {
+        from: a.to_string(),
+        on: b.to_string(),
     })
 }
 

@@ -454,12 +454,19 @@ fn run_eval(a: EvalArgs, emit: &mut Emit) -> Result<(), Failure> {
     let values = output::Values::parse(&text).map_err(bad_input)?;
     let qs = quantities(&m, &qs)?;
     let ds = values_only(&m, &qs)?;
+    // An action holds its links' unknowns: those without a value are solved for.
+    let solved = ds
+        .iter()
+        .map(|d| output::solve_unknowns(&m, &d.value, &values))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(bad_input)?;
     // Only the parameters and coordinates the results hold are demanded.
-    let exprs: Vec<&torseur::expr::Expr> = ds.iter().flat_map(|d| d.value.exprs()).collect();
+    let exprs: Vec<&torseur::expr::Expr> = solved.iter().flat_map(|v| v.exprs()).collect();
     let point = output::numeric_point_for(&m, &values, &exprs).map_err(bad_input)?;
     let items: Vec<serde_json::Value> = ds
         .iter()
-        .map(|d| output::eval_value(&m, &d.quantity.to_string(), &d.value, &point))
+        .zip(&solved)
+        .map(|(d, v)| output::eval_value(&m, &d.quantity.to_string(), v, &point))
         .collect();
     let j = serde_json::json!({ "quantities": items });
     emit(&(serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n"))

@@ -48,7 +48,7 @@ fn solid_text(n: &str) -> String {
 
 /// The line of an action in the bilan of the external actions (free text for
 /// [`crate::latex::rich_text`]).
-fn bilan_line(a: &Action) -> String {
+pub(super) fn bilan_line(a: &Action) -> String {
     let (from, on) = (solid_text(&a.from_label), solid_text(&a.on_label));
     if a.from_label == "pes" {
         format!("pesanteur sur {on}")

@@ -11,6 +11,7 @@ use crate::quantity::{Motion, Quantity, QuantityKind};
 use crate::torsor::{self, Torsor};
 use crate::vector::Vector;
 
+mod actions;
 mod dynamics;
 pub use dynamics::Shared;
 
@@ -140,6 +141,11 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
         }
         KineticResultant(mo) | DynamicResultant(mo) | KineticEnergy(mo) => kinetic(mo, &mut r)?,
         Unknown(_) | Eom(_) => {}
+        ActionResultant(a) => r.solids = solids(&a.on)?,
+        ActionMoment { point: p, action } | ActionTorsor { action, point: p } => {
+            r.point = Some(point(p)?);
+            r.solids = solids(&action.on)?;
+        }
         KineticMoment { point: p, motion }
         | DynamicMoment { point: p, motion }
         | KineticTorsor { motion, point: p }
@@ -147,6 +153,11 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             r.point = Some(point(p)?);
             kinetic(motion, &mut r)?;
         }
+    }
+    // The action must be in the bilan of what it acts on.
+    if let Some(a) = q.kind.action() {
+        crate::pfd::actions_of(m, &a.from, &r.solids, &a.on)
+            .map_err(|e| ResolveError::new(q, e))?;
     }
     if let Some(b) = &q.basis {
         r.basis = m
@@ -350,6 +361,17 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
         }
         Omega(_) => {
             vector = Some(omega(m, r.moving_frame.unwrap_or(reference), reference));
+        }
+        ActionResultant(action) | ActionMoment { action, .. } | ActionTorsor { action, .. } => {
+            let t = actions::total(m, q, action, &r, &mut steps)?;
+            match &q.kind {
+                ActionResultant(_) => vector = Some(t.resultant),
+                ActionMoment { .. } => vector = Some(t.moment),
+                _ => {
+                    vector = None;
+                    value = Some(torsor_value(m, &t, b));
+                }
+            }
         }
         Velocity { .. } => {
             let p = r.point.unwrap_or(m.points.origin());

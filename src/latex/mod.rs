@@ -12,6 +12,7 @@ mod expr;
 mod figures;
 mod hypotheses;
 mod method;
+mod omega;
 mod routes;
 mod simulation;
 mod text;
@@ -27,7 +28,7 @@ pub use text::{RichTextError, rich_text, rich_text_or_escaped};
 use crate::derivation::Value;
 use crate::expr::Expr;
 use crate::mechanism::Mechanism;
-use crate::quantity::{Motion, QuantityKind};
+use crate::quantity::{ActionRef, Motion, QuantityKind};
 use std::fmt::Write as _;
 
 const GREEK: &[&str] = &[
@@ -201,6 +202,28 @@ pub fn basis(n: &str) -> String {
     format!("\\mathcal{{B}}_{{{}}}", escape_ident(n))
 }
 
+/// A solid number as is, a name (`pes`, `moteur`) upright.
+pub(crate) fn action_side(n: &str) -> String {
+    if n.chars().all(|c| c.is_ascii_digit()) {
+        n.to_string()
+    } else if n.len() == 1 {
+        name(n)
+    } else {
+        format!("\\mathrm{{{}}}", n.replace('_', "\\_"))
+    }
+}
+
+/// An action `from \rightarrow on`, the exterior of `on` written \bar{on}.
+fn action(a: &ActionRef) -> String {
+    let on = action_side(&a.on);
+    let from = if a.from == "ext" {
+        format!("\\bar{{{on}}}")
+    } else {
+        action_side(&a.from)
+    };
+    format!("{from} \\rightarrow {on}")
+}
+
 fn motion(m: &Motion) -> String {
     format!("{}/{}", escape_ident(&m.moving), escape_ident(&m.reference))
 }
@@ -211,6 +234,19 @@ pub fn quantity(k: &QuantityKind) -> String {
     let arrow = |s: String| format!("\\overrightarrow{{{s}}}");
     match k {
         Omega(mo) => arrow(format!("\\Omega({})", motion(mo))),
+        ActionResultant(a) => arrow(format!("R({})", action(a))),
+        ActionMoment {
+            point: p,
+            action: a,
+        } => arrow(format!("M({},{})", point(p), action(a))),
+        ActionTorsor {
+            action: a,
+            point: p,
+        } => format!(
+            "\\left\\{{\\mathcal{{T}}({})\\right\\}}_{{{}}}",
+            action(a),
+            point(p)
+        ),
         Velocity {
             point: p,
             motion: mo,

@@ -4,7 +4,8 @@
 //! engine's value exactly.
 
 use super::document::{DisplayRole, Doc};
-use super::method::{mass_of, omega_of, omega_sentence, shown_value, solid};
+use super::method::{mass_of, shown_value, solid};
+use super::omega::{omega_of, omega_sentence};
 use super::{basis_vector, frame, point, quantity};
 use crate::derivation::{Derivation, Value, derive};
 use crate::frame::FrameId;

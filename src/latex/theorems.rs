@@ -1,8 +1,9 @@
 //! The PFD in the answer key: the bilan of the external actions once per isolated system, each
 //! theorem as its two sides, then the unknown or the equation of motion, boxed.
 
+use super::action_side;
 use super::document::{DisplayRole, Doc};
-use super::method::{action_side, shown_value, solid, step_lhs};
+use super::method::{shown_value, solid, step_lhs};
 use super::{basis_vector, name, point, quantity};
 use crate::derivation::{Derivation, StepKind, Value};
 use crate::quantity::QuantityKind;
@@ -59,16 +60,27 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                 // Each action's line and torsor, side by side when they are short.
                 let mut cells = Vec::new();
                 let mut widths = Vec::new();
+                // Actions already shown (asked as quantities above) are cited, not repeated.
+                let mut by_place: Vec<(String, Vec<String>)> = Vec::new();
                 for s in &steps[start..k] {
-                    // « Liaison pivot d'axe (O1, z0), action de S0 sur S1 », capitalised.
-                    let text = bilan_text(doc, s);
-                    let mut cs = text.chars();
-                    let text = match cs.next() {
-                        Some(c) => c.to_uppercase().chain(cs).collect::<String>(),
-                        None => text,
-                    };
+                    let lhs = step_lhs(&s.kind);
+                    if let Some(place) = doc.cited(&lhs, &shown_value(doc, &s.value)) {
+                        match by_place.iter_mut().find(|(p, _)| *p == place) {
+                            Some((_, v)) => v.push(lhs),
+                            None => by_place.push((place, vec![lhs])),
+                        }
+                    }
+                }
+                if !by_place.is_empty() {
+                    let _ = writeln!(doc.o, "{}", super::method::citation(&by_place));
+                }
+                for s in &steps[start..k] {
+                    let text = action_line(m, s);
                     let v = shown_value(doc, &s.value);
                     let lhs = step_lhs(&s.kind);
+                    if doc.cited(&lhs, &v).is_some() {
+                        continue;
+                    }
                     cells.push(doc.capture(|doc| {
                         let _ = writeln!(doc.o, "{text} :");
                         doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
@@ -227,8 +239,7 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
 /// geometry (« liaison pivot d'axe $(O_1, \vec{z}_0)$, action de $S_0$ sur $S_1$ »); other
 /// actions keep the derivation's wording (« pesanteur sur $S_1$ », « le moteur, action sur
 /// $S_1$ »).
-fn bilan_text(doc: &Doc, s: &crate::derivation::Step) -> String {
-    let m = doc.m;
+fn bilan_text(m: &crate::mechanism::Mechanism, s: &crate::derivation::Step) -> String {
     if let StepKind::Action { from, on, .. } = &s.kind {
         let between = |l: &&crate::wire::LinkSpec| {
             (l.between[0] == *from && l.between[1] == *on)
@@ -245,6 +256,17 @@ fn bilan_text(doc: &Doc, s: &crate::derivation::Step) -> String {
         }
     }
     super::rich_text_or_escaped(&s.theorem)
+}
+
+/// The bilan's line for an action, capitalised: « Liaison pivot d'axe $(O_1, \vec{z}_0)$,
+/// action de $S_0$ sur $S_1$ ».
+pub(super) fn action_line(m: &crate::mechanism::Mechanism, s: &crate::derivation::Step) -> String {
+    let text = bilan_text(m, s);
+    let mut cs = text.chars();
+    match cs.next() {
+        Some(c) => c.to_uppercase().chain(cs).collect::<String>(),
+        None => text,
+    }
 }
 
 /// F with dF/dt = e exactly, when e = 0 is a first integral in disguise: F = Σ (coefficient
@@ -269,4 +291,64 @@ fn first_integral(e: &crate::expr::Expr) -> Option<crate::expr::Expr> {
 fn split_equation(e: &crate::expr::Expr) -> (crate::expr::Expr, crate::expr::Expr) {
     let (with, without) = e.split_by_rates();
     (with, -without)
+}
+
+/// The method of an action asked as a quantity (R(0→1), M(A, ext→E)·z0): the sum of the
+/// actions of the bilan cited above, each reduced at the point asked. None when there is
+/// nothing to say (one action, asked where it is given).
+pub(super) fn action_sentence(d: &Derivation) -> Option<String> {
+    let at = match &d.quantity.kind {
+        QuantityKind::ActionResultant(_) => None,
+        QuantityKind::ActionMoment { point, .. } | QuantityKind::ActionTorsor { point, .. } => {
+            Some(point.as_str())
+        }
+        _ => return None,
+    };
+    let points: Vec<&str> = d
+        .steps
+        .iter()
+        .filter_map(|s| match &s.kind {
+            StepKind::Action { point, .. } => Some(point.as_str()),
+            _ => None,
+        })
+        .collect();
+    let many = points.len() > 1;
+    let mut moved: Vec<String> = Vec::new();
+    if let Some(a) = at {
+        for p in &points {
+            let p = super::point(p);
+            if *p != *super::point(a) && !moved.contains(&p) {
+                moved.push(p);
+            }
+        }
+    }
+    let sum = if many {
+        ", puis on somme les actions"
+    } else {
+        ""
+    };
+    match (at, moved.as_slice()) {
+        (Some(a), [_, ..]) => {
+            let a = point(a);
+            let list = moved
+                .iter()
+                .map(|p| format!("${p}$"))
+                .collect::<Vec<_>>()
+                .join(", ");
+            Some(if many {
+                format!(
+                    "Chaque action est réduite en ${a}$ par $\\vec{{M}}({a}) = \\vec{{M}}(P) + \
+                     \\overrightarrow{{{a}P}}\\wedge\\vec{{R}}$ ($P$ = {list}){sum} :"
+                )
+            } else {
+                let p = &moved[0];
+                format!(
+                    "Changement de point, de ${p}$ à ${a}$ ($\\vec{{M}}({a}) = \\vec{{M}}({p}) + \
+                     \\overrightarrow{{{a}{p}}}\\wedge\\vec{{R}}$) :"
+                )
+            })
+        }
+        _ if many => Some("On somme les actions :".to_string()),
+        _ => None,
+    }
 }

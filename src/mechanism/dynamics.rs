@@ -37,6 +37,9 @@ pub struct Action {
     pub from_label: String,
     /// The solid that receives it, as written.
     pub on_label: String,
+    /// The solid or frame that exerts it, as the spec names it (`from_label` for a link;
+    /// for a given action, the solid its reaction acts on).
+    pub exerted_by: String,
     /// The solid that exerts it, if it is one.
     pub from: Source,
     /// The solid that receives it.

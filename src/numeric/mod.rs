@@ -322,13 +322,48 @@ impl NumericModel {
         sample: &Sample,
         default_basis: &str,
     ) -> Result<NumValue, NumericError> {
+        self.evaluate_with(q, sample, &BTreeMap::new(), default_basis)
+    }
+
+    /// [`NumericModel::evaluate`], the unknowns of the PFD taking the values `unknowns` gives:
+    /// an action of the bilan (`R(0->1)`, `M(A,ext->E).z0`, `{T(0->1)}_A`) holds the
+    /// unknowns of its links as they are, before the PFD is solved.
+    ///
+    /// ```
+    /// use torseur::numeric::{NumericModel, NumValue, Sample};
+    /// use torseur::quantity::Quantity;
+    /// let spec: torseur::spec::wire::SpecFile = serde_json::from_str(r#"{
+    ///   "title": "arm", "ground_origin": "O",
+    ///   "parameters": [{"name": "L"}, {"name": "m"}, {"name": "g"}],
+    ///   "coordinates": [{"name": "t", "kind": "angle"}],
+    ///   "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}}],
+    ///   "points": [{"name": "G", "position": "L*x1"}],
+    ///   "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "G"}],
+    ///   "gravity": "-g*y0"}"#).unwrap();
+    /// let model = NumericModel::new(&spec).unwrap();
+    /// let s = Sample {
+    ///     parameters: [("L", 2.0), ("m", 3.0), ("g", 10.0)].map(|(n, v)| (n.to_string(), v)).into(),
+    ///     coordinates: [("t".to_string(), [0.0, 0.0, 0.0])].into(),
+    /// };
+    /// // The weight's moment at O about z0: (2 x0) ∧ (−30 y0) = −60 z0.
+    /// let q = Quantity::parse("M(O,pes->1).z0").unwrap();
+    /// let v = model.evaluate_with(&q, &s, &Default::default(), "0").unwrap();
+    /// assert!(matches!(v, NumValue::Scalar(x) if (x + 60.0).abs() < 1e-9));
+    /// ```
+    pub fn evaluate_with(
+        &self,
+        q: &Quantity,
+        sample: &Sample,
+        unknowns: &BTreeMap<String, f64>,
+        default_basis: &str,
+    ) -> Result<NumValue, NumericError> {
         if q.linear {
             return Err(NumericError::Quantity {
                 quantity: q.to_string(),
                 message: "the float backend computes full motions, not linearisations".into(),
             });
         }
-        quantities::evaluate(self, q, sample, default_basis)
+        quantities::evaluate(self, q, sample, unknowns, default_basis)
     }
 
     /// Draws a random physically valid sample, reproducible from the generator's state.

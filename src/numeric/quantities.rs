@@ -8,8 +8,9 @@ use super::kin::{State, Values, omega, point_motion, state, values};
 use super::la::{point_inertia, rows};
 use super::model::{Context, Names};
 use super::{NumValue, NumericError, NumericModel, Sample, cloud, dynamics};
-use crate::quantity::{Motion, Quantity, QuantityKind};
+use crate::quantity::{ActionRef, Motion, Quantity, QuantityKind};
 use nalgebra::{Matrix3, Vector3};
+use std::collections::BTreeMap;
 
 /// I(P, S) = Σ mₖ (|PPₖ|² Id − PPₖ PPₖᵀ), ground components.
 fn inertia(
@@ -42,6 +43,7 @@ pub(super) fn evaluate(
     m: &NumericModel,
     q: &Quantity,
     sample: &Sample,
+    unknowns: &BTreeMap<String, f64>,
     default_basis: &str,
 ) -> Result<NumValue, NumericError> {
     let vals = values(m, sample)?;
@@ -57,6 +59,12 @@ pub(super) fn evaluate(
         let solids = m.solids_of(&mo.moving)?;
         let j = m.body_frame(&mo.reference, q)?;
         kinetic(m, &st, &vals, &solids, j, a)
+    };
+    // The actions of `a.from` on `a.on`, at point p (the ground origin for a resultant).
+    type Parts = [Result<Vector3<f64>, NumericError>; 2];
+    let action = |a: &ActionRef, p: usize| -> Result<Parts, NumericError> {
+        let solids = m.solids_of(&a.on)?;
+        dynamics::action(m, &st, &vals, &a.from, &solids, &a.on, p, unknowns)
     };
     use QuantityKind as K;
     let raw = match &q.kind {
@@ -101,6 +109,18 @@ pub(super) fn evaluate(
         }
         K::Unknown(name) => Raw::Scalar(dynamics::unknown(m, &st, &vals, name)?),
         K::Eom(c) => Raw::Scalar(dynamics::eom(m, &st, &vals, c)?),
+        K::ActionResultant(a) => {
+            let [r, _] = action(a, 0)?;
+            Raw::Vector(r?)
+        }
+        K::ActionMoment { point, action: a } => {
+            let [_, mo] = action(a, m.point(point)?)?;
+            Raw::Vector(mo?)
+        }
+        K::ActionTorsor { action: a, point } => {
+            let [r, mo] = action(a, m.point(point)?)?;
+            Raw::Torsor(point.clone(), r?, mo?)
+        }
     };
     let not_finite = || NumericError::Quantity {
         quantity: q.to_string(),

@@ -7,7 +7,9 @@ use serde::Deserialize;
 use serde_json::{Value as Json, json};
 use std::collections::BTreeMap;
 
-/// A values file: `{"parameters": {"m2": 0.35}, "coordinates": {"theta1": [q, qdot, qddot]}}`.
+/// A values file: `{"parameters": {"m2": 0.35}, "coordinates": {"theta1": [q, qdot, qddot]}}`,
+/// and optionally `"unknowns": {"X01": 2.5}`: values for the unknowns of the PFD that an
+/// action of the bilan holds (those not given are solved for).
 #[derive(Debug, Clone, Deserialize, serde::Serialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct Values {
@@ -17,6 +19,9 @@ pub struct Values {
     /// Coordinate values [q, q̇, q̈].
     #[serde(default)]
     pub coordinates: BTreeMap<String, [f64; 3]>,
+    /// Values of unknowns of the PFD.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub unknowns: BTreeMap<String, f64>,
 }
 
 /// A values file that does not fit the mechanism.
@@ -40,6 +45,52 @@ impl Values {
         de.end().map_err(|e| ValuesError(e.to_string()))?;
         Ok(v)
     }
+}
+
+/// `v` with each unknown of the PFD it holds (an action of the bilan holds its links') that
+/// `values` gives no value for replaced by its solved value ([`crate::pfd::solve`]).
+///
+/// ```
+/// use torseur::output::{Values, solve_unknowns};
+/// use torseur::quantity::Quantity;
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let q = Quantity::parse("M(O1,ext->E).z0").unwrap();
+/// let v = torseur::derivation::derive(&m, &q).unwrap().value;
+/// let solved = solve_unknowns(&m, &v, &Values::default()).unwrap();
+/// let c_m = torseur::derivation::derive(&m, &Quantity::parse("C_m").unwrap()).unwrap().value;
+/// assert_eq!(solved.exprs(), c_m.exprs());
+/// // A value given is kept for evaluation.
+/// let given = Values::parse(r#"{"unknowns": {"C_m": 2}}"#).unwrap();
+/// assert_eq!(solve_unknowns(&m, &v, &given).unwrap().exprs(), v.exprs());
+/// ```
+pub fn solve_unknowns(m: &Mechanism, v: &Value, values: &Values) -> Result<Value, ValuesError> {
+    let held: Vec<(String, crate::expr::VarId)> = crate::pfd::unknown_vars(m)
+        .into_iter()
+        .filter(|(n, x)| {
+            !values.unknowns.contains_key(n) && v.exprs().iter().any(|e| e.contains_var(*x))
+        })
+        .collect();
+    if held.is_empty() {
+        return Ok(v.clone());
+    }
+    let names = || held.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
+    let solution = crate::pfd::solve(m).map_err(|e| {
+        ValuesError(format!(
+            "no value for {} (give it in \"unknowns\"): the PFD cannot be solved: {e}",
+            listed(&names())
+        ))
+    })?;
+    let mut out = v.clone();
+    for (n, x) in &held {
+        let value = solution.unknowns.get(n).ok_or_else(|| {
+            ValuesError(format!(
+                "no value for `{n}` (give it in \"unknowns\"): no equation of the spec's pfd \
+                 determines it"
+            ))
+        })?;
+        out = out.map(&|e| e.substitute(*x, value));
+    }
+    Ok(out)
 }
 
 /// The value of every polynomial variable of the mechanism at `values`, which must give
@@ -109,6 +160,11 @@ fn point_where(
             return Err(ValuesError(format!("unknown coordinate `{q}`")));
         }
     }
+    for u in values.unknowns.keys() {
+        if !reg.unknowns().contains(u) {
+            return Err(ValuesError(format!("`{u}` is not an unknown of the PFD")));
+        }
+    }
     let (mut missing_parameters, mut missing_coordinates) = (Vec::new(), Vec::new());
     let miss = |list: &mut Vec<String>, name: &str| {
         if !list.iter().any(|x| x == name) {
@@ -120,8 +176,12 @@ fn point_where(
     for i in reg.var_ids() {
         let v = match reg.role(i) {
             _ if !needed(i.index()) => f64::NAN,
-            // Solved values never contain an unknown.
-            VarRole::Parameter(k) if reg.is_unknown(k) => f64::NAN,
+            // Solved values never contain an unknown; an action of the bilan holds them as
+            // they are, and takes the values given.
+            VarRole::Parameter(k) if reg.is_unknown(k) => {
+                let name = reg.scalar_name(k);
+                values.unknowns.get(name).copied().unwrap_or(f64::NAN)
+            }
             VarRole::Parameter(k) => {
                 let name = reg.scalar_name(k);
                 match values.parameters.get(name) {

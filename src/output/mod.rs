@@ -3,7 +3,7 @@
 mod eval;
 
 pub use crate::atomic::write_atomic;
-pub use eval::{Values, ValuesError, eval_value, numeric_point, numeric_point_for};
+pub use eval::{Values, ValuesError, eval_value, numeric_point, numeric_point_for, solve_unknowns};
 
 use crate::derivation::{Derivation, Value};
 use crate::expr::Expr;

@@ -383,6 +383,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
         d.actions.push(Action {
             from_label: l.between[0].clone(),
             on_label: l.between[1].clone(),
+            exerted_by: l.between[0].clone(),
             from,
             on,
             point,
@@ -417,6 +418,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
         d.actions.push(Action {
             from_label: a.name.clone(),
             on_label: a.on.clone(),
+            exerted_by: a.from.clone(),
             from,
             on,
             point,

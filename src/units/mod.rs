@@ -339,7 +339,8 @@ impl ExpectedDimension {
 }
 
 /// The dimension of a quantity from its kind alone: Ω T⁻¹, V L T⁻¹, Γ L T⁻², I M L²,
-/// Rc M L T⁻¹, σ M L² T⁻¹, Rd M L T⁻² (N), δ M L² T⁻² (N·m), Ec M L² T⁻² (J); a torsor its
+/// Rc M L T⁻¹, σ M L² T⁻¹, Rd and R(from→on) M L T⁻² (N), δ and M(A, from→on) M L² T⁻²
+/// (N·m), Ec M L² T⁻² (J); a torsor its
 /// resultant's and moment's; an unknown of the PFD its own ([`Dimensions::of`]); eom(q) that
 /// of the theorem it comes from (a force for a resultant theorem, a moment for a moment
 /// theorem). A projection or `lin(...)` keeps the dimension.
@@ -367,7 +368,8 @@ pub fn expected_dimension(m: &Mechanism, dims: &Dimensions, q: &Quantity) -> Exp
         KineticResultant(_) => one(Dimension::MOMENTUM),
         KineticMoment { .. } => one(Dimension::ANGULAR_MOMENTUM),
         DynamicResultant(_) => one(Dimension::FORCE),
-        DynamicMoment { .. } => one(Dimension::MOMENT),
+        DynamicMoment { .. } | ActionMoment { .. } => one(Dimension::MOMENT),
+        ActionResultant(_) => one(Dimension::FORCE),
         KineticEnergy(_) => one(Dimension::ENERGY),
         KinematicTorsor { .. } => Torsor {
             resultant: Dimension::ANGULAR_VELOCITY,
@@ -377,7 +379,7 @@ pub fn expected_dimension(m: &Mechanism, dims: &Dimensions, q: &Quantity) -> Exp
             resultant: Dimension::MOMENTUM,
             moment: Dimension::ANGULAR_MOMENTUM,
         },
-        DynamicTorsor { .. } => Torsor {
+        DynamicTorsor { .. } | ActionTorsor { .. } => Torsor {
             resultant: Dimension::FORCE,
             moment: Dimension::MOMENT,
         },

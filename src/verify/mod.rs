@@ -405,6 +405,11 @@ fn sides(text: &str) -> Result<Option<(&str, &str)>, VerifyError> {
 /// // The motor torque is the dynamic moment of E at O1 on z0 (no other action has a moment
 /// // on z0 there): a value written with a quantity.
 /// assert!(verify(&m, "C_m", "delta(O1,E/0).z0", None).unwrap().is_equivalent());
+/// // An action of the bilan, its links' unknowns as declared: the weight's moment at O1.
+/// let w = "-m2*g*(L1 + L2*cos(theta2))*x1";
+/// assert!(verify(&m, "M(O1,pes->E)", w, None).unwrap().is_equivalent());
+/// assert!(verify(&m, "R(0->1)", "X01*x0 + Y01*y0 + Z01*z0", None).unwrap().is_equivalent());
+/// assert!(!verify(&m, "R(0->1)", "X01*x0 + Y01*y0", None).unwrap().is_equivalent());
 /// ```
 pub fn verify(
     m: &Mechanism,
@@ -429,6 +434,8 @@ pub fn verify(
         derived = derived.under(h);
     }
     let mut reader = Reader::new(m, h);
+    // An action of the bilan holds its links' unknowns as declared: so does the text.
+    reader.keep_unknowns = q.kind.action().is_some();
     let given = parse_shaped(&mut reader, &derived, text)?;
     let difference = given
         .iter()

@@ -16,6 +16,9 @@ pub(super) struct Reader<'a> {
     pub(super) substituted: Vec<String>,
     /// Bare names met (outside quantities), for `-q Q` with Q an unknown.
     pub(super) names: Vec<String>,
+    /// Unknowns kept as they are (an action of the bilan is compared as declared, its links'
+    /// unknowns unsolved).
+    pub(super) keep_unknowns: bool,
 }
 
 /// The functions of the expression syntax; any other `name(` starts a quantity.
@@ -30,6 +33,7 @@ impl<'a> Reader<'a> {
             quantities: Vec::new(),
             substituted: Vec::new(),
             names: Vec::new(),
+            keep_unknowns: false,
         }
     }
 
@@ -221,6 +225,9 @@ impl<'a> Reader<'a> {
         let reg = self.m.reg.clone();
         // Unknowns of the PFD: their solved values.
         for v in reg.var_ids() {
+            if self.keep_unknowns {
+                break;
+            }
             let VarRole::Parameter(k) = reg.role(v) else {
                 continue;
             };

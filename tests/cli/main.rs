@@ -1095,3 +1095,62 @@ fn a_long_derived_result_is_read_back_from_a_file() {
     assert!(stderr(&v).contains("16777216"), "{}", stderr(&v));
     assert!(stderr(&v).len() < 2000);
 }
+
+#[test]
+fn eval_solves_the_unknowns_an_action_holds_or_takes_them_given() {
+    let d = tmp();
+    let at = d.path().join("values.json");
+    let values = |unknowns: &str| {
+        format!(
+            r#"{{"parameters":{{"h1":0.1,"d1":0.2,"L1":0.3,"L2":0.5,"m1":1,"m2":2,
+            "A1":1,"B1":1.5,"C1":2,"A2":1,"B2":1.2,"C2":0.7,"D2":0.1,"E2":0.05,"F2":-0.02,
+            "g":9.81,"f":0.05}},
+            "coordinates":{{"theta1":[0.4,1.3,0.2],"theta2":[0.6,-0.4,0.9]}}{unknowns}}}"#
+        )
+    };
+    std::fs::write(&at, values("")).unwrap();
+    let spec = spec();
+    let eval = |qs: &[&str]| {
+        let mut args = vec!["eval", spec.to_str().unwrap(), "--at", at.to_str().unwrap()];
+        for q in qs {
+            args.extend(["-q", q]);
+        }
+        run(&args)
+    };
+    // The moment theorem on E at O1 on z0: the exterior actions' moment is the motor torque,
+    // which the PFD solves for.
+    let o = eval(&["M(O1,ext->E).z0", "C_m"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let (a, b) = (
+        v["quantities"][0]["value"].as_f64().unwrap(),
+        v["quantities"][1]["value"].as_f64().unwrap(),
+    );
+    assert!(
+        (a - b).abs() <= 1e-12 * b.abs().max(1.0) && b != 0.0,
+        "{a} {b}"
+    );
+    // X01 is determined by no equation: exit 2, named, nothing on stdout.
+    let o = eval(&["R(0->1)"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stdout(&o).is_empty());
+    assert!(stderr(&o).contains("no value for `X01`"), "{}", stderr(&o));
+    // Given, it is used as is.
+    std::fs::write(&at, values(r#","unknowns":{"X01":1,"Y01":2,"Z01":3}"#)).unwrap();
+    let o = eval(&["R(0->1) in B0"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(
+        v["quantities"][0]["value"],
+        serde_json::json!([1.0, 2.0, 3.0])
+    );
+    // A name that is not an unknown of the PFD.
+    std::fs::write(&at, values(r#","unknowns":{"m1":1}"#)).unwrap();
+    let o = eval(&["C_m"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("`m1` is not an unknown of the PFD"),
+        "{}",
+        stderr(&o)
+    );
+}

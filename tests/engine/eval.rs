@@ -27,6 +27,7 @@ fn a_dynamic_moment_is_evaluated_without_g_and_f() {
         let mut values = Values {
             parameters: s.parameters.clone(),
             coordinates: s.coordinates.clone(),
+            ..Default::default()
         };
         values.parameters.remove("g");
         values.parameters.remove("f");

@@ -61,7 +61,7 @@ proptest! {
         let model = NumericModel::new(&m.spec).unwrap();
         let s = sample(&v);
         let exact = m.reg.parse(&e).unwrap();
-        let vals = torseur::output::Values { parameters: s.parameters.clone(), coordinates: s.coordinates.clone() };
+        let vals = torseur::output::Values { parameters: s.parameters.clone(), coordinates: s.coordinates.clone(), ..Default::default() };
         let point = torseur::output::numeric_point(&m, &vals).unwrap();
         let a = exact.eval(&point);
         let b = model.evaluate_expression(&e, &s).unwrap();

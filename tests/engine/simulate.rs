@@ -42,6 +42,7 @@ fn work_of_the_motor_equals_the_change_of_energy_without_friction() {
             &Values {
                 parameters: sc.values.clone(),
                 coordinates,
+                ..Default::default()
             },
         )
         .unwrap();

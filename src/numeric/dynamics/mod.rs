@@ -35,7 +35,7 @@ const APPEARS: f64 = 1e-9;
 const SINGULAR: f64 = 1e-10;
 
 mod solve;
-pub(super) use solve::{eom, unknown};
+pub(super) use solve::{action, eom, unknown};
 
 /// What exerts or receives an action: a solid, or a frame that is not a solid (the ground).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -63,6 +63,8 @@ pub(super) struct LinkInfo {
     kind: LinkKind,
     /// The action is that of `between[0]` on `between[1]`.
     between: [Body; 2],
+    /// Their names as the spec writes them.
+    names: [String; 2],
     point: usize,
     /// Frame whose basis holds the components.
     basis: usize,
@@ -79,6 +81,8 @@ pub(super) struct LinkInfo {
 /// A given action {T(from→on)} at a point.
 #[derive(Debug, Clone)]
 pub(super) struct ActionInfo {
+    /// Its name (`moteur`), the solid it acts on and the one that exerts it.
+    names: [String; 3],
     from: Body,
     on: Body,
     point: usize,
@@ -406,6 +410,7 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
         d.links.push(LinkInfo {
             kind,
             between,
+            names: l.between.clone(),
             point: p,
             basis,
             axis: axis.map(|x| x.1),
@@ -466,6 +471,7 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
             expr::unknowns_in(n, &mut used);
         }
         d.actions.push(ActionInfo {
+            names: [a.name.clone(), a.on.clone(), a.from.clone()],
             from,
             on,
             point: p,

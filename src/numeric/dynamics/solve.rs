@@ -52,6 +52,12 @@ impl Lin<Vector3<f64>> {
 /// An action torsor {T(from→on)} at a point (ground components and position).
 #[derive(Debug, Clone)]
 struct Term {
+    /// The source as the bilan writes it (a solid or frame, an action's name), and the
+    /// receiver's name.
+    names: [String; 2],
+    /// The same for its reaction: a link's two solids exchanged, a given action keeping its
+    /// name and acting on the solid that exerts it.
+    reaction_names: [String; 2],
     from: Body,
     on: Body,
     point: Vector3<f64>,
@@ -63,6 +69,8 @@ impl Term {
     /// {T(on→from)} = −{T(from→on)}.
     fn reaction(&self) -> Term {
         Term {
+            names: self.reaction_names.clone(),
+            reaction_names: self.names.clone(),
             from: self.on,
             on: self.from,
             point: self.point,
@@ -156,6 +164,8 @@ fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, Numer
             }
         }
         let t = Term {
+            names: l.names.clone(),
+            reaction_names: [l.names[1].clone(), l.names[0].clone()],
             from: l.between[0],
             on: l.between[1],
             point: st.pos0(l.point),
@@ -192,6 +202,8 @@ fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, Numer
         }
         let [resultant, moment] = parts;
         let t = Term {
+            names: [a.names[0].clone(), a.names[1].clone()],
+            reaction_names: [a.names[0].clone(), a.names[2].clone()],
             from: a.from,
             on: a.on,
             point: st.pos0(a.point),
@@ -258,6 +270,86 @@ fn residual(
     let mut r = actions.neg();
     r.c += dynamic.dot(&u);
     Ok((r, size))
+}
+
+/// The torsor at the point `p` of the actions `from` exerts on the solids `on` (named
+/// `on_name`): the declared actions a member receives from a non-member whose source is
+/// written `from`, gravity on every point mass for `pes`, all of them for `ext`. The
+/// unknowns take the values `unknowns` gives: the resultant or the moment is an error when
+/// it holds one that has none.
+#[allow(clippy::too_many_arguments)]
+pub(in crate::numeric) fn action(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    from: &str,
+    on: &[usize],
+    on_name: &str,
+    p: usize,
+    unknowns: &BTreeMap<String, f64>,
+) -> Result<[Result<Vector3<f64>, NumericError>; 2], NumericError> {
+    let member = |b: Body| matches!(b, Body::Solid(s) if on.contains(&s));
+    let at = st.pos0(p);
+    let dy = &m.dynamics;
+    let u: Vec<f64> = dy
+        .unknowns
+        .iter()
+        .map(|n| unknowns.get(n).copied().unwrap_or(f64::NAN))
+        .collect();
+    let value = |l: &Lin<Vector3<f64>>| -> Result<Vector3<f64>, NumericError> {
+        let mut v = l.c;
+        for (k, a) in l.a.iter().enumerate() {
+            if *a == Vector3::zeros() {
+                continue;
+            }
+            if u[k].is_nan() {
+                return Err(NumericError::Quantity {
+                    quantity: format!("{from}->{on_name}"),
+                    message: format!("no value for the unknown `{}`", dy.unknowns[k]),
+                });
+            }
+            v += a * u[k];
+        }
+        Ok(v)
+    };
+    // The resultant and the moment, each an error when it holds an unknown without a value.
+    let mut sum = [Ok(Vector3::zeros()), Ok(Vector3::zeros())];
+    let mut add = |k: usize, v: Result<Vector3<f64>, NumericError>| {
+        sum[k] = match (std::mem::replace(&mut sum[k], Ok(Vector3::zeros())), v) {
+            (Ok(a), Ok(b)) => Ok(a + b),
+            (Err(e), _) | (_, Err(e)) => Err(e),
+        };
+    };
+    let mut found = false;
+    for t in terms(m, st, vals)? {
+        if !member(t.on) || member(t.from) || (from != "ext" && t.names[0] != from) {
+            continue;
+        }
+        let arm = t.point - at;
+        add(0, value(&t.resultant));
+        add(1, value(&t.moment));
+        add(1, value(&t.resultant).map(|r| arm.cross(&r)));
+        found = true;
+    }
+    let g = gravity(m, st, vals)?;
+    if (from == "pes" || from == "ext") && m.dynamics.gravity.is_some() {
+        for s in on {
+            let f = m.solids[*s].frame;
+            let (rf, of) = (st.rot0(f), st.origin(f).map(|x| x.re));
+            for (mk, local) in cloud::solid_cloud(m, st, vals, *s)? {
+                add(0, Ok(g * mk));
+                add(1, Ok((of + rf * local - at).cross(&(g * mk))));
+            }
+        }
+        found = true;
+    }
+    if !found {
+        return Err(NumericError::Quantity {
+            quantity: format!("{from}->{on_name}"),
+            message: format!("no action of `{from}` on `{on_name}`"),
+        });
+    }
+    Ok(sum)
 }
 
 /// The solved PFD at one sample.
