@@ -613,4 +613,19 @@ pub struct HypothesisSpec {
     /// Solids whose declared symmetries are applied to their inertia.
     #[serde(default)]
     pub symmetric_solids: Vec<String>,
+    /// Coordinates held fixed (an angle α constant): q̇ = q̈ = 0, q itself kept.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub fixed_coordinates: Vec<String>,
+    /// A relative equilibrium: each coordinate at a constant value (an angle coordinate at
+    /// `0` or at an angle parameter, `"theta2": "beta0"`; a length at an expression of the
+    /// parameters), with q̇ = q̈ = 0.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub equilibrium: BTreeMap<String, String>,
+    /// Rates given as parameters: q̇ = the expression (`"theta3": "omega3"`), q̈ = 0.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub rates: BTreeMap<String, String>,
+    /// Relations between parameters: the parameter replaced by an expression of the others
+    /// (`"A3": "C3"`).
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub relations: BTreeMap<String, String>,
 }

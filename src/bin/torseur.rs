@@ -212,15 +212,33 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         // Bad input is named by an excerpt of it; a mismatch report (exit 1) is kept whole.
         Err(f) if f.code == 2 => {
-            let message = format!("{:#}", f.error);
+            let message = error_text(&f.error);
             eprintln!("torseur: error: {}", torseur::excerpt::bounded(&message));
             ExitCode::from(2)
         }
         Err(f) => {
-            eprintln!("torseur: error: {:#}", f.error);
+            eprintln!("torseur: error: {}", error_text(&f.error));
             ExitCode::from(f.code)
         }
     }
+}
+
+/// An error and its causes, each said once: a cause whose text the message already holds
+/// (an error that prints its source, « float backend: X », with X as its source) is not
+/// repeated.
+fn error_text(e: &anyhow::Error) -> String {
+    let mut out = String::new();
+    for cause in e.chain() {
+        let text = cause.to_string();
+        if out.contains(&text) {
+            continue;
+        }
+        if !out.is_empty() {
+            out.push_str(": ");
+        }
+        out.push_str(&text);
+    }
+    out
 }
 
 fn redirect_stdout() -> Result<File> {

@@ -152,9 +152,12 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
             .iter()
             .map(|e| {
                 let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
-                let lx = m.reg.parse(l).map(|x| super::expr(&x)).unwrap_or_default();
-                let rx = m.reg.parse(r).map(|x| super::expr(&x)).unwrap_or_default();
-                format!("${lx} = {rx}$")
+                // An angle held at a value may have no variable of its own: its name.
+                let side = |t: &str| match m.reg.parse(t) {
+                    Ok(x) => super::expr(&x),
+                    Err(_) => name(t),
+                };
+                format!("${} = {}$", side(l), side(r))
             })
             .collect();
         let _ = writeln!(d.o, "Sous cette hypothèse : {}.\n", eff.join(", "));

@@ -242,6 +242,11 @@ struct SolidInfo {
 struct Hypothesis {
     symmetric_solids: Vec<usize>,
     constant_rates: Vec<usize>,
+    /// Coordinates whose motion is given: (coordinate, its value if held at one, q̇ if given
+    /// as an expression, else 0), and q̈ = 0.
+    motions: Vec<(usize, Option<expr::Node>, Option<expr::Node>)>,
+    /// Parameters set from the others.
+    relations: Vec<(usize, expr::Node)>,
 }
 
 /// A spec made numeric: built once, then evaluated at any number of samples.
@@ -387,11 +392,12 @@ impl NumericModel {
     /// assert_eq!(a, b);
     /// ```
     pub fn sample(&self, rng: &mut impl rand::Rng) -> Result<Sample, NumericError> {
-        sample::draw(self, rng, &[], &[])
+        sample::draw(self, rng, None)
     }
 
     /// Draws a random sample that satisfies the spec's hypothesis `name`: its symmetric solids
-    /// get clouds with the declared symmetries, its constant rates get q̈ = 0.
+    /// get clouds with the declared symmetries, its constant rates get q̈ = 0, its fixed
+    /// coordinates, equilibrium and given rates their values, its relations their parameters.
     ///
     /// ```
     /// use rand::SeedableRng;
@@ -414,7 +420,7 @@ impl NumericModel {
                 what: "hypothesis".into(),
                 name: hypothesis.into(),
             })?;
-        sample::draw(self, rng, &h.symmetric_solids, &h.constant_rates)
+        sample::draw(self, rng, Some(h))
     }
 
     /// Evaluates a scalar expression of the spec's syntax (parameters, coordinates, `dot(q)`,

@@ -561,12 +561,16 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
                 )
             })?);
         }
+        let (motions, relations) =
+            held_motions(spec, &names, &coord_index, &param_index, h, &path)?;
         if hypotheses
             .insert(
                 h.name.clone(),
                 Hypothesis {
                     symmetric_solids,
                     constant_rates,
+                    motions,
+                    relations,
                 },
             )
             .is_some()
@@ -630,4 +634,80 @@ pub(super) fn mark_positive(model: &mut NumericModel) {
     for i in positive {
         model.params[i].positive = true;
     }
+}
+
+/// A hypothesis' fixed coordinates, equilibrium, given rates and relations, resolved:
+/// (coordinate, value, rate) and (parameter, expression).
+#[allow(clippy::type_complexity)]
+fn held_motions(
+    spec: &SpecFile,
+    names: &Names,
+    coord_index: &BTreeMap<String, usize>,
+    param_index: &BTreeMap<String, usize>,
+    h: &crate::wire::HypothesisSpec,
+    path: &str,
+) -> Result<(Vec<(usize, Option<Node>, Option<Node>)>, Vec<(usize, Node)>), NumericError> {
+    let mut motions: Vec<(usize, Option<Node>, Option<Node>)> = Vec::new();
+    let coord = |field: &str, c: &str, motions: &[(usize, Option<Node>, Option<Node>)]| {
+        let i = *coord_index
+            .get(c)
+            .ok_or_else(|| spec_err(field, format!("unknown coordinate `{c}`")))?;
+        if spec.coordinates[i].rate.is_some() {
+            return Err(spec_err(
+                field,
+                format!("`{c}` has an imposed rate already"),
+            ));
+        }
+        if motions.iter().any(|(j, _, _)| *j == i) {
+            return Err(spec_err(field, format!("`{c}` is given two motions")));
+        }
+        Ok(i)
+    };
+    let constant = |field: &str, text: &str| {
+        names
+            .parse(text, Context::Constant)
+            .map_err(|m| spec_err(field, m))
+    };
+    for (k, c) in h.fixed_coordinates.iter().enumerate() {
+        let i = coord(&format!("{path}.fixed_coordinates[{k}]"), c, &motions)?;
+        motions.push((i, None, None));
+    }
+    for (c, text) in &h.equilibrium {
+        let field = format!("{path}.equilibrium.{c}");
+        let i = coord(&field, c, &motions)?;
+        let t = text.trim();
+        if spec.coordinates[i].kind == CoordinateKind::Angle
+            && t != "0"
+            && !spec
+                .parameters
+                .iter()
+                .any(|p| p.name == t && p.kind == ParameterKind::Angle)
+        {
+            return Err(spec_err(
+                &field,
+                format!("an angle is held at 0 or at a parameter of kind angle, not at `{t}`"),
+            ));
+        }
+        motions.push((i, Some(constant(&field, t)?), None));
+    }
+    for (c, text) in &h.rates {
+        let field = format!("{path}.rates.{c}");
+        let i = coord(&field, c, &motions)?;
+        motions.push((i, None, Some(constant(&field, text)?)));
+    }
+    let mut relations = Vec::new();
+    for (p, text) in &h.relations {
+        let field = format!("{path}.relations.{p}");
+        let i = *param_index
+            .get(p)
+            .ok_or_else(|| spec_err(&field, format!("unknown parameter `{p}`")))?;
+        let node = constant(&field, text)?;
+        let mut used = std::collections::BTreeSet::new();
+        expr::params_in(&node, &mut used);
+        if used.contains(&i) {
+            return Err(spec_err(&field, format!("`{p}` is defined by itself")));
+        }
+        relations.push((i, node));
+    }
+    Ok((motions, relations))
 }

@@ -3,7 +3,7 @@
 use super::cloud::{cloud_inertia, solid_cloud};
 use super::expr::{self, Node};
 use super::kin::{Values, state};
-use super::{NumericError, NumericModel, Sample};
+use super::{Hypothesis, NumericError, NumericModel, Sample};
 use crate::wire::CoordinateKind;
 use nalgebra::{Matrix3, Vector3};
 use rand::Rng;
@@ -224,10 +224,18 @@ fn fit(pattern: &[[Entry; 3]; 3], mat: &Matrix3<f64>) -> Option<BTreeMap<usize, 
 pub(super) fn draw(
     m: &NumericModel,
     rng: &mut impl Rng,
-    symmetric: &[usize],
-    constant_rates: &[usize],
+    hypothesis: Option<&Hypothesis>,
 ) -> Result<Sample, NumericError> {
     let fail = |msg: String| NumericError::Sampling(msg);
+    let (symmetric, constant_rates, motions, relations) = match hypothesis {
+        Some(h) => (
+            &h.symmetric_solids[..],
+            &h.constant_rates[..],
+            &h.motions[..],
+            &h.relations[..],
+        ),
+        None => (&[][..], &[][..], &[][..], &[][..]),
+    };
     // Entries written `P` or `-P` are read off a random body; the parameter must then appear
     // nowhere else. `elsewhere` says where each other parameter is first used.
     let mut elsewhere: BTreeMap<usize, String> = BTreeMap::new();
@@ -321,6 +329,28 @@ pub(super) fn draw(
             };
         }
     }
+    // Relations: a parameter set from the others (repeated, for a chain A = B, B = C). An
+    // inertia entry read off a random body cannot be set so.
+    for (p, node) in relations {
+        let mut used = BTreeSet::new();
+        expr::params_in(node, &mut used);
+        if let Some(q) = std::iter::once(p)
+            .chain(&used)
+            .find(|q| from_cloud.contains_key(q))
+        {
+            return Err(fail(format!(
+                "the relation on `{}` involves `{}`, an inertia entry read off a random body: \
+                 declare the solid's symmetry instead",
+                m.params[*p].name, m.params[*q].name
+            )));
+        }
+    }
+    for _ in 0..relations.len() {
+        for (p, node) in relations {
+            vals.params[*p] = expr::eval_scalar(node, &vals.constants())
+                .map_err(|e| fail(format!("relation on `{}`: {e}", m.params[*p].name)))?;
+        }
+    }
     for (i, c) in m.coords.iter().enumerate() {
         let q = match c.kind {
             CoordinateKind::Angle => rng.random_range(-std::f64::consts::PI..=std::f64::consts::PI),
@@ -334,6 +364,21 @@ pub(super) fn draw(
             qdd = 0.0;
         }
         if constant_rates.contains(&i) {
+            qdd = 0.0;
+        }
+        let mut q = q;
+        if let Some((_, value, rate)) = motions.iter().find(|(j, _, _)| *j == i) {
+            let at = |node: &Node| {
+                expr::eval_scalar(node, &vals.constants())
+                    .map_err(|e| fail(format!("the motion of `{}`: {e}", c.name)))
+            };
+            if let Some(v) = value {
+                q = at(v)?;
+            }
+            qd = match rate {
+                Some(r) => at(r)?,
+                None => 0.0,
+            };
             qdd = 0.0;
         }
         vals.coords.push([q, qd, qdd]);

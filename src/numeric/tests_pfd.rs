@@ -352,19 +352,20 @@ fn reactions_and_internal_actions() {
 
 // ------------------------------------------------------------- a slider on a turning arm
 
-/// A point mass of solid 2 slides along the arm x1 (a frame, not a solid) turning about z0.
+/// A point mass of solid 2 slides along the arm 1 (a point mass on the axis) turning about z0.
 fn arm_slider() -> Value {
     json!({
         "title": "slider on an arm",
         "parameters": [{"name": "m", "unit": "kg"}, {"name": "g"}, {"name": "f"},
-            {"name": "k"}, {"name": "r0", "unit": "m"}],
+            {"name": "k"}, {"name": "r0", "unit": "m"}, {"name": "m1", "unit": "kg"}],
         "coordinates": [{"name": "theta", "kind": "angle"}, {"name": "r", "kind": "length"}],
         "frames": [
             {"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "theta"}},
             {"name": "2", "parent": "1", "origin": "P"}
         ],
         "points": [{"name": "P", "position": "r*x1"}],
-        "solids": [{"name": "2", "frame": "2", "mass": "m", "centre": "P"}],
+        "solids": [{"name": "1", "frame": "1", "mass": "m1", "centre": "O0"},
+            {"name": "2", "frame": "2", "mass": "m", "centre": "P"}],
         "gravity": "-g*z0",
         "links": [{"name": "12", "kind": "slider", "between": ["1", "2"], "point": "P",
             "axis": "x1", "friction": "f",
@@ -393,7 +394,14 @@ fn slider_unknowns_and_equation_of_motion_by_hand() {
         ([-2.0, -0.5, 1.5], [0.6, -1.3, 0.8]),
     ] {
         let s = sample(
-            &[("m", mass), ("g", g), ("f", f), ("k", k), ("r0", r0)],
+            &[
+                ("m", mass),
+                ("g", g),
+                ("f", f),
+                ("k", k),
+                ("r0", r0),
+                ("m1", 3.0),
+            ],
             &[("theta", t), ("r", r)],
         );
         // Γ(P/0) = (r̈ − r θ̇²) x1 + (r θ̈ + 2 ṙ θ̇) y1.
@@ -432,8 +440,10 @@ fn link_kinds_transmit_their_components() {
     };
     let spec = json!({
         "title": "links",
+        "parameters": [{"name": "m1", "unit": "kg"}],
         "frames": [{"name": "1", "parent": "0"}],
         "points": [{"name": "O", "position": "0"}],
+        "solids": [{"name": "1", "frame": "1", "mass": "m1", "centre": "O"}],
         "links": [
             link("a", "fixed", None, None),
             link("b", "pivot", Some("z0"), None),

@@ -508,6 +508,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                 }
             }
         }
+        super::hypotheses::motions(&reg, h, &path, &mut subs, &mut effects)?;
         hypotheses.push(Hypothesis {
             name: h.name.clone(),
             text: h.text.clone(),

@@ -95,7 +95,8 @@ impl<'a> Reader<'a> {
             let c: [Expr; 3] = done.try_into().expect("three components");
             v.add_part(f, c);
         }
-        Ok(v.express_in(&m.frames, b))
+        // The change of basis holds the angles too: under the hypothesis as well.
+        Ok(v.express_in(&m.frames, b).map(|e| self.under(e)))
     }
 
     /// The text with every quantity replaced by a placeholder name, and the placeholders'

@@ -462,6 +462,38 @@ fn winch_whose_load_rises_by_r_theta_by_hand() {
 }
 
 #[test]
+fn pendulum_on_a_turning_shaft_and_its_relative_equilibrium_by_hand() {
+    // Ω(2/0) = ω z1 + θ̇ x1, z1 = sin θ y2 + cos θ z2. O is fixed on the axis; with
+    // OG = −a z2, I_O(2) = diag(A + m a², A + m a², C) in B2 (Huygens), so
+    // σ(O,2/0) = A' θ̇ x2 + A' ω sin θ y2 + C ω cos θ z2 (A' = A + m a²) and
+    // δ(O,2/0)·x2 = A' θ̈ + (Ω ∧ σ)·x2 = A' θ̈ + (C − A') ω² sin θ cos θ. The weight:
+    // (−a z2) ∧ (−m g z1) = m g a z2 ∧ z1 = −m g a sin θ x1. The pivot (O, x1) transmits no
+    // moment on x1: A' θ̈ + (C − A') ω² sin θ cos θ + m g a sin θ = 0. At the relative
+    // equilibrium θ = β (θ̇ = θ̈ = 0): sin β [m g a − (A' − C) ω² cos β] = 0.
+    let m = problem!("pendule_arbre_tournant");
+    torseur::assert_equivalent!(m, "Omega(2/0) in B2", "dot(theta)*x2 + omega*z1");
+    torseur::assert_equivalent!(
+        m,
+        "delta(O,2/0).x1",
+        "(A + m*a^2)*ddot(theta) + (C - A - m*a^2)*omega^2*sin(theta)*cos(theta)"
+    );
+    torseur::assert_equivalent!(m, "M(O,pes->2).x1", "-m*g*a*sin(theta)");
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta)",
+        "(A + m*a^2)*ddot(theta) + (C - A - m*a^2)*omega^2*sin(theta)*cos(theta) + m*g*a*sin(theta) = 0"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta)",
+        under "H",
+        "sin(beta)*(m*g*a - (A + m*a^2 - C)*omega^2*cos(beta)) = 0"
+    );
+    torseur::assert_equivalent!(m, "Omega(2/0) in B2", under "H", "omega*z1");
+    assert_checked(&m);
+}
+
+#[test]
 fn pendule_plan_incline_agrees_with_the_float_backend() {
     assert_checked(&problem!("pendule_plan_incline"));
 }

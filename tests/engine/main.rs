@@ -12,6 +12,7 @@ mod corpus;
 mod derivation;
 mod eval;
 mod figures;
+mod hypotheses;
 mod kinematics;
 mod latex;
 mod layers;

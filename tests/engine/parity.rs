@@ -244,3 +244,62 @@ fn both_sides_read_a_rotation_angle_alike() {
         }
     }
 }
+
+#[test]
+fn both_sides_refuse_the_same_motions_in_a_hypothesis() {
+    let text = std::fs::read_to_string("derivations/pendule_arbre_tournant.json").unwrap();
+    let base: Value = serde_json::from_str(&text).unwrap();
+    let with = |field: &str, v: Value| {
+        let mut s = base.clone();
+        for k in EXACT_ONLY {
+            s.as_object_mut().unwrap().remove(*k);
+        }
+        s["hypotheses"][0]
+            .as_object_mut()
+            .unwrap()
+            .remove("equilibrium");
+        s["hypotheses"][0][field] = v;
+        s
+    };
+    use serde_json::json;
+    let refused = [
+        ("equilibrium", json!({"phi": "beta"}), "equilibrium.phi"),
+        ("equilibrium", json!({"theta": "a"}), "equilibrium.theta"),
+        ("equilibrium", json!({"psi": "0"}), "equilibrium.psi"),
+        ("rates", json!({"theta": "dot(theta)"}), "rates.theta"),
+        ("rates", json!({"theta": "nope"}), "rates.theta"),
+        ("relations", json!({"q": "a"}), "relations.q"),
+        ("relations", json!({"a": "2*a"}), "relations.a"),
+        (
+            "fixed_coordinates",
+            json!(["theta", "theta"]),
+            "fixed_coordinates[1]",
+        ),
+        ("fixed_coordinates", json!(["psi"]), "fixed_coordinates[0]"),
+    ];
+    for (field, v, path) in refused {
+        let (exact, float) = verdicts(&with(field, v.clone())).expect("a spec's shape");
+        let (e, f) = (exact.unwrap_err(), float.unwrap_err());
+        assert!(
+            e.contains(&format!("hypotheses[0].{path}")),
+            "{field} {v}: {e}"
+        );
+        assert!(
+            f.contains(&format!("hypotheses[0].{path}")),
+            "{field} {v}: {f}"
+        );
+    }
+    for (field, v) in [
+        ("equilibrium", json!({"theta": "beta"})),
+        ("equilibrium", json!({"theta": "0"})),
+        ("rates", json!({"theta": "2*omega"})),
+        ("relations", json!({"A": "C + m*a^2"})),
+        ("fixed_coordinates", json!(["theta"])),
+    ] {
+        let (exact, float) = verdicts(&with(field, v.clone())).expect("a spec's shape");
+        assert!(
+            exact.is_ok() && float.is_ok(),
+            "{field} {v}: {exact:?} {float:?}"
+        );
+    }
+}

@@ -353,7 +353,10 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         "Ec" => one(d(1, 2, -2)),
         "{V" => (d(0, 0, -1), Some(d(0, 1, -1))),
         "{C" => (d(1, 1, -1), Some(d(1, 2, -1))),
-        "{D" => (d(1, 1, -2), Some(d(1, 2, -2))),
+        "{D" | "{T" => (d(1, 1, -2), Some(d(1, 2, -2))),
+        // An action's resultant is a force, its moment a moment.
+        "R" => one(d(1, 1, -2)),
+        "M" => one(d(1, 2, -2)),
         "eom" => {
             let c = &q[4..q.find(')').unwrap()];
             let length = m
@@ -370,10 +373,11 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 12] = [
+const LIBRARY: [&str; 13] = [
     "bille_tube_tournant",
     "bras_robot_deux_axes",
     "double_pendule",
+    "pendule_arbre_tournant",
     "pendule_inverse_ressort",
     "pendule_plan_incline",
     "pendule_sur_chariot",

@@ -195,8 +195,15 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
         if let Some(s) = m.solid_index.get(name) {
             return Ok(Body::Solid(*s));
         }
-        if let Some(f) = m.frame_index.get(name) {
+        // Only the ground acts without being a solid: another frame carries no body.
+        if let Some(f) = m.frame_index.get(name).filter(|f| **f == 0) {
             return Ok(Body::Frame(*f));
+        }
+        if m.frame_index.contains_key(name) {
+            return Err(spec_err(
+                path,
+                format!("`{name}` is a frame, not a solid: only the ground acts without one"),
+            ));
         }
         if m.sets.contains_key(name) {
             return Err(spec_err(

@@ -1,0 +1,149 @@
+//! The motions and relations a hypothesis imposes besides symmetries: coordinates held fixed,
+//! a relative equilibrium, rates given as parameters, relations between parameters. Each
+//! becomes substitutions applied to the general results (after every derivative is taken).
+
+use super::SpecError;
+use super::validate::at;
+use crate::expr::{CoordId, CoordinateKind, Expr, Registry, VarId, VarRole};
+use crate::wire::HypothesisSpec;
+use std::rc::Rc;
+
+/// An expression of the parameters only (no coordinate, rate or unknown), read at `path`.
+fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecError> {
+    let e = reg.parse(text).map_err(|e| at(path, e.to_string()))?;
+    for v in reg.var_ids().filter(|v| e.contains_var(*v)) {
+        let ok = match reg.role(v) {
+            VarRole::Parameter(p) => !reg.is_unknown(p),
+            VarRole::Cos(q) | VarRole::Sin(q) => reg.coord_info(q).is_constant(),
+            _ => false,
+        };
+        if !ok {
+            return Err(at(
+                path,
+                format!("`{text}` must be written with parameters only"),
+            ));
+        }
+    }
+    Ok(e)
+}
+
+/// q̇, q̈ and the third derivative of `q` set to `first`, 0 and 0.
+fn rates(reg: &Rc<Registry>, q: CoordId, first: &Expr, subs: &mut Vec<(VarId, Expr)>) {
+    for order in 1..=3u8 {
+        if let Some(v) = reg.rate(q, order).single_variable() {
+            subs.push((
+                v,
+                if order == 1 {
+                    first.clone()
+                } else {
+                    reg.zero()
+                },
+            ));
+        }
+    }
+}
+
+/// The substitutions and their statements (`dot(alpha) = 0`, `theta2 = beta0`) of a
+/// hypothesis' fixed coordinates, equilibrium, rates and relations, in that order.
+pub(super) fn motions(
+    reg: &Rc<Registry>,
+    h: &HypothesisSpec,
+    path: &str,
+    subs: &mut Vec<(VarId, Expr)>,
+    effects: &mut Vec<String>,
+) -> Result<(), SpecError> {
+    let mut seen: Vec<String> = Vec::new();
+    let mut coord = |field: String, c: &str| -> Result<CoordId, SpecError> {
+        let q = reg
+            .coord(c)
+            .ok_or_else(|| at(&field, format!("unknown coordinate `{c}`")))?;
+        if reg.coord_info(q).has_imposed_rate() {
+            return Err(at(&field, format!("`{c}` already has an imposed rate")));
+        }
+        if seen.iter().any(|x| x == c) {
+            return Err(at(&field, format!("the motion of `{c}` is given twice")));
+        }
+        seen.push(c.to_string());
+        Ok(q)
+    };
+    let zero = reg.zero();
+    for (k, c) in h.fixed_coordinates.iter().enumerate() {
+        let q = coord(format!("{path}.fixed_coordinates[{k}]"), c)?;
+        rates(reg, q, &zero, subs);
+        effects.push(format!("dot({c}) = 0"));
+        effects.push(format!("ddot({c}) = 0"));
+    }
+    for (c, text) in &h.equilibrium {
+        let field = format!("{path}.equilibrium.{c}");
+        let q = coord(field.clone(), c)?;
+        let info = reg.coord_info(q);
+        match info.kind {
+            CoordinateKind::Angle => {
+                // cos q and sin q become those of the angle parameter (or 1 and 0).
+                let (cos, sin, value) = if text.trim() == "0" {
+                    (reg.one(), reg.zero(), reg.zero())
+                } else {
+                    let b = reg
+                        .angle(text.trim())
+                        .filter(|b| reg.coord_info(*b).is_constant())
+                        .ok_or_else(|| {
+                            at(
+                                &field,
+                                format!(
+                                    "the angle `{c}` is held at 0 or at an angle parameter \
+                                     (a parameter of kind angle), not at `{text}`"
+                                ),
+                            )
+                        })?;
+                    let value = reg.param(text.trim()).unwrap_or_else(|| reg.zero());
+                    (reg.cos(b), reg.sin(b), value)
+                };
+                for (from, to) in [(reg.cos(q), cos), (reg.sin(q), sin)] {
+                    if let Some(v) = from.single_variable() {
+                        subs.push((v, to));
+                    }
+                }
+                if let Some(v) = reg.value(q).and_then(|e| e.single_variable()) {
+                    subs.push((v, value));
+                }
+            }
+            CoordinateKind::Length => {
+                let e = constant(reg, &field, text)?;
+                if let Some(v) = reg.value(q).and_then(|e| e.single_variable()) {
+                    subs.push((v, e));
+                }
+            }
+        }
+        rates(reg, q, &zero, subs);
+        effects.push(format!("{c} = {}", text.trim()));
+        effects.push(format!("dot({c}) = 0"));
+        effects.push(format!("ddot({c}) = 0"));
+    }
+    for (c, text) in &h.rates {
+        let field = format!("{path}.rates.{c}");
+        let q = coord(field.clone(), c)?;
+        let e = constant(reg, &field, text)?;
+        rates(reg, q, &e, subs);
+        effects.push(format!("dot({c}) = {}", text.trim()));
+        effects.push(format!("ddot({c}) = 0"));
+    }
+    for (p, text) in &h.relations {
+        let field = format!("{path}.relations.{p}");
+        let v = reg
+            .param_id(p)
+            .filter(|id| !reg.is_unknown(*id))
+            .and_then(|id| reg.index_of(VarRole::Parameter(id)))
+            .ok_or_else(|| at(&field, format!("unknown parameter `{p}`")))?;
+        let e = constant(reg, &field, text)?;
+        if e.contains_var(v) {
+            return Err(at(&field, format!("`{p}` is written with itself")));
+        }
+        // Earlier substitutions hold the parameter too.
+        for (_, val) in subs.iter_mut() {
+            *val = val.substitute(v, &e);
+        }
+        subs.push((v, e));
+        effects.push(format!("{p} = {}", text.trim()));
+    }
+    Ok(())
+}
