@@ -628,4 +628,8 @@ pub struct HypothesisSpec {
     /// (`"A3": "C3"`).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub relations: BTreeMap<String, String>,
+    /// Small parameters (an offset e ≪ R): results kept to first order in them, the terms of
+    /// degree 2 or more in these parameters together dropped.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub small_parameters: Vec<String>,
 }

@@ -162,6 +162,19 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
             .collect();
         let _ = writeln!(d.o, "Sous cette hypothèse : {}.\n", eff.join(", "));
     }
+    if !h.first_order.is_empty() {
+        let small: Vec<String> = h
+            .first_order
+            .iter()
+            .map(|v| format!("${}$", super::expr(&m.reg.variable(*v))))
+            .collect();
+        let _ = writeln!(
+            d.o,
+            "Les résultats sont écrits au premier ordre en {} : les termes de degré 2 ou plus \
+             en ces petits paramètres sont négligés.\n",
+            super::method::french_list(&small)
+        );
+    }
     d.stated.push((
         h.name.clone(),
         hs.symmetric_solids.clone(),

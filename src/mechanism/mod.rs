@@ -45,16 +45,34 @@ pub struct Hypothesis {
     pub substitutions: Vec<(VarId, Expr)>,
     /// Human-readable list of what is set (`D2 = 0`, `ddot(theta1) = 0`).
     pub effects: Vec<String>,
+    /// Small parameters: the results are kept to first order in them (after the
+    /// substitutions).
+    pub first_order: Vec<VarId>,
 }
 
 impl Hypothesis {
-    /// Applies the substitutions to an expression.
+    /// Applies the substitutions to an expression, then keeps it to first order in the small
+    /// parameters: e(0) + Σ εᵢ ∂e/∂εᵢ(0), every small parameter at 0.
     pub fn apply(&self, e: &Expr) -> Expr {
         let mut r = e.clone();
         for (v, val) in &self.substitutions {
             r = r.substitute(*v, val);
         }
-        r
+        if self.first_order.is_empty() {
+            return r;
+        }
+        let zero = r.registry().zero();
+        let at_zero = |x: &Expr| {
+            self.first_order
+                .iter()
+                .fold(x.clone(), |acc, v| acc.substitute(*v, &zero))
+        };
+        let mut out = at_zero(&r);
+        for v in &self.first_order {
+            let slope = at_zero(&r.derivative(*v));
+            out = &out + &(&slope * &r.registry().variable(*v));
+        }
+        out
     }
 }
 

@@ -563,6 +563,17 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         }
         let (motions, relations) =
             held_motions(spec, &names, &coord_index, &param_index, h, &path)?;
+        // Small parameters: results kept to first order, which no sample realises; only
+        // their names are checked here (`check` does not compare such a hypothesis).
+        for (k, p) in h.small_parameters.iter().enumerate() {
+            let field = format!("{path}.small_parameters[{k}]");
+            if !param_index.contains_key(p) {
+                return Err(spec_err(&field, format!("unknown parameter `{p}`")));
+            }
+            if h.small_parameters[..k].contains(p) {
+                return Err(spec_err(&field, format!("`{p}` is small twice")));
+            }
+        }
         if hypotheses
             .insert(
                 h.name.clone(),

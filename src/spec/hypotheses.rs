@@ -147,3 +147,26 @@ pub(super) fn motions(
     }
     Ok(())
 }
+
+/// The variables of a hypothesis' small parameters, read at `path` (one that a substitution
+/// of the hypothesis replaces is gone before the truncation: listing it has no effect).
+pub(super) fn small_parameters(
+    reg: &Rc<Registry>,
+    h: &HypothesisSpec,
+    path: &str,
+) -> Result<Vec<VarId>, SpecError> {
+    let mut out = Vec::new();
+    for (k, p) in h.small_parameters.iter().enumerate() {
+        let field = format!("{path}.small_parameters[{k}]");
+        let v = reg
+            .param_id(p)
+            .filter(|id| !reg.is_unknown(*id))
+            .and_then(|id| reg.index_of(VarRole::Parameter(id)))
+            .ok_or_else(|| at(&field, format!("unknown parameter `{p}`")))?;
+        if out.contains(&v) {
+            return Err(at(&field, format!("`{p}` is listed twice")));
+        }
+        out.push(v);
+    }
+    Ok(out)
+}

@@ -214,13 +214,9 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     let mut points = Points::new(&origin_name);
     let mut point_names: HashSet<String> = [origin_name.clone()].into();
     for (i, p) in spec.points.iter().enumerate() {
+        // A point lives in point slots only (`V(A,2/0)`, a centre, a link's point): the point
+        // A and the inertia moment A of a corrigé both keep their names.
         name_ok(&format!("points[{i}].name"), &p.name)?;
-        if names.contains(&p.name) {
-            return Err(at(
-                format!("points[{i}].name"),
-                format!("`{}` is already a parameter or coordinate", p.name),
-            ));
-        }
         if !point_names.insert(p.name.clone()) {
             return Err(at(
                 format!("points[{i}].name"),
@@ -509,11 +505,13 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             }
         }
         super::hypotheses::motions(&reg, h, &path, &mut subs, &mut effects)?;
+        let first_order = super::hypotheses::small_parameters(&reg, h, &path)?;
         hypotheses.push(Hypothesis {
             name: h.name.clone(),
             text: h.text.clone(),
             substitutions: subs,
             effects,
+            first_order,
         });
     }
 

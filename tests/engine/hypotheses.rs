@@ -80,3 +80,49 @@ fn the_key_states_what_a_motion_hypothesis_sets() {
         &tex[tex.find("Hypothèse H").unwrap_or(0)..][..400]
     );
 }
+
+#[test]
+fn a_small_offset_keeps_the_results_to_first_order() {
+    let text = std::fs::read_to_string("derivations/rotor_balourd.json").unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["hypotheses"] = serde_json::json!([{"name": "P", "small_parameters": ["e", "a"]}]);
+    let m = torseur::spec::from_str(&v.to_string()).unwrap();
+    // The unbalance P at AP = e x1 + a z0: I(A,2) = m [(e² + a²) Id − AP APᵀ]; to first order
+    // in e and a together, every entry (of degree 2 in them) vanishes.
+    torseur::assert_equivalent!(
+        m,
+        "I(A,2) in B1",
+        "[[m*a^2, 0, -m*a*e], [0, m*(a^2 + e^2), 0], [-m*a*e, 0, m*e^2]]"
+    );
+    torseur::assert_equivalent!(m, "I(A,2) in B1", under "P", "[[0, 0, 0], [0, 0, 0], [0, 0, 0]]");
+    // With e alone small: a² stays, e² and nothing else goes.
+    v["hypotheses"] = serde_json::json!([{"name": "P", "small_parameters": ["e"]}]);
+    let m = torseur::spec::from_str(&v.to_string()).unwrap();
+    torseur::assert_equivalent!(
+        m,
+        "I(A,2) in B1",
+        under "P",
+        "[[m*a^2, 0, -m*a*e], [0, m*a^2, 0], [-m*a*e, 0, 0]]"
+    );
+    // Ec(2/0) = ½ m e² ω² is of second order: zero at first order.
+    torseur::assert_equivalent!(m, "Ec(2/0)", "1/2*m*e^2*omega^2");
+    torseur::assert_equivalent!(m, "Ec(2/0)", under "P", "0");
+    // `check` compares the general results and leaves the first-order ones to the algebra.
+    let report = check(&m, 5, 1).unwrap();
+    assert!(report.passed(), "{report}");
+    assert!(report.rows.iter().all(|r| r.hypothesis.is_none()));
+    // An unknown name is refused by both sides, with its place.
+    v["hypotheses"] = serde_json::json!([{"name": "P", "small_parameters": ["eps"]}]);
+    let e = torseur::spec::from_str(&v.to_string())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("hypotheses[0].small_parameters[0]") && e.contains("`eps`"),
+        "{e}"
+    );
+    let file = torseur::spec::parse_spec(&v.to_string()).unwrap();
+    let f = torseur::numeric::NumericModel::new(&file)
+        .unwrap_err()
+        .to_string();
+    assert!(f.contains("hypotheses[0].small_parameters[0]"), "{f}");
+}

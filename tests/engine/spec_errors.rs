@@ -113,6 +113,28 @@ fn duplicate_names_are_refused() {
     assert!(refused(v).to_string().contains("duplicate"));
 }
 
+/// Names live where the notation puts them (issue 15, item 8): a point B and the inertia
+/// moment B of the same problem, as a corrigé writes them.
+#[test]
+fn a_point_may_be_named_like_a_parameter() {
+    let text = std::fs::read_to_string("derivations/rotor_vitesse_imposee.json").unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["parameters"]
+        .as_array_mut()
+        .unwrap()
+        .push(serde_json::json!({"name": "b", "unit": "m"}));
+    v["points"] = serde_json::json!([{"name": "B", "position": "b*y2"}]);
+    let m = torseur::spec::from_str(&v.to_string()).unwrap();
+    // Ω(2/0) ∧ OB with Ω = ω (sin α y2 + cos α z2) and OB = b y2; Huygens at B keeps the
+    // parameter B on y2.
+    torseur::assert_equivalent!(m, "V(B,2/0) in B2", "-b*omega*cos(alpha)*x2");
+    torseur::assert_equivalent!(
+        m,
+        "I(B,2)",
+        "[[A + m*b^2, -F, -E], [-F, B, -D], [-E, -D, C + m*b^2]]"
+    );
+}
+
 #[test]
 fn a_symmetry_that_contradicts_the_entries_is_refused() {
     let mut v = base();
