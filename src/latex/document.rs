@@ -515,6 +515,7 @@ pub fn answer_key_document(
 
     // Set-up.
     o.push_str("\\section*{Paramétrage}\n\\begin{multicols}{2}\n\\begin{itemize}\n");
+    let mut rates = Vec::new();
     for c in &m.spec.coordinates {
         let kind = match c.kind {
             crate::wire::CoordinateKind::Angle => "angle",
@@ -529,7 +530,22 @@ pub fn answer_key_document(
         let constant = c.rate.as_deref().is_some_and(|r| r.trim() == "0");
         let _ = kind;
         let t = if constant { "" } else { "(t)" };
-        let _ = writeln!(o, "\\item ${}{t}$ : {desc}", name(&c.name));
+        // An imposed rate is stated where the coordinate is: ψ̇ = ω.
+        let imposed = match m.reg.coord(&c.name) {
+            Some(q) if !constant && m.reg.coord_info(q).has_imposed_rate() => {
+                let rate = m.reg.dot(q);
+                let math = format!("\\dot{{{}}} = {}", name(&c.name), super::expr(&rate));
+                let text = format!(", de vitesse imposée ${math}$");
+                rates.push(Inline {
+                    what: format!("dot({})", c.name),
+                    latex: math,
+                    value: Value::Scalar(rate),
+                });
+                text
+            }
+            _ => String::new(),
+        };
+        let _ = writeln!(o, "\\item ${}{t}$ : {desc}{imposed}", name(&c.name));
     }
     for f in m.frames.ids().skip(1) {
         let fr = m.frames.get(f);
@@ -601,6 +617,7 @@ pub fn answer_key_document(
             o.push_str(&link_graph(m));
         }
     }
+    doc.inline.extend(rates);
     doc.inline.extend(positions);
     // Each solid's mass, centre and inertia operator; the operators side by side.
     let mut cells = Vec::new();

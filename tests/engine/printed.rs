@@ -743,7 +743,14 @@ fn every_printed_formula_is_the_engines_value() {
             );
             let t = tokenize(&f.latex);
             let ok = match &f.value {
-                Value::Scalar(e) => ctx.scalar(&t).map(|g| &g == e),
+                // A scalar alone, or stated as `lhs = value` (an imposed rate ψ̇ = ω).
+                Value::Scalar(e) => {
+                    let rhs = match t.iter().position(|x| *x == Tok::Sym('=')) {
+                        Some(eq) => &t[eq + 1..],
+                        None => &t[..],
+                    };
+                    ctx.scalar(rhs).map(|g| &g == e)
+                }
                 Value::Vector { components, .. } => {
                     let eq = t.iter().position(|x| *x == Tok::Sym('=')).unwrap();
                     ctx.any_basis(&t[eq + 1..]).map(|g| &g == components)
