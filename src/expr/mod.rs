@@ -11,6 +11,7 @@
 mod eval;
 mod factor;
 mod flat;
+mod fraction;
 mod parse;
 pub(crate) mod present;
 pub(crate) mod print;

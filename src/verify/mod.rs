@@ -154,6 +154,10 @@ pub struct Verdict {
     /// The quantities and unknowns of the text replaced by their derived or solved values, in
     /// the order met.
     pub substituted: Vec<String>,
+    /// The denominators typed (a nonzero polynomial in the parameters, 1 when none), one per
+    /// component of `difference`: each difference is multiplied by its denominator (for an
+    /// equation, lhs − rhs over a common one), so that it is a polynomial.
+    pub denominators: Vec<Expr>,
 }
 
 impl Verdict {
@@ -290,6 +294,9 @@ impl fmt::Display for Verdict {
         for (k, d) in self.difference.iter().enumerate() {
             if !d.is_zero() {
                 writeln!(f, "  component {}: {}", k + 1, d.presentation())?;
+                if let Some(den) = self.denominators.get(k).filter(|x| !x.is_one()) {
+                    writeln!(f, "    (multiplied by the denominator typed, {den})")?;
+                }
             }
         }
         Ok(())
@@ -299,25 +306,38 @@ impl fmt::Display for Verdict {
 /// Parses the hand-written value in the shape of the derived one: a scalar; a vector as
 /// `[x, y, z]` (components in the quantity's basis) or over any bases (`a*x1 + b*y2 - c*z0`);
 /// a torsor as `[R, M]`, each element written either way; three rows for an inertia matrix.
+/// 1 in the registry of a derived value.
+fn reader_one(derived: &Value) -> Expr {
+    derived.exprs()[0].registry().one()
+}
+
 fn parse_shaped(
     reader: &mut Reader,
     derived: &Value,
     text: &str,
-) -> Result<Vec<Expr>, VerifyError> {
+) -> Result<Vec<(Expr, Expr)>, VerifyError> {
     let n = derived.exprs().len();
     // A vector of the torsor or the vector itself, in the quantity's basis.
-    let vector = |reader: &mut Reader, t: &str, b| -> Result<Vec<Expr>, VerifyError> {
+    let one = || reader_one(derived);
+    let vector = |reader: &mut Reader, t: &str, b| -> Result<Vec<(Expr, Expr)>, VerifyError> {
         match split_list(t) {
-            Some(list) if list.len() == 3 => list.iter().map(|s| reader.read(s.trim())).collect(),
+            Some(list) if list.len() == 3 => list
+                .iter()
+                .map(|s| reader.read_fraction(s.trim()))
+                .collect(),
             Some(list) => Err(VerifyError::Shape(format!(
                 "expected 3 components, got {}",
                 list.len()
             ))),
-            None => Ok(reader.read_vector(t.trim(), b)?.to_vec()),
+            None => Ok(reader
+                .read_vector(t.trim(), b)?
+                .into_iter()
+                .map(|e| (e, one()))
+                .collect()),
         }
     };
-    let given: Vec<Expr> = match derived {
-        Value::Scalar(_) => vec![reader.read(text.trim())?],
+    let given: Vec<(Expr, Expr)> = match derived {
+        Value::Scalar(_) => vec![reader.read_fraction(text.trim())?],
         Value::Vector { basis, .. } => vector(reader, text, *basis)?,
         Value::Torsor { basis, .. } => {
             let rows = split_list(text).filter(|r| r.len() == 2).ok_or_else(|| {
@@ -339,7 +359,7 @@ fn parse_shaped(
                 let cells = split_list(&r)
                     .ok_or_else(|| VerifyError::Shape("each row is written [a, b, c]".into()))?;
                 for c in cells {
-                    flat.push(reader.read(c.trim())?);
+                    flat.push(reader.read_fraction(c.trim())?);
                 }
             }
             flat
@@ -437,11 +457,13 @@ pub fn verify(
     // An action of the bilan holds its links' unknowns as declared: so does the text.
     reader.keep_unknowns = q.kind.action().is_some();
     let given = parse_shaped(&mut reader, &derived, text)?;
+    // n/d − derived, multiplied by d ≠ 0: n − d · derived.
     let difference = given
         .iter()
         .zip(derived.exprs())
-        .map(|(g, d)| g - d)
+        .map(|((n, den), d)| n - &(den * d))
         .collect();
+    let denominators = given.into_iter().map(|(_, den)| den).collect();
     Ok(Verdict {
         quantity: q.to_string(),
         equation: None,
@@ -451,6 +473,7 @@ pub fn verify(
         difference,
         factor: None,
         substituted: reader.substituted,
+        denominators,
     })
 }
 
@@ -477,7 +500,8 @@ fn equation_of_motion(
         derived = derived.under(h);
     }
     let mut reader = Reader::new(m, h);
-    let given = &reader.read(l)? - &reader.read(r)?;
+    // lhs − rhs = given / den over a common denominator (1 when none is typed).
+    let (given, den) = reader.read_difference(l, r)?;
     let d = derived.exprs()[0].clone();
     // Not equivalent: the difference is shown with the factor that matches most terms (a
     // wrong sign in one term then shows as that term alone).
@@ -493,6 +517,11 @@ fn equation_of_motion(
         Some(k) => &(&given * &k.numerator) - &(&d * &k.denominator),
         None => &given - &d,
     };
+    // Against lhs − rhs itself the factor holds the denominator: eom = (n · den / d)(lhs − rhs).
+    let factor = factor.map(|k| Factor {
+        numerator: &k.numerator * &den,
+        denominator: k.denominator,
+    });
     Ok(Verdict {
         quantity: q.to_string(),
         equation: Some(text.trim().to_string()),
@@ -504,6 +533,7 @@ fn equation_of_motion(
         difference: vec![difference],
         factor,
         substituted: reader.substituted,
+        denominators: vec![den],
     })
 }
 
@@ -519,7 +549,8 @@ fn relation(
     h: Option<&Hypothesis>,
 ) -> Result<Verdict, VerifyError> {
     let mut reader = Reader::new(m, h);
-    let e = &reader.read(l)? - &reader.read(r)?;
+    // lhs − rhs = e / den, den ≠ 0: the relation holds iff e = 0.
+    let (e, den) = reader.read_difference(l, r)?;
     if let Some(q) = subject {
         let present = match &q.kind {
             QuantityKind::Unknown(n) if !q.linear => reader.names.contains(n),
@@ -533,6 +564,7 @@ fn relation(
         }
     }
     let quantity = subject.map_or_else(|| text.trim().to_string(), Quantity::to_string);
+    let denominators = vec![den.clone()];
     let verdict = |check, derived: Expr, difference, factor, substituted| Verdict {
         quantity: quantity.clone(),
         equation: Some(text.trim().to_string()),
@@ -542,6 +574,7 @@ fn relation(
         difference: vec![difference],
         factor,
         substituted,
+        denominators: denominators.clone(),
     };
     if e.is_zero() {
         let zero = m.reg.zero();
@@ -565,7 +598,7 @@ fn relation(
                     d,
                     difference,
                     Some(Factor {
-                        numerator,
+                        numerator: &numerator * &den,
                         denominator,
                     }),
                     reader.substituted,

@@ -57,17 +57,44 @@ impl<'a> Reader<'a> {
         }
     }
 
-    /// One scalar text: quantities replaced by placeholder names, unknown names refused (all
-    /// named at once), parsed, unknowns replaced by their solved values, under the hypothesis.
-    pub(super) fn read(&mut self, text: &str) -> Result<Expr, VerifyError> {
+    /// One scalar text, which may divide by a nonzero polynomial in the parameters: quantities
+    /// replaced by placeholder names, unknown names refused (all named at once), parsed; the
+    /// numerator with the unknowns replaced by their solved values, both under the hypothesis.
+    pub(super) fn read_fraction(&mut self, text: &str) -> Result<(Expr, Expr), VerifyError> {
         let (out, placeholders) = self.prepare(text, &|_| false)?;
         let lookup = |n: &str| placeholder(&placeholders, n);
-        let e = self
+        let (n, d) = self
             .m
             .reg
-            .parse_with(&out, &lookup)
+            .parse_fraction_with(&out, &lookup)
             .map_err(|err| users_text(err, text))?;
-        self.finish(e, text)
+        if !d.is_one() && self.hypothesis.is_some_and(|h| !h.first_order.is_empty()) {
+            return Err(VerifyError::Shape(format!(
+                "`{text}` divides by `{d}`: a fraction is not compared at first order in small \
+                 parameters (multiply it out)"
+            )));
+        }
+        let d = self.under(d);
+        if d.is_zero() {
+            return Err(VerifyError::Shape(format!(
+                "`{text}`: its denominator is zero under the hypothesis"
+            )));
+        }
+        Ok((self.finish(n, text)?, d))
+    }
+
+    /// lhs − rhs over a common denominator: (numerator, denominator).
+    pub(super) fn read_difference(
+        &mut self,
+        l: &str,
+        r: &str,
+    ) -> Result<(Expr, Expr), VerifyError> {
+        let (n1, d1) = self.read_fraction(l)?;
+        let (n2, d2) = self.read_fraction(r)?;
+        if d1 == d2 {
+            return Ok((&n1 - &n2, d1));
+        }
+        Ok((&(&n1 * &d2) - &(&n2 * &d1), &d1 * &d2))
     }
 
     /// A vector typed over any bases (`a*x1 + b*y2 - c*z0`, quantities and unknowns inside

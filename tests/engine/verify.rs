@@ -297,3 +297,83 @@ fn a_bad_vector_expression_is_refused_naming_what_is_wrong() {
     assert!(refused("L2*dot(theta2)*z7").contains("z7"));
     assert!(refused("[1, 2]").contains("3 components"));
 }
+
+/// Published forms divide by parameters (issue 15, item 6): a typed text may divide by a
+/// nonzero polynomial in the parameters, and is compared by cross-multiplication.
+#[test]
+fn typed_fractions_of_parameters_are_compared_exactly() {
+    let m = cart();
+    // The corrigé's equation divided by m l, written with fractions: θ̈ + ẍ cos θ / l +
+    // g sin θ / l = 0 is eom(θ) = m l² × (lhs − rhs).
+    let v = verify_equation(
+        &m,
+        "ddot(theta) + ddot(x)*cos(theta)/l + g*sin(theta)/l = 0",
+        None,
+    )
+    .unwrap();
+    assert!(v.is_equivalent(), "{v}");
+    assert_eq!(v.factor, Some(factor(&m, "m*l^2", "1")));
+    // A sign error under the line is caught, and shown multiplied by the denominator l.
+    let v = verify_equation(
+        &m,
+        "ddot(theta) + ddot(x)*cos(theta)/l - g*sin(theta)/l = 0",
+        None,
+    )
+    .unwrap();
+    assert!(!v.is_equivalent());
+    assert_eq!(v.denominators, [ex(&m, "l")]);
+    // A value: eom(θ)/(m l) typed as a fraction of the corrigé's form.
+    let v = verify(
+        &m,
+        "eom(theta)",
+        "m*l^2*(ddot(x)*cos(theta)/l + ddot(theta) + g*sin(theta)/l) = 0",
+        None,
+    )
+    .unwrap();
+    assert!(v.is_equivalent(), "{v}");
+    let v = verify(
+        &m,
+        "eom(theta)",
+        "(m*l^2*ddot(theta) + m*l*ddot(x)*cos(theta))/(m*l) = -g*sin(theta)",
+        None,
+    )
+    .unwrap();
+    assert!(v.is_equivalent(), "{v}");
+    // A denominator that holds a coordinate, a rate or that is zero is refused.
+    for bad in ["ddot(theta)/x = 0", "g/dot(theta) = 0", "g/(l - l) = 0"] {
+        assert!(verify_equation(&m, bad, None).is_err(), "{bad}");
+    }
+}
+
+#[test]
+fn a_relative_equilibrium_written_as_a_quotient_is_the_equation_of_motion() {
+    // Mass-spring on an incline: eom(x) = m (ẍ + g sin β) + c ẋ + k (x − l0). At the
+    // equilibrium x = x_e (ẋ = ẍ = 0): k (x_e − l0) + m g sin β = 0, the published
+    // x_e = l0 − m g sin β / k.
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/systeme_masse_ressort.json"
+    ))
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["parameters"]
+        .as_array_mut()
+        .unwrap()
+        .push(serde_json::json!({"name": "x_e", "unit": "m"}));
+    v["hypotheses"] = serde_json::json!([{"name": "E", "equilibrium": {"x": "x_e"}}]);
+    let m = torseur::spec::from_str(&v.to_string()).unwrap();
+    let v = verify_equation(&m, "x_e = l0 - m*g*sin(beta)/k", Some("E")).unwrap();
+    assert!(v.is_equivalent(), "{v}");
+    assert_eq!(
+        v.check,
+        Check::EquationOfMotion {
+            coordinate: "x".into()
+        }
+    );
+    assert_eq!(v.factor, Some(factor(&m, "k", "1")));
+    assert!(
+        !verify_equation(&m, "x_e = l0 + m*g*sin(beta)/k", Some("E"))
+            .unwrap()
+            .is_equivalent()
+    );
+}
