@@ -3,7 +3,7 @@
 //! as a pair numerator / denominator, the denominator a nonzero polynomial in the parameters,
 //! and compared by cross-multiplication.
 
-use super::parse::{Walker, parse_atom};
+use super::parse::{Walker, pairwise_sum, parse_atom};
 use super::*;
 use symbolica::atom::AtomView;
 
@@ -14,9 +14,18 @@ impl Walker<'_> {
         let reg = self.reg;
         match v {
             AtomView::Add(a) => {
-                let mut acc = (reg.zero(), reg.one());
+                let mut parts = Vec::new();
                 for t in a.iter() {
-                    let (n, d) = self.fraction(t)?;
+                    parts.push(self.fraction(t)?);
+                }
+                // Without a denominator, the polynomial reading (summed pairwise: a chain's
+                // equation holds 10^5 terms, and adding them one by one is quadratic).
+                if parts.iter().all(|(_, d)| d.is_one()) {
+                    let sums = parts.into_iter().map(|(n, _)| n).collect();
+                    return Ok((pairwise_sum(reg, sums), reg.one()));
+                }
+                let mut acc = (reg.zero(), reg.one());
+                for (n, d) in parts {
                     acc = if d == acc.1 {
                         (&acc.0 + &n, d)
                     } else {

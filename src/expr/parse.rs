@@ -334,6 +334,23 @@ pub(super) fn parse_scalar_with(
     .scalar(a.as_view())
 }
 
+/// The sum of `parts`, added pairwise: adding n terms one by one to a growing sum is
+/// quadratic.
+pub(super) fn pairwise_sum(reg: &Rc<Registry>, mut parts: Vec<Expr>) -> Expr {
+    while parts.len() > 1 {
+        let mut next = Vec::with_capacity(parts.len().div_ceil(2));
+        let mut it = parts.into_iter();
+        while let Some(x) = it.next() {
+            next.push(match it.next() {
+                Some(y) => x + &y,
+                None => x,
+            });
+        }
+        parts = next;
+    }
+    parts.pop().unwrap_or_else(|| reg.zero())
+}
+
 pub(super) struct Walker<'a> {
     pub(super) reg: &'a Rc<Registry>,
     pub(super) input: &'a str,
@@ -417,18 +434,7 @@ impl Walker<'_> {
                 for t in a.iter() {
                     parts.push(self.scalar(t)?);
                 }
-                while parts.len() > 1 {
-                    let mut next = Vec::with_capacity(parts.len().div_ceil(2));
-                    let mut it = parts.into_iter();
-                    while let Some(x) = it.next() {
-                        next.push(match it.next() {
-                            Some(y) => x + &y,
-                            None => x,
-                        });
-                    }
-                    parts = next;
-                }
-                Ok(parts.pop().unwrap_or_else(|| reg.zero()))
+                Ok(pairwise_sum(reg, parts))
             }
             AtomView::Mul(m) => {
                 let mut acc = reg.one();

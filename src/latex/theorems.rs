@@ -352,3 +352,54 @@ pub(super) fn action_sentence(d: &Derivation) -> Option<String> {
         _ => None,
     }
 }
+
+/// The method of a kinetic energy: König's theorem applied to each solid, with its objects
+/// (« $E_c(2/0) = \frac{1}{2}\,m\,\overrightarrow{V(G,2/0)}^2 + \frac{1}{2}\,
+/// \overrightarrow{\Omega(2/0)}\cdot I_G(2)\,\overrightarrow{\Omega(2/0)}$ »; a point mass has
+/// no rotation term).
+pub(super) fn kinetic_energy_sentence(
+    m: &crate::mechanism::Mechanism,
+    d: &Derivation,
+) -> Option<String> {
+    let QuantityKind::KineticEnergy(mo) = &d.quantity.kind else {
+        return None;
+    };
+    let solids = m.solids_of(&mo.moving)?;
+    let terms: Vec<String> = solids
+        .iter()
+        .map(|&s| {
+            let b = m.body(s);
+            let of = |k: QuantityKind| quantity(&k);
+            let motion = crate::quantity::Motion {
+                moving: b.name.clone(),
+                reference: mo.reference.clone(),
+            };
+            let g = m.point_name(b.centre).to_string();
+            let v = of(QuantityKind::Velocity {
+                point: g.clone(),
+                motion: motion.clone(),
+            });
+            let mass = super::method::mass_of(m, &b.name);
+            let translation = format!("\\frac{{1}}{{2}}\\,{mass}\\,{v}^2");
+            if b.inertia.is_none() {
+                return translation;
+            }
+            let w = of(QuantityKind::Omega(motion));
+            let i = of(QuantityKind::Inertia {
+                point: g,
+                solid: b.name.clone(),
+            });
+            format!("{translation} + \\frac{{1}}{{2}}\\,{w}\\cdot {i}\\,{w}")
+        })
+        .collect();
+    let ec = quantity(&d.quantity.kind);
+    Some(format!(
+        "Théorème de König{} : ${ec} = {}$ :",
+        if solids.len() > 1 {
+            ", solide par solide"
+        } else {
+            ""
+        },
+        terms.join(" + ")
+    ))
+}
