@@ -164,6 +164,11 @@ impl Quantity {
                     return Err(err("a projection is on x<frame>, y<frame> or z<frame>"));
                 }
                 let frame: String = chars.collect();
+                if frame.is_empty() {
+                    return Err(err(&format!(
+                        "a projection names its frame after the axis: .{axis}2, not .{axis}"
+                    )));
+                }
                 check_name(&frame).map_err(|r| err(&r))?;
                 (body[..pos + 1].to_string(), Some((frame, axis)))
             }

@@ -26,7 +26,7 @@ use std::fmt::Write;
 const PREAMBLE: &str = "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
 \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
 \\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz,needspace}\n\\usepackage[margin=1.5cm]{geometry}\n\
-\\allowdisplaybreaks[1]\n\\postdisplaypenalty=300\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.3em}\n\
+\\allowdisplaybreaks[1]\n\\postdisplaypenalty=300\n\\emergencystretch=3em\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.3em}\n\
 \\setlength{\\fboxsep}{3pt}\n\\setlength{\\multicolsep}{2pt}\n\\makeatletter\n\
 \\g@addto@macro\\normalsize{\\setlength{\\abovedisplayskip}{3pt plus 2pt}\\setlength{\\belowdisplayskip}{3pt plus 2pt}\
 \\setlength{\\abovedisplayshortskip}{1pt plus 2pt}\\setlength{\\belowdisplayshortskip}{1pt plus 2pt}}\n\

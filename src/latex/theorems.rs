@@ -72,7 +72,10 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                     }
                 }
                 if !by_place.is_empty() {
-                    let _ = writeln!(doc.o, "{}", super::method::citation(&by_place));
+                    // After « Bilan … à $S_1$ : », the sentence goes on in lower case.
+                    let c =
+                        super::method::citation(&by_place).replacen("On reprend", "on reprend", 1);
+                    let _ = writeln!(doc.o, "{c}");
                 }
                 for s in &steps[start..k] {
                     let text = action_line(m, s);

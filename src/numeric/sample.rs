@@ -338,10 +338,14 @@ pub(super) fn draw(
             .chain(&used)
             .find(|q| from_cloud.contains_key(q))
         {
+            let what = if q == p {
+                format!("sets `{}`", m.params[*p].name)
+            } else {
+                format!("on `{}` reads `{}`", m.params[*p].name, m.params[*q].name)
+            };
             return Err(fail(format!(
-                "the relation on `{}` involves `{}`, an inertia entry read off a random body: \
-                 declare the solid's symmetry instead",
-                m.params[*p].name, m.params[*q].name
+                "the relation {what}, an inertia entry that the float backend reads off a \
+                 random body (a point cloud): it cannot be imposed on a sample"
             )));
         }
     }

@@ -102,7 +102,12 @@ impl fmt::Display for Factor {
             }
         };
         if self.denominator.is_one() {
-            write!(f, "{}", self.numerator)
+            // A sum multiplies as a whole: eom = (A + m*a^2) × (lhs − rhs).
+            if self.numerator.nterms() > 1 {
+                write!(f, "({})", self.numerator)
+            } else {
+                write!(f, "{}", self.numerator)
+            }
         } else {
             let n = if self.numerator.nterms() > 1 {
                 format!("({})", self.numerator)

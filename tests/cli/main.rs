@@ -1020,6 +1020,15 @@ fn every_answer_key_is_as_short_as_a_teachers() {
         assert!(c.status.success(), "{stem}: {}", stdout(&c));
         // « Output written on x.pdf (5 pages, 123456 bytes). »
         let log = stdout(&c);
+        // No line runs into the margin (a long inline formula with few breaks).
+        assert!(
+            !log.contains("Overfull \\hbox"),
+            "{stem}: a line runs into the margin:\n{}",
+            log.lines()
+                .filter(|l| l.contains("Overfull"))
+                .collect::<Vec<_>>()
+                .join("\n")
+        );
         let pages: usize = log
             .split("Output written on")
             .nth(1)
