@@ -433,14 +433,17 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
         }
         let lhs = match &s.kind {
             // V(A/R) ∧ m2 V(G2/R): the solid's own mass.
-            StepKind::Complementary(..) => match &d.quantity.kind {
-                QuantityKind::DynamicMoment { motion, .. }
-                | QuantityKind::DynamicTorsor { motion, .. } => step_lhs(&s.kind).replace(
-                    "\\wedge m\\,",
-                    &format!("\\wedge {}\\,", mass_of(m, &motion.moving)),
-                ),
-                _ => step_lhs(&s.kind),
-            },
+            // V(A/R) ∧ m2 V(G2/R): the mass of the solid whose centre G is (each solid of a
+            // set has its own term).
+            StepKind::Complementary(_, g, _) => {
+                match m.bodies.iter().find(|b| m.point_name(b.centre) == g) {
+                    Some(b) => step_lhs(&s.kind).replace(
+                        "\\wedge m\\,",
+                        &format!("\\wedge {}\\,", mass_of(m, &b.name)),
+                    ),
+                    None => step_lhs(&s.kind),
+                }
+            }
             _ => step_lhs(&s.kind),
         };
         if let Some(place) = doc.cited(&lhs, &v) {
