@@ -27,6 +27,14 @@ fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecErro
     Ok(e)
 }
 
+/// The variable of the parameter `p` (not an unknown of the PFD), read at `field`.
+fn parameter(reg: &Rc<Registry>, field: &str, p: &str) -> Result<VarId, SpecError> {
+    reg.param_id(p)
+        .filter(|id| !reg.is_unknown(*id))
+        .and_then(|id| reg.index_of(VarRole::Parameter(id)))
+        .ok_or_else(|| at(field, format!("unknown parameter `{p}`")))
+}
+
 /// q̇, q̈ and the third derivative of `q` set to `first`, 0 and 0.
 fn rates(reg: &Rc<Registry>, q: CoordId, first: &Expr, subs: &mut Vec<(VarId, Expr)>) {
     for order in 1..=3u8 {
@@ -129,11 +137,7 @@ pub(super) fn motions(
     }
     for (p, text) in &h.relations {
         let field = format!("{path}.relations.{p}");
-        let v = reg
-            .param_id(p)
-            .filter(|id| !reg.is_unknown(*id))
-            .and_then(|id| reg.index_of(VarRole::Parameter(id)))
-            .ok_or_else(|| at(&field, format!("unknown parameter `{p}`")))?;
+        let v = parameter(reg, &field, p)?;
         let e = constant(reg, &field, text)?;
         if e.contains_var(v) {
             return Err(at(&field, format!("`{p}` is written with itself")));
@@ -158,11 +162,7 @@ pub(super) fn small_parameters(
     let mut out = Vec::new();
     for (k, p) in h.small_parameters.iter().enumerate() {
         let field = format!("{path}.small_parameters[{k}]");
-        let v = reg
-            .param_id(p)
-            .filter(|id| !reg.is_unknown(*id))
-            .and_then(|id| reg.index_of(VarRole::Parameter(id)))
-            .ok_or_else(|| at(&field, format!("unknown parameter `{p}`")))?;
+        let v = parameter(reg, &field, p)?;
         if out.contains(&v) {
             return Err(at(&field, format!("`{p}` is listed twice")));
         }
