@@ -14,6 +14,10 @@ use symbolica::poly::polynomial::MultivariatePolynomial;
 const MAX_INPUT: usize = super::MAX_INPUT_LEN;
 const MAX_POWER: i64 = 255;
 
+/// Term products a power may take to expand (ten times [`super::MAX_EXPANDED_TERMS`]): six
+/// terms to the 25th take 2.9·10^6.
+const POWER_WORK: u128 = 10 * super::MAX_EXPANDED_TERMS;
+
 /// Only these characters can appear in an expression of the spec syntax.
 fn check_chars(s: &str) -> Result<(), String> {
     if s.len() > MAX_INPUT {
@@ -462,7 +466,19 @@ impl Walker<'_> {
                     if b.power_terms_bound(n as u32) > super::MAX_EXPANDED_TERMS {
                         return Err(self.too_many_terms());
                     }
-                    return Ok(b.pow(n as u32));
+                    // The result may be small while the work to reach it is not: a 703-term
+                    // polynomial with large rational coefficients to the 5th power, found by
+                    // the fuzzer, ran 25 s. The term products are counted as they are done.
+                    let mut acc = reg.one();
+                    let mut work: u128 = 0;
+                    for _ in 0..n {
+                        work += acc.nterms() as u128 * b.nterms() as u128;
+                        if work > POWER_WORK {
+                            return Err(self.too_many_terms());
+                        }
+                        acc = &acc * &b;
+                    }
+                    return Ok(acc);
                 }
                 // A negative power is allowed of a number only: the canonical form is a
                 // polynomial.

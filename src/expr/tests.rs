@@ -350,6 +350,16 @@ fn regression_fuzz_a_huge_angle_is_refused_without_expanding_it() {
 }
 
 #[test]
+fn regression_fuzz_a_power_whose_expansion_is_long_work_is_refused() {
+    // Found by the expression fuzzer: 703 terms with large rational coefficients (0.4 = 2/5
+    // to high powers) to the 5th: within the bound on the result's terms, but 25 s of work.
+    let r = reg();
+    let started = std::time::Instant::now();
+    assert!(r.parse("-(m-(m-(.4+m + L)^6 .4+m + L)^6 L)^5").is_err());
+    assert!(started.elapsed().as_secs() < 10, "{:?}", started.elapsed());
+}
+
+#[test]
 fn a_product_or_power_past_the_term_bound_is_refused_quickly() {
     // Six terms to the 25th: C(30, 5) ≈ 1.4·10^5 terms is within the bound, to the 40th
     // (≈ 1.2·10^6) it is not. Counted before multiplying, so the refusal is immediate.
