@@ -312,23 +312,20 @@ pub(in crate::numeric) fn action(
         }
         Ok(v)
     };
-    // The resultant and the moment, each an error when it holds an unknown without a value.
-    let mut sum = [Ok(Vector3::zeros()), Ok(Vector3::zeros())];
-    let mut add = |k: usize, v: Result<Vector3<f64>, NumericError>| {
-        sum[k] = match (std::mem::replace(&mut sum[k], Ok(Vector3::zeros())), v) {
-            (Ok(a), Ok(b)) => Ok(a + b),
-            (Err(e), _) | (_, Err(e)) => Err(e),
-        };
-    };
+    // The resultant and the moment at p, affine in the unknowns, each moved as the theorems'
+    // residuals move them; evaluated at the unknowns' values once summed.
+    let n = dy.unknowns.len();
+    let mut r = Lin::constant(Vector3::zeros(), Vector3::zeros(), n);
+    let mut mo = r.clone();
     let mut found = false;
     for t in terms(m, st, vals)? {
         if !member(t.on) || member(t.from) || (from != "ext" && t.names[0] != from) {
             continue;
         }
         let arm = t.point - at;
-        add(0, value(&t.resultant));
-        add(1, value(&t.moment));
-        add(1, value(&t.resultant).map(|r| arm.cross(&r)));
+        mo.add(&t.moment);
+        mo.add(&t.resultant.map(|x| arm.cross(x)));
+        r.add(&t.resultant);
         found = true;
     }
     let g = gravity(m, st, vals)?;
@@ -337,8 +334,8 @@ pub(in crate::numeric) fn action(
             let f = m.solids[*s].frame;
             let (rf, of) = (st.rot0(f), st.origin(f).map(|x| x.re));
             for (mk, local) in cloud::solid_cloud(m, st, vals, *s)? {
-                add(0, Ok(g * mk));
-                add(1, Ok((of + rf * local - at).cross(&(g * mk))));
+                r.c += g * mk;
+                mo.c += (of + rf * local - at).cross(&(g * mk));
             }
         }
         found = true;
@@ -349,7 +346,7 @@ pub(in crate::numeric) fn action(
             message: format!("no action of `{from}` on `{on_name}`"),
         });
     }
-    Ok(sum)
+    Ok([value(&r), value(&mo)])
 }
 
 /// The solved PFD at one sample.
