@@ -225,7 +225,7 @@ pub fn compare(
             unknowns,
         };
         let point = numeric_point(m, &values)?;
-        let sym: Vec<f64> = symbolic.exprs().iter().map(|e| e.eval(&point)).collect();
+        let sym = symbolic.numbers(&point);
         let num = model
             .evaluate_with(&evaluated, &s, &values.unknowns, &default)?
             .numbers();

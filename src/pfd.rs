@@ -16,7 +16,7 @@
 //! assert_eq!(cm.value.exprs(), delta.value.exprs());
 //! ```
 
-use crate::expr::{CoordId, Expr, VarId};
+use crate::expr::{CoordId, Expr, Fraction, VarId};
 use crate::frame::Axis;
 use crate::kinematics::{omega, position, velocity};
 use crate::mechanism::{BodyId, Mechanism};
@@ -73,10 +73,14 @@ impl Action {
 /// The solved PFD: each unknown in closed form, each equation of motion as a residual.
 #[derive(Debug, Clone)]
 pub struct Solution {
-    /// Unknown name → value.
-    pub unknowns: BTreeMap<String, Expr>,
+    /// Unknown name → value: a polynomial, or a quotient by a polynomial in the parameters
+    /// when a pivot was one (two bearings a length L apart: Y_B = −D ω² / L).
+    pub unknowns: BTreeMap<String, Fraction>,
     /// Coordinate name → residual of its equation of motion (= 0), unknowns eliminated.
     pub eom: BTreeMap<String, Expr>,
+    /// The pivots that are not numbers (L), each a polynomial in the parameters: the
+    /// solution holds where none of them is zero.
+    pub conditions: Vec<Expr>,
 }
 
 /// Why the PFD cannot be solved as declared. `theorem` is the index of a declared equation
@@ -106,10 +110,11 @@ pub enum PfdError {
         /// The unknowns they hold.
         unknowns: Vec<String>,
     },
-    /// No remaining equation has a number as the coefficient of this unknown.
+    /// No remaining equation has a number or a polynomial in the parameters as the
+    /// coefficient of this unknown.
     #[error(
-        "cannot solve for {unknown}: its coefficient is not a number in any remaining \
-         equation (project the theorems on the basis of the link's axis)"
+        "cannot solve for {unknown}: in every remaining equation its coefficient is zero or \
+         depends on the motion (project the theorems on the basis of the link's axis)"
     )]
     NoNumericPivot {
         /// The unknown.
@@ -284,7 +289,7 @@ pub fn residual(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache) -> Expr 
 }
 
 /// Variable indices of the unknowns that occur in `e`.
-fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<VarId> {
+pub fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<VarId> {
     unknown_vars(m)
         .into_iter()
         .filter(|&(_, v)| !e.derivative(v).is_zero())
@@ -305,14 +310,20 @@ pub fn unknown_vars(m: &Mechanism) -> Vec<(String, VarId)> {
         .collect()
 }
 
-/// Replaces the unknown variable `v`, which enters `e` linearly, by `value`.
-fn replace_linear(e: &Expr, v: VarId, value: &Expr) -> Expr {
+/// Replaces the unknown variable `v`, which enters `e` linearly, by `value` = n / d: the
+/// result is d · e[v := n/d], `e` itself when `d` is 1 (an equation `e = 0` keeps its meaning).
+fn eliminate(e: &Expr, v: VarId, value: &Fraction) -> Expr {
     let c = e.derivative(v);
     if c.is_zero() {
         return e.clone();
     }
     let x = e.registry().variable(v);
-    &(e - &(&c * &x)) + &(&c * value)
+    let rest = e - &(&c * &x);
+    if value.is_whole() {
+        &rest + &(&c * &value.num)
+    } else {
+        &(&rest * &value.den) + &(&c * &value.num)
+    }
 }
 
 /// Solves the declared PFD: the equations without `eom` determine the unknowns that occur in
@@ -359,13 +370,26 @@ pub fn solve_with_residuals(
             unknowns: cols.iter().map(|v| names[v].clone()).collect(),
         });
     }
-    // Gauss–Jordan elimination with numeric pivots.
-    let mut solved: Vec<(VarId, Expr)> = Vec::new();
+    // Gauss–Jordan elimination, fraction-free: a pivot is a number when one exists, else a
+    // nonzero polynomial in the parameters (a length between two bearings), whose value is
+    // then a quotient and whose nonvanishing is a condition of the solution.
+    let mut solved: Vec<(VarId, Fraction)> = Vec::new();
+    let mut conditions: Vec<Expr> = Vec::new();
     let mut pending = rows;
     for &v in &cols {
+        let coefficient = |r: &Expr| r.derivative(v);
         let pos = pending
             .iter()
-            .position(|(_, r)| r.derivative(v).is_nonzero_constant());
+            .position(|(_, r)| coefficient(r).is_nonzero_constant())
+            .or_else(|| {
+                pending
+                    .iter()
+                    .enumerate()
+                    .map(|(i, (_, r))| (i, coefficient(r)))
+                    .filter(|(_, c)| c.is_parameter_polynomial())
+                    .min_by_key(|(_, c)| c.nterms())
+                    .map(|(i, _)| i)
+            });
         let Some(pos) = pos else {
             return Err(PfdError::NoNumericPivot {
                 unknown: names[&v].clone(),
@@ -376,16 +400,25 @@ pub fn solve_with_residuals(
         let x = m.reg.variable(v);
         // row = c x + rest = 0  =>  x = −rest / c.
         let rest = &row - &(&c * &x);
-        let value = (-&rest)
-            .div_constant(&c)
-            .ok_or_else(|| PfdError::NoNumericPivot {
-                unknown: names[&v].clone(),
-            })?;
+        let value = Fraction::new(-&rest, c.clone()).ok_or_else(|| PfdError::NoNumericPivot {
+            unknown: names[&v].clone(),
+        })?;
+        if c.as_rational().is_none() {
+            let unit = Fraction::new(m.reg.one(), c).map(|f| f.den);
+            if let Some(p) = unit.filter(|p| !conditions.contains(p)) {
+                conditions.push(p);
+            }
+        }
         for (_, r) in pending.iter_mut() {
-            *r = replace_linear(r, v, &value);
+            *r = eliminate(r, v, &value);
         }
         for (_, s) in solved.iter_mut() {
-            *s = replace_linear(s, v, &value);
+            if value.is_whole() {
+                s.num = eliminate(&s.num, v, &value);
+            } else if !s.num.derivative(v).is_zero() {
+                let den = &s.den * &value.den;
+                *s = Fraction::new(eliminate(&s.num, v, &value), den).expect("a product of pivots");
+            }
         }
         solved.push((v, value));
     }
@@ -396,7 +429,11 @@ pub fn solve_with_residuals(
     let mut eom = BTreeMap::new();
     for (i, mut r) in eoms {
         for (v, value) in &solved {
-            r = replace_linear(&r, *v, value);
+            r = eliminate(&r, *v, value);
+            // The equation was multiplied by the pivot: divide it back when it goes.
+            if !value.is_whole() {
+                r = r.exact_div(&value.den).unwrap_or(r);
+            }
         }
         let left = unknowns_in(m, &r);
         if let Some(v) = left.first() {
@@ -409,7 +446,14 @@ pub fn solve_with_residuals(
         let q = th.eom.expect("eom equation");
         eom.insert(m.reg.coord_info(q).name.clone(), r);
     }
-    Ok((Solution { unknowns, eom }, residuals))
+    Ok((
+        Solution {
+            unknowns,
+            eom,
+            conditions,
+        },
+        residuals,
+    ))
 }
 
 /// Unknowns must enter linearly (no term with two unknown factors); else the two that multiply.
@@ -534,13 +578,21 @@ pub fn transmitted(k: LinkKind, a: Axis, d: Option<Axis>) -> [bool; 6] {
     t
 }
 
-/// Names of the unknowns of a link: X, Y, Z, L, M, N followed by its name, where transmitted.
+/// Names of the unknowns of a link: X, Y, Z, L, M, N followed by its name, where transmitted
+/// (X01; X_A for a link named by a letter, its centre A).
 pub fn link_unknowns(name: &str, t: [bool; 6]) -> Vec<String> {
     ["X", "Y", "Z", "L", "M", "N"]
         .iter()
         .zip(t)
         .filter(|(_, on)| *on)
-        .map(|(l, _)| format!("{l}{name}"))
+        // A link named by its centre (`A`) gives X_A, as the course writes it; `01` gives X01.
+        .map(|(l, _)| {
+            if name.starts_with(|c: char| c.is_ascii_alphabetic()) {
+                format!("{l}_{name}")
+            } else {
+                format!("{l}{name}")
+            }
+        })
         .collect()
 }
 

@@ -469,13 +469,13 @@ fn run_eval(a: EvalArgs, emit: &mut Emit) -> Result<(), Failure> {
     let text = std::fs::read_to_string(&at)
         .with_context(|| format!("cannot read {}", at.display()))
         .map_err(bad_input)?;
-    let values = output::Values::parse(&text).map_err(bad_input)?;
+    let mut values = output::Values::parse(&text).map_err(bad_input)?;
     let qs = quantities(&m, &qs)?;
     let ds = values_only(&m, &qs)?;
     // An action holds its links' unknowns: those without a value are solved for.
     let solved = ds
         .iter()
-        .map(|d| output::solve_unknowns(&m, &d.value, &values))
+        .map(|d| output::solve_unknowns(&m, &d.value, &mut values))
         .collect::<Result<Vec<_>, _>>()
         .map_err(bad_input)?;
     // Only the parameters and coordinates the results hold are demanded.

@@ -4,11 +4,11 @@
 //! records its steps, and shares one run's cache of δ(G), m Γ(G) and the solved system.
 
 use super::{Derivation, ResolveError, Step, StepKind, Value};
-use crate::expr::Expr;
+use crate::expr::{Expr, VarId};
 use crate::mechanism::Mechanism;
 use crate::pfd::{
     Action, PfdError, Solution, Theorem, dynamic_quantity, kinetic_energy, solve_with_residuals,
-    theorem_sides, unknown_vars,
+    theorem_sides, unknown_vars, unknowns_in,
 };
 use crate::quantity::{Quantity, QuantityKind};
 use crate::torsor;
@@ -142,7 +142,7 @@ pub(super) fn derive(
                     ),
                 ));
             }
-            kinetic_energy(m, &solids)
+            Value::Scalar(kinetic_energy(m, &solids))
         }
         QuantityKind::Unknown(name) => {
             if !m.reg.unknowns().contains(name) {
@@ -161,21 +161,21 @@ pub(super) fn derive(
             let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
                 resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
             })?;
-            // The theorems that involve the unknown, whose steps are recorded.
-            let cited: Vec<usize> = if with_steps {
-                (0..residuals.len())
-                    .filter(|&i| {
-                        m.dynamics.theorems[i].eom.is_none()
-                            && var.is_some_and(|v| !residuals[i].derivative(v).is_zero())
-                    })
-                    .collect()
-            } else {
-                Vec::new()
+            // The theorems that determine the unknown, whose steps are recorded: those that
+            // hold it, and those that hold the other unknowns of these (X_A + X_B = … needs
+            // the moment that gives X_B), in the spec's order.
+            let cited: Vec<usize> = match var {
+                Some(v) if with_steps => determining(m, residuals, v),
+                _ => Vec::new(),
             };
             for i in cited {
                 theorem_steps(m, &m.dynamics.theorems[i], &mut shared.centre, &mut steps);
             }
-            v
+            if v.is_whole() {
+                Value::Scalar(v.num)
+            } else {
+                Value::Quotient(v)
+            }
         }
         QuantityKind::Eom(c) => {
             let coord = m
@@ -204,13 +204,55 @@ pub(super) fn derive(
             if with_steps {
                 theorem_steps(m, th, &mut shared.centre, &mut steps);
             }
-            value
+            Value::Scalar(value)
         }
         _ => return Err(resolve_err(q, "not a PFD quantity".to_string())),
     };
     Ok(Derivation {
         quantity: q.clone(),
         steps,
-        value: Value::Scalar(value),
+        value,
     })
+}
+
+/// The equations without `eom` that determine the unknown `v`: one that holds it (the one
+/// with the fewest unknowns that works), and, for each other unknown it holds, those that
+/// determine that one (X_A + X_B = … needs the moment that gives X_B), in the spec's order.
+fn determining(m: &Mechanism, residuals: &[Expr], v: VarId) -> Vec<usize> {
+    let rows: Vec<(usize, Vec<VarId>)> = (0..residuals.len())
+        .filter(|&i| m.dynamics.theorems[i].eom.is_none())
+        .map(|i| (i, unknowns_in(m, &residuals[i])))
+        .collect();
+    let mut cited = block(&rows, v, &mut Vec::new()).unwrap_or_default();
+    cited.sort_unstable();
+    cited
+}
+
+/// A set of rows, none in `used`, that determines `v` (see [`determining`]).
+fn block(rows: &[(usize, Vec<VarId>)], v: VarId, used: &mut Vec<usize>) -> Option<Vec<usize>> {
+    let mut holding: Vec<&(usize, Vec<VarId>)> = rows
+        .iter()
+        .filter(|(i, us)| !used.contains(i) && us.contains(&v))
+        .collect();
+    holding.sort_by_key(|(_, us)| us.len());
+    for (i, us) in holding {
+        let mark = used.len();
+        used.push(*i);
+        let mut found = vec![*i];
+        let mut ok = true;
+        for &u in us.iter().filter(|&&u| u != v) {
+            match block(rows, u, used) {
+                Some(more) => found.extend(more),
+                None => {
+                    ok = false;
+                    break;
+                }
+            }
+        }
+        if ok {
+            return Some(found);
+        }
+        used.truncate(mark);
+    }
+    None
 }

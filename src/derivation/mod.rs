@@ -1,7 +1,7 @@
 //! Derivations: a requested quantity becomes ordered steps, each a value and the theorem that
 //! produced it, following the course's « méthodologie de calcul ».
 
-use crate::expr::Expr;
+use crate::expr::{Expr, Fraction};
 use crate::frame::{Axis, FrameId};
 use crate::inertia::Inertia;
 use crate::kinematics::{acceleration, omega, point_velocity, velocity};
@@ -187,6 +187,9 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
 pub enum Value {
     /// A scalar (a projection).
     Scalar(Expr),
+    /// A scalar quotient by a polynomial in the parameters: an unknown of a PFD whose pivot
+    /// is a length (Y_B = −D ω² / L).
+    Quotient(Fraction),
     /// A vector written in a basis.
     Vector {
         /// Basis.
@@ -215,6 +218,15 @@ impl Value {
         let m3 = |c: &[Expr; 3]| [f(&c[0]), f(&c[1]), f(&c[2])];
         match self {
             Value::Scalar(e) => Value::Scalar(f(e)),
+            Value::Quotient(q) => match q.map(f) {
+                Some(q) if q.is_whole() => Value::Scalar(q.num),
+                Some(q) => Value::Quotient(q),
+                // The map made the denominator zero (a hypothesis relating parameters).
+                None => Value::Quotient(Fraction {
+                    num: f(&q.num),
+                    den: f(&q.den),
+                }),
+            },
             Value::Vector { basis, components } => Value::Vector {
                 basis: *basis,
                 components: m3(components),
@@ -243,15 +255,38 @@ impl Value {
         self.map(&|e| h.apply(e))
     }
 
-    /// Every expression, in a fixed order.
+    /// Every expression, in a fixed order (a quotient's numerator then denominator).
     pub fn exprs(&self) -> Vec<&Expr> {
         match self {
             Value::Scalar(e) => vec![e],
+            Value::Quotient(q) => vec![&q.num, &q.den],
             Value::Vector { components, .. } => components.iter().collect(),
             Value::Matrix(i) => i.matrix.iter().flatten().collect(),
             Value::Torsor {
                 resultant, moment, ..
             } => resultant.iter().chain(moment.iter()).collect(),
+        }
+    }
+
+    /// The numbers of the value at a point of the registry's variables, in the order of
+    /// [`Value::exprs`] but one number for a quotient.
+    pub fn numbers(&self, point: &[f64]) -> Vec<f64> {
+        match self {
+            Value::Quotient(q) => vec![q.num.eval(point) / q.den.eval(point)],
+            _ => self.exprs().iter().map(|e| e.eval(point)).collect(),
+        }
+    }
+
+    /// Each scalar of the value as numerator and denominator (the denominator 1 but for a
+    /// quotient), in the order of [`Value::exprs`].
+    pub fn fractions(&self) -> Vec<Fraction> {
+        match self {
+            Value::Quotient(q) => vec![q.clone()],
+            _ => self
+                .exprs()
+                .into_iter()
+                .map(|e| Fraction::whole(e.clone()))
+                .collect(),
         }
     }
 

@@ -144,6 +144,26 @@ impl Expr {
         self.p.try_div(&d.p).map(|q| self.with(q))
     }
 
+    /// Whether the expression is a nonzero polynomial in the parameters only (no coordinate,
+    /// rate or unknown): what may stand below a fraction's line.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["L".into(), "m".into()],
+    ///     &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// assert!(reg.parse("L - 2*m").unwrap().is_parameter_polynomial());
+    /// assert!(!reg.parse("L*cos(q)").unwrap().is_parameter_polynomial());
+    /// assert!(!reg.zero().is_parameter_polynomial());
+    /// ```
+    pub fn is_parameter_polynomial(&self) -> bool {
+        !self.is_zero()
+            && self
+                .reg
+                .var_ids()
+                .all(|i| self.reg.is_factor_variable(i) || !self.contains_var(i))
+    }
+
     /// Whether the expression is a nonzero rational number.
     pub fn is_nonzero_constant(&self) -> bool {
         self.as_rational().is_some_and(|r| !r.is_zero())
@@ -161,7 +181,7 @@ impl Expr {
 
 /// n/d in lowest terms (divided by their polynomial gcd), the denominator's first coefficient
 /// made 1.
-fn lowest_terms(n: Expr, d: Expr) -> (Expr, Expr) {
+pub(crate) fn lowest_terms(n: Expr, d: Expr) -> (Expr, Expr) {
     let g = n.p.gcd(&d.p);
     let (np, dp) = match (n.p.try_div(&g), d.p.try_div(&g)) {
         (Some(a), Some(b)) => (a, b),

@@ -7,6 +7,74 @@ use super::parse::{Walker, pairwise_sum, parse_atom};
 use super::*;
 use symbolica::atom::AtomView;
 
+/// An exact quotient `num / den` of two canonical forms, `den` a nonzero polynomial in the
+/// parameters (what solving a PFD whose pivots are lengths gives: Y_B = −D ω² / L). Kept in
+/// lowest terms, `den`'s first coefficient 1; `den` is 1 for a polynomial.
+///
+/// ```
+/// use torseur::expr::{Fraction, Registry};
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::new(&["L".into(), "D".into(), "w".into()], &[]).unwrap();
+/// let f = Fraction::new(reg.parse("-2*D*w^2*L").unwrap(), reg.parse("2*L^2").unwrap()).unwrap();
+/// assert_eq!(f.num, reg.parse("-D*w^2").unwrap());
+/// assert_eq!(f.den, reg.parse("L").unwrap());
+/// assert!(!f.is_whole());
+/// // Equality is exact, by cross-multiplication.
+/// let g = Fraction::new(reg.parse("D*w^2").unwrap(), reg.parse("-L").unwrap()).unwrap();
+/// assert!(f.same(&g));
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fraction {
+    /// The numerator.
+    pub num: Expr,
+    /// The denominator: a nonzero polynomial in the parameters, its first coefficient 1.
+    pub den: Expr,
+}
+
+impl Fraction {
+    /// `num / den` in lowest terms; none when `den` is zero or holds a coordinate, a rate or
+    /// an unknown.
+    pub fn new(num: Expr, den: Expr) -> Option<Fraction> {
+        if den.as_rational().is_some() {
+            return Some(Fraction::whole(num.div_constant(&den)?));
+        }
+        if !den.is_parameter_polynomial() {
+            return None;
+        }
+        let (num, den) = super::factor::lowest_terms(num, den);
+        Some(Fraction { num, den })
+    }
+
+    /// A polynomial, over 1.
+    pub fn whole(e: Expr) -> Fraction {
+        let den = e.registry().one();
+        Fraction { num: e, den }
+    }
+
+    /// Whether the denominator is 1.
+    pub fn is_whole(&self) -> bool {
+        self.den.is_one()
+    }
+
+    /// Whether every term of the numerator is negative, so that the quotient reads −(n′)/d
+    /// (a teacher writes −(m g a + E ω²)/L, not (−m g a − E ω²)/L).
+    pub fn reads_negative(&self) -> bool {
+        !self.is_whole() && !self.num.is_zero() && self.num.terms().all(|(c, _)| c.is_negative())
+    }
+
+    /// Exact equality of the two quotients: n1 d2 = n2 d1.
+    pub fn same(&self, other: &Fraction) -> bool {
+        &self.num * &other.den == &other.num * &self.den
+    }
+
+    /// Applies `f` to the numerator and the denominator (a hypothesis, a substitution of
+    /// parameters); none when the denominator becomes zero or stops being a polynomial in the
+    /// parameters.
+    pub fn map(&self, f: &impl Fn(&Expr) -> Expr) -> Option<Fraction> {
+        Fraction::new(f(&self.num), f(&self.den))
+    }
+}
+
 impl Walker<'_> {
     /// (numerator, denominator) of a text: sums over a common denominator, products and
     /// integer powers; a negative power only of what is made of parameters.

@@ -19,6 +19,7 @@ mod registry;
 mod vector_text;
 
 pub use flat::FlatEval;
+pub use fraction::Fraction;
 pub use parse::bare_names;
 pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
 pub use registry::{

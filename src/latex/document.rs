@@ -107,6 +107,9 @@ pub(super) struct Doc<'m> {
     pub(super) under: Option<&'m Hypothesis>,
     /// The results, for the closing bilan: quantity id, hypothesis, value, where.
     pub(super) results: Vec<(String, Option<String>, Value, String)>,
+    /// Whether the conditions of the PFD's solution (its pivots that are not numbers,
+    /// L ≠ 0) are stated.
+    pub(super) conditions_stated: bool,
 }
 
 impl<'m> Doc<'m> {
@@ -136,6 +139,7 @@ impl<'m> Doc<'m> {
                 e
             }
             Value::Scalar(x) => vec![x.clone()],
+            Value::Quotient(q) => vec![q.num.clone(), q.den.clone()],
         };
         let vals: Vec<String> = exprs.iter().map(|e| e.to_string()).collect();
         (lhs.to_string(), vals.join(";"))
@@ -500,6 +504,7 @@ pub fn answer_key_document(
         here: "le paramétrage".to_string(),
         under: None,
         results: Vec::new(),
+        conditions_stated: false,
     };
     let o = &mut doc.o;
     o.push_str(PREAMBLE);

@@ -3,7 +3,9 @@
 //! brackets around a sum that holds a parenthesised one), and its line breaking.
 
 use super::{name, width};
-use crate::expr::{Angle, CoordId, Expr, Factor, Form, Leaf, Presentation, Product, Registry};
+use crate::expr::{
+    Angle, CoordId, Expr, Factor, Form, Fraction, Leaf, Presentation, Product, Registry,
+};
 
 /// A rate: \dot{\theta}_{1}, the accent on the head, the subscript after.
 fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
@@ -161,6 +163,25 @@ pub(crate) fn form(reg: &Registry, f: &Form) -> String {
 pub fn expr(e: &Expr) -> String {
     let p = e.presentation();
     form(p.registry(), p.form())
+}
+
+/// A quotient in LaTeX, `\frac{num}{den}`, a minus of a one-term numerator in front.
+///
+/// ```
+/// use torseur::expr::{Fraction, Registry};
+/// let reg = Registry::new(&["D".into(), "L".into(), "w".into()], &[]).unwrap();
+/// let q = Fraction::new(reg.parse("-D*w^2").unwrap(), reg.parse("L").unwrap()).unwrap();
+/// assert_eq!(torseur::latex::fraction(&q), "-\\frac{D\\,w^{2}}{L}");
+/// ```
+pub fn fraction(q: &Fraction) -> String {
+    if q.is_whole() {
+        return expr(&q.num);
+    }
+    let den = expr(&q.den);
+    if q.reads_negative() {
+        return format!("-\\frac{{{}}}{{{den}}}", expr(&-&q.num));
+    }
+    format!("\\frac{{{}}}{{{den}}}", expr(&q.num))
 }
 
 /// Unbreakable pieces of the presentation form: each product, or, for a product too wide

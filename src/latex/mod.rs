@@ -21,7 +21,7 @@ mod theorems;
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
 };
-pub use expr::{expr, expr_lines};
+pub use expr::{expr, expr_lines, fraction};
 pub use figures::{link_graph, link_text, rotation_figures};
 pub use text::{RichTextError, rich_text, rich_text_or_escaped};
 
@@ -579,6 +579,7 @@ pub(crate) fn value_within(
         }
     }
     match v {
+        Value::Quotient(q) => format!("{lhs} &= {}", fraction(q)),
         Value::Scalar(e) => {
             let ls = expr_lines(e, max);
             let mut out = format!("{lhs} &= {}", ls[0]);

@@ -188,11 +188,44 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
             }
         }
         _ => {
+            if matches!(d.quantity.kind, QuantityKind::Unknown(_)) {
+                state_conditions(doc);
+            }
             let lhs = quantity(&d.quantity.kind);
             doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
         }
     }
     let _ = m;
+}
+
+/// Once, before the first unknown: the pivots of the PFD's solution that are not numbers,
+/// each stated nonzero (« elle suppose $L \neq 0$ »), each formula recorded for the proof.
+fn state_conditions(doc: &mut Doc) {
+    if doc.conditions_stated {
+        return;
+    }
+    doc.conditions_stated = true;
+    let Ok(sol) = crate::pfd::solve(doc.m) else {
+        return;
+    };
+    if sol.conditions.is_empty() {
+        return;
+    }
+    let mut said = Vec::new();
+    for c in &sol.conditions {
+        let latex = format!("{} \\neq 0", super::expr(c));
+        said.push(format!("${latex}$"));
+        doc.inline.push(super::Inline {
+            what: format!("condition {c} != 0"),
+            latex,
+            value: Value::Scalar(c.clone()),
+        });
+    }
+    let _ = writeln!(
+        doc.o,
+        "Les pivots de la résolution ne sont pas tous des nombres : elle suppose {}.\n",
+        said.join(" et ")
+    );
 }
 
 /// A linearised equation of motion whose full equation was just boxed: the small-motion
@@ -243,12 +276,16 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
 /// actions keep the derivation's wording (« pesanteur sur $S_1$ », « le moteur, action sur
 /// $S_1$ »).
 fn bilan_text(m: &crate::mechanism::Mechanism, s: &crate::derivation::Step) -> String {
-    if let StepKind::Action { from, on, .. } = &s.kind {
+    if let StepKind::Action { from, on, point } = &s.kind {
         let between = |l: &&crate::wire::LinkSpec| {
             (l.between[0] == *from && l.between[1] == *on)
                 || (l.between[0] == *on && l.between[1] == *from)
         };
-        let links: Vec<_> = m.spec.links.iter().filter(between).collect();
+        let mut links: Vec<_> = m.spec.links.iter().filter(between).collect();
+        // Two bearings between the same solids: each is reduced at its own centre.
+        if links.len() > 1 {
+            links.retain(|l| l.point == *point);
+        }
         if let [l] = links.as_slice() {
             return format!(
                 "liaison {}, action de ${}$ sur ${}$",

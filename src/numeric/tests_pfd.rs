@@ -457,19 +457,20 @@ fn link_kinds_transmit_their_components() {
         ]
     });
     let m = model_of(&spec);
+    // Links named by a letter: X_a, as the course writes X_A for the bearing A.
     let names: Vec<&str> = m.unknown_names().collect();
     assert_eq!(
         names,
         [
-            "Xa", "Ya", "Za", "La", "Ma", "Na", // fixed
-            "Xb", "Yb", "Zb", "Lb", "Mb", // pivot z
-            "Yc", "Zc", "Lc", "Mc", "Nc", // slider x
-            "Xd", "Zd", "Ld", "Nd", // pivot slider y
-            "Xe", "Ye", "Ze", // ball
-            "Zp", "Lp", "Mp", // plane of normal z
-            "Yn", "Zn", // annular of axis x
-            "Zl", "Ml", // line of normal z, direction x
-            "Yq", // point of normal y
+            "X_a", "Y_a", "Z_a", "L_a", "M_a", "N_a", // fixed
+            "X_b", "Y_b", "Z_b", "L_b", "M_b", // pivot z
+            "Y_c", "Z_c", "L_c", "M_c", "N_c", // slider x
+            "X_d", "Z_d", "L_d", "N_d", // pivot slider y
+            "X_e", "Y_e", "Z_e", // ball
+            "Z_p", "L_p", "M_p", // plane of normal z
+            "Y_n", "Z_n", // annular of axis x
+            "Z_l", "M_l", // line of normal z, direction x
+            "Y_q", // point of normal y
         ]
     );
 }

@@ -48,7 +48,9 @@ impl Values {
 }
 
 /// `v` with each unknown of the PFD it holds (an action of the bilan holds its links') that
-/// `values` gives no value for replaced by its solved value ([`crate::pfd::solve`]).
+/// `values` gives no value for replaced by its solved value ([`crate::pfd::solve`]). A solved
+/// value that is a quotient (a pivot was a length) stays a symbol: its number at the
+/// parameters of `values` is added to `values.unknowns`.
 ///
 /// ```
 /// use torseur::output::{Values, solve_unknowns};
@@ -56,14 +58,14 @@ impl Values {
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// let q = Quantity::parse("M(O1,ext->E).z0").unwrap();
 /// let v = torseur::derivation::derive(&m, &q).unwrap().value;
-/// let solved = solve_unknowns(&m, &v, &Values::default()).unwrap();
+/// let solved = solve_unknowns(&m, &v, &mut Values::default()).unwrap();
 /// let c_m = torseur::derivation::derive(&m, &Quantity::parse("C_m").unwrap()).unwrap().value;
 /// assert_eq!(solved.exprs(), c_m.exprs());
 /// // A value given is kept for evaluation.
-/// let given = Values::parse(r#"{"unknowns": {"C_m": 2}}"#).unwrap();
-/// assert_eq!(solve_unknowns(&m, &v, &given).unwrap().exprs(), v.exprs());
+/// let mut given = Values::parse(r#"{"unknowns": {"C_m": 2}}"#).unwrap();
+/// assert_eq!(solve_unknowns(&m, &v, &mut given).unwrap().exprs(), v.exprs());
 /// ```
-pub fn solve_unknowns(m: &Mechanism, v: &Value, values: &Values) -> Result<Value, ValuesError> {
+pub fn solve_unknowns(m: &Mechanism, v: &Value, values: &mut Values) -> Result<Value, ValuesError> {
     let held: Vec<(String, crate::expr::VarId)> = crate::pfd::unknown_vars(m)
         .into_iter()
         .filter(|(n, x)| {
@@ -88,7 +90,14 @@ pub fn solve_unknowns(m: &Mechanism, v: &Value, values: &Values) -> Result<Value
                  determines it"
             ))
         })?;
-        out = out.map(&|e| e.substitute(*x, value));
+        if value.is_whole() {
+            out = out.map(&|e| e.substitute(*x, &value.num));
+        } else {
+            // A quotient stays a symbol of the value, its number given at the parameters.
+            let point = numeric_point_for(m, values, &[&value.num, &value.den])?;
+            let number = value.num.eval(&point) / value.den.eval(&point);
+            values.unknowns.insert(n.clone(), number);
+        }
     }
     Ok(out)
 }
@@ -264,6 +273,9 @@ pub fn eval_value(m: &Mechanism, id: &str, v: &Value, point: &[f64]) -> Json {
     let ev = |c: &[crate::expr::Expr; 3]| -> Vec<f64> { c.iter().map(|e| e.eval(point)).collect() };
     match v {
         Value::Scalar(e) => json!({"id": id, "kind": "scalar", "value": e.eval(point)}),
+        Value::Quotient(q) => {
+            json!({"id": id, "kind": "scalar", "value": q.num.eval(point) / q.den.eval(point)})
+        }
         Value::Vector { basis, components } => json!({
             "id": id, "kind": "vector", "basis": format!("B{}", m.frame_name(*basis)), "value": ev(components)}),
         Value::Matrix(i) => json!({

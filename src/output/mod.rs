@@ -6,7 +6,7 @@ pub use crate::atomic::write_atomic;
 pub use eval::{Values, ValuesError, eval_value, numeric_point, numeric_point_for, solve_unknowns};
 
 use crate::derivation::{Derivation, Value};
-use crate::expr::Expr;
+use crate::expr::{Expr, Fraction};
 use crate::mechanism::Mechanism;
 use serde_json::{Value as Json, json};
 
@@ -50,6 +50,7 @@ pub fn value_text_in(m: &Mechanism, v: &Value, form: TextForm) -> String {
     let f = |e: &Expr| present(e);
     match v {
         Value::Scalar(e) => present(e),
+        Value::Quotient(q) => quotient_text(q, f),
         Value::Vector { basis, components } => {
             format!(
                 "[{}] in B{}",
@@ -110,6 +111,29 @@ pub fn derive_text_in(m: &Mechanism, ds: &[Derivation], form: TextForm) -> Strin
     out
 }
 
+/// `num/den` as text that reads back: each side in parentheses unless it is one term (the
+/// numerator) or one name (the denominator).
+fn quotient_text(q: &Fraction, f: impl Fn(&Expr) -> String) -> String {
+    let (minus, num) = if q.reads_negative() {
+        ("-", -&q.num)
+    } else {
+        ("", q.num.clone())
+    };
+    let n = f(&num);
+    let d = f(&q.den);
+    let n = if num.nterms() == 1 {
+        n
+    } else {
+        format!("({n})")
+    };
+    let d = if d.chars().all(|c| c.is_alphanumeric() || c == '_') {
+        d
+    } else {
+        format!("({d})")
+    };
+    format!("{minus}{n}/{d}")
+}
+
 /// A value as JSON: canonical and presentation strings.
 pub fn value_json(m: &Mechanism, v: &Value) -> Json {
     let canon = |c: &[Expr; 3]| -> Vec<String> { c.iter().map(|e| e.to_string()).collect() };
@@ -118,6 +142,12 @@ pub fn value_json(m: &Mechanism, v: &Value) -> Json {
         Value::Scalar(e) => {
             json!({"kind": "scalar", "canonical": e.to_string(), "presentation": present(e), "terms": e.nterms()})
         }
+        Value::Quotient(q) => json!({
+            "kind": "scalar",
+            "canonical": quotient_text(q, |e| e.to_string()),
+            "presentation": quotient_text(q, present),
+            "numerator": q.num.to_string(), "denominator": q.den.to_string(),
+            "terms": v.nterms()}),
         Value::Vector { basis, components } => json!({
             "kind": "vector", "basis": format!("B{}", m.frame_name(*basis)),
             "canonical": canon(components), "presentation": pres(components), "terms": v.nterms()}),

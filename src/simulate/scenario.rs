@@ -44,6 +44,9 @@ pub(super) struct Plan {
     pub dynamics: Compiled,
     /// The recorded expressions (unknowns, integrands), evaluated once q̈ is known.
     pub recorded: Compiled,
+    /// What each recorded expression is multiplied by: 1 / its denominator at the parameters
+    /// for an unknown solved as a quotient (Y_B = −D ω² / L), 1 otherwise.
+    pub scales: Vec<f64>,
     /// Number of recorded expressions that are integrated (the last ones).
     pub integrals: usize,
     /// Initial [q, q̇] of the free coordinates.
@@ -172,15 +175,18 @@ impl Plan {
             .compile(&refs)
             .map_err(|e| err(format!("compiling the equations of motion: {e}")))?;
         let mut rec: Vec<Expr> = Vec::new();
+        let mut scales = Vec::new();
         for id in record {
             let v = sol
                 .unknowns
                 .get(id)
                 .ok_or_else(|| err(format!("record: `{id}` is not a solved unknown")))?;
-            rec.push(v.clone());
+            rec.push(v.num.clone());
+            scales.push(1.0 / v.den.eval(&base));
         }
         for (_, e) in integrate {
             rec.push(e.clone());
+            scales.push(1.0);
         }
         if rec.is_empty() {
             rec.push(reg.zero());
@@ -197,6 +203,7 @@ impl Plan {
             base,
             dynamics,
             recorded,
+            scales,
             integrals: integrate.len(),
             initial,
             breakpoints,
@@ -255,6 +262,9 @@ impl Plan {
         }
         let mut recorded = vec![0.0; self.recorded.outputs()];
         self.recorded.evaluate(&point, &mut recorded);
+        for (r, k) in recorded.iter_mut().zip(&self.scales) {
+            *r *= k;
+        }
         if let Some(bad) = out.iter().chain(&recorded).find(|v| !v.is_finite()) {
             return Err(format!("non-finite value {bad} at t = {t}"));
         }

@@ -405,6 +405,12 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
                 return Err(at(format!("{path}.on"), "an action is received by a solid"));
             }
         };
+        if from == Source::Body(on) {
+            return Err(at(
+                format!("{path}.on"),
+                "an action is exerted by one solid on another",
+            ));
+        }
         let point = point(m, format!("{path}.point"), &a.point)?;
         let (resultant, b1) = match &a.resultant {
             Some(t) => vector(m, &format!("{path}.resultant"), t)?,

@@ -438,6 +438,7 @@ fn component_names(m: &Mechanism, v: &Value) -> Vec<String> {
     };
     match v {
         Value::Scalar(_) => vec![String::new()],
+        Value::Quotient(_) => vec![String::new(), "denominator".to_string()],
         Value::Vector { basis, .. } => axes(*basis).to_vec(),
         Value::Matrix(_) => (0..9).map(|k| format!("[{}][{}]", k / 3, k % 3)).collect(),
         Value::Torsor { basis, .. } => {
@@ -459,6 +460,30 @@ pub fn check_expected(
     expected: ExpectedDimension,
     v: &Value,
 ) -> Result<(), DimensionError> {
+    if let Value::Quotient(q) = v {
+        // Each side homogeneous, the quotient of the quantity's dimension.
+        let side = |e: &Expr, at: String| {
+            scan(e, dims).map_err(|h| DimensionError {
+                at,
+                problem: DimensionProblem::Inhomogeneous(h),
+            })
+        };
+        let num = side(&q.num, what.to_string())?;
+        let den = side(&q.den, format!("{what}, denominator"))?;
+        if let (Some((n, t)), Some((d, _)), Some(want)) = (num, den, expected.component(0))
+            && n / d != want
+        {
+            return Err(DimensionError {
+                at: what.to_string(),
+                problem: DimensionProblem::Unexpected {
+                    term: term_text(&q.num, t),
+                    found: n / d,
+                    expected: want,
+                },
+            });
+        }
+        return Ok(());
+    }
     let names = component_names(m, v);
     for (k, e) in v.exprs().into_iter().enumerate() {
         let at = match names.get(k).map(String::as_str) {

@@ -321,7 +321,7 @@ fn parse_shaped(
     derived: &Value,
     text: &str,
 ) -> Result<Vec<(Expr, Expr)>, VerifyError> {
-    let n = derived.exprs().len();
+    let n = derived.fractions().len();
     // A vector of the torsor or the vector itself, in the quantity's basis.
     let one = || reader_one(derived);
     let vector = |reader: &mut Reader, t: &str, b| -> Result<Vec<(Expr, Expr)>, VerifyError> {
@@ -342,7 +342,7 @@ fn parse_shaped(
         }
     };
     let given: Vec<(Expr, Expr)> = match derived {
-        Value::Scalar(_) => vec![reader.read_fraction(text.trim())?],
+        Value::Scalar(_) | Value::Quotient(_) => vec![reader.read_fraction(text.trim())?],
         Value::Vector { basis, .. } => vector(reader, text, *basis)?,
         Value::Torsor { basis, .. } => {
             let rows = split_list(text).filter(|r| r.len() == 2).ok_or_else(|| {
@@ -462,11 +462,11 @@ pub fn verify(
     // An action of the bilan holds its links' unknowns as declared: so does the text.
     reader.keep_unknowns = q.kind.action().is_some();
     let given = parse_shaped(&mut reader, &derived, text)?;
-    // n/d − derived, multiplied by d ≠ 0: n − d · derived.
+    // n/d − N/D, multiplied by d D ≠ 0: n D − d N.
     let difference = given
         .iter()
-        .zip(derived.exprs())
-        .map(|((n, den), d)| n - &(den * d))
+        .zip(derived.fractions())
+        .map(|((n, den), d)| &(n * &d.den) - &(den * &d.num))
         .collect();
     let denominators = given.into_iter().map(|(_, den)| den).collect();
     Ok(Verdict {

@@ -80,7 +80,8 @@ impl<'a> Reader<'a> {
                 "`{text}`: its denominator is zero under the hypothesis"
             )));
         }
-        Ok((self.finish(n, text)?, d))
+        let (n, solved) = self.finish(n, text)?;
+        Ok((n, &d * &solved))
     }
 
     /// lhs − rhs over a common denominator: (numerator, denominator).
@@ -117,7 +118,14 @@ impl<'a> Reader<'a> {
         for (f, c) in parts {
             let mut done = Vec::with_capacity(3);
             for e in c {
-                done.push(self.finish(e, text)?);
+                let (n, d) = self.finish(e, text)?;
+                if !d.is_one() {
+                    return Err(VerifyError::Shape(format!(
+                        "`{text}`: an unknown inside it is a quotient ({d} below the line): \
+                         write the components one by one"
+                    )));
+                }
+                done.push(n);
             }
             let c: [Expr; 3] = done.try_into().expect("three components");
             v.add_part(f, c);
@@ -248,9 +256,10 @@ impl<'a> Reader<'a> {
     }
 
     /// A value read from `text`: the unknowns of the PFD replaced by their solved values,
-    /// under the hypothesis.
-    fn finish(&mut self, mut e: Expr, text: &str) -> Result<Expr, VerifyError> {
+    /// under the hypothesis; as n / d, d ≠ 1 when a solved value is a quotient (Y_B = −D ω²/L).
+    fn finish(&mut self, mut e: Expr, text: &str) -> Result<(Expr, Expr), VerifyError> {
         let reg = self.m.reg.clone();
+        let mut den = reg.one();
         // Unknowns of the PFD: their solved values.
         for v in reg.var_ids() {
             if self.keep_unknowns {
@@ -273,10 +282,18 @@ impl<'a> Reader<'a> {
                         "`{name}` in `{text}`: no equation of the spec's pfd determines it"
                     ))
                 })?;
-            e = e.substitute(v, &value);
+            if value.is_whole() {
+                e = e.substitute(v, &value.num);
+            } else {
+                // e = c x + rest with x = n / d: (c n + d rest) / d.
+                let c = e.derivative(v);
+                let rest = &e - &(&c * &reg.variable(v));
+                e = &(&c * &value.num) + &(&rest * &value.den);
+                den = &den * &value.den;
+            }
             self.note(name);
         }
-        Ok(self.under(e))
+        Ok((self.under(e), self.under(den)))
     }
 
     /// The derived value of a scalar quantity written inside an expression.

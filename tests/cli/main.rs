@@ -1163,3 +1163,39 @@ fn eval_solves_the_unknowns_an_action_holds_or_takes_them_given() {
         stderr(&o)
     );
 }
+
+#[test]
+fn eval_and_derive_give_an_unknown_solved_as_a_quotient() {
+    // Two bearings L apart: the moment at A on x1 gives L Y_B = −D ω² (hand derivation in
+    // tests/engine/library.rs), so Y_B = −D ω²/L; the resultant on y1, Y_A = −Y_B.
+    let d = tmp();
+    let at = d.path().join("values.json");
+    std::fs::write(
+        &at,
+        r#"{"parameters":{"m":2,"a":0.01,"c":0.2,"L":0.5,"A":1,"B":1,"C":1,"D":0.003,
+        "E":0.004,"F":0,"omega":100,"g":9.81},"coordinates":{"theta":[0.3,100,0]}}"#,
+    )
+    .unwrap();
+    let spec = "derivations/rotor_deux_paliers.json";
+    let o = run(&[
+        "eval",
+        spec,
+        "--at",
+        at.to_str().unwrap(),
+        "-q",
+        "Y_B",
+        "-q",
+        "R(0->1).y1",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let y_b = v["quantities"][0]["value"].as_f64().unwrap();
+    assert!((y_b - (-0.003 * 100.0 * 100.0 / 0.5)).abs() < 1e-9, "{y_b}");
+    // R(0→1)·y1 = Y_A + Y_B = 0 (the bearings' y1 actions cancel).
+    let r = v["quantities"][1]["value"].as_f64().unwrap();
+    assert!(r.abs() < 1e-9, "{r}");
+    // derive prints the quotient as it reads back; the JSON splits it.
+    let o = run(&["derive", spec, "-q", "Y_B"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stdout(&o).trim(), "Y_B = -D*omega^2/L\n  under H: 0");
+}

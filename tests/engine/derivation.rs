@@ -15,6 +15,7 @@ use torseur::quantity::Quantity;
 fn same(a: &Value, b: &Value) -> bool {
     let shape = |v: &Value| match v {
         Value::Scalar(_) => (0, None, None),
+        Value::Quotient(_) => (4, None, None),
         Value::Vector { basis, .. } => (1, Some(*basis), None),
         Value::Matrix(i) => (2, Some(i.basis), Some(i.point)),
         Value::Torsor { point, basis, .. } => (3, Some(*basis), Some(*point)),

@@ -428,6 +428,26 @@ impl Ctx<'_> {
         Ok((e, r.seen))
     }
 
+    /// A scalar that may be a quotient, as (numerator, denominator) read by the engine's
+    /// fraction parser.
+    fn quotient(&self, t: &[Tok]) -> Result<(Expr, Expr), String> {
+        let mut r = Reader {
+            t,
+            i: 0,
+            names: &self.names,
+            basis: &|_, _| "0",
+            seen: vec![],
+        };
+        let text = r.sum()?;
+        if r.i != t.len() || !r.seen.is_empty() {
+            return Err(format!("not a scalar: {text}"));
+        }
+        self.m
+            .reg
+            .parse_fraction_with(&text, &|_| None)
+            .map_err(|e| format!("{text}: {e}"))
+    }
+
     fn scalar(&self, t: &[Tok]) -> Result<Expr, String> {
         let (e, seen) = self.read(t, &|_, _| "0")?;
         if !seen.is_empty() {
@@ -576,6 +596,14 @@ fn prove(ctx: &Ctx, latex: &str, v: &Value) -> Result<(), String> {
                 return Err(format!("{} equations for a scalar", eqs.len()));
             };
             same("scalar", &ctx.scalar(rhs)?, e)
+        }
+        Value::Quotient(q) => {
+            let [(_, rhs)] = eqs.as_slice() else {
+                return Err(format!("{} equations for a quotient", eqs.len()));
+            };
+            // n / d = N / D, cross-multiplied.
+            let (n, d) = ctx.quotient(rhs)?;
+            same("quotient", &(&n * &q.den), &(&q.num * &d))
         }
         Value::Vector { basis, components } => {
             let [(_, rhs)] = eqs.as_slice() else {
@@ -744,6 +772,12 @@ fn every_printed_formula_is_the_engines_value() {
             let t = tokenize(&f.latex);
             let ok = match &f.value {
                 // A scalar alone, or stated as `lhs = value` (an imposed rate ψ̇ = ω).
+                // A condition `value \neq 0`: its left side is the value, its right side 0.
+                Value::Scalar(e) if t.contains(&Tok::Cmd("neq".into())) => {
+                    let ne = t.iter().position(|x| *x == Tok::Cmd("neq".into())).unwrap();
+                    let zero = ctx.scalar(&t[ne + 1..]).map(|z| z.is_zero());
+                    ctx.scalar(&t[..ne]).map(|g| &g == e && zero == Ok(true))
+                }
                 Value::Scalar(e) => {
                     let rhs = match t.iter().position(|x| *x == Tok::Sym('=')) {
                         Some(eq) => &t[eq + 1..],
@@ -951,6 +985,22 @@ fn every_derived_text_and_json_string_is_the_engines_value() {
             }
             for (v, jv) in cases {
                 for form in ["canonical", "presentation"] {
+                    // A quotient is one string n/d: read by the fraction parser, compared by
+                    // cross-multiplication.
+                    if let Value::Quotient(q) = &v {
+                        let g = jv[form].as_str().unwrap();
+                        let (n1, d1) = m.reg.parse_fraction_with(g, &|_| None).unwrap();
+                        assert!(
+                            &n1 * &q.den == &q.num * &d1 && !d1.is_one(),
+                            "{}: {} ({form}) printed {g}, engine {}/{}",
+                            path.display(),
+                            d.quantity,
+                            q.num,
+                            q.den
+                        );
+                        n += 1;
+                        continue;
+                    }
                     let got = json_strings(jv, form);
                     let want = v.exprs();
                     assert_eq!(got.len(), want.len(), "{}: {}", path.display(), d.quantity);

@@ -397,7 +397,18 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
             if !t {
                 continue;
             }
-            let name = format!("{}{}", letters[k], l.name);
+            // X01 for the link 01, X_A for the link named after its centre A.
+            let sep = if l
+                .name
+                .chars()
+                .next()
+                .is_some_and(|c| c.is_ascii_alphabetic())
+            {
+                "_"
+            } else {
+                ""
+            };
+            let name = format!("{}{sep}{}", letters[k], l.name);
             free_name(&name).map_err(|e| {
                 spec_err(
                     format!("{path}.name"),
