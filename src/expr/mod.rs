@@ -12,6 +12,7 @@ mod eval;
 mod factor;
 mod flat;
 mod fraction;
+mod number_text;
 mod parse;
 pub(crate) mod present;
 pub(crate) mod print;
@@ -20,6 +21,7 @@ mod vector_text;
 
 pub use flat::FlatEval;
 pub use fraction::Fraction;
+pub use number_text::evaluate_number;
 pub use parse::bare_names;
 pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
 pub use registry::{

@@ -20,6 +20,11 @@ const POWER_WORK: u128 = 10 * super::MAX_EXPANDED_TERMS;
 
 /// Only these characters can appear in an expression of the spec syntax.
 fn check_chars(s: &str) -> Result<(), String> {
+    check_chars_with(s, FUNCTIONS)
+}
+
+/// [`check_chars`] with another list of functions (those of a number in a values file).
+pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String> {
     if s.len() > MAX_INPUT {
         return Err(format!(
             "{} characters, longer than the {MAX_INPUT} a typed expression may have",
@@ -62,9 +67,10 @@ fn check_chars(s: &str) -> Result<(), String> {
                 i += 1;
             }
             let word = &s[start..i];
-            if i < b.len() && (b[i] == b'(' || b[i] == b'[') && !FUNCTIONS.contains(&word) {
+            if i < b.len() && (b[i] == b'(' || b[i] == b'[') && !functions.contains(&word) {
                 return Err(format!(
-                    "`{word}(...)`: the functions are sin, cos, dot and ddot"
+                    "`{word}(...)`: the functions are {}",
+                    listed(functions)
                 ));
             }
         } else {
@@ -231,11 +237,25 @@ pub fn bare_names(s: &str) -> Vec<String> {
 /// The functions of the expression syntax.
 const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
 
+/// « sin, cos, dot and ddot ».
+fn listed(names: &[&str]) -> String {
+    match names.split_last() {
+        Some((last, [])) => last.to_string(),
+        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+        None => String::new(),
+    }
+}
+
 pub(super) fn parse_atom(s: &str) -> Result<Atom, ExprError> {
     check_chars(s).map_err(|reason| ExprError::Parse {
         input: s.to_string(),
         reason,
     })?;
+    parse_checked(s)
+}
+
+/// symbolica's parse of a text whose characters and functions are checked.
+pub(super) fn parse_checked(s: &str) -> Result<Atom, ExprError> {
     let exact = exact_decimals(s).map_err(|reason| ExprError::Parse {
         input: s.to_string(),
         reason,

@@ -29,11 +29,43 @@ pub struct Values {
 #[error("values: {0}")]
 pub struct ValuesError(pub String);
 
+/// A number of the values file, or an expression of the others (`"atan(omega^2*a/g)"`).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+enum Entry {
+    Number(f64),
+    Text(String),
+}
+
+/// The values file as written, before its expressions are evaluated.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawValues {
+    #[serde(default)]
+    parameters: BTreeMap<String, Entry>,
+    #[serde(default)]
+    coordinates: BTreeMap<String, [Entry; 3]>,
+    #[serde(default)]
+    unknowns: BTreeMap<String, f64>,
+}
+
 impl Values {
-    /// Parses a values file, naming the JSON path of a wrong entry.
+    /// Parses a values file, naming the JSON path of a wrong entry. A parameter or a
+    /// coordinate's value may be an expression of the other parameters and coordinates
+    /// (`"beta": "atan(omega^2*a/g)"`, `"x": "l0 - m*g/k"`; see
+    /// [`crate::expr::evaluate_number`]), evaluated once those are known.
+    ///
+    /// ```
+    /// use torseur::output::Values;
+    /// let v = Values::parse(r#"{"parameters": {"g": 9.81, "omega": 3, "a": 0.1,
+    ///     "beta": "atan(omega^2*a/g)"}, "coordinates": {"theta": ["beta", 0, 0]}}"#).unwrap();
+    /// assert_eq!(v.coordinates["theta"][0], (0.9_f64 / 9.81).atan());
+    /// let e = Values::parse(r#"{"parameters": {"a": "b", "b": "a"}}"#).unwrap_err();
+    /// assert!(e.to_string().contains("parameters.a"), "{e}");
+    /// ```
     pub fn parse(text: &str) -> Result<Values, ValuesError> {
         let mut de = serde_json::Deserializer::from_str(text);
-        let v: Values = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+        let raw: RawValues = serde_path_to_error::deserialize(&mut de).map_err(|e| {
             let path = e.path().to_string();
             let inner = e.into_inner();
             ValuesError(format!(
@@ -43,8 +75,87 @@ impl Values {
             ))
         })?;
         de.end().map_err(|e| ValuesError(e.to_string()))?;
-        Ok(v)
+        raw.evaluated()
     }
+}
+
+impl RawValues {
+    /// Every entry a number: the expressions evaluated in rounds, each with the numbers known
+    /// so far, until none is left (or none can be, which names the first and its reason).
+    fn evaluated(self) -> Result<Values, ValuesError> {
+        let mut out = Values {
+            unknowns: self.unknowns,
+            ..Values::default()
+        };
+        // (path, where the number goes, text).
+        let mut pending: Vec<(String, Slot, String)> = Vec::new();
+        for (n, e) in self.parameters {
+            match e {
+                Entry::Number(x) => {
+                    out.parameters.insert(n, x);
+                }
+                Entry::Text(t) => pending.push((format!("parameters.{n}"), Slot::Parameter(n), t)),
+            }
+        }
+        for (n, es) in self.coordinates {
+            let mut v = [f64::NAN; 3];
+            for (k, e) in es.into_iter().enumerate() {
+                match e {
+                    Entry::Number(x) => v[k] = x,
+                    Entry::Text(t) => pending.push((
+                        format!("coordinates.{n}[{k}]"),
+                        Slot::Coordinate(n.clone(), k),
+                        t,
+                    )),
+                }
+            }
+            out.coordinates.insert(n, v);
+        }
+        while !pending.is_empty() {
+            let mut progress = false;
+            let mut first_error = None;
+            let mut left = Vec::new();
+            for (path, slot, text) in pending {
+                let known = |name: &str| {
+                    out.parameters.get(name).copied().or_else(|| {
+                        out.coordinates
+                            .get(name)
+                            .map(|c| c[0])
+                            .filter(|x| !x.is_nan())
+                    })
+                };
+                match crate::expr::evaluate_number(&text, &known) {
+                    Ok(x) => {
+                        match &slot {
+                            Slot::Parameter(n) => {
+                                out.parameters.insert(n.clone(), x);
+                            }
+                            Slot::Coordinate(n, k) => {
+                                out.coordinates.get_mut(n).expect("declared")[*k] = x;
+                            }
+                        }
+                        progress = true;
+                    }
+                    Err(e) => {
+                        first_error.get_or_insert_with(|| format!("at {path}: {e}"));
+                        left.push((path, slot, text));
+                    }
+                }
+            }
+            if !progress {
+                return Err(ValuesError(first_error.unwrap_or_default()));
+            }
+            pending = left;
+        }
+        Ok(out)
+    }
+}
+
+/// Where an evaluated entry of the values file goes.
+#[derive(Debug, Clone)]
+enum Slot {
+    Parameter(String),
+    Coordinate(String, usize),
 }
 
 /// `v` with each unknown of the PFD it holds (an action of the bilan holds its links') that

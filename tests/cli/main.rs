@@ -1199,3 +1199,48 @@ fn eval_and_derive_give_an_unknown_solved_as_a_quotient() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(stdout(&o).trim(), "Y_B = -D*omega^2/L\n  under H: 0");
 }
+
+#[test]
+fn eval_takes_values_written_as_expressions_of_the_others() {
+    // The pendulum on a shaft turning at ω (hand derivation in tests/engine/library.rs):
+    // A' θ̈ + (C − A') ω² sin θ cos θ + m g a sin θ = 0, A' = A + m a². Its relative
+    // equilibrium off the axis is cos β = m g a / ((A' − C) ω²): given by an arccosine, the
+    // equation of motion there is zero.
+    let d = tmp();
+    let at = d.path().join("values.json");
+    std::fs::write(
+        &at,
+        r#"{"parameters": {"m": 0.5, "a": 0.2, "A": 0.01, "C": 0.002, "g": 9.81,
+        "omega": 12, "beta": "acos(m*g*a/((A + m*a^2 - C)*omega^2))"},
+        "coordinates": {"theta": ["beta", 0, 0]}}"#,
+    )
+    .unwrap();
+    let spec = "derivations/pendule_arbre_tournant.json";
+    let eval = |q: &str| run(&["eval", spec, "--at", at.to_str().unwrap(), "-q", q]);
+    let o = eval("eom(theta)");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let r = v["quantities"][0]["value"].as_f64().unwrap();
+    assert!(r.abs() < 1e-12, "{r}");
+    // The weight's moment there is m g a sin β, β from the same arccosine.
+    let o = eval("M(O,pes->2).x1");
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let beta = (0.5f64 * 9.81 * 0.2 / ((0.01 + 0.5 * 0.04 - 0.002) * 144.0)).acos();
+    let w = v["quantities"][0]["value"].as_f64().unwrap();
+    assert!((w + 0.5 * 9.81 * 0.2 * beta.sin()).abs() < 1e-12, "{w}");
+    // Values that refer to each other: exit 2, the entry named, nothing written.
+    std::fs::write(&at, r#"{"parameters": {"m": "g*2", "g": "m/2"}}"#).unwrap();
+    let o = eval("eom(theta)");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stdout(&o).is_empty());
+    assert!(stderr(&o).contains("at parameters.g"), "{}", stderr(&o));
+    // A function that is not a number's.
+    std::fs::write(&at, r#"{"parameters": {"m": "dot(g)"}}"#).unwrap();
+    let o = eval("eom(theta)");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("the functions are sin, cos, tan"),
+        "{}",
+        stderr(&o)
+    );
+}
