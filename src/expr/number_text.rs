@@ -3,7 +3,7 @@
 //! of the parameters. symbolica parses the text; the tree is evaluated in f64.
 
 use super::ExprError;
-use super::parse::{check_chars_with, parse_checked};
+use super::parse::{check_chars_with, names_in, parse_checked};
 use symbolica::atom::{AtomCore, AtomView, Symbol};
 use symbolica::domains::rational::Q;
 
@@ -50,25 +50,16 @@ const PREFIX: &str = "fn_";
 
 /// The text with each function name `f(` written `fn_f(`.
 fn renamed(text: &str) -> String {
-    let b = text.as_bytes();
     let mut out = String::with_capacity(text.len() + 16);
-    let mut i = 0;
-    while i < b.len() {
-        if b[i].is_ascii_alphabetic() || b[i] == b'_' {
-            let start = i;
-            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                i += 1;
-            }
-            let word = &text[start..i];
-            if FUNCTIONS.contains(&word) && text[i..].trim_start().starts_with('(') {
-                out.push_str(PREFIX);
-            }
-            out.push_str(word);
-        } else {
-            out.push(b[i] as char);
-            i += 1;
+    let mut at = 0;
+    for (start, end, called) in names_in(text) {
+        if called && FUNCTIONS.contains(&&text[start..end]) {
+            out.push_str(&text[at..start]);
+            out.push_str(PREFIX);
+            at = start;
         }
     }
+    out.push_str(&text[at..]);
     out
 }
 

@@ -58,23 +58,13 @@ pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String
     }
     // Only the syntax's functions may be called, never with empty arguments: the text must
     // not reach symbolica's own function evaluation (cot(), exp(...)).
-    let b = s.as_bytes();
-    let mut i = 0;
-    while i < b.len() {
-        if b[i].is_ascii_alphabetic() || b[i] == b'_' {
-            let start = i;
-            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                i += 1;
-            }
-            let word = &s[start..i];
-            if i < b.len() && (b[i] == b'(' || b[i] == b'[') && !functions.contains(&word) {
-                return Err(format!(
-                    "`{word}(...)`: the functions are {}",
-                    listed(functions)
-                ));
-            }
-        } else {
-            i += 1;
+    for (start, end, called) in names_in(s) {
+        let word = &s[start..end];
+        if called && !functions.contains(&word) {
+            return Err(format!(
+                "`{word}(...)`: the functions are {}",
+                listed(functions)
+            ));
         }
     }
     if s.split_whitespace().collect::<String>().contains("()") {
@@ -236,6 +226,25 @@ pub fn bare_names(s: &str) -> Vec<String> {
 
 /// The functions of the expression syntax.
 const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
+
+/// Each name of `s` as (start, end, called), called when `(` or `[` follows it at once.
+pub(super) fn names_in(s: &str) -> Vec<(usize, usize, bool)> {
+    let b = s.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        if b[i].is_ascii_alphabetic() || b[i] == b'_' {
+            let start = i;
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                i += 1;
+            }
+            out.push((start, i, i < b.len() && (b[i] == b'(' || b[i] == b'[')));
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
 
 /// « sin, cos, dot and ddot ».
 fn listed(names: &[&str]) -> String {
