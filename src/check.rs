@@ -223,6 +223,7 @@ pub fn compare(
             parameters: s.parameters.clone(),
             coordinates: s.coordinates.clone(),
             unknowns,
+            time: Some(s.time),
         };
         let point = numeric_point(m, &values)?;
         let sym = symbolic.numbers(&point);

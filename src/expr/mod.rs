@@ -22,7 +22,7 @@ mod vector_text;
 pub use flat::FlatEval;
 pub use fraction::Fraction;
 pub use number_text::evaluate_number;
-pub use parse::bare_names;
+pub use parse::{bare_names, pulsations_in};
 pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
 pub use registry::{
     MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry,
@@ -170,6 +170,8 @@ pub struct CoordInfo {
     /// A constant angle parameter (`"kind": "angle"` in `parameters`): cos and sin variables,
     /// no rate; its value itself is the parameter's variable.
     constant: bool,
+    /// A phase Ω t (named `Omega*t`): the pulsation Ω, a parameter, is its imposed rate.
+    phase: Option<String>,
 }
 
 impl CoordInfo {
@@ -182,6 +184,12 @@ impl CoordInfo {
     /// Whether the rate is imposed (q̇ given, q̈ = 0).
     pub fn has_imposed_rate(&self) -> bool {
         self.imposed_rate.is_some()
+    }
+
+    /// The pulsation Ω when this is the phase Ω t of a forcing or an imposed law written
+    /// with the time (`cos(Omega*t)`); its name is then `Omega*t`.
+    pub fn phase(&self) -> Option<&str> {
+        self.phase.as_deref()
     }
 
     /// Whether this is a constant angle parameter, not a time coordinate: it has cos and sin

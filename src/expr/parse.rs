@@ -227,6 +227,43 @@ pub fn bare_names(s: &str) -> Vec<String> {
 /// The functions of the expression syntax.
 const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
 
+/// The pulsations Ω of the phases Ω t written in `s` (`F0*cos(Omega*t)` gives `Omega`), in
+/// order of appearance: the names a registry's [`RegistryBuilder::phases`] declares. A text
+/// that does not parse has none (its error comes when it is read).
+///
+/// ```
+/// assert_eq!(torseur::expr::pulsations_in("a*cos(Omega*t)*y0 + b*sin(2*w*t - theta)*x1"),
+///            ["Omega", "w"]);
+/// ```
+pub fn pulsations_in(s: &str) -> Vec<String> {
+    fn walk(v: AtomView, out: &mut Vec<String>) {
+        match v {
+            AtomView::Mul(m) if m.iter().any(|f| is_time(f)) => {
+                for f in m.iter() {
+                    if let AtomView::Var(x) = f {
+                        let n = x.get_symbol().get_stripped_name().to_string();
+                        if n != TIME && !out.contains(&n) {
+                            out.push(n);
+                        }
+                    }
+                }
+            }
+            AtomView::Mul(m) => m.iter().for_each(|f| walk(f, out)),
+            AtomView::Add(a) => a.iter().for_each(|f| walk(f, out)),
+            AtomView::Pow(p) => walk(p.get_base_exp().0, out),
+            AtomView::Fun(f) => f.iter().for_each(|a| walk(a, out)),
+            _ => {}
+        }
+    }
+    let mut out = Vec::new();
+    if names_in(s).iter().any(|&(a, b, _)| &s[a..b] == TIME)
+        && let Ok(a) = parse_checked(s)
+    {
+        walk(a.as_view(), &mut out);
+    }
+    out
+}
+
 /// Each name of `s` as (start, end, called), called when `(` or `[` follows it at once.
 pub(super) fn names_in(s: &str) -> Vec<(usize, usize, bool)> {
     let b = s.as_bytes();
@@ -455,6 +492,9 @@ impl Walker<'_> {
                 if let Some(e) = (self.names)(&name) {
                     return Ok(e);
                 }
+                if name == TIME {
+                    return Err(self.unsupported(TIME_IN_PHASES));
+                }
                 Err(ExprError::UnknownName {
                     name,
                     input: self.input.to_string(),
@@ -607,6 +647,9 @@ impl Walker<'_> {
                     lin.pi = Rational::one();
                     return Ok(lin);
                 }
+                if name == TIME {
+                    return Err(self.unsupported(TIME_IN_PHASES));
+                }
                 match self.reg.angle(name) {
                     Some(q) => {
                         lin.coords.push((q, Rational::one()));
@@ -630,6 +673,32 @@ impl Walker<'_> {
                     sum.add(self.linear(t)?);
                 }
                 Ok(sum)
+            }
+            AtomView::Mul(m) if m.iter().any(|f| mentions_time(f)) => {
+                // Ω t, times numbers: the phase of the pulsation Ω.
+                let mut pulsation = None;
+                let mut k = Rational::one();
+                for f in m.iter() {
+                    match f {
+                        _ if is_time(f) => {}
+                        _ if mentions_time(f) => return Err(self.unsupported(TIME_IN_PHASES)),
+                        AtomView::Var(v) if pulsation.is_none() => {
+                            pulsation = Some(v.get_symbol().get_stripped_name().to_string())
+                        }
+                        _ => match self.linear(f).ok().and_then(|l| l.as_constant()) {
+                            Some(c) => k = &k * &c,
+                            None => return Err(self.unsupported(TIME_IN_PHASES)),
+                        },
+                    }
+                }
+                let w = pulsation.ok_or_else(|| self.unsupported(TIME_IN_PHASES))?;
+                let q = self
+                    .reg
+                    .phase(&w)
+                    .ok_or_else(|| self.unsupported(TIME_IN_PHASES))?;
+                let mut lin = Linear::constant(Rational::zero());
+                lin.coords.push((q, k));
+                Ok(lin)
             }
             AtomView::Mul(m) => {
                 let mut product = Linear::constant(Rational::one());
@@ -663,6 +732,33 @@ impl Walker<'_> {
             }
             _ => Err(nonlinear()),
         }
+    }
+}
+
+/// The name of the time.
+const TIME: &str = "t";
+
+/// Why the time is refused where it stands.
+const TIME_IN_PHASES: &str = "the time t enters only as a phase inside sin and cos, \
+     Omega*t with Omega a parameter (a pulsation in rad/s), possibly times a number";
+
+/// Whether `v` is the time `t`.
+fn is_time(v: AtomView) -> bool {
+    matches!(v, AtomView::Var(x) if x.get_symbol().get_stripped_name() == TIME)
+}
+
+/// Whether `v` holds the time anywhere (`t^2`, `(t + 1)`).
+fn mentions_time(v: AtomView) -> bool {
+    match v {
+        AtomView::Var(_) => is_time(v),
+        AtomView::Mul(m) => m.iter().any(mentions_time),
+        AtomView::Add(a) => a.iter().any(mentions_time),
+        AtomView::Pow(p) => {
+            let (b, e) = p.get_base_exp();
+            mentions_time(b) || mentions_time(e)
+        }
+        AtomView::Fun(f) => f.iter().any(mentions_time),
+        _ => false,
     }
 }
 

@@ -185,6 +185,7 @@ pub struct RegistryBuilder {
     unknowns: Vec<String>,
     raw_angles: Vec<String>,
     angle_parameters: Vec<String>,
+    phases: Vec<String>,
     display_ranks: Vec<u32>,
 }
 
@@ -206,6 +207,26 @@ impl RegistryBuilder {
     pub fn coordinate_with_rate(mut self, name: &str, kind: CoordinateKind, rate: &str) -> Self {
         self.coords
             .push((name.to_string(), kind, Some(rate.to_string())));
+        self
+    }
+
+    /// The phases Ω t of the pulsations `names` (parameters): the time enters a mechanism
+    /// only as sin(Ω t) and cos(Ω t), so each phase is an angle coordinate named `Omega*t`
+    /// whose rate Ω is imposed, after the declared coordinates.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// let reg = Registry::builder()
+    ///     .parameters(&["F0".into(), "Omega".into()])
+    ///     .phases(&["Omega".into()])
+    ///     .build()
+    ///     .unwrap();
+    /// let f = reg.parse("F0*cos(Omega*t)").unwrap();
+    /// assert_eq!(f.dt(), reg.parse("-F0*Omega*sin(Omega*t)").unwrap());
+    /// assert_eq!(f.to_string(), "F0*cos(Omega*t)");
+    /// ```
+    pub fn phases(mut self, names: &[String]) -> Self {
+        self.phases.extend_from_slice(names);
         self
     }
 
@@ -273,8 +294,25 @@ impl Registry {
             unknowns,
             raw_angles,
             angle_parameters,
+            phases,
             display_ranks,
         } = b;
+        for w in &phases {
+            if !parameters.contains(w) || angle_parameters.contains(w) {
+                return Err(ExprError::Declaration(format!(
+                    "the pulsation `{w}` of `{w}*t` is not a parameter (the time enters as \
+                     cos(Omega*t), Omega a parameter declared in rad/s)"
+                )));
+            }
+        }
+        let n_declared = coords.len();
+        let mut coords = coords;
+        for w in &phases {
+            let name = format!("{w}*t");
+            if !coords.iter().any(|c| c.0 == name) {
+                coords.push((name, CoordinateKind::Angle, Some(w.clone())));
+            }
+        }
         let (parameters, coords, unknowns, raw_angles, angle_parameters) = (
             &parameters[..],
             &coords[..],
@@ -302,9 +340,18 @@ impl Registry {
         };
         let mut infos = Vec::new();
         for (i, (name, kind, rate)) in coords.iter().enumerate() {
-            check(name)?;
+            let phase = (i >= n_declared).then(|| rate.clone()).flatten();
             let id = CoordId(i);
-            let q = Atom::var(symbolica::symbol!(name.as_str()));
+            let q = match &phase {
+                // The atom Ω t itself: no symbol of the user's can clash with it.
+                Some(w) => {
+                    Atom::var(symbolica::symbol!(w.as_str())) * Atom::var(symbolica::symbol!("t"))
+                }
+                None => {
+                    check(name)?;
+                    Atom::var(symbolica::symbol!(name.as_str()))
+                }
+            };
             let mut info = CoordInfo {
                 name: name.clone(),
                 kind: *kind,
@@ -313,6 +360,7 @@ impl Registry {
                 rates: None,
                 imposed_rate: None,
                 constant: false,
+                phase,
             };
             match kind {
                 CoordinateKind::Angle => {
@@ -388,6 +436,7 @@ impl Registry {
                 rates: None,
                 imposed_rate: None,
                 constant: true,
+                phase: None,
             });
         }
         let mut param_var = HashMap::new();
@@ -517,6 +566,14 @@ impl Registry {
             .get(name)
             .copied()
             .filter(|q| self.coords[q.0].kind == CoordinateKind::Angle)
+    }
+
+    /// The phase Ω t of the pulsation `w`, if the mechanism has one.
+    pub fn phase(&self, w: &str) -> Option<CoordId> {
+        self.coords[..self.n_coords]
+            .iter()
+            .position(|c| c.phase() == Some(w))
+            .map(CoordId)
     }
 
     /// Coordinate (or constant angle parameter) information.

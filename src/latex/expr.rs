@@ -26,8 +26,17 @@ fn angle(reg: &Registry, a: &Angle) -> (String, bool) {
         "an angle is printed normalised"
     );
     let mut s = String::new();
+    let mut phase = false;
     for (i, &(q, k)) in a.terms().iter().enumerate() {
-        let n = name(&reg.coord_info(q).name);
+        let info = reg.coord_info(q);
+        // A phase is written Ω t, and always in parentheses: cos(Ω t).
+        let n = match info.phase() {
+            Some(w) => {
+                phase = true;
+                format!("{}\\,t", name(w))
+            }
+            None => name(&info.name),
+        };
         let body = if k.abs() == 1 {
             n
         } else {
@@ -40,7 +49,7 @@ fn angle(reg: &Registry, a: &Angle) -> (String, bool) {
         });
         s.push_str(&body);
     }
-    (s, a.terms().len() > 1)
+    (s, phase || a.terms().len() > 1)
 }
 
 /// A leaf raised to `k`: \cos^{2}\theta_{2}, L_{2}^{2}, \dot{\theta}_{1}^{2}.

@@ -16,6 +16,7 @@ fn at(node: &Node, params: &[f64], coords: &[f64]) -> Result<f64, String> {
         coords,
         rates: &[],
         frames: &[],
+        time: 0.0,
     };
     expr::eval_scalar(node, &env)
 }
@@ -81,6 +82,11 @@ pub(super) fn linear_angle(
         let not_linear = || "an angle is an integer combination of angles and π/2".to_string();
         let constant = |f: &Form| f.0.values().all(|c| *c == 0.0).then_some(f.1);
         Ok(match n {
+            // A phase k Ω t (checked when parsed): a variable of its own, Ω's.
+            Node::Mul(..) | Node::Neg(_) | Node::Time if expr::depends_on_time_itself(n) => {
+                let (p, k) = expr::phase(n).ok_or_else(not_linear)?;
+                (BTreeMap::from([((2, p), k)]), 0.0)
+            }
             Node::Num(x) => (BTreeMap::new(), *x),
             Node::Param(p) if angle_param(*p) => (BTreeMap::from([((0, *p), 1.0)]), 0.0),
             Node::Coord(c) if angle_coord(*c) => (BTreeMap::from([((1, *c), 1.0)]), 0.0),
@@ -142,7 +148,7 @@ pub(super) fn linear_angle(
     // A frame turns by ±q + a constant: one coordinate at most, with coefficient ±1.
     let turning: Vec<f64> = vars
         .iter()
-        .filter(|((kind, _), c)| *kind == 1 && **c != 0.0)
+        .filter(|((kind, _), c)| *kind >= 1 && **c != 0.0)
         .map(|(_, c)| *c)
         .collect();
     if turning.len() > 1 || turning.iter().any(|c| c.abs() != 1.0) {

@@ -50,6 +50,8 @@ pub(crate) enum Node {
     Basis(usize, usize),
     /// An unknown of the PFD (a link component, a motor torque), by index.
     Unknown(usize),
+    /// The time t (only inside a phase Ω t of sin or cos, see [`check_time`]).
+    Time,
     Neg(Box<Node>),
     Add(Box<Node>, Box<Node>),
     Sub(Box<Node>, Box<Node>),
@@ -67,6 +69,7 @@ pub(crate) enum Name {
     Coord(usize),
     Basis(usize, usize),
     Unknown(usize),
+    Time,
 }
 
 /// Static type of an expression: the literal zero fits both a scalar and a vector.
@@ -307,6 +310,7 @@ impl Parser<'_> {
                 Name::Coord(i) => Node::Coord(i),
                 Name::Basis(f, a) => Node::Basis(f, a),
                 Name::Unknown(i) => Node::Unknown(i),
+                Name::Time => Node::Time,
             });
         }
         Err(format!(
@@ -367,7 +371,7 @@ pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
                 Scalar
             }
         }
-        Node::Param(_) | Node::Coord(_) | Node::Rate(..) | Node::Unknown(_) => Scalar,
+        Node::Param(_) | Node::Coord(_) | Node::Rate(..) | Node::Unknown(_) | Node::Time => Scalar,
         Node::Basis(..) => Vector,
         Node::Neg(a) => kind(a)?,
         Node::Add(a, b) | Node::Sub(a, b) => match (kind(a)?, kind(b)?) {
@@ -405,13 +409,124 @@ pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
     })
 }
 
+/// Why the time is refused where it stands.
+const TIME_ONLY_IN_PHASES: &str = "the time t enters only as a phase inside sin and cos: \
+     Omega*t, Omega a parameter, times an integer";
+
+/// Whether `node` holds the time.
+fn holds_time(node: &Node) -> bool {
+    match node {
+        Node::Time => true,
+        Node::Num(_)
+        | Node::Param(_)
+        | Node::Coord(_)
+        | Node::Rate(..)
+        | Node::Basis(..)
+        | Node::Unknown(_) => false,
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => holds_time(a),
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            holds_time(a) || holds_time(b)
+        }
+    }
+}
+
+/// Whether `node` holds the time t itself (not only coordinates).
+pub(crate) fn depends_on_time_itself(node: &Node) -> bool {
+    holds_time(node)
+}
+
+/// Where the time may stand: only in a phase k Ω t (k an integer, Ω a parameter), a term of
+/// the argument of sin or cos; `angle` says that `node` is itself an angle (a frame's
+/// rotation), whose terms may then be phases too.
+pub(crate) fn check_time(node: &Node, angle: bool) -> Result<(), String> {
+    if !holds_time(node) {
+        return Ok(());
+    }
+    if angle {
+        return match node {
+            Node::Add(a, b) | Node::Sub(a, b) => {
+                check_time(a, true)?;
+                check_time(b, true)
+            }
+            Node::Neg(a) => check_time(a, true),
+            _ => phase_term(node),
+        };
+    }
+    match node {
+        Node::Sin(a) | Node::Cos(a) => check_time(a, true),
+        Node::Neg(a) | Node::Pow(a, _) => check_time(a, false),
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            check_time(a, false)?;
+            check_time(b, false)
+        }
+        _ => Err(TIME_ONLY_IN_PHASES.into()),
+    }
+}
+
+/// A term k Ω t of an angle: one time, one parameter, and integer numbers as factors.
+fn phase_term(node: &Node) -> Result<(), String> {
+    phase(node)
+        .map(|_| ())
+        .ok_or_else(|| TIME_ONLY_IN_PHASES.into())
+}
+
+/// The pulsation Ω (a parameter index) and the integer k of a phase term k Ω t.
+pub(crate) fn phase(node: &Node) -> Option<(usize, f64)> {
+    fn factors<'a>(n: &'a Node, sign: f64, out: &mut Vec<&'a Node>) -> f64 {
+        match n {
+            Node::Mul(a, b) => factors(a, sign, out) * factors(b, 1.0, out),
+            Node::Neg(a) => -factors(a, sign, out),
+            _ => {
+                out.push(n);
+                sign
+            }
+        }
+    }
+    let mut fs = Vec::new();
+    let mut k = factors(node, 1.0, &mut fs);
+    let (mut times, mut pulsation) = (0, None);
+    for f in fs {
+        match f {
+            Node::Time => times += 1,
+            Node::Param(p) if pulsation.is_none() => pulsation = Some(*p),
+            _ => {
+                // A constant made of numbers: it must be a nonzero integer.
+                let env = Env::<f64> {
+                    params: &[],
+                    coords: &[],
+                    rates: &[],
+                    frames: &[],
+                    time: 0.0,
+                };
+                let mut free = std::collections::BTreeSet::new();
+                params_in(f, &mut free);
+                if !free.is_empty() || depends_on_time(f) {
+                    return None;
+                }
+                let c = eval_scalar(f, &env).ok()?;
+                if c == 0.0 || c.fract() != 0.0 {
+                    return None;
+                }
+                k *= c;
+            }
+        }
+    }
+    (times == 1).then_some(())?;
+    pulsation.map(|p| (p, k))
+}
+
 /// Every parameter index `node` uses.
 pub(crate) fn params_in(node: &Node, out: &mut std::collections::BTreeSet<usize>) {
     match node {
         Node::Param(i) => {
             out.insert(*i);
         }
-        Node::Num(_) | Node::Coord(_) | Node::Rate(..) | Node::Basis(..) | Node::Unknown(_) => {}
+        Node::Num(_)
+        | Node::Coord(_)
+        | Node::Rate(..)
+        | Node::Basis(..)
+        | Node::Unknown(_)
+        | Node::Time => {}
         Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => params_in(a, out),
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
             params_in(a, out);
@@ -426,7 +541,12 @@ pub(crate) fn unknowns_in(node: &Node, out: &mut std::collections::BTreeSet<usiz
         Node::Unknown(i) => {
             out.insert(*i);
         }
-        Node::Num(_) | Node::Param(_) | Node::Coord(_) | Node::Rate(..) | Node::Basis(..) => {}
+        Node::Num(_)
+        | Node::Param(_)
+        | Node::Coord(_)
+        | Node::Rate(..)
+        | Node::Basis(..)
+        | Node::Time => {}
         Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => unknowns_in(a, out),
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
             unknowns_in(a, out);
@@ -441,7 +561,12 @@ pub(crate) fn frames_in(node: &Node, out: &mut std::collections::BTreeSet<usize>
         Node::Basis(f, _) => {
             out.insert(*f);
         }
-        Node::Num(_) | Node::Param(_) | Node::Coord(_) | Node::Rate(..) | Node::Unknown(_) => {}
+        Node::Num(_)
+        | Node::Param(_)
+        | Node::Coord(_)
+        | Node::Rate(..)
+        | Node::Unknown(_)
+        | Node::Time => {}
         Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => frames_in(a, out),
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
             frames_in(a, out);
@@ -453,7 +578,7 @@ pub(crate) fn frames_in(node: &Node, out: &mut std::collections::BTreeSet<usize>
 /// Whether `node` depends on time (a coordinate or a rate).
 pub(crate) fn depends_on_time(node: &Node) -> bool {
     match node {
-        Node::Coord(_) | Node::Rate(..) => true,
+        Node::Coord(_) | Node::Rate(..) | Node::Time => true,
         Node::Num(_) | Node::Param(_) | Node::Basis(..) | Node::Unknown(_) => false,
         Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => depends_on_time(a),
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
@@ -467,9 +592,12 @@ pub(crate) fn without_unknowns(node: &Node) -> Node {
     let b = |a: &Node| Box::new(without_unknowns(a));
     match node {
         Node::Unknown(_) => Node::Num(0.0),
-        Node::Num(_) | Node::Param(_) | Node::Coord(_) | Node::Rate(..) | Node::Basis(..) => {
-            node.clone()
-        }
+        Node::Num(_)
+        | Node::Param(_)
+        | Node::Coord(_)
+        | Node::Rate(..)
+        | Node::Basis(..)
+        | Node::Time => node.clone(),
         Node::Neg(a) => Node::Neg(b(a)),
         Node::Add(x, y) => Node::Add(b(x), b(y)),
         Node::Sub(x, y) => Node::Sub(b(x), b(y)),
@@ -488,9 +616,12 @@ pub(crate) fn unknown_coefficient(node: &Node, k: usize) -> Node {
     let z = |a: &Node| Box::new(without_unknowns(a));
     match node {
         Node::Unknown(j) => Node::Num(if *j == k { 1.0 } else { 0.0 }),
-        Node::Num(_) | Node::Param(_) | Node::Coord(_) | Node::Rate(..) | Node::Basis(..) => {
-            Node::Num(0.0)
-        }
+        Node::Num(_)
+        | Node::Param(_)
+        | Node::Coord(_)
+        | Node::Rate(..)
+        | Node::Basis(..)
+        | Node::Time => Node::Num(0.0),
         Node::Neg(a) => Node::Neg(d(a)),
         Node::Add(x, y) => Node::Add(d(x), d(y)),
         Node::Sub(x, y) => Node::Sub(d(x), d(y)),
@@ -517,7 +648,12 @@ pub(crate) fn unknown_coefficient(node: &Node, k: usize) -> Node {
 pub(crate) fn unknown_degree(node: &Node) -> Result<u32, String> {
     Ok(match node {
         Node::Unknown(_) => 1,
-        Node::Num(_) | Node::Param(_) | Node::Coord(_) | Node::Rate(..) | Node::Basis(..) => 0,
+        Node::Num(_)
+        | Node::Param(_)
+        | Node::Coord(_)
+        | Node::Rate(..)
+        | Node::Basis(..)
+        | Node::Time => 0,
         Node::Neg(a) => unknown_degree(a)?,
         Node::Add(a, b) | Node::Sub(a, b) => unknown_degree(a)?.max(unknown_degree(b)?),
         Node::Mul(a, b) => unknown_degree(a)? + unknown_degree(b)?,
@@ -560,6 +696,8 @@ pub(crate) struct Env<'a, T> {
     pub rates: &'a [[T; 2]],
     /// Orientation of each frame: column k is its k-th basis vector in ground components.
     pub frames: &'a [Matrix3<T>],
+    /// The time t (a dual number of derivative 1 where rates are followed).
+    pub time: T,
 }
 
 /// Evaluates a node that passed [`kind`].
@@ -579,6 +717,7 @@ pub(crate) fn eval<T: Num>(node: &Node, env: &Env<T>) -> Result<Val<T>, String> 
         }
         // Unknowns are replaced by numbers first ([`without_unknowns`], [`unknown_coefficient`]).
         Node::Unknown(_) => return Err("internal: an unknown of the PFD has no value here".into()),
+        Node::Time => Val::S(env.time),
         Node::Neg(a) => match eval(a, env)? {
             Val::S(x) => Val::S(-x),
             Val::V(v) => Val::V(-v),

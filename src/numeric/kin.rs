@@ -17,6 +17,8 @@ pub(super) struct Values {
     pub params: Vec<f64>,
     /// [q, q̇, q̈] per coordinate.
     pub coords: Vec<[f64; 3]>,
+    /// The time t.
+    pub time: f64,
 }
 
 impl Values {
@@ -27,6 +29,7 @@ impl Values {
             coords: &[],
             rates: &[],
             frames: &[],
+            time: 0.0,
         }
     }
 
@@ -66,7 +69,11 @@ pub(super) fn values(m: &NumericModel, s: &Sample) -> Result<Values, NumericErro
     let mut vals = Values {
         params,
         coords: Vec::with_capacity(m.coords.len()),
+        time: s.time,
     };
+    if !s.time.is_finite() {
+        return Err(bad("the time `t` is not finite".to_string()));
+    }
     for c in &m.coords {
         let v = *s
             .coordinates
@@ -160,6 +167,8 @@ pub(super) fn state(m: &NumericModel, v: &Values) -> Result<State, NumericError>
         .iter()
         .map(|c| [D2::from(c[1]), D2::from(c[2])])
         .collect();
+    // The time, followed like a coordinate of rate 1.
+    let time = D2::new(v.time, 1.0, 0.0);
     let mut rot = vec![Matrix3::<D2>::identity(); m.frames.len()];
     for (k, f) in m.frames.iter().enumerate().skip(1) {
         let parent = rot[f.parent];
@@ -171,6 +180,7 @@ pub(super) fn state(m: &NumericModel, v: &Values) -> Result<State, NumericError>
                     coords: &coords,
                     rates: &rates,
                     frames: &[],
+                    time,
                 };
                 let a = expr::eval_scalar(angle, &env).map_err(|e| NumericError::Evaluation {
                     what: format!("rotation angle of frame {}", f.name),
@@ -185,6 +195,7 @@ pub(super) fn state(m: &NumericModel, v: &Values) -> Result<State, NumericError>
         coords: &coords,
         rates: &rates,
         frames: &rot,
+        time,
     };
     let mut pos = vec![Vector3::<D2>::zeros(); m.points.len()];
     for (k, p) in m.points.iter().enumerate().skip(1) {

@@ -62,6 +62,9 @@ pub struct Sample {
     /// `[q, q̇, q̈]` of every time coordinate of the spec.
     #[serde(default)]
     pub coordinates: BTreeMap<String, [f64; 3]>,
+    /// The time t, for a spec that writes it (a forcing F0 cos(Ω t)).
+    #[serde(default)]
+    pub time: f64,
 }
 
 /// A numeric value of a quantity. Bases are frame names (`"2"` for B2).
@@ -286,6 +289,26 @@ impl NumericModel {
         model.dynamics = dynamics::build(spec, &model)?;
         model::mark_positive(&mut model);
         Ok(model)
+    }
+
+    /// Whether the spec writes the time t (a forcing F0 cos(Ω t), a frame turned by Ω t):
+    /// its samples then draw t too.
+    pub(crate) fn uses_time(&self) -> bool {
+        let frames = self
+            .frames
+            .iter()
+            .filter_map(|f| f.rotation.as_ref().map(|r| &r.2));
+        let points = self.points.iter().map(|p| &p.position);
+        let actions = self
+            .dynamics
+            .actions
+            .iter()
+            .flat_map(|a| [a.resultant.as_ref(), a.moment.as_ref()])
+            .flatten();
+        frames
+            .chain(points)
+            .chain(actions)
+            .any(expr::depends_on_time_itself)
     }
 
     /// Evaluates a quantity in course notation at `sample`.

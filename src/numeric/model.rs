@@ -87,6 +87,14 @@ impl Names<'_> {
             if let Some(i) = unknowns.get(name) {
                 return Ok(Name::Unknown(*i));
             }
+            if name == "t" {
+                return match ctx {
+                    Context::Constant | Context::ConstantVector => {
+                        Err("the time `t` cannot appear here: only parameters can".to_string())
+                    }
+                    _ => Ok(Name::Time),
+                };
+            }
             if let Some(i) = self.coords.get(name) {
                 return if ctx == Context::Constant {
                     Err(format!(
@@ -114,6 +122,7 @@ impl Names<'_> {
             matches!(ctx, Context::Instant | Context::Action),
         )?;
         let k = expr::kind(&node)?;
+        expr::check_time(&node, ctx == Context::Angle)?;
         match (ctx, k) {
             (Context::Position, Kind::Scalar) => Err(
                 "a position is a vector: every term holds one basis vector (x0, y1, z2, …)".into(),

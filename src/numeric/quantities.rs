@@ -221,6 +221,7 @@ pub(super) fn evaluate_expression(
         coords: &coords,
         rates: &rates,
         frames: &[],
+        time: vals.time,
     };
     let x = expr::eval_scalar(&node, &env).map_err(|e| NumericError::Evaluation {
         what: format!("expression `{text}`"),

@@ -319,6 +319,7 @@ pub(super) fn draw(
     let mut vals = Values {
         params: vec![0.0; m.params.len()],
         coords: Vec::with_capacity(m.coords.len()),
+        time: 0.0,
     };
     for (i, p) in m.params.iter().enumerate() {
         if !from_cloud.contains_key(&i) {
@@ -386,6 +387,9 @@ pub(super) fn draw(
             qdd = 0.0;
         }
         vals.coords.push([q, qd, qdd]);
+    }
+    if m.uses_time() {
+        vals.time = rng.random_range(0.0..=10.0);
     }
 
     // Inertia parameters: the geometry does not depend on them, so place it once.
@@ -488,5 +492,6 @@ pub(super) fn draw(
             .zip(&vals.coords)
             .map(|(c, v)| (c.name.clone(), *v))
             .collect(),
+        time: vals.time,
     })
 }

@@ -25,6 +25,7 @@ pub(super) fn sample(params: &[(&str, f64)], coords: &[(&str, [f64; 3])]) -> Sam
     Sample {
         parameters: params.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
         coordinates: coords.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
+        time: 0.0,
     }
 }
 

@@ -22,6 +22,10 @@ pub struct Values {
     /// Values of unknowns of the PFD.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub unknowns: BTreeMap<String, f64>,
+    /// The time t, for a spec that writes it (`cos(Omega*t)`): each phase Ω t is then Ω
+    /// times it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time: Option<f64>,
 }
 
 /// A values file that does not fit the mechanism.
@@ -47,6 +51,8 @@ struct RawValues {
     coordinates: BTreeMap<String, [Entry; 3]>,
     #[serde(default)]
     unknowns: BTreeMap<String, f64>,
+    #[serde(default)]
+    time: Option<f64>,
 }
 
 impl Values {
@@ -85,6 +91,7 @@ impl RawValues {
     fn evaluated(self) -> Result<Values, ValuesError> {
         let mut out = Values {
             unknowns: self.unknowns,
+            time: self.time,
             ..Values::default()
         };
         // (path, where the number goes, text).
@@ -286,6 +293,7 @@ fn point_where(
         }
     }
     let (mut missing_parameters, mut missing_coordinates) = (Vec::new(), Vec::new());
+    let mut missing_time = false;
     let miss = |list: &mut Vec<String>, name: &str| {
         if !list.iter().any(|x| x == name) {
             list.push(name.to_string());
@@ -318,6 +326,22 @@ fn point_where(
                     None => miss(&mut missing_parameters, name),
                 }
             }
+            // A phase Ω t: Ω among the parameters, t the values' time.
+            VarRole::Cos(q) | VarRole::Sin(q) if reg.coord_info(q).phase().is_some() => {
+                let w = reg.coord_info(q).phase().unwrap_or_default();
+                let w = match values.parameters.get(w) {
+                    Some(w) => *w,
+                    None => miss(&mut missing_parameters, w),
+                };
+                match values.time {
+                    Some(t) if matches!(reg.role(i), VarRole::Cos(_)) => (w * t).cos(),
+                    Some(t) => (w * t).sin(),
+                    None => {
+                        missing_time = true;
+                        f64::NAN
+                    }
+                }
+            }
             VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q) | VarRole::Rate(q, _) => {
                 let name = &reg.coord_info(q).name;
                 match values.coordinates.get(name) {
@@ -343,6 +367,7 @@ fn point_where(
             && !exempt
             && missing_parameters.is_empty()
             && missing_coordinates.is_empty()
+            && !missing_time
         {
             return Err(ValuesError(format!(
                 "non-finite value for variable {}",
@@ -372,6 +397,9 @@ fn point_where(
             plural(missing_coordinates.len(), "coordinate"),
             listed(&missing_coordinates)
         ));
+    }
+    if missing_time {
+        parts.push("the time `t` (\"time\": a number)".to_string());
     }
     if !parts.is_empty() {
         return Err(ValuesError(format!("missing {}{why}", parts.join(" and "))));

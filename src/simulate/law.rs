@@ -71,6 +71,7 @@ impl TimeLaw {
             coords: &tt,
             rates: &[],
             frames: &[],
+            time: Dual64::from(t).derivative(),
         };
         let v = expr::eval_scalar(node, &env)?;
         Ok((v.re(), v.eps))

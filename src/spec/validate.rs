@@ -122,6 +122,21 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             }
         }
     }
+    // The time enters as phases Ω t (a forcing F0 cos(Ω t), a frame turned by Ω t): each
+    // pulsation that is a parameter gets its phase coordinate.
+    let mut pulsations: Vec<String> = Vec::new();
+    let texts = expression_texts(spec).into_iter().map(|(_, t)| t).chain(
+        spec.frames
+            .iter()
+            .filter_map(|f| Some(f.rotation.as_ref()?.angle.as_str())),
+    );
+    for text in texts {
+        for w in crate::expr::pulsations_in(text) {
+            if params.contains(&w) && !angle_params.contains(&w) && !pulsations.contains(&w) {
+                pulsations.push(w);
+            }
+        }
+    }
     let reg = spec
         .coordinates
         .iter()
@@ -134,6 +149,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         .unknowns(&unknowns)
         .raw_angles(&raw_angles)
         .angle_parameters(&angle_params)
+        .phases(&pulsations)
         .display_ranks(spec.parameters.iter().map(display_rank).collect())
         .build()
         .map_err(|e| at("coordinates", e.to_string()))?;

@@ -142,8 +142,15 @@ impl<'a> Reader<'a> {
         allowed: &dyn Fn(&str) -> bool,
     ) -> Result<(String, Vec<(String, Expr)>), VerifyError> {
         let reg = self.m.reg.clone();
-        let known =
-            |n: &str| reg.param(n).is_some() || reg.coord(n).is_some() || n == "pi" || allowed(n);
+        // The time is known where the spec writes it: a phase Ω t then exists.
+        let timed = reg.coordinates().iter().any(|c| c.phase().is_some());
+        let known = |n: &str| {
+            reg.param(n).is_some()
+                || reg.coord(n).is_some()
+                || n == "pi"
+                || (n == "t" && timed)
+                || allowed(n)
+        };
         // Placeholders: a prefix that neither the text nor any name of the spec holds.
         let mut prefix = String::from("qty");
         while text.contains(&prefix)

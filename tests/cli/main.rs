@@ -1244,3 +1244,58 @@ fn eval_takes_values_written_as_expressions_of_the_others() {
         stderr(&o)
     );
 }
+
+#[test]
+fn eval_and_verify_take_the_time_of_a_forced_oscillator() {
+    // M ẍ + c ẋ + k x = F0 cos(Ω t) (hand derivation in tests/engine/library.rs): at t the
+    // residual is computed here by hand.
+    let d = tmp();
+    let at = d.path().join("values.json");
+    let spec = "derivations/masse_ressort_forcee.json";
+    let eval = |q: &str| run(&["eval", spec, "--at", at.to_str().unwrap(), "-q", q]);
+    std::fs::write(
+        &at,
+        r#"{"parameters": {"M": 2, "k": 50, "c": 0.3, "F0": 4, "Omega": 3, "g": 9.81, "X": 0},
+        "coordinates": {"x": [0.1, 0.2, 0.3]}, "time": 0.7}"#,
+    )
+    .unwrap();
+    let o = eval("eom(x)");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let r = v["quantities"][0]["value"].as_f64().unwrap();
+    let hand = 2.0 * 0.3 + 0.3 * 0.2 + 50.0 * 0.1 - 4.0 * (3.0f64 * 0.7).cos();
+    assert!((r - hand).abs() < 1e-12 * hand.abs(), "{r} {hand}");
+    // Without the time: exit 2, the time named.
+    std::fs::write(
+        &at,
+        r#"{"parameters": {"M": 2, "k": 50, "c": 0.3, "F0": 4, "Omega": 3, "g": 9.81},
+        "coordinates": {"x": [0.1, 0.2, 0.3]}}"#,
+    )
+    .unwrap();
+    let o = eval("eom(x)");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stdout(&o).is_empty());
+    assert!(stderr(&o).contains("the time `t`"), "{}", stderr(&o));
+    // The weight does not need it.
+    assert!(eval("Y01").status.success());
+    // A corrigé's equation divided by M, with the time in it.
+    let o = run(&[
+        "verify",
+        spec,
+        "-q",
+        "eom(x)",
+        "-e",
+        "ddot(x) + c/M*dot(x) + k/M*x = F0/M*cos(Omega*t)",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("up to the factor M"), "{}", stdout(&o));
+    let o = run(&[
+        "verify",
+        spec,
+        "-q",
+        "eom(x)",
+        "-e",
+        "M*ddot(x) + c*dot(x) + k*x = F0*sin(Omega*t)",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+}

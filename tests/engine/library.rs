@@ -585,3 +585,96 @@ fn bille_tube_tournant_agrees_with_the_float_backend() {
 fn pendule_inverse_ressort_agrees_with_the_float_backend() {
     assert_checked(&problem!("pendule_inverse_ressort"));
 }
+
+#[test]
+fn masse_ressort_forcee_by_hand() {
+    // A mass M on a slider along x0 (OP = x x0), spring k (free at x = 0), damper c, and the
+    // exciter's force F0 cos(Ω t) x0. Resultant on x0: M ẍ = −k x − c ẋ + F0 cos(Ω t);
+    // on y0: 0 = Y01 − M g.
+    let m = problem!("masse_ressort_forcee");
+    torseur::assert_equivalent!(m, "Gamma(P,1/0) in B0", "[ddot(x), 0, 0]");
+    torseur::assert_equivalent!(m, "R(exc->1) in B0", "F0*cos(Omega*t)*x0");
+    torseur::assert_equivalent!(m, "eom(x)", "M*ddot(x) + c*dot(x) + k*x - F0*cos(Omega*t)");
+    torseur::assert_equivalent!(m, "Y01", "M*g");
+    // The phase Ω t turns at the imposed rate Ω: d/dt cos(Ω t) = −Ω sin(Ω t).
+    let f = m.reg.parse("F0*cos(Omega*t)").unwrap();
+    assert_eq!(f.dt(), m.reg.parse("-F0*Omega*sin(Omega*t)").unwrap());
+    // A sign error on the forcing is caught.
+    let wrong = torseur::verify::verify(
+        &m,
+        "eom(x)",
+        "M*ddot(x) + c*dot(x) + k*x + F0*cos(Omega*t)",
+        None,
+    );
+    assert!(!wrong.unwrap().is_equivalent());
+    // The forced regime without damping: x = X cos(Ω t), so ẋ = −X Ω sin(Ω t) and
+    // ẍ = −X Ω² cos(Ω t), put into eom(x) under H (c = 0) by hand, gives
+    // ((k − M Ω²) X − F0) cos(Ω t): zero for all t when X = F0/(k − M Ω²).
+    let h = m.hypotheses.iter().find(|h| h.name == "H").unwrap();
+    let d = torseur::derivation::derive_values(
+        &m,
+        &[torseur::quantity::Quantity::parse("eom(x)").unwrap()],
+    )
+    .unwrap();
+    let eom = match &d[0].value {
+        torseur::derivation::Value::Scalar(e) => h.apply(e),
+        v => panic!("{v:?}"),
+    };
+    let reg = &m.reg;
+    let x = reg.coord("x").unwrap();
+    let var = |role| reg.index_of(role).unwrap();
+    use torseur::expr::VarRole;
+    let forced = eom
+        .substitute(
+            var(VarRole::Rate(x, 2)),
+            &reg.parse("-X*Omega^2*cos(Omega*t)").unwrap(),
+        )
+        .substitute(
+            var(VarRole::Rate(x, 1)),
+            &reg.parse("-X*Omega*sin(Omega*t)").unwrap(),
+        )
+        .substitute(
+            var(VarRole::Value(x)),
+            &reg.parse("X*cos(Omega*t)").unwrap(),
+        );
+    assert_eq!(
+        forced,
+        reg.parse("((k - M*Omega^2)*X - F0)*cos(Omega*t)").unwrap()
+    );
+    assert_checked(&m);
+}
+
+#[test]
+fn pendule_support_oscillant_by_hand() {
+    // The support's imposed motion OA = a cos(Ω t) y0; a point mass m at AG = −l y2,
+    // θ = (y0, y2). Γ(G) = −a Ω² cos(Ω t) y0 + l θ̈ x2 + l θ̇² y2, and as δ(G) = 0,
+    // δ(A)·z0 = (AG ∧ m Γ(G))·z0 = m l² θ̈ − m l a Ω² cos(Ω t) sin θ (y2 ∧ y0 = −sin θ z0).
+    // The weight's moment at A: (−l y2) ∧ (−m g y0) = −m g l sin θ z0. Hence
+    //   m l² θ̈ + m l (g − a Ω² cos(Ω t)) sin θ = 0.
+    let m = torseur::spec::load(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/specs/pendule_support_oscillant.json"
+    ))
+    .unwrap();
+    torseur::assert_equivalent!(m, "V(A,1/0)", "-a*Omega*sin(Omega*t)*y0");
+    torseur::assert_equivalent!(
+        m,
+        "delta(A,2/0).z0",
+        "m*l^2*ddot(theta) - m*l*a*Omega^2*cos(Omega*t)*sin(theta)"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta)",
+        "m*l^2*ddot(theta) + m*l*(g - a*Omega^2*cos(Omega*t))*sin(theta)"
+    );
+    // As a corrigé writes it, divided by m l.
+    let v = torseur::verify::verify(
+        &m,
+        "eom(theta)",
+        "l*ddot(theta) + (g - a*Omega^2*cos(Omega*t))*sin(theta) = 0",
+        None,
+    )
+    .unwrap();
+    assert!(v.is_equivalent());
+    assert_checked(&m);
+}

@@ -303,3 +303,51 @@ fn both_sides_refuse_the_same_motions_in_a_hypothesis() {
         );
     }
 }
+
+#[test]
+fn both_sides_read_the_time_alike() {
+    // The exciter's force, and a frame turned by a phase: the time enters only as k Ω t.
+    let text = std::fs::read_to_string("derivations/masse_ressort_forcee.json").unwrap();
+    let base: Value = serde_json::from_str(&text).unwrap();
+    let force = |f: &str| {
+        let mut s = base.clone();
+        s["actions"][0]["resultant"] = f.into();
+        s
+    };
+    let turned = |a: &str| {
+        let mut s = base.clone();
+        s["frames"][0]["rotation"] = serde_json::json!({"axis": "z", "angle": a});
+        s
+    };
+    let accepted = [
+        force("F0*cos(Omega*t)*x0"),
+        force("F0*sin(2*Omega*t)*x0 + F0*cos(Omega*t)^2*y0"),
+        force("F0*cos(-Omega*t + pi/2)*x0"),
+        force("F0*cos(t*Omega*3)*x0"),
+        turned("Omega*t"),
+        turned("-Omega*t + pi/2"),
+    ];
+    let refused = [
+        force("F0*t*x0"),
+        force("F0*cos(t)*x0"),
+        force("F0*cos(x*t)*x0"),
+        force("F0*cos(Omega*t/2)*x0"),
+        force("F0*cos(0.5*Omega*t)*x0"),
+        force("F0*cos(Omega*t^2)*x0"),
+        force("F0*cos(Omega*k*t)*x0"),
+        force("F0*cos(Omega*(t + 1))*x0"),
+        force("F0*exp(t)*x0"),
+        turned("t"),
+        turned("Omega*t*t"),
+        turned("2*Omega*t"),
+        turned("Omega*t + x"),
+    ];
+    for (specs, ok) in [(&accepted[..], true), (&refused[..], false)] {
+        for s in specs {
+            let (exact, float) = verdicts(s).expect("a spec's shape");
+            let what = (&s["actions"][0]["resultant"], &s["frames"][0]["rotation"]);
+            assert_eq!(exact.is_ok(), ok, "exact, {what:?}: {exact:?}");
+            assert_eq!(float.is_ok(), ok, "float, {what:?}: {float:?}");
+        }
+    }
+}

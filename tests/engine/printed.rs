@@ -393,10 +393,16 @@ impl Ctx<'_> {
             .iter()
             .chain(m.reg.unknowns())
             .cloned()
-            .chain(m.reg.coordinates().iter().map(|c| c.name.clone()));
+            .chain(m.reg.coordinates().iter().map(|c| match c.phase() {
+                // A phase is printed Ω t: the time is then a name of its own.
+                Some(_) => "t".to_string(),
+                None => c.name.clone(),
+            }));
         for n in ids {
             let written: String = n.chars().filter(|&c| c != '_').collect();
-            if let Some(other) = names.insert(written.clone(), n.clone()) {
+            if let Some(other) = names.insert(written.clone(), n.clone())
+                && other != n
+            {
                 panic!("`{n}` and `{other}` print alike ({written})");
             }
         }

@@ -533,3 +533,40 @@ fn a_json_or_syntax_error_says_its_place_once_on_one_line() {
         "{op}"
     );
 }
+
+/// The forced oscillator, whose exciter writes the time: `F0*cos(Omega*t)*x0`.
+fn forced() -> serde_json::Value {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/masse_ressort_forcee.json"
+    ))
+    .unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+#[test]
+fn the_time_enters_only_as_a_phase_of_a_parameter() {
+    for (force, why) in [
+        ("F0*t*x0", "only as a phase"),
+        ("F0*cos(t)*x0", "only as a phase"),
+        ("F0*cos(x*t)*x0", "only as a phase"),
+        ("F0*cos(Omega*t/2)*x0", "integer multiples"),
+        ("F0*cos(Omega*t^2)*x0", "only as a phase"),
+        ("F0*cos(Omega*k*t)*x0", "only as a phase"),
+    ] {
+        let mut v = forced();
+        v["actions"][0]["resultant"] = force.into();
+        let e = refused(v);
+        assert_eq!(path_of(&e), "actions[0].resultant", "{force}: {e}");
+        assert!(e.to_string().contains(why), "{force}: {e}");
+    }
+    // An imposed rate is a constant: the time is refused there.
+    let mut v = forced();
+    v["coordinates"][0]["rate"] = "Omega*cos(Omega*t)".into();
+    let e = refused(v);
+    assert!(e.to_string().contains("constant"), "{e}");
+    // Twice the phase, and a phase with an angle, are angles.
+    let mut v = forced();
+    v["actions"][0]["resultant"] = "F0*sin(2*Omega*t)*x0".into();
+    assert!(from_str(&v.to_string()).is_ok());
+}

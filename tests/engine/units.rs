@@ -373,10 +373,11 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 14] = [
+const LIBRARY: [&str; 15] = [
     "bille_tube_tournant",
     "bras_robot_deux_axes",
     "double_pendule",
+    "masse_ressort_forcee",
     "pendule_arbre_tournant",
     "pendule_inverse_ressort",
     "pendule_plan_incline",

@@ -110,6 +110,7 @@ fn gravity(m: &NumericModel, st: &State, vals: &Values) -> Result<Vector3<f64>, 
         coords: &[],
         rates: &[],
         frames: &frames,
+        time: vals.time,
     };
     expr::eval_vector(node, &env).map_err(eval_err("gravity".into()))
 }
@@ -184,6 +185,7 @@ fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, Numer
         coords: &coords,
         rates: &rates,
         frames: &frames,
+        time: vals.time,
     };
     for (i, a) in dy.actions.iter().enumerate() {
         let mut parts = [zero.clone(), zero.clone()];
