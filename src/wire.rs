@@ -21,6 +21,12 @@ pub struct SpecFile {
     /// constant angle such as an incline).
     #[serde(default)]
     pub parameters: Vec<ParameterSpec>,
+    /// Named expressions of the parameters, as a statement poses them (« on pose
+    /// K = C ω »): written once, then used by name in every expression of the spec, in
+    /// `verify` and in `eval`. Each may use the aliases before it. The answer key states them
+    /// in the paramétrage; results are written with the parameters.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub aliases: Vec<AliasSpec>,
     /// Time coordinates q(t). Their names, like the parameters', cannot be those of basis
     /// vectors (`x0` while frame `0` exists).
     #[serde(default)]
@@ -428,6 +434,7 @@ impl Default for SpecFile {
             title: String::new(),
             description: None,
             parameters: vec![],
+            aliases: vec![],
             coordinates: vec![],
             ground: default_ground(),
             ground_origin: None,
@@ -468,6 +475,19 @@ pub struct ParameterSpec {
     /// reduced like a coordinate's, with a zero rate. A plain scalar unless given.
     #[serde(default, skip_serializing_if = "ParameterKind::is_scalar")]
     pub kind: ParameterKind,
+}
+
+/// A named expression of the parameters (`{"name": "K", "value": "C*omega"}`).
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AliasSpec {
+    /// Identifier, in the namespace of the parameters and coordinates.
+    pub name: String,
+    /// Its value: an expression of the parameters and the aliases before it.
+    pub value: String,
+    /// What it is, in the course's words.
+    #[serde(default)]
+    pub description: Option<String>,
 }
 
 /// Kind of a constant parameter.

@@ -489,6 +489,9 @@ impl Walker<'_> {
                         ))
                     });
                 }
+                if let Some(e) = reg.alias(&name) {
+                    return Ok(e);
+                }
                 if let Some(e) = (self.names)(&name) {
                     return Ok(e);
                 }
@@ -655,7 +658,10 @@ impl Walker<'_> {
                         lin.coords.push((q, Rational::one()));
                         Ok(lin)
                     }
-                    None if self.reg.param(name).is_none() && self.reg.coord(name).is_none() => {
+                    None if self.reg.param(name).is_none()
+                        && self.reg.coord(name).is_none()
+                        && self.reg.alias(name).is_none() =>
+                    {
                         Err(ExprError::UnknownName {
                             name: name.to_string(),
                             input: self.input.to_string(),

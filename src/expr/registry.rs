@@ -35,6 +35,9 @@ pub struct Registry {
     /// Rank of each parameter in the written order of a product (see
     /// [`RegistryBuilder::display_ranks`]).
     display_ranks: Vec<u32>,
+    /// Named expressions of the parameters, in declaration order (see
+    /// [`RegistryBuilder::aliases`]).
+    pub(super) aliases: Vec<(String, Poly)>,
 }
 
 /// Symbols used for the rate functions dot(q), ddot(q), dddot(q).
@@ -186,6 +189,7 @@ pub struct RegistryBuilder {
     raw_angles: Vec<String>,
     angle_parameters: Vec<String>,
     phases: Vec<String>,
+    aliases: Vec<(String, String)>,
     display_ranks: Vec<u32>,
 }
 
@@ -227,6 +231,24 @@ impl RegistryBuilder {
     /// ```
     pub fn phases(mut self, names: &[String]) -> Self {
         self.phases.extend_from_slice(names);
+        self
+    }
+
+    /// Named expressions of the parameters, (name, text) in order, each text reading the
+    /// parameters and the aliases before it: a name then reads as its value everywhere.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// let reg = Registry::builder()
+    ///     .parameters(&["C".into(), "omega".into()])
+    ///     .aliases(&[("K".into(), "C*omega".into()), ("K2".into(), "K^2".into())])
+    ///     .build()
+    ///     .unwrap();
+    /// assert_eq!(reg.parse("K2 - K*C*omega").unwrap().is_zero(), true);
+    /// assert_eq!(reg.aliases().next().unwrap().0, "K");
+    /// ```
+    pub fn aliases(mut self, aliases: &[(String, String)]) -> Self {
+        self.aliases.extend_from_slice(aliases);
         self
     }
 
@@ -295,6 +317,7 @@ impl Registry {
             raw_angles,
             angle_parameters,
             phases,
+            aliases,
             display_ranks,
         } = b;
         for w in &phases {
@@ -448,6 +471,9 @@ impl Registry {
             roles.push(VarRole::Parameter(ParamId(i)));
             param_var.insert(p.clone(), vars.len() - 1);
         }
+        for (n, _) in &aliases {
+            check(n)?;
+        }
         // Constant angle parameters are found by `angle`, not by `coord`.
         let coord_by_name = infos
             .iter()
@@ -467,9 +493,39 @@ impl Registry {
             n_coords,
             coord_by_name,
             display_ranks,
+            aliases: Vec::new(),
         };
-        // Imposed rates are expressions in the parameters: parse them with a registry that
-        // shares the same variable list.
+        // Aliases, then imposed rates, are expressions in the parameters: parse them with a
+        // registry that shares the same variable list (and the aliases read so far).
+        let snapshot = |reg: &Registry| -> Result<Rc<Registry>, ExprError> {
+            Ok(Rc::new(Registry {
+                _guard: ThreadGuard::acquire()?,
+                vars: reg.vars.clone(),
+                roles: reg.roles.clone(),
+                role_index: reg.role_index.clone(),
+                parameters: reg.parameters.clone(),
+                n_params: reg.n_params,
+                param_var: reg.param_var.clone(),
+                coords: reg.coords.clone(),
+                n_coords: reg.n_coords,
+                coord_by_name: reg.coord_by_name.clone(),
+                display_ranks: Vec::new(),
+                aliases: reg.aliases.clone(),
+            }))
+        };
+        for (name, text) in &aliases {
+            let e = snapshot(&reg)?.parse(text)?;
+            if !(e.is_zero() || e.is_parameter_polynomial()) {
+                return Err(ExprError::Unsupported {
+                    input: text.clone(),
+                    reason: format!(
+                        "the alias `{name}` is an expression of the parameters only (no \
+                         coordinate, rate, time or unknown)"
+                    ),
+                });
+            }
+            reg.aliases.push((name.clone(), e.p));
+        }
         if coords.iter().any(|c| c.2.is_some()) {
             let base = Rc::new(Registry {
                 _guard: ThreadGuard::acquire()?,
@@ -483,6 +539,7 @@ impl Registry {
                 n_coords: reg.n_coords,
                 coord_by_name: reg.coord_by_name.clone(),
                 display_ranks: Vec::new(),
+                aliases: reg.aliases.clone(),
             });
             for (i, (_, _, rate)) in coords.iter().enumerate() {
                 if let Some(r) = rate {
@@ -566,6 +623,21 @@ impl Registry {
             .get(name)
             .copied()
             .filter(|q| self.coords[q.0].kind == CoordinateKind::Angle)
+    }
+
+    /// The value of the alias `name`, if the mechanism poses one.
+    pub fn alias(self: &Rc<Self>, name: &str) -> Option<Expr> {
+        self.aliases
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| self.wrap(p.clone()))
+    }
+
+    /// The aliases (name, value), in declaration order.
+    pub fn aliases(self: &Rc<Self>) -> impl Iterator<Item = (&str, Expr)> + '_ {
+        self.aliases
+            .iter()
+            .map(|(n, p)| (n.as_str(), self.wrap(p.clone())))
     }
 
     /// The phase Ω t of the pulsation `w`, if the mechanism has one.

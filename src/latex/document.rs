@@ -552,6 +552,21 @@ pub fn answer_key_document(
         };
         let _ = writeln!(o, "\\item ${}{t}$ : {desc}{imposed}", name(&c.name));
     }
+    // The aliases the statement poses: « On pose K = C ω ».
+    for (a, (n, v)) in m.spec.aliases.iter().zip(m.reg.aliases()) {
+        let math = format!("{} = {}", name(n), super::expr(&v));
+        let desc = a
+            .description
+            .as_deref()
+            .map(|d| format!(" : {}", rich_text_or_escaped(d)))
+            .unwrap_or_default();
+        let _ = writeln!(o, "\\item On pose ${math}${desc}.");
+        rates.push(Inline {
+            what: format!("alias {n}"),
+            latex: math,
+            value: Value::Scalar(v),
+        });
+    }
     for f in m.frames.ids().skip(1) {
         let fr = m.frames.get(f);
         let parent = m.frames.get(fr.parent.unwrap_or(m.frames.ground()));

@@ -28,15 +28,9 @@ fn angle(reg: &Registry, a: &Angle) -> (String, bool) {
     let mut s = String::new();
     let mut phase = false;
     for (i, &(q, k)) in a.terms().iter().enumerate() {
-        let info = reg.coord_info(q);
         // A phase is written Ω t, and always in parentheses: cos(Ω t).
-        let n = match info.phase() {
-            Some(w) => {
-                phase = true;
-                format!("{}\\,t", name(w))
-            }
-            None => name(&info.name),
-        };
+        phase |= reg.coord_info(q).phase().is_some();
+        let n = super::coordinate(reg, q);
         let body = if k.abs() == 1 {
             n
         } else {

@@ -332,7 +332,7 @@ pub(super) fn angle_latex(reg: &Registry, terms: &[(CoordId, i64)], k: i64) -> S
         push(neg, body);
     }
     for &(q, n) in terms {
-        let nm = name(&reg.coord_info(q).name);
+        let nm = super::coordinate(reg, q);
         let body = if n.abs() == 1 {
             nm
         } else {

@@ -75,6 +75,15 @@ pub fn name(n: &str) -> String {
     }
 }
 
+/// The LaTeX name of a coordinate: its name, or Ω\,t for the phase of the pulsation Ω.
+pub(crate) fn coordinate(reg: &crate::expr::Registry, q: crate::expr::CoordId) -> String {
+    let info = reg.coord_info(q);
+    match info.phase() {
+        Some(w) => format!("{}\\,t", name(w)),
+        None => name(&info.name),
+    }
+}
+
 /// The LaTeX name of a Greek letter, without its backslash.
 fn greek(c: char) -> Option<&'static str> {
     const LOWER: [&str; 25] = [

@@ -70,6 +70,8 @@ pub(crate) enum Name {
     Basis(usize, usize),
     Unknown(usize),
     Time,
+    /// A named expression of the parameters, by index in the aliases given to [`parse`].
+    Alias(usize),
 }
 
 /// Static type of an expression: the literal zero fits both a scalar and a vector.
@@ -86,6 +88,7 @@ pub(crate) fn parse(
     input: &str,
     resolve: &dyn Fn(&str) -> Result<Name, String>,
     rates: bool,
+    aliases: &[Node],
 ) -> Result<Node, String> {
     if input.len() > MAX_INPUT {
         return Err(format!("longer than {MAX_INPUT} characters"));
@@ -105,6 +108,7 @@ pub(crate) fn parse(
         depth: 0,
         resolve,
         rates,
+        aliases,
     };
     let node = p.expr()?;
     p.skip_ws();
@@ -124,6 +128,7 @@ struct Parser<'a> {
     depth: usize,
     resolve: &'a dyn Fn(&str) -> Result<Name, String>,
     rates: bool,
+    aliases: &'a [Node],
 }
 
 impl Parser<'_> {
@@ -311,6 +316,11 @@ impl Parser<'_> {
                 Name::Basis(f, a) => Node::Basis(f, a),
                 Name::Unknown(i) => Node::Unknown(i),
                 Name::Time => Node::Time,
+                Name::Alias(i) => self
+                    .aliases
+                    .get(i)
+                    .cloned()
+                    .ok_or("internal: an alias has no value")?,
             });
         }
         Err(format!(

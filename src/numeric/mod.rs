@@ -259,6 +259,8 @@ struct Hypothesis {
 #[derive(Debug, Clone)]
 pub struct NumericModel {
     params: Vec<ParamInfo>,
+    /// Named expressions of the parameters, (name, value).
+    aliases: Vec<(String, expr::Node)>,
     coords: Vec<CoordInfo>,
     frames: Vec<FrameInfo>,
     points: Vec<PointInfo>,

@@ -49,6 +49,8 @@ pub(super) struct Names<'a> {
     pub params: &'a BTreeMap<String, usize>,
     pub coords: &'a BTreeMap<String, usize>,
     pub frames: &'a BTreeMap<String, usize>,
+    /// The aliases read so far, (name, value), in order.
+    pub aliases: &'a [(String, Node)],
 }
 
 impl Names<'_> {
@@ -84,6 +86,9 @@ impl Names<'_> {
             if let Some(i) = self.params.get(name) {
                 return Ok(Name::Param(*i));
             }
+            if let Some(i) = self.aliases.iter().position(|(n, _)| n == name) {
+                return Ok(Name::Alias(i));
+            }
             if let Some(i) = unknowns.get(name) {
                 return Ok(Name::Unknown(*i));
             }
@@ -116,10 +121,12 @@ impl Names<'_> {
             }
             Err(format!("unknown name `{name}`"))
         };
+        let values: Vec<Node> = self.aliases.iter().map(|(_, v)| v.clone()).collect();
         let node = expr::parse(
             text,
             &resolve,
             matches!(ctx, Context::Instant | Context::Action),
+            &values,
         )?;
         let k = expr::kind(&node)?;
         expr::check_time(&node, ctx == Context::Angle)?;
@@ -271,10 +278,34 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
     for (k, i) in order.iter().enumerate() {
         frame_index.insert(spec.frames[*i].name.clone(), k + 1);
     }
+    // Aliases: named expressions of the parameters, each reading those before it.
+    let mut aliases: Vec<(String, Node)> = Vec::new();
+    for (i, a) in spec.aliases.iter().enumerate() {
+        let path = format!("aliases[{i}].name");
+        identifier(&a.name).map_err(|m| spec_err(&path, m))?;
+        if param_index.contains_key(&a.name)
+            || coord_index.contains_key(&a.name)
+            || aliases.iter().any(|(n, _)| *n == a.name)
+            || [expr::PI_NAME, "t"].contains(&a.name.as_str())
+        {
+            return Err(spec_err(path, format!("duplicate name `{}`", a.name)));
+        }
+        let names = Names {
+            params: &param_index,
+            coords: &coord_index,
+            frames: &frame_index,
+            aliases: &aliases,
+        };
+        let v = names
+            .parse(&a.value, Context::Constant)
+            .map_err(|m| spec_err(format!("aliases[{i}].value"), m))?;
+        aliases.push((a.name.clone(), v));
+    }
     let names = Names {
         params: &param_index,
         coords: &coord_index,
         frames: &frame_index,
+        aliases: &aliases,
     };
 
     let coords = spec
@@ -623,6 +654,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
 
     let model = NumericModel {
         params,
+        aliases,
         coords,
         frames,
         points,

@@ -207,6 +207,7 @@ pub(super) fn evaluate_expression(
         params: &m.param_index,
         coords: &m.coord_index,
         frames: &m.frame_index,
+        aliases: &m.aliases,
     };
     let node: Node = names
         .parse(text, Context::Instant)

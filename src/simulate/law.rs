@@ -33,7 +33,8 @@ impl TimeLaw {
         let mut out = Vec::new();
         let mut last = f64::NEG_INFINITY;
         for (k, p) in pieces.iter().enumerate() {
-            let node = expr::parse(&p.value, &resolve, false).map_err(|e| format!("[{k}]: {e}"))?;
+            let node =
+                expr::parse(&p.value, &resolve, false, &[]).map_err(|e| format!("[{k}]: {e}"))?;
             match (p.until, k + 1 == pieces.len()) {
                 (Some(u), _) if !(u.is_finite() && u > last) => {
                     return Err(format!("[{k}].until: the pieces end at increasing times"));

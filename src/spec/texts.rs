@@ -66,6 +66,11 @@ pub(super) fn free_texts(spec: &SpecFile) -> Vec<(String, &str)> {
             out.push((format!("parameters[{i}].description"), d));
         }
     }
+    for (i, a) in spec.aliases.iter().enumerate() {
+        if let Some(d) = &a.description {
+            out.push((format!("aliases[{i}].description"), d));
+        }
+    }
     for (i, c) in spec.coordinates.iter().enumerate() {
         if let Some(d) = &c.description {
             out.push((format!("coordinates[{i}].description"), d));

@@ -100,6 +100,16 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             return Err(at(path, format!("duplicate name `{}`", c.name)));
         }
     }
+    for (i, a) in spec.aliases.iter().enumerate() {
+        let path = format!("aliases[{i}].name");
+        crate::expr::check_identifier(&a.name).map_err(|m| at(&path, m))?;
+        if let Some(m) = basis_vector_clash(spec, "alias", &a.name) {
+            return Err(at(path, m));
+        }
+        if !names.insert(a.name.clone()) {
+            return Err(at(path, format!("duplicate name `{}`", a.name)));
+        }
+    }
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
     let angle_params: Vec<String> = spec
         .parameters
@@ -137,7 +147,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             }
         }
     }
-    let reg = spec
+    let builder = spec
         .coordinates
         .iter()
         .fold(Registry::builder().parameters(&params), |b, c| {
@@ -150,9 +160,29 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         .raw_angles(&raw_angles)
         .angle_parameters(&angle_params)
         .phases(&pulsations)
-        .display_ranks(spec.parameters.iter().map(display_rank).collect())
-        .build()
-        .map_err(|e| at("coordinates", e.to_string()))?;
+        .display_ranks(spec.parameters.iter().map(display_rank).collect());
+    let aliases: Vec<(String, String)> = spec
+        .aliases
+        .iter()
+        .map(|a| (a.name.clone(), a.value.clone()))
+        .collect();
+    let reg = builder.clone().aliases(&aliases).build().map_err(|e| {
+        // The first alias whose value the registry cannot read, if one is at fault.
+        let alias_at_fault = builder.clone().build().ok().and_then(|_| {
+            (0..aliases.len()).find_map(|k| {
+                builder
+                    .clone()
+                    .aliases(&aliases[..=k])
+                    .build()
+                    .err()
+                    .map(|e| (k, e))
+            })
+        });
+        match alias_at_fault {
+            Some((k, e)) => at(format!("aliases[{k}].value"), e.to_string()),
+            None => at("coordinates", e.to_string()),
+        }
+    })?;
 
     // Frames, in an order where each parent comes first (the spec may list them in any order).
     name_ok("ground", &spec.ground)?;

@@ -146,6 +146,7 @@ impl<'a> Reader<'a> {
         let timed = reg.coordinates().iter().any(|c| c.phase().is_some());
         let known = |n: &str| {
             reg.param(n).is_some()
+                || reg.alias(n).is_some()
                 || reg.coord(n).is_some()
                 || n == "pi"
                 || (n == "t" && timed)

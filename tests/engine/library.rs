@@ -678,3 +678,72 @@ fn pendule_support_oscillant_by_hand() {
     assert!(v.is_equivalent());
     assert_checked(&m);
 }
+
+#[test]
+fn aliases_are_written_once_and_read_by_name_everywhere() {
+    // The pendulum on a shaft at ω, with the aliases a statement poses: J = A + m a² (the
+    // inertia about the pivot's axis, Huygens) and K = J − C; its equation of motion by hand
+    // (pendulum_on_a_turning_shaft_and_its_relative_equilibrium_by_hand) is then
+    // J θ̈ + (m g a − K ω² cos θ) sin θ = 0. An alias also stands in the spec (the inertia
+    // entry `Cz`), read by both sides.
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/pendule_arbre_tournant.json"
+    ))
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["aliases"] = serde_json::json!([
+        {"name": "J", "value": "A + m*a^2", "description": "moment d'inertie en $O$"},
+        {"name": "K", "value": "J - C"},
+        {"name": "Cz", "value": "C"}
+    ]);
+    v["solids"][1]["inertia"]["matrix"][2][2] = "Cz".into();
+    let m = torseur::spec::from_str(&v.to_string()).unwrap();
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta)",
+        "J*ddot(theta) + (m*g*a - K*omega^2*cos(theta))*sin(theta)"
+    );
+    let wrong = torseur::verify::verify(
+        &m,
+        "eom(theta)",
+        "J*ddot(theta) + (m*g*a + K*omega^2*cos(theta))*sin(theta)",
+        None,
+    );
+    assert!(!wrong.unwrap().is_equivalent());
+    assert_eq!(
+        m.reg.alias("K").unwrap(),
+        m.reg.parse("A + m*a^2 - C").unwrap()
+    );
+    assert_checked(&m);
+    // The key states them, and printed.rs proves the statement with the rest.
+    let key = torseur::latex::answer_key(&m).unwrap();
+    assert!(key.contains("On pose $J = A + m\\,a^{2}$"), "{key}");
+    // Refused, with the place: a coordinate in an alias, a name taken, an alias used before
+    // it is posed.
+    for (aliases, path, why) in [
+        (
+            serde_json::json!([{"name": "J", "value": "A*cos(theta)"}]),
+            "aliases[0].value",
+            "parameters only",
+        ),
+        (
+            serde_json::json!([{"name": "m", "value": "A"}]),
+            "aliases[0].name",
+            "duplicate",
+        ),
+        (
+            serde_json::json!([{"name": "K", "value": "J"}, {"name": "J", "value": "A"}]),
+            "aliases[0].value",
+            "`J`",
+        ),
+    ] {
+        let mut w: serde_json::Value = serde_json::from_str(&text).unwrap();
+        w["aliases"] = aliases.clone();
+        let e = torseur::spec::from_str(&w.to_string()).unwrap_err();
+        assert!(e.to_string().contains(path), "{aliases}: {e}");
+        assert!(e.to_string().contains(why), "{aliases}: {e}");
+        let float = torseur::numeric::NumericModel::new(&serde_json::from_value(w).unwrap());
+        assert!(float.unwrap_err().to_string().contains(path), "{aliases}");
+    }
+}

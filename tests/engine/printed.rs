@@ -393,6 +393,7 @@ impl Ctx<'_> {
             .iter()
             .chain(m.reg.unknowns())
             .cloned()
+            .chain(m.spec.aliases.iter().map(|a| a.name.clone()))
             .chain(m.reg.coordinates().iter().map(|c| match c.phase() {
                 // A phase is printed Ω t: the time is then a name of its own.
                 Some(_) => "t".to_string(),

@@ -188,6 +188,7 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
         params: &m.param_index,
         coords: &m.coord_index,
         frames: &m.frame_index,
+        aliases: &m.aliases,
     };
     let mut d = Dynamics::default();
 
