@@ -49,6 +49,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 parent: "0".into(),
                 rotation: None,
                 origin: Some("A".into()),
+                basis: None,
             },
             FrameSpec {
                 name: "2".into(),
@@ -58,6 +59,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     angle: "theta".into(),
                 }),
                 origin: Some("A".into()),
+                basis: None,
             },
         ],
         points: vec![

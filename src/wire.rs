@@ -37,6 +37,10 @@ pub struct SpecFile {
     /// Name of the origin point of the ground frame, `O0` unless given.
     #[serde(default)]
     pub ground_origin: Option<String>,
+    /// The names of the ground's basis vectors as the statement writes them (`["x", "y",
+    /// "z"]`, `["i", "j", "k"]`); see [`FrameSpec::basis`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ground_basis: Option<[String; 3]>,
     /// Frames other than the ground, each turned from its parent.
     #[serde(default)]
     pub frames: Vec<FrameSpec>,
@@ -438,6 +442,7 @@ impl Default for SpecFile {
             coordinates: vec![],
             ground: default_ground(),
             ground_origin: None,
+            ground_basis: None,
             frames: vec![],
             points: vec![],
             solids: vec![],
@@ -542,6 +547,11 @@ pub struct FrameSpec {
     /// Origin point of the frame (a point of the spec), the ground origin unless given.
     #[serde(default)]
     pub origin: Option<String>,
+    /// The names of its basis vectors as the statement writes them (`["u", "v", "w"]`),
+    /// usable in every expression besides x1, y1, z1; the answer key prints them
+    /// (\vec{u}). Quantity projections keep the x1 form.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub basis: Option<[String; 3]>,
 }
 
 /// Elementary rotation about a basis vector of the parent.

@@ -162,6 +162,8 @@ pub struct Frame {
     pub rotation: Option<Rotation>,
     /// Depth in the tree (the ground is 0).
     pub depth: usize,
+    /// Names of its basis vectors as the statement writes them (`u`, `v`, `w`), if given.
+    pub vector_names: Option<[String; 3]>,
 }
 
 /// Arena of frames; the ground (Galilean) frame is always `FrameId(0)`.
@@ -181,6 +183,7 @@ impl Frames {
                 parent: None,
                 rotation: None,
                 depth: 0,
+                vector_names: None,
             }],
         }
     }
@@ -203,8 +206,23 @@ impl Frames {
             parent: Some(parent),
             rotation,
             depth,
+            vector_names: None,
         });
         FrameId(self.frames.len() - 1)
+    }
+
+    /// Names the basis vectors of frame `f` as the statement does (`["u", "v", "w"]`).
+    pub fn name_vectors(&mut self, f: FrameId, names: [String; 3]) {
+        self.frames[f.0].vector_names = Some(names);
+    }
+
+    /// The name of a basis vector in expressions: the statement's (`u`) or `x1`.
+    pub fn vector_name(&self, f: FrameId, axis: Axis) -> String {
+        let fr = &self.frames[f.0];
+        match &fr.vector_names {
+            Some(n) => n[axis.index()].clone(),
+            None => format!("{}{}", axis.letter(), fr.name),
+        }
     }
 
     /// Frame by id.
@@ -226,6 +244,11 @@ impl Frames {
     /// assert!(m.frames.basis_vector("y9").is_none());
     /// ```
     pub fn basis_vector(&self, s: &str) -> Option<(FrameId, Axis)> {
+        for (i, f) in self.frames.iter().enumerate() {
+            if let Some(k) = f.vector_names.iter().flatten().position(|n| n == s) {
+                return Some((FrameId(i), [Axis::X, Axis::Y, Axis::Z][k]));
+            }
+        }
         let mut c = s.chars();
         let axis = Axis::parse(&c.next()?.to_string())?;
         let f = self.find(c.as_str())?;

@@ -73,10 +73,11 @@ pub(super) fn bilan(doc: &mut Doc) {
                 let w = super::width(&t);
                 (format!("${t}$"), w)
             }
-            None => {
-                let n = place.trim_start_matches("la question ");
-                (format!("voir Q{n}"), 7)
-            }
+            // A key without questions shows every result once, above.
+            None => match place.strip_prefix("la question ") {
+                Some(n) => (format!("voir Q{n}"), 7),
+                None => ("ci-dessus".to_string(), 9),
+            },
         };
         let under = hyp.as_deref().map(escape_text);
         // The same result shown in general and under a hypothesis, both boxed in one

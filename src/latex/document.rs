@@ -491,6 +491,7 @@ pub fn answer_key_document(
     m: &Mechanism,
     style: VectorStyle,
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
+    let _names = super::VectorNames::of(m);
     let mut figures = Vec::new();
     let mut doc = Doc {
         m,

@@ -41,6 +41,7 @@ const VECTOR: f64 = 1.4;
 /// assert!(tex.contains("{$\\theta_{2}$}"));
 /// ```
 pub fn rotation_figures(m: &Mechanism) -> String {
+    let _names = super::VectorNames::of(m);
     let pictures = rotation_pictures(m);
     if pictures.is_empty() {
         return String::new();
@@ -362,6 +363,9 @@ fn num(x: f64) -> String {
 
 /// A basis vector of the spec (`z0`) in LaTeX (`\vec{z}_{0}`).
 fn spec_vector(s: &str) -> String {
+    if let Some(v) = super::named_vector(s) {
+        return v;
+    }
     let mut c = s.chars();
     match c.next() {
         Some(a @ ('x' | 'y' | 'z')) => basis_vector(a, c.as_str()),

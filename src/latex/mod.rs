@@ -188,9 +188,71 @@ pub fn point(n: &str) -> String {
     name(n)
 }
 
-/// Basis vector `\vec{x}_{2}`.
+thread_local! {
+    /// The basis vectors named as the statement does, per frame name, while a key is written.
+    static VECTOR_NAMES: std::cell::RefCell<std::collections::HashMap<String, [String; 3]>> =
+        std::cell::RefCell::new(std::collections::HashMap::new());
+}
+
+/// While it lives, [`basis_vector`] writes the statement's names of the mechanism's basis
+/// vectors (\vec{u} rather than \vec{x}_{2}); the key's writers hold one.
+pub(crate) struct VectorNames {
+    /// The names in force before, restored on drop (writers nest).
+    before: std::collections::HashMap<String, [String; 3]>,
+}
+
+impl VectorNames {
+    /// The names of `m`'s frames, in force until the value is dropped.
+    pub(crate) fn of(m: &Mechanism) -> VectorNames {
+        let mut now = std::collections::HashMap::new();
+        for f in m.frames.ids() {
+            let fr = m.frames.get(f);
+            if let Some(n) = &fr.vector_names {
+                now.insert(fr.name.clone(), n.clone());
+            }
+        }
+        VectorNames {
+            before: VECTOR_NAMES.with(|v| v.replace(now)),
+        }
+    }
+}
+
+impl Drop for VectorNames {
+    fn drop(&mut self) {
+        let before = std::mem::take(&mut self.before);
+        VECTOR_NAMES.with(|v| v.replace(before));
+    }
+}
+
+/// A basis vector the statement names (`u`), in LaTeX, while a [`VectorNames`] lives.
+pub(crate) fn named_vector(s: &str) -> Option<String> {
+    let (frame, k) = VECTOR_NAMES.with(|v| {
+        v.borrow()
+            .iter()
+            .find_map(|(f, n)| n.iter().position(|x| x == s).map(|k| (f.clone(), k)))
+    })?;
+    Some(basis_vector(['x', 'y', 'z'][k], &frame))
+}
+
+/// Basis vector `\vec{x}_{2}`, or the statement's name (`\vec{u}`, `\vec{i}_{1}`) while a
+/// [`VectorNames`] of the mechanism lives.
 pub fn basis_vector(axis: char, frame: &str) -> String {
-    format!("\\vec{{{axis}}}_{{{}}}", escape_ident(frame))
+    let k = match axis {
+        'x' => 0,
+        'y' => 1,
+        _ => 2,
+    };
+    let own = VECTOR_NAMES.with(|v| v.borrow().get(frame).map(|n| n[k].clone()));
+    match own {
+        Some(n) => {
+            let latex = name(&n);
+            match latex.split_once("_{") {
+                Some((head, sub)) => format!("\\vec{{{head}}}_{{{sub}"),
+                None => format!("\\vec{{{latex}}}"),
+            }
+        }
+        None => format!("\\vec{{{axis}}}_{{{}}}", escape_ident(frame)),
+    }
 }
 
 fn escape_ident(s: &str) -> String {

@@ -261,6 +261,8 @@ pub struct NumericModel {
     params: Vec<ParamInfo>,
     /// Named expressions of the parameters, (name, value).
     aliases: Vec<(String, expr::Node)>,
+    /// Basis vectors named as the statement does: (frame index, axis).
+    vectors: BTreeMap<String, (usize, usize)>,
     coords: Vec<CoordInfo>,
     frames: Vec<FrameInfo>,
     points: Vec<PointInfo>,

@@ -51,11 +51,17 @@ pub(super) struct Names<'a> {
     pub frames: &'a BTreeMap<String, usize>,
     /// The aliases read so far, (name, value), in order.
     pub aliases: &'a [(String, Node)],
+    /// Basis vectors named as the statement does (`u`): (frame index, axis).
+    pub vectors: &'a BTreeMap<String, (usize, usize)>,
 }
 
 impl Names<'_> {
-    /// Splits `x2` into (frame index, axis) when frame `2` exists.
+    /// A basis vector: a name the spec gives one (`u`), or `x2` split into (frame index, axis)
+    /// when frame `2` exists.
     pub fn basis_vector(&self, s: &str) -> Option<(usize, usize)> {
+        if let Some(v) = self.vectors.get(s) {
+            return Some(*v);
+        }
         let axis = match s.as_bytes().first()? {
             b'x' => 0,
             b'y' => 1,
@@ -278,6 +284,49 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
     for (k, i) in order.iter().enumerate() {
         frame_index.insert(spec.frames[*i].name.clone(), k + 1);
     }
+    // Basis vectors named as the statement writes them.
+    let mut vectors: BTreeMap<String, (usize, usize)> = BTreeMap::new();
+    let given = std::iter::once(("ground_basis".to_string(), &ground, &spec.ground_basis)).chain(
+        spec.frames
+            .iter()
+            .enumerate()
+            .map(|(i, f)| (format!("frames[{i}].basis"), &f.name, &f.basis)),
+    );
+    for (path, frame, names) in given {
+        let Some(names) = names else { continue };
+        let f = frame_index[frame.as_str()];
+        for (k, n) in names.iter().enumerate() {
+            let path = format!("{path}[{k}]");
+            identifier(n).map_err(|m| spec_err(&path, m))?;
+            let default = Names {
+                params: &param_index,
+                coords: &coord_index,
+                frames: &frame_index,
+                aliases: &[],
+                vectors: &BTreeMap::new(),
+            };
+            if let Some((g, a)) = default.basis_vector(n) {
+                return Err(spec_err(
+                    path,
+                    format!(
+                        "`{n}` names the basis vector {} of the frame of index {g}",
+                        ["x", "y", "z"][a]
+                    ),
+                ));
+            }
+            if param_index.contains_key(n)
+                || coord_index.contains_key(n)
+                || spec.aliases.iter().any(|a| a.name == *n)
+                || ["t", expr::PI_NAME, "sin", "cos", "dot", "ddot", "dddot"].contains(&n.as_str())
+                || vectors.insert(n.clone(), (f, k)).is_some()
+            {
+                return Err(spec_err(
+                    path,
+                    format!("`{n}` is already a name of the spec"),
+                ));
+            }
+        }
+    }
     // Aliases: named expressions of the parameters, each reading those before it.
     let mut aliases: Vec<(String, Node)> = Vec::new();
     for (i, a) in spec.aliases.iter().enumerate() {
@@ -295,6 +344,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
             coords: &coord_index,
             frames: &frame_index,
             aliases: &aliases,
+            vectors: &vectors,
         };
         let v = names
             .parse(&a.value, Context::Constant)
@@ -306,6 +356,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         coords: &coord_index,
         frames: &frame_index,
         aliases: &aliases,
+        vectors: &vectors,
     };
 
     let coords = spec
@@ -655,6 +706,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
     let model = NumericModel {
         params,
         aliases,
+        vectors,
         coords,
         frames,
         points,

@@ -208,6 +208,7 @@ pub(super) fn evaluate_expression(
         coords: &m.coord_index,
         frames: &m.frame_index,
         aliases: &m.aliases,
+        vectors: &m.vectors,
     };
     let node: Node = names
         .parse(text, Context::Instant)

@@ -249,6 +249,43 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             ));
         }
     }
+    // Basis vectors named as the statement does ((u, v, w), (i, j, k)).
+    let declared = std::iter::once(("ground_basis".to_string(), &spec.ground, &spec.ground_basis))
+        .chain(
+            spec.frames
+                .iter()
+                .enumerate()
+                .map(|(i, f)| (format!("frames[{i}].basis"), &f.name, &f.basis)),
+        );
+    let mut vector_names: HashSet<String> = HashSet::new();
+    for (path, frame, given) in declared {
+        let Some(given) = given else { continue };
+        for (k, n) in given.iter().enumerate() {
+            let path = format!("{path}[{k}]");
+            crate::expr::check_identifier(n).map_err(|m| at(&path, m))?;
+            if crate::expr::RESERVED.contains(&n.as_str()) {
+                return Err(at(
+                    path,
+                    format!("`{n}` is reserved by the expression syntax"),
+                ));
+            }
+            if names.contains(n) || !vector_names.insert(n.clone()) {
+                return Err(at(path, format!("duplicate name `{n}`")));
+            }
+            if let Some((f, a)) = frames.basis_vector(n) {
+                return Err(at(
+                    path,
+                    format!(
+                        "`{n}` is already the basis vector {} of frame {}",
+                        a.letter(),
+                        frames.get(f).name
+                    ),
+                ));
+            }
+        }
+        let f = frames.find(frame).expect("placed");
+        frames.name_vectors(f, given.clone());
+    }
     let bv = |s: &str| frames.basis_vector(s).map(|(f, a)| (f, a.index()));
 
     // Points, parents first.

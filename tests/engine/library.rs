@@ -657,6 +657,13 @@ fn pendule_support_oscillant_by_hand() {
     ))
     .unwrap();
     torseur::assert_equivalent!(m, "V(A,1/0)", "-a*Omega*sin(Omega*t)*y0");
+    // The spec names its bases as the statement does, (x, y, z) and (u, v, w): a typed
+    // vector may use them too. Γ(G) = −a Ω² cos(Ω t) y + l θ̈ u + l θ̇² v.
+    torseur::assert_equivalent!(
+        m,
+        "Gamma(G,2/0)",
+        "-a*Omega^2*cos(Omega*t)*y + l*ddot(theta)*u + l*dot(theta)^2*v"
+    );
     torseur::assert_equivalent!(
         m,
         "delta(A,2/0).z0",

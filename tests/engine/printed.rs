@@ -69,6 +69,9 @@ struct Reader<'a> {
     names: &'a HashMap<String, String>,
     basis: &'a dyn Fn(char, &str) -> &'static str,
     seen: Vec<(char, String)>,
+    /// Basis vectors the spec names as its statement does, as printed (`u`, `i1`): (axis,
+    /// frame), read off the spec's `ground_basis` and `frames[].basis`.
+    vectors: &'a HashMap<String, (char, String)>,
 }
 
 impl Reader<'_> {
@@ -316,8 +319,11 @@ impl Reader<'_> {
                         if axis == "0" {
                             return Ok("0".into());
                         }
-                        let f = self.subscript()?;
-                        let a = axis.chars().next().ok_or("empty \\vec")?;
+                        let sub = self.subscript()?;
+                        let (a, f) = match self.vectors.get(&format!("{axis}{sub}")) {
+                            Some((a, f)) => (*a, f.clone()),
+                            None => (axis.chars().next().ok_or("empty \\vec")?, sub),
+                        };
                         self.seen.push((a, f.clone()));
                         Ok((self.basis)(a, &f).to_string())
                     }
@@ -382,6 +388,7 @@ fn equations(body: &str) -> Vec<(Vec<Tok>, Vec<Tok>)> {
 struct Ctx<'a> {
     m: &'a Mechanism,
     names: HashMap<String, String>,
+    vectors: HashMap<String, (char, String)>,
 }
 
 impl Ctx<'_> {
@@ -407,7 +414,17 @@ impl Ctx<'_> {
                 panic!("`{n}` and `{other}` print alike ({written})");
             }
         }
-        Ctx { m, names }
+        let mut vectors = HashMap::new();
+        let spec = &m.spec;
+        let given = std::iter::once((&spec.ground, &spec.ground_basis))
+            .chain(spec.frames.iter().map(|f| (&f.name, &f.basis)));
+        for (frame, names) in given {
+            for (k, n) in names.iter().flatten().enumerate() {
+                let written: String = n.chars().filter(|&c| c != '_').collect();
+                vectors.insert(written, (['x', 'y', 'z'][k], frame.clone()));
+            }
+        }
+        Ctx { m, names, vectors }
     }
 
     /// A scalar read from tokens, with basis vectors set by `basis`.
@@ -422,6 +439,7 @@ impl Ctx<'_> {
             names: &self.names,
             basis,
             seen: vec![],
+            vectors: &self.vectors,
         };
         let text = r.sum()?;
         if r.i != t.len() {
@@ -444,6 +462,7 @@ impl Ctx<'_> {
             names: &self.names,
             basis: &|_, _| "0",
             seen: vec![],
+            vectors: &self.vectors,
         };
         let text = r.sum()?;
         if r.i != t.len() || !r.seen.is_empty() {

@@ -189,6 +189,7 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
         coords: &m.coord_index,
         frames: &m.frame_index,
         aliases: &m.aliases,
+        vectors: &m.vectors,
     };
     let mut d = Dynamics::default();
 
