@@ -186,6 +186,31 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                     value: Value::Scalar(f),
                 });
             }
+            // Under each hypothesis stated so far, as the other results are.
+            if doc.under.is_none() {
+                let stated: Vec<_> = m
+                    .hypotheses
+                    .iter()
+                    .filter(|h| doc.is_stated(&h.name))
+                    .collect();
+                for h in stated {
+                    let eh = h.apply(e);
+                    let hname = super::escape_text(&h.name);
+                    if eh == *e {
+                        let _ = writeln!(doc.o, "Sous l'hypothèse {hname}, elle est inchangée.\n");
+                        continue;
+                    }
+                    let _ = writeln!(doc.o, "Sous l'hypothèse {hname} :");
+                    let (lhs, rhs) = split_equation(&eh);
+                    doc.results.push((
+                        id.clone(),
+                        Some(h.name.clone()),
+                        Value::Scalar(eh.clone()),
+                        doc.here.clone(),
+                    ));
+                    doc.show_equation(DisplayRole::Result, &id, Some(&h.name), &lhs, &rhs);
+                }
+            }
         }
         _ => {
             if matches!(d.quantity.kind, QuantityKind::Unknown(_)) {
