@@ -8,26 +8,32 @@
 //! expressions are equal as functions iff their canonical forms are identical, so the zero
 //! test is exact and costs nothing.
 
+mod builder;
 mod eval;
 mod factor;
 mod flat;
 mod fraction;
+mod guard;
+mod names;
 mod number_text;
 mod parse;
 pub(crate) mod present;
 pub(crate) mod print;
 mod registry;
+mod time;
 mod vector_text;
 
+pub use builder::RegistryBuilder;
 pub use flat::FlatEval;
 pub use fraction::Fraction;
+pub use names::bare_names;
 pub use number_text::evaluate_number;
-pub use parse::{bare_names, pulsations_in};
 pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
 pub use registry::{
     MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry,
-    RegistryBuilder, check_identifier,
+    check_identifier,
 };
+pub use time::pulsations_in;
 
 use crate::excerpt::{bounded, excerpt};
 use std::collections::HashMap;

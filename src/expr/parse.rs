@@ -4,6 +4,8 @@
 //! sin and cos of a sum or of a multiple angle expand first (angle-addition formulas), so
 //! `sin(2*theta)` and `2*sin(theta)*cos(theta)` have the same canonical form.
 
+pub(super) use super::names::names_in;
+use super::time::{TIME, TIME_IN_PHASES, is_time, mentions_time};
 use super::{CoordId, Expr, ExprError, LinearAngle, Registry};
 use std::rc::Rc;
 use symbolica::atom::{Atom, AtomCore, AtomView, Symbol};
@@ -162,126 +164,7 @@ fn check_powers(s: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// The names an expression writes as themselves, outside the arguments of sin, cos, dot and
-/// ddot (`R*theta*x1 + L*sin(theta)*y1` gives `R`, `theta`, `x1`, `L`, `y1`), in order, each
-/// once. A lexical scan: the text need not be valid.
-///
-/// ```
-/// assert_eq!(
-///     torseur::expr::bare_names("R*theta*x1 + L*sin(2*theta)*y1 - dot(q)*z0"),
-///     ["R", "theta", "x1", "L", "y1", "z0"]
-/// );
-/// ```
-pub fn bare_names(s: &str) -> Vec<String> {
-    let b = s.as_bytes();
-    let mut out: Vec<String> = Vec::new();
-    let mut i = 0;
-    while i < b.len() {
-        let c = b[i];
-        if c.is_ascii_digit() {
-            // A number, and a name glued to it (`2x` is refused by the parser anyway).
-            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_' || b[i] == b'.') {
-                i += 1;
-            }
-            continue;
-        }
-        if !(c.is_ascii_alphabetic() || c == b'_') {
-            i += 1;
-            continue;
-        }
-        let start = i;
-        while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-            i += 1;
-        }
-        let word = &s[start..i];
-        let mut j = i;
-        while j < b.len() && b[j].is_ascii_whitespace() {
-            j += 1;
-        }
-        if FUNCTIONS.contains(&word) && j < b.len() && (b[j] == b'(' || b[j] == b'[') {
-            // Skip the whole argument.
-            let mut depth = 0usize;
-            while j < b.len() {
-                match b[j] {
-                    b'(' | b'[' => depth += 1,
-                    b')' | b']' => {
-                        depth -= 1;
-                        if depth == 0 {
-                            break;
-                        }
-                    }
-                    _ => {}
-                }
-                j += 1;
-            }
-            i = j + 1;
-            continue;
-        }
-        if !out.iter().any(|w| w == word) {
-            out.push(word.to_string());
-        }
-    }
-    out
-}
-
-/// The functions of the expression syntax.
-const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
-
-/// The pulsations Ω of the phases Ω t written in `s` (`F0*cos(Omega*t)` gives `Omega`), in
-/// order of appearance: the names a registry's [`RegistryBuilder::phases`] declares. A text
-/// that does not parse has none (its error comes when it is read).
-///
-/// ```
-/// assert_eq!(torseur::expr::pulsations_in("a*cos(Omega*t)*y0 + b*sin(2*w*t - theta)*x1"),
-///            ["Omega", "w"]);
-/// ```
-pub fn pulsations_in(s: &str) -> Vec<String> {
-    fn walk(v: AtomView, out: &mut Vec<String>) {
-        match v {
-            AtomView::Mul(m) if m.iter().any(|f| is_time(f)) => {
-                for f in m.iter() {
-                    if let AtomView::Var(x) = f {
-                        let n = x.get_symbol().get_stripped_name().to_string();
-                        if n != TIME && !out.contains(&n) {
-                            out.push(n);
-                        }
-                    }
-                }
-            }
-            AtomView::Mul(m) => m.iter().for_each(|f| walk(f, out)),
-            AtomView::Add(a) => a.iter().for_each(|f| walk(f, out)),
-            AtomView::Pow(p) => walk(p.get_base_exp().0, out),
-            AtomView::Fun(f) => f.iter().for_each(|a| walk(a, out)),
-            _ => {}
-        }
-    }
-    let mut out = Vec::new();
-    if names_in(s).iter().any(|&(a, b, _)| &s[a..b] == TIME)
-        && let Ok(a) = parse_checked(s)
-    {
-        walk(a.as_view(), &mut out);
-    }
-    out
-}
-
-/// Each name of `s` as (start, end, called), called when `(` or `[` follows it at once.
-pub(super) fn names_in(s: &str) -> Vec<(usize, usize, bool)> {
-    let b = s.as_bytes();
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < b.len() {
-        if b[i].is_ascii_alphabetic() || b[i] == b'_' {
-            let start = i;
-            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                i += 1;
-            }
-            out.push((start, i, i < b.len() && (b[i] == b'(' || b[i] == b'[')));
-        } else {
-            i += 1;
-        }
-    }
-    out
-}
+pub(super) const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
 
 /// « sin, cos, dot and ddot ».
 fn listed(names: &[&str]) -> String {
@@ -738,33 +621,6 @@ impl Walker<'_> {
             }
             _ => Err(nonlinear()),
         }
-    }
-}
-
-/// The name of the time.
-const TIME: &str = "t";
-
-/// Why the time is refused where it stands.
-const TIME_IN_PHASES: &str = "the time t enters only as a phase inside sin and cos, \
-     Omega*t with Omega a parameter (a pulsation in rad/s), possibly times a number";
-
-/// Whether `v` is the time `t`.
-fn is_time(v: AtomView) -> bool {
-    matches!(v, AtomView::Var(x) if x.get_symbol().get_stripped_name() == TIME)
-}
-
-/// Whether `v` holds the time anywhere (`t^2`, `(t + 1)`).
-fn mentions_time(v: AtomView) -> bool {
-    match v {
-        AtomView::Var(_) => is_time(v),
-        AtomView::Mul(m) => m.iter().any(mentions_time),
-        AtomView::Add(a) => a.iter().any(mentions_time),
-        AtomView::Pow(p) => {
-            let (b, e) = p.get_base_exp();
-            mentions_time(b) || mentions_time(e)
-        }
-        AtomView::Fun(f) => f.iter().any(mentions_time),
-        _ => false,
     }
 }
 

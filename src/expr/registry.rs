@@ -1,6 +1,8 @@
 //! The variables of one mechanism (parameters, unknowns, coordinates and their rates) and the
 //! guard that keeps symbolica on one thread.
 
+use super::builder::RegistryBuilder;
+use super::guard::ThreadGuard;
 use super::*;
 
 /// The variables of one mechanism: its parameters and time coordinates.
@@ -49,75 +51,6 @@ pub(super) fn rate_symbol(order: u8) -> Symbol {
     }
 }
 
-/// How long a thread waits for another to finish with symbolica before getting an error.
-const THREAD_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
-
-/// The thread that uses symbolica in this process, if any.
-static OWNER: std::sync::Mutex<Option<std::thread::ThreadId>> = std::sync::Mutex::new(None);
-
-/// Releases the ownership when the owning thread exits.
-struct OwnerMark;
-
-impl Drop for OwnerMark {
-    fn drop(&mut self) {
-        let me = std::thread::current().id();
-        let mut owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
-        if *owner == Some(me) {
-            *owner = None;
-        }
-    }
-}
-
-thread_local! {
-    static MARK: OwnerMark = const { OwnerMark };
-}
-
-/// One thread at a time may use symbolica: its restricted mode aborts the process when a
-/// second thread uses it while the first is alive (threads one after another are fine). The
-/// first thread that creates a registry owns symbolica until it exits; another thread then
-/// gets a clear error instead of an abort. Registries and expressions are `!Send` and `!Sync`,
-/// so they never migrate. With `SYMBOLICA_LICENSE` set the limit does not apply.
-#[derive(Debug)]
-struct ThreadGuard {
-    pub(super) _not_send: std::marker::PhantomData<*const ()>,
-}
-
-impl ThreadGuard {
-    pub(super) fn acquire() -> Result<ThreadGuard, ExprError> {
-        let guard = ThreadGuard {
-            _not_send: std::marker::PhantomData,
-        };
-        if std::env::var_os("SYMBOLICA_LICENSE").is_some() {
-            return Ok(guard);
-        }
-        let me = std::thread::current().id();
-        // A thread that has just finished releases symbolica in its exit destructors: wait a
-        // little for that before refusing (serialised hand-over between threads).
-        let start = std::time::Instant::now();
-        let mut owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
-        while owner.is_some_and(|id| id != me) && start.elapsed() < THREAD_WAIT {
-            drop(owner);
-            std::thread::sleep(std::time::Duration::from_millis(1));
-            owner = OWNER.lock().unwrap_or_else(|p| p.into_inner());
-        }
-        match *owner {
-            Some(id) if id == me => {}
-            Some(id) => {
-                return Err(ExprError::Thread(format!(
-                    "thread {me:?} cannot use torseur while thread {id:?} is using it: \
-                     unlicensed symbolica allows one thread at a time (use torseur from one \
-                     thread, let the other thread finish first, or set SYMBOLICA_LICENSE)"
-                )));
-            }
-            None => {
-                *owner = Some(me);
-                MARK.with(|_| {});
-            }
-        }
-        Ok(guard)
-    }
-}
-
 /// A name usable in expressions (parameters, coordinates): an ASCII letter, then letters,
 /// digits or `_`, at most 32 characters. (`21` would read as a number.)
 ///
@@ -162,133 +95,6 @@ pub const MAX_SPEC_DEGREE: u32 = 32;
 /// Names reserved by the expression syntax.
 pub const RESERVED: &[&str] = &["sin", "cos", "dot", "ddot", "dddot", "pi", "t"];
 
-/// The declarations of a [`Registry`], which [`RegistryBuilder::build`] turns into the
-/// registry once: its variables are fixed from then on.
-///
-/// ```
-/// use torseur::expr::Registry;
-/// use torseur::spec::wire::CoordinateKind;
-/// let reg = Registry::builder()
-///     .parameters(&["L".into(), "m".into(), "w".into()])
-///     .coordinate("q", CoordinateKind::Angle)
-///     .coordinate_with_rate("phi", CoordinateKind::Angle, "w")
-///     .unknowns(&["C_m".into()])
-///     .display_ranks(vec![2, 0, 1]) // m before L in a product, as the course writes it
-///     .build()
-///     .unwrap();
-/// assert_eq!(reg.parse("L*m*ddot(q)").unwrap().presentation().to_string(), "m*L*ddot(q)");
-/// assert_eq!(reg.parse("dot(phi)").unwrap(), reg.parse("w").unwrap());
-/// assert!(reg.parse("ddot(phi)").unwrap().is_zero());
-/// assert_eq!(reg.unknowns(), ["C_m"]);
-/// ```
-#[derive(Debug, Clone, Default)]
-pub struct RegistryBuilder {
-    parameters: Vec<String>,
-    coords: Vec<(String, CoordinateKind, Option<String>)>,
-    unknowns: Vec<String>,
-    raw_angles: Vec<String>,
-    angle_parameters: Vec<String>,
-    phases: Vec<String>,
-    aliases: Vec<(String, String)>,
-    display_ranks: Vec<u32>,
-}
-
-impl RegistryBuilder {
-    /// The constant parameters, in order.
-    pub fn parameters(mut self, names: &[String]) -> Self {
-        self.parameters.extend_from_slice(names);
-        self
-    }
-
-    /// A time coordinate.
-    pub fn coordinate(mut self, name: &str, kind: CoordinateKind) -> Self {
-        self.coords.push((name.to_string(), kind, None));
-        self
-    }
-
-    /// A time coordinate whose rate is imposed: q̇ is `rate`, an expression in the parameters
-    /// (`omega`), and q̈ = 0.
-    pub fn coordinate_with_rate(mut self, name: &str, kind: CoordinateKind, rate: &str) -> Self {
-        self.coords
-            .push((name.to_string(), kind, Some(rate.to_string())));
-        self
-    }
-
-    /// The phases Ω t of the pulsations `names` (parameters): the time enters a mechanism
-    /// only as sin(Ω t) and cos(Ω t), so each phase is an angle coordinate named `Omega*t`
-    /// whose rate Ω is imposed, after the declared coordinates.
-    ///
-    /// ```
-    /// use torseur::expr::Registry;
-    /// let reg = Registry::builder()
-    ///     .parameters(&["F0".into(), "Omega".into()])
-    ///     .phases(&["Omega".into()])
-    ///     .build()
-    ///     .unwrap();
-    /// let f = reg.parse("F0*cos(Omega*t)").unwrap();
-    /// assert_eq!(f.dt(), reg.parse("-F0*Omega*sin(Omega*t)").unwrap());
-    /// assert_eq!(f.to_string(), "F0*cos(Omega*t)");
-    /// ```
-    pub fn phases(mut self, names: &[String]) -> Self {
-        self.phases.extend_from_slice(names);
-        self
-    }
-
-    /// Named expressions of the parameters, (name, text) in order, each text reading the
-    /// parameters and the aliases before it: a name then reads as its value everywhere.
-    ///
-    /// ```
-    /// use torseur::expr::Registry;
-    /// let reg = Registry::builder()
-    ///     .parameters(&["C".into(), "omega".into()])
-    ///     .aliases(&[("K".into(), "C*omega".into()), ("K2".into(), "K^2".into())])
-    ///     .build()
-    ///     .unwrap();
-    /// assert_eq!(reg.parse("K2 - K*C*omega").unwrap().is_zero(), true);
-    /// assert_eq!(reg.aliases().next().unwrap().0, "K");
-    /// ```
-    pub fn aliases(mut self, aliases: &[(String, String)]) -> Self {
-        self.aliases.extend_from_slice(aliases);
-        self
-    }
-
-    /// The unknowns of the PFD (link components, a motor torque): scalars that enter
-    /// linearly and are solved for.
-    pub fn unknowns(mut self, names: &[String]) -> Self {
-        self.unknowns.extend_from_slice(names);
-        self
-    }
-
-    /// The angle coordinates that also enter as themselves (a torsion spring's −k(θ − θ0), a
-    /// disc's centre at R θ x1), not only through sin and cos.
-    pub fn raw_angles(mut self, names: &[String]) -> Self {
-        self.raw_angles.extend_from_slice(names);
-        self
-    }
-
-    /// The parameters that are constant angles (an incline α): each gets cos α and sin α
-    /// variables, with sin²α reduced like a coordinate's, and a zero rate; α itself stays
-    /// the parameter's variable.
-    pub fn angle_parameters(mut self, names: &[String]) -> Self {
-        self.angle_parameters.extend_from_slice(names);
-        self
-    }
-
-    /// The written order of the parameters in a product: `ranks[p]` for parameter `p`
-    /// (lower first; equal ranks keep the declaration order). The spec sets the course's
-    /// order from the units: masses, then accelerations (g), lengths, inertia moments, the
-    /// rest. Unknowns come after every parameter.
-    pub fn display_ranks(mut self, ranks: Vec<u32>) -> Self {
-        self.display_ranks = ranks;
-        self
-    }
-
-    /// The registry: its variables, in a fixed order.
-    pub fn build(self) -> Result<Rc<Registry>, ExprError> {
-        Registry::build(self)
-    }
-}
-
 impl Registry {
     /// Declares parameters and coordinates (none with an imposed rate): the short form of
     /// [`Registry::builder`].
@@ -309,7 +115,7 @@ impl Registry {
         RegistryBuilder::default()
     }
 
-    fn build(b: RegistryBuilder) -> Result<Rc<Registry>, ExprError> {
+    pub(super) fn build(b: RegistryBuilder) -> Result<Rc<Registry>, ExprError> {
         let RegistryBuilder {
             parameters,
             coords,

@@ -234,8 +234,8 @@ pub(crate) fn named_vector(s: &str) -> Option<String> {
     Some(basis_vector(['x', 'y', 'z'][k], &frame))
 }
 
-/// Basis vector `\vec{x}_{2}`, or the statement's name (`\vec{u}`, `\vec{i}_{1}`) while a
-/// [`VectorNames`] of the mechanism lives.
+/// Basis vector `\vec{x}_{2}`, or the statement's name (`\vec{u}`, `\vec{i}_{1}`) while the
+/// answer key of a mechanism that names its basis vectors is being written.
 pub fn basis_vector(axis: char, frame: &str) -> String {
     let k = match axis {
         'x' => 0,

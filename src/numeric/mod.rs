@@ -337,13 +337,14 @@ impl NumericModel {
     /// use torseur::quantity::Quantity;
     /// let spec: torseur::spec::wire::SpecFile = serde_json::from_str(r#"{
     ///   "title": "arm", "parameters": [{"name": "L"}],
-    ///   "coordinates": [{"name": "t", "kind": "angle"}],
-    ///   "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}}],
+    ///   "coordinates": [{"name": "q", "kind": "angle"}],
+    ///   "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "q"}}],
     ///   "points": [{"name": "P", "position": "L*x1"}]}"#).unwrap();
     /// let model = NumericModel::new(&spec).unwrap();
     /// let s = Sample {
     ///     parameters: [("L".to_string(), 2.0)].into(),
-    ///     coordinates: [("t".to_string(), [0.3, 5.0, 0.0])].into(),
+    ///     coordinates: [("q".to_string(), [0.3, 5.0, 0.0])].into(),
+    ///     time: 0.0,
     /// };
     /// let v = model.evaluate(&Quantity::parse("V(P,1/0).y1").unwrap(), &s, "0").unwrap();
     /// assert!(matches!(v, NumValue::Scalar(x) if (x - 10.0).abs() < 1e-12));
@@ -367,15 +368,16 @@ impl NumericModel {
     /// let spec: torseur::spec::wire::SpecFile = serde_json::from_str(r#"{
     ///   "title": "arm", "ground_origin": "O",
     ///   "parameters": [{"name": "L"}, {"name": "m"}, {"name": "g"}],
-    ///   "coordinates": [{"name": "t", "kind": "angle"}],
-    ///   "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}}],
+    ///   "coordinates": [{"name": "q", "kind": "angle"}],
+    ///   "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "q"}}],
     ///   "points": [{"name": "G", "position": "L*x1"}],
     ///   "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "G"}],
     ///   "gravity": "-g*y0"}"#).unwrap();
     /// let model = NumericModel::new(&spec).unwrap();
     /// let s = Sample {
     ///     parameters: [("L", 2.0), ("m", 3.0), ("g", 10.0)].map(|(n, v)| (n.to_string(), v)).into(),
-    ///     coordinates: [("t".to_string(), [0.0, 0.0, 0.0])].into(),
+    ///     coordinates: [("q".to_string(), [0.0, 0.0, 0.0])].into(),
+    ///     time: 0.0,
     /// };
     /// // The weight's moment at O about z0: (2 x0) ∧ (−30 y0) = −60 z0.
     /// let q = Quantity::parse("M(O,pes->1).z0").unwrap();
@@ -461,6 +463,7 @@ impl NumericModel {
     /// let s = Sample {
     ///     parameters: [("m".to_string(), 3.0)].into(),
     ///     coordinates: [("q".to_string(), [0.0, 2.0, 0.5])].into(),
+    ///     time: 0.0,
     /// };
     /// let v = model.evaluate_expression("m*cos(q)*dot(q)^2 + ddot(q)", &s).unwrap();
     /// assert_eq!(v, 12.5);

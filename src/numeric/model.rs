@@ -216,19 +216,19 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
     for (i, c) in spec.coordinates.iter().enumerate() {
         identifier(&c.name).map_err(|m| spec_err(format!("coordinates[{i}].name"), m))?;
     }
-    // `pi` is π in every expression, so it cannot name a parameter or a coordinate.
-    for (path, what, i) in [
-        ("parameters", "parameter", param_index.get(expr::PI_NAME)),
-        ("coordinates", "coordinate", coord_index.get(expr::PI_NAME)),
-    ] {
-        if let Some(i) = i {
-            return Err(spec_err(
-                format!("{path}[{i}].name"),
-                format!(
-                    "{what} name `{}`: the name is reserved for π",
-                    expr::PI_NAME
-                ),
-            ));
+    // `pi` is π and `t` the time in every expression, so neither names a parameter or a
+    // coordinate.
+    for (reserved, meaning) in [(expr::PI_NAME, "π"), ("t", "the time")] {
+        for (path, what, i) in [
+            ("parameters", "parameter", param_index.get(reserved)),
+            ("coordinates", "coordinate", coord_index.get(reserved)),
+        ] {
+            if let Some(i) = i {
+                return Err(spec_err(
+                    format!("{path}[{i}].name"),
+                    format!("{what} name `{reserved}`: the name is reserved for {meaning}"),
+                ));
+            }
         }
     }
     for (i, c) in spec.coordinates.iter().enumerate() {
@@ -285,48 +285,8 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         frame_index.insert(spec.frames[*i].name.clone(), k + 1);
     }
     // Basis vectors named as the statement writes them.
-    let mut vectors: BTreeMap<String, (usize, usize)> = BTreeMap::new();
-    let given = std::iter::once(("ground_basis".to_string(), &ground, &spec.ground_basis)).chain(
-        spec.frames
-            .iter()
-            .enumerate()
-            .map(|(i, f)| (format!("frames[{i}].basis"), &f.name, &f.basis)),
-    );
-    for (path, frame, names) in given {
-        let Some(names) = names else { continue };
-        let f = frame_index[frame.as_str()];
-        for (k, n) in names.iter().enumerate() {
-            let path = format!("{path}[{k}]");
-            identifier(n).map_err(|m| spec_err(&path, m))?;
-            let default = Names {
-                params: &param_index,
-                coords: &coord_index,
-                frames: &frame_index,
-                aliases: &[],
-                vectors: &BTreeMap::new(),
-            };
-            if let Some((g, a)) = default.basis_vector(n) {
-                return Err(spec_err(
-                    path,
-                    format!(
-                        "`{n}` names the basis vector {} of the frame of index {g}",
-                        ["x", "y", "z"][a]
-                    ),
-                ));
-            }
-            if param_index.contains_key(n)
-                || coord_index.contains_key(n)
-                || spec.aliases.iter().any(|a| a.name == *n)
-                || ["t", expr::PI_NAME, "sin", "cos", "dot", "ddot", "dddot"].contains(&n.as_str())
-                || vectors.insert(n.clone(), (f, k)).is_some()
-            {
-                return Err(spec_err(
-                    path,
-                    format!("`{n}` is already a name of the spec"),
-                ));
-            }
-        }
-    }
+    let vectors = super::checks::named_vectors(spec, &param_index, &coord_index, &frame_index)
+        .map_err(|(path, m)| spec_err(path, m))?;
     // Aliases: named expressions of the parameters, each reading those before it.
     let mut aliases: Vec<(String, Node)> = Vec::new();
     for (i, a) in spec.aliases.iter().enumerate() {

@@ -103,8 +103,8 @@ pub(super) const TOL: f64 = 1e-12;
 const ARM: &str = r#"{
   "title": "arm",
   "parameters": [{"name": "L", "unit": "m"}, {"name": "m", "unit": "kg"}],
-  "coordinates": [{"name": "t", "kind": "angle"}],
-  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}}],
+  "coordinates": [{"name": "th", "kind": "angle"}],
+  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "th"}}],
   "points": [{"name": "P", "position": "L*x1"}],
   "solids": [{"name": "1", "frame": "1", "mass": "m", "centre": "P"}]
 }"#;
@@ -113,7 +113,7 @@ const ARM: &str = r#"{
 fn point_mass_on_a_rotating_arm() {
     let m = model(ARM);
     let (l, mass, q, w, a) = (0.8, 1.7, 0.4, 1.3, -0.6);
-    let s = sample(&[("L", l), ("m", mass)], &[("t", [q, w, a])]);
+    let s = sample(&[("L", l), ("m", mass)], &[("th", [q, w, a])]);
     // V(P,1/0) = L θ̇ y1, Γ(P,1/0) = L θ̈ y1 − L θ̇² x1.
     close(&vector(&m, "V(P,1/0) in B1", &s), &[0.0, l * w, 0.0], TOL);
     close(
@@ -165,7 +165,7 @@ fn point_mass_on_a_rotating_arm() {
 fn negative_axis_is_the_opposite_angle() {
     let m = model(&ARM.replace(r#""axis": "z""#, r#""axis": "-z""#));
     let (l, q, w) = (0.8, 0.4, 1.3);
-    let s = sample(&[("L", l), ("m", 1.0)], &[("t", [q, w, 0.0])]);
+    let s = sample(&[("L", l), ("m", 1.0)], &[("th", [q, w, 0.0])]);
     close(&vector(&m, "Omega(1/0)", &s), &[0.0, 0.0, -w], TOL);
     // x1 = cos t x0 − sin t y0.
     close(
@@ -179,8 +179,8 @@ fn negative_axis_is_the_opposite_angle() {
 
 const SLIDER: &str = r#"{
   "title": "slider",
-  "coordinates": [{"name": "t", "kind": "angle"}, {"name": "lambda", "kind": "length"}],
-  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}},
+  "coordinates": [{"name": "th", "kind": "angle"}, {"name": "lambda", "kind": "length"}],
+  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "th"}},
              {"name": "2", "parent": "1", "origin": "P"}],
   "points": [{"name": "P", "position": "lambda*x1"}]
 }"#;
@@ -190,7 +190,7 @@ fn slider_on_a_rotating_arm_has_coriolis_acceleration() {
     let m = model(SLIDER);
     let (lam, ld, ldd) = (1.2, 0.7, -0.3);
     let (w, a) = (1.1, 0.5);
-    let s = sample(&[], &[("t", [0.2, w, a]), ("lambda", [lam, ld, ldd])]);
+    let s = sample(&[], &[("th", [0.2, w, a]), ("lambda", [lam, ld, ldd])]);
     // Γ(P,2/0) = (λ̈ − λ θ̇²) x1 + (λ θ̈ + 2 λ̇ θ̇) y1.
     close(
         &vector(&m, "Gamma(P,2/0) in B1", &s),
@@ -215,8 +215,8 @@ const ROTOR: &str = r#"{
   "title": "rotor",
   "parameters": [{"name": "m", "unit": "kg"}, {"name": "a", "unit": "m"}, {"name": "l", "unit": "m"},
                  {"name": "A"}, {"name": "C"}, {"name": "phi", "unit": "rad", "kind": "angle"}],
-  "coordinates": [{"name": "t", "kind": "angle"}],
-  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}},
+  "coordinates": [{"name": "th", "kind": "angle"}],
+  "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "th"}},
              {"name": "3", "parent": "1", "rotation": {"axis": "z", "angle": "phi"}}],
   "points": [{"name": "G", "position": "a*x1"}, {"name": "E", "from": "G", "position": "-l/2*x1"}],
   "solids": [
@@ -247,7 +247,7 @@ fn solid_of_revolution_about_its_fixed_axis() {
             ("C", c),
             ("phi", 0.4),
         ],
-        &[("t", [1.0, w, acc])],
+        &[("th", [1.0, w, acc])],
     );
     // σ(O, S/0) = C ω z, δ = C ω̇ z.
     close(&vector(&m, "sigma(O0,disc/0)", &s), &[0.0, 0.0, c * w], TOL);
@@ -272,7 +272,7 @@ fn thin_rod_spinning_off_centre() {
             ("C", 0.9),
             ("phi", 0.4),
         ],
-        &[("t", [t, w, acc])],
+        &[("th", [t, w, acc])],
     );
     // σ(O) = (m l²/12 + m a²) ω z0 for a rod of length l centred at a x1, along x1.
     let j = mass * l * l / 12.0 + mass * a * a;
@@ -318,7 +318,7 @@ fn inertia_transported_and_rotated_numerically() {
             ("C", 0.9),
             ("phi", 0.4),
         ],
-        &[("t", [0.7, 1.0, 0.0])],
+        &[("th", [0.7, 1.0, 0.0])],
     );
     // Huygens at O0: I_O = I_G + m (a² Id − a² x1 x1ᵀ) in B1.
     let io = matrix(&m, "I(O0,rod) in B1", &s);
@@ -466,8 +466,8 @@ fn sampling_follows_the_written_matrix() {
 fn imposed_rate_is_kept() {
     let json = ARM
         .replace(
-            r#"{"name": "t", "kind": "angle"}"#,
-            r#"{"name": "t", "kind": "angle", "rate": "2*w"}"#,
+            r#"{"name": "th", "kind": "angle"}"#,
+            r#"{"name": "th", "kind": "angle", "rate": "2*w"}"#,
         )
         .replace(
             r#"{"name": "m", "unit": "kg"}"#,
@@ -475,14 +475,14 @@ fn imposed_rate_is_kept() {
         );
     let m = model(&json);
     let s = m.sample(&mut ChaCha8Rng::seed_from_u64(3)).expect("sample");
-    let t = s.coordinates["t"];
+    let t = s.coordinates["th"];
     assert_eq!(t[1], 2.0 * s.parameters["w"]);
     assert_eq!(t[2], 0.0);
     eval(&m, "V(P,1/0)", &s);
     let mut wrong = s.clone();
     wrong
         .coordinates
-        .insert("t".into(), [t[0], t[1] + 1.0, 0.0]);
+        .insert("th".into(), [t[0], t[1] + 1.0, 0.0]);
     let e = m
         .evaluate(&Quantity::parse("V(P,1/0)").expect("q"), &wrong, "0")
         .expect_err("contradicts the imposed rate");
@@ -508,7 +508,7 @@ fn impossible_bodies_are_refused() {
                 e.1 = v;
             }
         }
-        sample(&p, &[("t", [0.0, 1.0, 0.0])])
+        sample(&p, &[("th", [0.0, 1.0, 0.0])])
     };
     // C > 2A: one principal moment exceeds the sum of the other two.
     let e = m.evaluate(&q, &with("C", 1.3), "0").expect_err("C > A + B");
@@ -671,7 +671,7 @@ fn pi_in_angles_and_positions() {
 fn a_joint_at_exactly_zero_keeps_its_rates() {
     let m = model(ARM);
     let (l, w, a) = (0.8, 1.3, -0.6);
-    let s = sample(&[("L", l), ("m", 1.0)], &[("t", [0.0, w, a])]);
+    let s = sample(&[("L", l), ("m", 1.0)], &[("th", [0.0, w, a])]);
     close(&vector(&m, "V(P,1/0)", &s), &[0.0, l * w, 0.0], TOL);
     close(
         &vector(&m, "Gamma(P,1/0)", &s),
@@ -696,11 +696,11 @@ fn documentation_examples_hold() {
     let m = model(
         r#"{
       "title": "arm", "parameters": [{"name": "L"}],
-      "coordinates": [{"name": "t", "kind": "angle"}],
-      "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "t"}}],
+      "coordinates": [{"name": "th", "kind": "angle"}],
+      "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "th"}}],
       "points": [{"name": "P", "position": "L*x1"}]}"#,
     );
-    let s = sample(&[("L", 2.0)], &[("t", [0.3, 5.0, 0.0])]);
+    let s = sample(&[("L", 2.0)], &[("th", [0.3, 5.0, 0.0])]);
     assert!((scalar(&m, "V(P,1/0).y1", &s) - 10.0).abs() < 1e-12);
 
     let m = model(

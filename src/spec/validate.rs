@@ -43,21 +43,6 @@ fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
     check_name(n).map_err(|m| at(path, m))
 }
 
-/// The message refusing a scalar named like a basis vector (`x0` when frame `0` exists), if
-/// `n` is one: in a vector expression the name could only be read as the basis vector.
-pub(super) fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
-    let mut c = n.chars();
-    let axis = c.next().filter(|a| matches!(a, 'x' | 'y' | 'z'))?;
-    let frame = c.as_str();
-    let exists = frame == spec.ground || spec.frames.iter().any(|f| f.name == frame);
-    exists.then(|| {
-        format!(
-            "the {what} `{n}` has the name of the basis vector {axis} of frame {frame}: rename it \
-             (a position such as `{n}*{n}` could not tell them apart)"
-        )
-    })
-}
-
 /// Builds the mechanism described by a spec.
 pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     // Free texts first: a formula the answer key could not print safely refuses the spec.
@@ -70,7 +55,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     for (i, p) in spec.parameters.iter().enumerate() {
         let path = format!("parameters[{i}].name");
         crate::expr::check_identifier(&p.name).map_err(|m| at(&path, m))?;
-        if let Some(m) = basis_vector_clash(spec, "parameter", &p.name) {
+        if let Some(m) = super::vectors::basis_vector_clash(spec, "parameter", &p.name) {
             return Err(at(path, m));
         }
         if !names.insert(p.name.clone()) {
@@ -93,7 +78,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     for (i, c) in spec.coordinates.iter().enumerate() {
         let path = format!("coordinates[{i}].name");
         crate::expr::check_identifier(&c.name).map_err(|m| at(&path, m))?;
-        if let Some(m) = basis_vector_clash(spec, "coordinate", &c.name) {
+        if let Some(m) = super::vectors::basis_vector_clash(spec, "coordinate", &c.name) {
             return Err(at(path, m));
         }
         if !names.insert(c.name.clone()) {
@@ -103,7 +88,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     for (i, a) in spec.aliases.iter().enumerate() {
         let path = format!("aliases[{i}].name");
         crate::expr::check_identifier(&a.name).map_err(|m| at(&path, m))?;
-        if let Some(m) = basis_vector_clash(spec, "alias", &a.name) {
+        if let Some(m) = super::vectors::basis_vector_clash(spec, "alias", &a.name) {
             return Err(at(path, m));
         }
         if !names.insert(a.name.clone()) {
@@ -250,42 +235,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         }
     }
     // Basis vectors named as the statement does ((u, v, w), (i, j, k)).
-    let declared = std::iter::once(("ground_basis".to_string(), &spec.ground, &spec.ground_basis))
-        .chain(
-            spec.frames
-                .iter()
-                .enumerate()
-                .map(|(i, f)| (format!("frames[{i}].basis"), &f.name, &f.basis)),
-        );
-    let mut vector_names: HashSet<String> = HashSet::new();
-    for (path, frame, given) in declared {
-        let Some(given) = given else { continue };
-        for (k, n) in given.iter().enumerate() {
-            let path = format!("{path}[{k}]");
-            crate::expr::check_identifier(n).map_err(|m| at(&path, m))?;
-            if crate::expr::RESERVED.contains(&n.as_str()) {
-                return Err(at(
-                    path,
-                    format!("`{n}` is reserved by the expression syntax"),
-                ));
-            }
-            if names.contains(n) || !vector_names.insert(n.clone()) {
-                return Err(at(path, format!("duplicate name `{n}`")));
-            }
-            if let Some((f, a)) = frames.basis_vector(n) {
-                return Err(at(
-                    path,
-                    format!(
-                        "`{n}` is already the basis vector {} of frame {}",
-                        a.letter(),
-                        frames.get(f).name
-                    ),
-                ));
-            }
-        }
-        let f = frames.find(frame).expect("placed");
-        frames.name_vectors(f, given.clone());
-    }
+    super::vectors::name_vectors(spec, &mut frames, &names)?;
     let bv = |s: &str| frames.basis_vector(s).map(|(f, a)| (f, a.index()));
 
     // Points, parents first.

@@ -1,0 +1,132 @@
+//! The declarations a [`Registry`] is built from.
+
+use super::ExprError;
+use super::{CoordinateKind, Registry};
+use std::rc::Rc;
+
+/// The declarations of a [`Registry`], which [`RegistryBuilder::build`] turns into the
+/// registry once: its variables are fixed from then on.
+///
+/// ```
+/// use torseur::expr::Registry;
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::builder()
+///     .parameters(&["L".into(), "m".into(), "w".into()])
+///     .coordinate("q", CoordinateKind::Angle)
+///     .coordinate_with_rate("phi", CoordinateKind::Angle, "w")
+///     .unknowns(&["C_m".into()])
+///     .display_ranks(vec![2, 0, 1]) // m before L in a product, as the course writes it
+///     .build()
+///     .unwrap();
+/// assert_eq!(reg.parse("L*m*ddot(q)").unwrap().presentation().to_string(), "m*L*ddot(q)");
+/// assert_eq!(reg.parse("dot(phi)").unwrap(), reg.parse("w").unwrap());
+/// assert!(reg.parse("ddot(phi)").unwrap().is_zero());
+/// assert_eq!(reg.unknowns(), ["C_m"]);
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct RegistryBuilder {
+    pub(super) parameters: Vec<String>,
+    pub(super) coords: Vec<(String, CoordinateKind, Option<String>)>,
+    pub(super) unknowns: Vec<String>,
+    pub(super) raw_angles: Vec<String>,
+    pub(super) angle_parameters: Vec<String>,
+    pub(super) phases: Vec<String>,
+    pub(super) aliases: Vec<(String, String)>,
+    pub(super) display_ranks: Vec<u32>,
+}
+
+impl RegistryBuilder {
+    /// The constant parameters, in order.
+    pub fn parameters(mut self, names: &[String]) -> Self {
+        self.parameters.extend_from_slice(names);
+        self
+    }
+
+    /// A time coordinate.
+    pub fn coordinate(mut self, name: &str, kind: CoordinateKind) -> Self {
+        self.coords.push((name.to_string(), kind, None));
+        self
+    }
+
+    /// A time coordinate whose rate is imposed: q̇ is `rate`, an expression in the parameters
+    /// (`omega`), and q̈ = 0.
+    pub fn coordinate_with_rate(mut self, name: &str, kind: CoordinateKind, rate: &str) -> Self {
+        self.coords
+            .push((name.to_string(), kind, Some(rate.to_string())));
+        self
+    }
+
+    /// The phases Ω t of the pulsations `names` (parameters): the time enters a mechanism
+    /// only as sin(Ω t) and cos(Ω t), so each phase is an angle coordinate named `Omega*t`
+    /// whose rate Ω is imposed, after the declared coordinates.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// let reg = Registry::builder()
+    ///     .parameters(&["F0".into(), "Omega".into()])
+    ///     .phases(&["Omega".into()])
+    ///     .build()
+    ///     .unwrap();
+    /// let f = reg.parse("F0*cos(Omega*t)").unwrap();
+    /// assert_eq!(f.dt(), reg.parse("-F0*Omega*sin(Omega*t)").unwrap());
+    /// assert_eq!(f.to_string(), "F0*cos(Omega*t)");
+    /// ```
+    pub fn phases(mut self, names: &[String]) -> Self {
+        self.phases.extend_from_slice(names);
+        self
+    }
+
+    /// Named expressions of the parameters, (name, text) in order, each text reading the
+    /// parameters and the aliases before it: a name then reads as its value everywhere.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// let reg = Registry::builder()
+    ///     .parameters(&["C".into(), "omega".into()])
+    ///     .aliases(&[("K".into(), "C*omega".into()), ("K2".into(), "K^2".into())])
+    ///     .build()
+    ///     .unwrap();
+    /// assert_eq!(reg.parse("K2 - K*C*omega").unwrap().is_zero(), true);
+    /// assert_eq!(reg.aliases().next().unwrap().0, "K");
+    /// ```
+    pub fn aliases(mut self, aliases: &[(String, String)]) -> Self {
+        self.aliases.extend_from_slice(aliases);
+        self
+    }
+
+    /// The unknowns of the PFD (link components, a motor torque): scalars that enter
+    /// linearly and are solved for.
+    pub fn unknowns(mut self, names: &[String]) -> Self {
+        self.unknowns.extend_from_slice(names);
+        self
+    }
+
+    /// The angle coordinates that also enter as themselves (a torsion spring's −k(θ − θ0), a
+    /// disc's centre at R θ x1), not only through sin and cos.
+    pub fn raw_angles(mut self, names: &[String]) -> Self {
+        self.raw_angles.extend_from_slice(names);
+        self
+    }
+
+    /// The parameters that are constant angles (an incline α): each gets cos α and sin α
+    /// variables, with sin²α reduced like a coordinate's, and a zero rate; α itself stays
+    /// the parameter's variable.
+    pub fn angle_parameters(mut self, names: &[String]) -> Self {
+        self.angle_parameters.extend_from_slice(names);
+        self
+    }
+
+    /// The written order of the parameters in a product: `ranks[p]` for parameter `p`
+    /// (lower first; equal ranks keep the declaration order). The spec sets the course's
+    /// order from the units: masses, then accelerations (g), lengths, inertia moments, the
+    /// rest. Unknowns come after every parameter.
+    pub fn display_ranks(mut self, ranks: Vec<u32>) -> Self {
+        self.display_ranks = ranks;
+        self
+    }
+
+    /// The registry: its variables, in a fixed order.
+    pub fn build(self) -> Result<Rc<Registry>, ExprError> {
+        Registry::build(self)
+    }
+}
