@@ -204,11 +204,18 @@ pub(crate) struct VectorNames {
 impl VectorNames {
     /// The names of `m`'s frames, in force until the value is dropped.
     pub(crate) fn of(m: &Mechanism) -> VectorNames {
-        let mut now = std::collections::HashMap::new();
+        let mut now: std::collections::HashMap<String, [String; 3]> =
+            std::collections::HashMap::new();
+        // Parents come before their children: a frame that only translates from a named
+        // basis has the same vectors, and is written with the same names.
         for f in m.frames.ids() {
             let fr = m.frames.get(f);
-            if let Some(n) = &fr.vector_names {
-                now.insert(fr.name.clone(), n.clone());
+            let inherited = match (&fr.rotation, fr.parent) {
+                (None, Some(p)) => now.get(&m.frames.get(p).name).cloned(),
+                _ => None,
+            };
+            if let Some(n) = fr.vector_names.clone().or(inherited) {
+                now.insert(fr.name.clone(), n);
             }
         }
         VectorNames {

@@ -402,6 +402,11 @@ fn point_where(
         parts.push("the time `t` (\"time\": a number)".to_string());
     }
     if !parts.is_empty() {
+        // The time alone is one thing missing.
+        let why = match parts.len() == 1 && missing_time {
+            true => why.replace("hold them", "hold it"),
+            false => why.to_string(),
+        };
         return Err(ValuesError(format!("missing {}{why}", parts.join(" and "))));
     }
     Ok(point)

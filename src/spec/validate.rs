@@ -92,7 +92,13 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             return Err(at(path, m));
         }
         if !names.insert(a.name.clone()) {
-            return Err(at(path, format!("duplicate name `{}`", a.name)));
+            return Err(at(
+                path,
+                format!(
+                    "duplicate name `{}`: already a parameter, a coordinate or an alias",
+                    a.name
+                ),
+            ));
         }
     }
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();

@@ -50,7 +50,13 @@ pub(super) fn name_vectors(
                 ));
             }
             if names.contains(n) || !vector_names.insert(n.clone()) {
-                return Err(at(path, format!("duplicate name `{n}`")));
+                return Err(at(
+                    path,
+                    format!(
+                        "`{n}` is already the name of a parameter, a coordinate, an alias or \
+                         another basis vector: rename one of them"
+                    ),
+                ));
             }
             if let Some((f, a)) = frames.basis_vector(n) {
                 return Err(at(
