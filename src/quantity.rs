@@ -166,7 +166,8 @@ impl Quantity {
                 let frame: String = chars.collect();
                 if frame.is_empty() {
                     return Err(err(&format!(
-                        "a projection names its frame after the axis: .{axis}2, not .{axis}"
+                        "a projection names its frame after the axis, as the course writes \
+                         it: .{axis}0 for the ground, .{axis}2 for frame 2, not .{axis}"
                     )));
                 }
                 check_name(&frame).map_err(|r| err(&r))?;

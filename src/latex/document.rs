@@ -764,21 +764,31 @@ fn model_hypotheses(doc: &mut Doc) {
         ));
     }
     if !m.spec.links.is_empty() {
+        // Friction makes a link imperfect (it dissipates); a spring mounted on it does not.
+        let mut said = Vec::new();
+        let mut tex = |what: String, t: &str| match m.reg.parse(t) {
+            Ok(e) => {
+                let latex = super::expr(&e);
+                said.push(Inline {
+                    what,
+                    latex: latex.clone(),
+                    value: Value::Scalar(e),
+                });
+                latex
+            }
+            Err(_) => String::new(),
+        };
         let lossy: Vec<String> = m
             .spec
             .links
             .iter()
-            .filter(|l| l.friction.is_some() || l.spring.is_some())
-            .map(|l| {
-                let what = match (&l.friction, &l.spring) {
-                    (Some(f), None) => format!(
-                        "frottement visqueux de coefficient ${}$",
-                        m.reg.parse(f).map(|e| super::expr(&e)).unwrap_or_default()
-                    ),
-                    (None, Some(_)) => "ressort".to_string(),
-                    _ => "frottement visqueux et ressort".to_string(),
-                };
-                format!("la liaison {} ({what})", escape_text(&l.name))
+            .filter_map(|l| {
+                let f = l.friction.as_deref()?;
+                Some(format!(
+                    "la liaison {} (frottement visqueux de coefficient ${}$)",
+                    escape_text(&l.name),
+                    tex(format!("friction of {}", l.name), f)
+                ))
             })
             .collect();
         parts.push(if lossy.is_empty() {
@@ -786,6 +796,17 @@ fn model_hypotheses(doc: &mut Doc) {
         } else {
             format!("les liaisons sont parfaites, sauf {}", lossy.join(" et "))
         });
+        for l in &m.spec.links {
+            if let Some(sp) = &l.spring {
+                let torsion = m.reg.angle(&sp.coordinate).map_or("", |_| " de torsion");
+                parts.push(format!(
+                    "un ressort{torsion} de raideur ${}$ agit dans la liaison {}",
+                    tex(format!("stiffness of {}", l.name), &sp.stiffness),
+                    escape_text(&l.name)
+                ));
+            }
+        }
+        doc.inline.extend(said);
     }
     let mut text = parts.join(" ; ");
     if let Some(c) = text.get(..1) {
