@@ -333,20 +333,7 @@ impl Registry {
             reg.aliases.push((name.clone(), e.p));
         }
         if coords.iter().any(|c| c.2.is_some()) {
-            let base = Rc::new(Registry {
-                _guard: ThreadGuard::acquire()?,
-                vars: reg.vars.clone(),
-                roles: reg.roles.clone(),
-                role_index: reg.role_index.clone(),
-                parameters: reg.parameters.clone(),
-                n_params: reg.n_params,
-                param_var: reg.param_var.clone(),
-                coords: reg.coords.clone(),
-                n_coords: reg.n_coords,
-                coord_by_name: reg.coord_by_name.clone(),
-                display_ranks: Vec::new(),
-                aliases: reg.aliases.clone(),
-            });
+            let base = snapshot(&reg)?;
             for (i, (_, _, rate)) in coords.iter().enumerate() {
                 if let Some(r) = rate {
                     let e = base.parse(r)?;
