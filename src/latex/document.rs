@@ -603,7 +603,7 @@ pub fn answer_key_document(
     for p in m.points.ids().skip(1) {
         let pt = m.points.get(p);
         let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
-        let rhs = vector_over_bases(m, &pt.offset);
+        let rhs = super::vector_over_bases(m, &pt.offset);
         let math = format!(
             "\\overrightarrow{{{}{}}} = {rhs}",
             point(from),
@@ -681,7 +681,7 @@ pub fn answer_key_document(
     }
     doc.rows(&cells, &widths, 2);
 
-    model_hypotheses(&mut doc);
+    super::hypotheses::model_hypotheses(&mut doc);
 
     if m.spec.questions.is_empty() {
         if !m.hypotheses.is_empty() {
@@ -718,99 +718,4 @@ pub fn answer_key_document(
         displays: doc.displays,
         inline: doc.inline,
     })
-}
-
-/// A vector as written in the spec, over the bases of its parts: `d_{1}\,\vec{z}_{0} +
-/// L_{1}\,\vec{y}_{1}`.
-fn vector_over_bases(m: &Mechanism, v: &crate::vector::Vector) -> String {
-    let parts: Vec<String> = v
-        .parts()
-        .flat_map(|(b, c)| {
-            let bn = m.frame_name(b).to_string();
-            (0..3)
-                .filter(|&k| !c[k].is_zero())
-                .map(|k| {
-                    let e = super::expr(&c[k]);
-                    let bv = basis_vector(['x', 'y', 'z'][k], &bn);
-                    if c[k].nterms() > 1 {
-                        format!("\\left({e}\\right){bv}")
-                    } else if e == "1" {
-                        bv
-                    } else if e == "-1" {
-                        format!("-{bv}")
-                    } else {
-                        format!("{e}\\,{bv}")
-                    }
-                })
-                .collect::<Vec<_>>()
-        })
-        .collect();
-    if parts.is_empty() {
-        "\\vec{0}".to_string()
-    } else {
-        parts.join(" + ").replace("+ -", "- ")
-    }
-}
-
-/// The model's hypotheses, stated once: the reference frame, the links, gravity.
-fn model_hypotheses(doc: &mut Doc) {
-    let m = doc.m;
-    let ground = super::frame(m.frame_name(m.frames.ground()));
-    let mut parts = vec![format!("le référentiel ${ground}$ est galiléen")];
-    if let Some(g) = &m.dynamics.gravity {
-        parts.push(format!(
-            "l'accélération de la pesanteur est ${}$",
-            vector_over_bases(m, g)
-        ));
-    }
-    if !m.spec.links.is_empty() {
-        // Friction makes a link imperfect (it dissipates); a spring mounted on it does not.
-        let mut said = Vec::new();
-        let mut tex = |what: String, t: &str| match m.reg.parse(t) {
-            Ok(e) => {
-                let latex = super::expr(&e);
-                said.push(Inline {
-                    what,
-                    latex: latex.clone(),
-                    value: Value::Scalar(e),
-                });
-                latex
-            }
-            Err(_) => String::new(),
-        };
-        let lossy: Vec<String> = m
-            .spec
-            .links
-            .iter()
-            .filter_map(|l| {
-                let f = l.friction.as_deref()?;
-                Some(format!(
-                    "la liaison {} (frottement visqueux de coefficient ${}$)",
-                    escape_text(&l.name),
-                    tex(format!("friction of {}", l.name), f)
-                ))
-            })
-            .collect();
-        parts.push(if lossy.is_empty() {
-            "les liaisons sont parfaites".to_string()
-        } else {
-            format!("les liaisons sont parfaites, sauf {}", lossy.join(" et "))
-        });
-        for l in &m.spec.links {
-            if let Some(sp) = &l.spring {
-                let torsion = m.reg.angle(&sp.coordinate).map_or("", |_| " de torsion");
-                parts.push(format!(
-                    "un ressort{torsion} de raideur ${}$ agit dans la liaison {}",
-                    tex(format!("stiffness of {}", l.name), &sp.stiffness),
-                    escape_text(&l.name)
-                ));
-            }
-        }
-        doc.inline.extend(said);
-    }
-    let mut text = parts.join(" ; ");
-    if let Some(c) = text.get(..1) {
-        text = c.to_uppercase() + &text[1..];
-    }
-    let _ = writeln!(doc.o, "\\paragraph{{Hypothèses du modèle.}} {text}.\n");
 }

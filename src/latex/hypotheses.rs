@@ -1,6 +1,7 @@
 //! A hypothesis in the answer key, stated once: its text, the zeros its symmetries give and
 //! the particular inertia matrices; a later hypothesis with the same symmetries refers to it.
 
+use super::Inline;
 use super::document::{DisplayRole, Doc};
 use super::{basis_vector, escape_text, name, point, rich_text_or_escaped};
 use crate::derivation::Value;
@@ -180,4 +181,67 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
         hs.symmetric_solids.clone(),
         h.effects.clone(),
     ));
+}
+
+/// The model's hypotheses, stated once: the reference frame, the links, gravity.
+pub(super) fn model_hypotheses(doc: &mut Doc) {
+    let m = doc.m;
+    let ground = super::frame(m.frame_name(m.frames.ground()));
+    let mut parts = vec![format!("le référentiel ${ground}$ est galiléen")];
+    if let Some(g) = &m.dynamics.gravity {
+        parts.push(format!(
+            "l'accélération de la pesanteur est ${}$",
+            super::vector_over_bases(m, g)
+        ));
+    }
+    if !m.spec.links.is_empty() {
+        // Friction makes a link imperfect (it dissipates); a spring mounted on it does not.
+        let mut said = Vec::new();
+        let mut tex = |what: String, t: &str| match m.reg.parse(t) {
+            Ok(e) => {
+                let latex = super::expr(&e);
+                said.push(Inline {
+                    what,
+                    latex: latex.clone(),
+                    value: Value::Scalar(e),
+                });
+                latex
+            }
+            Err(_) => String::new(),
+        };
+        let lossy: Vec<String> = m
+            .spec
+            .links
+            .iter()
+            .filter_map(|l| {
+                let f = l.friction.as_deref()?;
+                Some(format!(
+                    "la liaison {} (frottement visqueux de coefficient ${}$)",
+                    escape_text(&l.name),
+                    tex(format!("friction of {}", l.name), f)
+                ))
+            })
+            .collect();
+        parts.push(if lossy.is_empty() {
+            "les liaisons sont parfaites".to_string()
+        } else {
+            format!("les liaisons sont parfaites, sauf {}", lossy.join(" et "))
+        });
+        for l in &m.spec.links {
+            if let Some(sp) = &l.spring {
+                let torsion = m.reg.angle(&sp.coordinate).map_or("", |_| " de torsion");
+                parts.push(format!(
+                    "un ressort{torsion} de raideur ${}$ agit dans la liaison {}",
+                    tex(format!("stiffness of {}", l.name), &sp.stiffness),
+                    escape_text(&l.name)
+                ));
+            }
+        }
+        doc.inline.extend(said);
+    }
+    let mut text = parts.join(" ; ");
+    if let Some(c) = text.get(..1) {
+        text = c.to_uppercase() + &text[1..];
+    }
+    let _ = writeln!(doc.o, "\\paragraph{{Hypothèses du modèle.}} {text}.\n");
 }

@@ -717,3 +717,35 @@ pub(crate) fn value_within(
         }
     }
 }
+
+/// A vector as written in the spec, over the bases of its parts: `d_{1}\,\vec{z}_{0} +
+/// L_{1}\,\vec{y}_{1}`.
+pub(super) fn vector_over_bases(m: &Mechanism, v: &crate::vector::Vector) -> String {
+    let parts: Vec<String> = v
+        .parts()
+        .flat_map(|(b, c)| {
+            let bn = m.frame_name(b).to_string();
+            (0..3)
+                .filter(|&k| !c[k].is_zero())
+                .map(|k| {
+                    let e = expr(&c[k]);
+                    let bv = basis_vector(['x', 'y', 'z'][k], &bn);
+                    if c[k].nterms() > 1 {
+                        format!("\\left({e}\\right){bv}")
+                    } else if e == "1" {
+                        bv
+                    } else if e == "-1" {
+                        format!("-{bv}")
+                    } else {
+                        format!("{e}\\,{bv}")
+                    }
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    if parts.is_empty() {
+        "\\vec{0}".to_string()
+    } else {
+        parts.join(" + ").replace("+ -", "- ")
+    }
+}
