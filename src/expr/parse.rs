@@ -497,8 +497,9 @@ impl Walker<'_> {
         for (q, coef) in lin.coords {
             if !coef.is_integer() {
                 return Err(self.unsupported(
-                    "an angle takes integer multiples of the angle coordinates and angle \
-                     parameters",
+                    "an angle takes integer multiples of the angle coordinates, the angle \
+                     parameters and the phases Omega*t (declare a pulsation Omega/2 as a \
+                     parameter of its own)",
                 ));
             }
             if coef.is_zero() {
