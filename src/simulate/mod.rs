@@ -190,7 +190,13 @@ pub fn simulate_with(
             values: Vec::with_capacity(traj.len()),
         })
     };
-    for im in &plan.imposed {
+    // A phase Ω t is the time itself, scaled: not a column of its own.
+    let shown: Vec<bool> = plan
+        .imposed
+        .iter()
+        .map(|im| reg.coord_info(im.coord).phase().is_none())
+        .collect();
+    for (im, _) in plan.imposed.iter().zip(&shown).filter(|(_, s)| **s) {
         let n = &reg.coord_info(im.coord).name;
         push(n.clone(), unit(im.coord, false));
         push(format!("dot({n})"), unit(im.coord, true));
@@ -218,7 +224,7 @@ pub fn simulate_with(
             columns[*c].values.push(v);
             *c += 1;
         };
-        for (i, w) in e.rates.iter().enumerate() {
+        for (i, w) in e.rates.iter().enumerate().filter(|(i, _)| shown[*i]) {
             put(y[i], &mut c);
             put(*w, &mut c);
         }

@@ -176,3 +176,38 @@ fn plots_are_labelled_in_the_course_notation() {
         assert_eq!(p.series[0].name, "sans frottement");
     }
 }
+
+#[test]
+fn a_forced_oscillator_settles_to_the_amplitude_of_the_course() {
+    // M ẍ + c ẋ + k x = F0 cos(Ω t), from rest at x = 0: once the transient has died out
+    // (e^(−c t / 2M) = e^(−5) at t = 40 s), |x| reaches F0 / √((k − M Ω²)² + (c Ω)²).
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/masse_ressort_forcee.json"
+    ))
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let (mass, k, c, f0, w): (f64, f64, f64, f64, f64) = (1.0, 100.0, 0.25, 1.0, 9.0);
+    v["scenarios"] = serde_json::json!([{
+        "name": "force", "duration": 60.0,
+        "values": {"M": mass, "k": k, "c": c, "F0": f0, "Omega": w, "g": 9.81, "X": 0.0},
+        "initial": {"x": [0.0, 0.0]}
+    }]);
+    let m = torseur::spec::from_str(&v.to_string()).unwrap();
+    let run = simulate(&m, "force").unwrap();
+    // The phase Ω t is the time itself: no column of its own.
+    let ids: Vec<&str> = run.columns.iter().map(|c| c.id.as_str()).collect();
+    assert_eq!(ids, ["x", "dot(x)"]);
+    let late = run
+        .times
+        .iter()
+        .zip(&run.columns[0].values)
+        .filter(|(t, _)| **t > 40.0)
+        .map(|(_, x)| x.abs())
+        .fold(0.0, f64::max);
+    let amplitude = f0 / ((k - mass * w * w).powi(2) + (c * w).powi(2)).sqrt();
+    assert!(
+        (late - amplitude).abs() < 0.01 * amplitude,
+        "{late} vs {amplitude}"
+    );
+}
