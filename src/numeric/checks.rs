@@ -83,7 +83,7 @@ pub(super) fn linear_angle(
         let constant = |f: &Form| f.0.values().all(|c| *c == 0.0).then_some(f.1);
         Ok(match n {
             // A phase k Ω t (checked when parsed): a variable of its own, Ω's.
-            Node::Mul(..) | Node::Neg(_) | Node::Time if expr::depends_on_time_itself(n) => {
+            Node::Mul(..) | Node::Neg(_) | Node::Time if expr::holds_time(n) => {
                 let (p, k) = expr::phase(n).ok_or_else(not_linear)?;
                 (BTreeMap::from([((2, p), k)]), 0.0)
             }

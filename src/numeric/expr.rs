@@ -423,8 +423,8 @@ pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
 const TIME_ONLY_IN_PHASES: &str = "the time t enters only as a phase inside sin and cos: \
      Omega*t, Omega a parameter, times an integer";
 
-/// Whether `node` holds the time.
-fn holds_time(node: &Node) -> bool {
+/// Whether `node` holds the time t itself (not only coordinates).
+pub(crate) fn holds_time(node: &Node) -> bool {
     match node {
         Node::Time => true,
         Node::Num(_)
@@ -438,11 +438,6 @@ fn holds_time(node: &Node) -> bool {
             holds_time(a) || holds_time(b)
         }
     }
-}
-
-/// Whether `node` holds the time t itself (not only coordinates).
-pub(crate) fn depends_on_time_itself(node: &Node) -> bool {
-    holds_time(node)
 }
 
 /// Where the time may stand: only in a phase k Ω t (k an integer, Ω a parameter), a term of

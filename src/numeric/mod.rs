@@ -263,6 +263,8 @@ pub struct NumericModel {
     aliases: Vec<(String, expr::Node)>,
     /// Basis vectors named as the statement does: (frame index, axis).
     vectors: BTreeMap<String, (usize, usize)>,
+    /// Whether the spec writes the time t (its samples then draw it).
+    uses_time: bool,
     coords: Vec<CoordInfo>,
     frames: Vec<FrameInfo>,
     points: Vec<PointInfo>,
@@ -292,12 +294,13 @@ impl NumericModel {
         let mut model = model::build(spec)?;
         model.dynamics = dynamics::build(spec, &model)?;
         model::mark_positive(&mut model);
+        model.uses_time = model.writes_time();
         Ok(model)
     }
 
     /// Whether the spec writes the time t (a forcing F0 cos(Ω t), a frame turned by Ω t):
-    /// its samples then draw t too.
-    pub(crate) fn uses_time(&self) -> bool {
+    /// its samples then draw t too. Read once, when the model is built.
+    fn writes_time(&self) -> bool {
         let frames = self
             .frames
             .iter()
@@ -309,10 +312,7 @@ impl NumericModel {
             .iter()
             .flat_map(|a| [a.resultant.as_ref(), a.moment.as_ref()])
             .flatten();
-        frames
-            .chain(points)
-            .chain(actions)
-            .any(expr::depends_on_time_itself)
+        frames.chain(points).chain(actions).any(expr::holds_time)
     }
 
     /// Evaluates a quantity in course notation at `sample`.

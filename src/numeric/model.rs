@@ -667,6 +667,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         params,
         aliases,
         vectors,
+        uses_time: false,
         coords,
         frames,
         points,

@@ -388,7 +388,7 @@ pub(super) fn draw(
         }
         vals.coords.push([q, qd, qdd]);
     }
-    if m.uses_time() {
+    if m.uses_time {
         vals.time = rng.random_range(0.0..=10.0);
     }
 
