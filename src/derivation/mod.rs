@@ -523,8 +523,11 @@ fn moment_steps(
             label: format!("sigma({an},{sn}/{rn})"),
             theorem: if a == body.centre {
                 "σ(G, S/R0) = I_G(S)·Ω(S/R0)".into()
-            } else if fixed {
+            } else if fixed && point_velocity(m, a, r).is_zero(&m.frames) {
                 "point fixe dans le mouvement : σ(A, S/R0) = I_A(S)·Ω(S/R0)".into()
+            } else if fixed {
+                // The point of S at A has no velocity, A itself moves (a rolling contact).
+                "point de vitesse nulle : σ(A, S/R0) = I_A(S)·Ω(S/R0)".into()
             } else {
                 "σ(A, S/R0) = I_A(S)·Ω(S/R0) + m AG ∧ V(A, S/R0)".into()
             },

@@ -32,6 +32,7 @@ pub struct RegistryBuilder {
     pub(super) angle_parameters: Vec<String>,
     pub(super) phases: Vec<String>,
     pub(super) aliases: Vec<(String, String)>,
+    pub(super) inverses: Vec<String>,
     pub(super) display_ranks: Vec<u32>,
 }
 
@@ -91,6 +92,34 @@ impl RegistryBuilder {
     /// ```
     pub fn aliases(mut self, aliases: &[(String, String)]) -> Self {
         self.aliases.extend_from_slice(aliases);
+        self
+    }
+
+    /// The parameters the mechanism divides by (`l0 - m*g*sin(beta)/k`, a rate `V/R`): each
+    /// gets a variable 1/p, and p·(1/p) is reduced to 1 after every product, so results stay
+    /// canonical Laurent polynomials in these parameters. A text may then divide by any
+    /// product of them (`/(2*m*l)`); a sum below the line is refused.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// let reg = Registry::builder()
+    ///     .parameters(&["m".into(), "g".into(), "k".into(), "l0".into()])
+    ///     .inverses(&["k".into()])
+    ///     .build()
+    ///     .unwrap();
+    /// let xe = reg.parse("l0 - m*g/k").unwrap();
+    /// // k (x_e − l0) + m g = 0, exactly.
+    /// let k = reg.parse("k").unwrap();
+    /// assert!((&k * &(&xe - &reg.parse("l0").unwrap()) + reg.parse("m*g").unwrap()).is_zero());
+    /// assert_eq!(xe.to_string(), "l0 - m*g/k");
+    /// assert!(reg.parse("m/(k + g)").is_err());
+    /// ```
+    pub fn inverses(mut self, names: &[String]) -> Self {
+        for n in names {
+            if !self.inverses.contains(n) {
+                self.inverses.push(n.clone());
+            }
+        }
         self
     }
 

@@ -26,6 +26,12 @@ impl Expr {
     /// d · self = n · other, a product of canonical forms compared structurally. n/d is then
     /// reduced by its polynomial gcd, the denominator's first coefficient made 1.
     ///
+    /// A relation between parameters only (an equation of motion at a relative equilibrium,
+    /// where every coordinate is a parameter) has no kinematic part to pin the factor: any two
+    /// such relations are then equal up to their own quotient. There the factor must be a
+    /// product of parameters (k, m l, 1/k): k (x_e − l0) + m g sin β = 0 is
+    /// x_e = l0 − m g sin β/k, and x_e = l0 + m g sin β/k is another relation.
+    ///
     /// ```
     /// use torseur::expr::Registry;
     /// use torseur::spec::wire::CoordinateKind;
@@ -53,7 +59,16 @@ impl Expr {
         if d * self != &n * other {
             return None;
         }
-        Some(lowest_terms(n, d.clone()))
+        let (n, d) = lowest_terms(n, d.clone());
+        let kinematic = |e: &Expr| {
+            e.by_kinematic_monomial()
+                .iter()
+                .any(|(m, _)| m.iter().any(|&k| k > 0))
+        };
+        if !(kinematic(self) || kinematic(other)) && (n.nterms() > 1 || d.nterms() > 1) {
+            return None;
+        }
+        Some((n, d))
     }
 
     /// For a report when [`Expr::parameter_ratio`] finds none: the factor k = numerator /
@@ -167,6 +182,61 @@ impl Expr {
     /// Whether the expression is a nonzero rational number.
     pub fn is_nonzero_constant(&self) -> bool {
         self.as_rational().is_some_and(|r| !r.is_zero())
+    }
+
+    /// 1/self, when self is c·Π pᵢ^aᵢ (c a nonzero number, each pᵢ a parameter the
+    /// mechanism divides by, or its inverse): the exact inverse in the canonical form.
+    /// Otherwise, why not (a sum, a coordinate, a parameter the spec never divides by).
+    pub(crate) fn monomial_inverse(&self) -> Result<Expr, String> {
+        let reg = &self.reg;
+        if self.p.nterms() != 1 {
+            return Err(format!(
+                "a spec divides by a product of parameters only (…/k, …/(2*m*l)), not by the \
+                 sum `{}`: name it as a parameter, or write the quotient in `verify` or `eval`, \
+                 which take any denominator",
+                crate::excerpt::excerpt(&self.to_string())
+            ));
+        }
+        let c = &self.p.coefficients[0];
+        let mut e = vec![0u8; reg.nvars()];
+        for (i, &k) in self.p.exponents(0).iter().enumerate() {
+            if k == 0 {
+                continue;
+            }
+            let twin = reg.inverses.iter().find_map(|&(_, v, w)| {
+                if v == i {
+                    Some(w)
+                } else if w == i {
+                    Some(v)
+                } else {
+                    None
+                }
+            });
+            match (twin, reg.roles[i]) {
+                (Some(j), _) => e[j] = k,
+                (None, VarRole::Parameter(p)) if !reg.is_unknown(p) => {
+                    return Err(format!(
+                        "division by `{}`, a parameter this registry was not told the spec \
+                         divides by (RegistryBuilder::inverses)",
+                        reg.scalar_name(p)
+                    ));
+                }
+                (None, VarRole::Parameter(p)) => {
+                    return Err(format!(
+                        "division by the unknown `{}`: an unknown enters linearly",
+                        reg.scalar_name(p)
+                    ));
+                }
+                _ => {
+                    return Err(
+                        "division by a coordinate, a rate, or a sin or cos: a spec divides by \
+                         parameters only"
+                            .to_string(),
+                    );
+                }
+            }
+        }
+        Ok(Expr::from_terms(reg, vec![(c.inv(), e)]))
     }
 
     /// The constant value if the expression is a rational number.

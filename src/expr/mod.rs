@@ -26,8 +26,9 @@ mod vector_text;
 pub use builder::RegistryBuilder;
 pub use flat::FlatEval;
 pub use fraction::Fraction;
-pub use names::bare_names;
+pub use names::{bare_names, divisors_in};
 pub use number_text::evaluate_number;
+pub(crate) use present::num_den;
 pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
 pub use registry::{
     MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry,
@@ -225,6 +226,9 @@ pub enum VarRole {
     Value(CoordId),
     /// q̇ (order 1), q̈ (order 2), third derivative (order 3).
     Rate(CoordId, u8),
+    /// 1/p of a parameter the mechanism divides by (see [`RegistryBuilder::inverses`]):
+    /// p·(1/p) is reduced to 1 after every product, as sin² is.
+    Inverse(ParamId),
 }
 
 /// An angle Σ nᵢ aᵢ + k π/2, read by [`Registry::parse_angle`].
@@ -318,7 +322,7 @@ impl Expr {
     /// Whether the expression depends on no coordinate (a constant in time).
     pub fn is_time_independent(&self) -> bool {
         (0..self.reg.nvars()).all(|i| match self.reg.roles[i] {
-            VarRole::Parameter(_) => true,
+            VarRole::Parameter(_) | VarRole::Inverse(_) => true,
             VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q)
                 if self.reg.coords[q.0].is_fixed() =>
             {
@@ -384,8 +388,45 @@ impl Expr {
         self.p.degree(i.0) > 0
     }
 
-    /// Brings a product back to canonical form: sin²q → 1 − cos²q for every angle.
-    fn reduce(mut p: Poly, reg: &Registry) -> Poly {
+    /// Brings a product back to canonical form: sin²q → 1 − cos²q for every angle, and
+    /// p·(1/p) → 1 for every parameter the mechanism divides by. The two rules' leading
+    /// monomials (sin²q, p·p⁻¹) are pairwise coprime, so they form a Gröbner basis and the
+    /// reduced form is unique: equality stays structural.
+    fn reduce(p: Poly, reg: &Registry) -> Poly {
+        let p = Expr::reduce_trig(p, reg);
+        Expr::reduce_inverses(p, reg)
+    }
+
+    /// p^a (1/p)^b → p^(a − min) (1/p)^(b − min) in every term.
+    fn reduce_inverses(p: Poly, reg: &Registry) -> Poly {
+        let pairs: Vec<(usize, usize)> = reg
+            .inverses
+            .iter()
+            .map(|&(_, v, w)| (v, w))
+            .filter(|&(v, w)| p.degree(v) > 0 && p.degree(w) > 0)
+            .collect();
+        if pairs.is_empty() {
+            return p;
+        }
+        let n = p.nvars();
+        let mut coefficients = Vec::with_capacity(p.nterms());
+        let mut exponents = Vec::with_capacity(p.nterms() * n);
+        for t in 0..p.nterms() {
+            let mut e = p.exponents(t).to_vec();
+            for &(v, w) in &pairs {
+                let k = e[v].min(e[w]);
+                e[v] -= k;
+                e[w] -= k;
+            }
+            coefficients.push(p.coefficients[t].clone());
+            exponents.extend_from_slice(&e);
+        }
+        // Sorts and combines the terms that became alike.
+        Poly::from_coefficient_list(coefficients, exponents, reg.vars.clone(), &Q)
+    }
+
+    /// sin²q → 1 − cos²q for every angle.
+    fn reduce_trig(mut p: Poly, reg: &Registry) -> Poly {
         for c in &reg.coords {
             let Some((ci, si)) = c.trig else { continue };
             while p.degree(si) >= 2 {

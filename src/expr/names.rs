@@ -83,3 +83,58 @@ pub(super) fn names_in(s: &str) -> Vec<(usize, usize, bool)> {
     }
     out
 }
+
+/// The names written below a division line in `s` (`l0 - m*g*sin(beta)/k` gives `k`;
+/// `V/(2*R*r)` gives `R`, `r`), in order, each once: the parameters a registry's
+/// [`super::RegistryBuilder::inverses`] declares for a spec. A text that does not parse has
+/// none (its error comes when it is read).
+///
+/// ```
+/// assert_eq!(torseur::expr::divisors_in("l0 - m*g*sin(beta)/k + V/(2*R*r)"), ["k", "R", "r"]);
+/// assert!(torseur::expr::divisors_in("m*L^2/12").is_empty());
+/// ```
+pub fn divisors_in(s: &str) -> Vec<String> {
+    use symbolica::atom::{AtomCore, AtomView};
+    fn names(v: AtomView, out: &mut Vec<String>) {
+        match v {
+            AtomView::Var(x) => {
+                let n = x.get_symbol().get_stripped_name().to_string();
+                if !out.contains(&n) {
+                    out.push(n);
+                }
+            }
+            AtomView::Mul(m) => m.iter().for_each(|f| names(f, out)),
+            AtomView::Add(a) => a.iter().for_each(|f| names(f, out)),
+            AtomView::Pow(p) => names(p.get_base_exp().0, out),
+            // The argument of sin or cos is an angle: never a divisor of the text.
+            _ => {}
+        }
+    }
+    fn walk(v: AtomView, out: &mut Vec<String>) {
+        match v {
+            AtomView::Pow(p) => {
+                let (base, exp) = p.get_base_exp();
+                let negative = matches!(exp, AtomView::Num(_))
+                    && exp
+                        .try_to_polynomial::<_, u8>(&symbolica::domains::rational::Q, None)
+                        .is_ok_and(|e| e.is_constant() && e.get_constant().is_negative());
+                if negative {
+                    names(base, out);
+                } else {
+                    walk(base, out);
+                }
+            }
+            AtomView::Mul(m) => m.iter().for_each(|f| walk(f, out)),
+            AtomView::Add(a) => a.iter().for_each(|f| walk(f, out)),
+            AtomView::Fun(f) => f.iter().for_each(|a| walk(a, out)),
+            _ => {}
+        }
+    }
+    let mut out = Vec::new();
+    if (s.contains('/') || s.contains('^'))
+        && let Ok(a) = super::parse::parse_atom(s)
+    {
+        walk(a.as_view(), &mut out);
+    }
+    out
+}

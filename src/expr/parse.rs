@@ -435,16 +435,20 @@ impl Walker<'_> {
                     }
                     return Ok(acc);
                 }
-                // A negative power is allowed of a number only: the canonical form is a
-                // polynomial.
+                // A negative power of a number, or of a product of the parameters the
+                // mechanism divides by (their 1/p variables): the canonical form is a
+                // polynomial in these.
                 let b = self.scalar(base)?;
                 match b.as_rational() {
                     Some(r) if !r.is_zero() => Ok(reg.constant(r.inv().pow((-n) as u64))),
                     Some(_) => Err(self.unsupported("division by zero")),
-                    None => Err(self.unsupported(
-                        "division by a parameter or a coordinate is not supported: the exact \
-                         form is a polynomial (write 1/12*m*L^2, not m*L^2/(12*k))",
-                    )),
+                    None => {
+                        let inv = b.monomial_inverse().map_err(|why| self.unsupported(&why))?;
+                        if !inv.product_fits(&reg.zero(), (-n) as u32) {
+                            return Err(self.degree_too_high());
+                        }
+                        Ok(inv.pow((-n) as u32))
+                    }
                 }
             }
             AtomView::Fun(f) => {

@@ -13,6 +13,8 @@ pub struct TermParts {
     pub coef: Rational,
     /// (parameter, exponent), in declaration order.
     pub params: Vec<(ParamId, u8)>,
+    /// (parameter, exponent) of the parameters the term divides by.
+    pub inverses: Vec<(ParamId, u8)>,
     /// (coordinate, is_cos, exponent): trigonometric factors.
     pub trig: Vec<(CoordId, bool, u8)>,
     /// (coordinate, exponent): length coordinates.
@@ -26,6 +28,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
     let mut t = TermParts {
         coef: coef.clone(),
         params: vec![],
+        inverses: vec![],
         trig: vec![],
         values: vec![],
         rates: vec![],
@@ -36,6 +39,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
         }
         match reg.role(VarId(i)) {
             VarRole::Parameter(p) => t.params.push((p, k)),
+            VarRole::Inverse(p) => t.inverses.push((p, k)),
             VarRole::Cos(q) => t.trig.push((q, true, k)),
             VarRole::Sin(q) => t.trig.push((q, false, k)),
             VarRole::Value(q) => t.values.push((q, k)),
@@ -43,6 +47,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
         }
     }
     t.params.sort();
+    t.inverses.sort();
     t.trig.sort_by_key(|&(q, is_cos, _)| (q, !is_cos));
     t.rates.sort_by_key(|&(q, o, _)| (Reverse(o), q));
     t
@@ -70,7 +75,7 @@ type OtherKey = (
 
 fn other_key(t: &TermParts) -> OtherKey {
     (
-        t.params.is_empty() && t.trig.is_empty(),
+        t.params.is_empty() && t.trig.is_empty() && t.inverses.is_empty(),
         t.params.iter().map(|&(_, k)| k as u32).sum(),
         t.params.iter().map(|&(p, k)| (p, Reverse(k))).collect(),
         t.trig
@@ -118,7 +123,8 @@ fn factors_text(reg: &Registry, t: &TermParts) -> Vec<String> {
     f
 }
 
-/// One term as text, with its sign folded into the returned flag (true = negative).
+/// One term as text, with its sign folded into the returned flag (true = negative); the
+/// parameters it divides by after a `/` (`m*g/k`, `2/(k*l^2)`).
 fn term_text(reg: &Registry, t: &TermParts) -> (bool, String) {
     let neg = t.coef.is_negative();
     let abs = t.coef.abs();
@@ -129,6 +135,23 @@ fn term_text(reg: &Registry, t: &TermParts) -> (bool, String) {
         f.join("*")
     } else {
         format!("{abs}*{}", f.join("*"))
+    };
+    let below: Vec<String> = t
+        .inverses
+        .iter()
+        .map(|&(p, k)| {
+            let n = reg.scalar_name(p);
+            if k == 1 {
+                n.to_string()
+            } else {
+                format!("{n}^{k}")
+            }
+        })
+        .collect();
+    let s = match below.len() {
+        0 => s,
+        1 => format!("{s}/{}", below[0]),
+        _ => format!("{s}/({})", below.join("*")),
     };
     (neg, s)
 }
@@ -229,6 +252,9 @@ impl Expr {
                         for &(q, k) in &t.values {
                             strip(&mut e, VarRole::Value(q), k);
                         }
+                        for &(p, k) in &t.inverses {
+                            strip(&mut e, VarRole::Inverse(p), k);
+                        }
                         (&t.coef * &factor.coef.inv(), e)
                     })
                     .collect();
@@ -280,6 +306,7 @@ fn common_factor(ts: &[TermParts]) -> TermParts {
     TermParts {
         coef,
         params,
+        inverses: vec![],
         trig,
         values: vec![],
         rates: vec![],
@@ -307,6 +334,7 @@ impl std::fmt::Display for Grouped {
             let kin = TermParts {
                 coef: Rational::one(),
                 params: vec![],
+                inverses: vec![],
                 trig: vec![],
                 values: vec![],
                 rates: g.kinematic.clone(),

@@ -40,6 +40,15 @@ pub struct Registry {
     /// Named expressions of the parameters, in declaration order (see
     /// [`RegistryBuilder::aliases`]).
     pub(super) aliases: Vec<(String, Poly)>,
+    /// (p, variable of p, variable of 1/p) for each parameter the mechanism divides by (see
+    /// [`RegistryBuilder::inverses`]).
+    pub(super) inverses: Vec<(ParamId, usize, usize)>,
+}
+
+/// The symbol of the variable 1/p, `inv(p)` in symbolica's atoms (never in a text: a text
+/// writes `/p`).
+pub(super) fn inverse_symbol() -> Symbol {
+    symbolica::symbol!("inv")
 }
 
 /// Symbols used for the rate functions dot(q), ddot(q), dddot(q).
@@ -124,6 +133,7 @@ impl Registry {
             angle_parameters,
             phases,
             aliases,
+            inverses,
             display_ranks,
         } = b;
         for w in &phases {
@@ -277,6 +287,33 @@ impl Registry {
             roles.push(VarRole::Parameter(ParamId(i)));
             param_var.insert(p.clone(), vars.len() - 1);
         }
+        let mut inverse_pairs = Vec::new();
+        for name in &inverses {
+            let Some(&v) = param_var
+                .get(name)
+                .filter(|_| parameters[..n_params].contains(name))
+            else {
+                return Err(ExprError::Declaration(format!(
+                    "cannot divide by `{name}`: a text may divide only by parameters (not by a \
+                     coordinate, a rate or an unknown)"
+                )));
+            };
+            let p = ParamId(
+                parameters
+                    .iter()
+                    .position(|x| x == name)
+                    .unwrap_or_default(),
+            );
+            vars.push(PolyVariable::Function(
+                inverse_symbol(),
+                symbolica::function!(
+                    inverse_symbol(),
+                    Atom::var(symbolica::symbol!(name.as_str()))
+                ),
+            ));
+            roles.push(VarRole::Inverse(p));
+            inverse_pairs.push((p, v, vars.len() - 1));
+        }
         for (n, _) in &aliases {
             check(n)?;
         }
@@ -300,6 +337,7 @@ impl Registry {
             coord_by_name,
             display_ranks,
             aliases: Vec::new(),
+            inverses: inverse_pairs,
         };
         // Aliases, then imposed rates, are expressions in the parameters: parse them with a
         // registry that shares the same variable list (and the aliases read so far).
@@ -317,6 +355,7 @@ impl Registry {
                 coord_by_name: reg.coord_by_name.clone(),
                 display_ranks: Vec::new(),
                 aliases: reg.aliases.clone(),
+                inverses: reg.inverses.clone(),
             }))
         };
         for (name, text) in &aliases {
@@ -377,6 +416,7 @@ impl Registry {
     pub fn is_factor_variable(&self, i: VarId) -> bool {
         match self.roles[i.0] {
             VarRole::Parameter(k) => !self.is_unknown(k),
+            VarRole::Inverse(_) => true,
             VarRole::Cos(q) | VarRole::Sin(q) => self.coords[q.0].constant,
             VarRole::Value(_) | VarRole::Rate(..) => false,
         }
@@ -518,6 +558,25 @@ impl Registry {
     /// A parameter, by name.
     pub fn param(self: &Rc<Self>, name: &str) -> Option<Expr> {
         self.param_var.get(name).map(|&i| self.var(i))
+    }
+
+    /// 1/p, for a parameter `p` the mechanism divides by (see [`RegistryBuilder::inverses`]).
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// let reg = Registry::builder().parameters(&["R".into(), "V".into()])
+    ///     .inverses(&["R".into()]).build().unwrap();
+    /// let r = reg.param_id("R").unwrap();
+    /// assert_eq!(reg.inverse(r).unwrap(), reg.parse("1/R").unwrap());
+    /// assert!(reg.inverse(reg.param_id("V").unwrap()).is_none());
+    /// ```
+    pub fn inverse(self: &Rc<Self>, p: ParamId) -> Option<Expr> {
+        self.index_of(VarRole::Inverse(p)).map(|i| self.variable(i))
+    }
+
+    /// The parameters the mechanism divides by, in declaration order.
+    pub fn divisors(&self) -> impl Iterator<Item = ParamId> + '_ {
+        self.inverses.iter().map(|&(p, _, _)| p)
     }
 
     /// cos q (for a length coordinate, which has none, this is 1: never used so).

@@ -53,6 +53,9 @@ fn leaf(reg: &Registry, l: &Leaf, k: u8) -> String {
     };
     match l {
         Leaf::Param(p) => pw(name(reg.scalar_name(*p))),
+        // Alone (a factor of a product broken across lines); a whole product writes its
+        // inverses below one line (see `product`).
+        Leaf::Inverse(p) => format!("\\frac{{1}}{{{}}}", pw(name(reg.scalar_name(*p)))),
         Leaf::Value(q) => pw(name(&reg.coord_info(*q).name)),
         Leaf::Rate(q, o) => pw(rate(reg, *q, *o)),
         Leaf::Cos(a) | Leaf::Sin(a) => {
@@ -121,14 +124,43 @@ fn factors(reg: &Registry, p: &Product) -> Vec<(bool, String)> {
     out
 }
 
-/// A product without its sign.
+/// A product without its sign; the parameters it divides by below one line with the
+/// coefficient's denominator: \frac{m\,g\,\sin\beta}{k}, \frac{m}{2\,k\,l}.
 fn product(reg: &Registry, p: &Product) -> String {
-    let f: Vec<String> = factors(reg, p).into_iter().map(|x| x.1).collect();
-    if f.is_empty() {
+    let divides = p
+        .factors
+        .iter()
+        .any(|(f, _)| matches!(f, Factor::Leaf(Leaf::Inverse(_))));
+    if !divides {
+        let f: Vec<String> = factors(reg, p).into_iter().map(|x| x.1).collect();
+        return if f.is_empty() {
+            "1".to_string()
+        } else {
+            f.join("\\,")
+        };
+    }
+    let (n, d) = crate::expr::num_den(&p.coef);
+    let mut top: Vec<String> = Vec::new();
+    let mut below: Vec<String> = Vec::new();
+    if n != "1" {
+        top.push(n);
+    }
+    if d != "1" {
+        below.push(d);
+    }
+    for (f, k) in p.ordered(reg) {
+        match f {
+            Factor::Leaf(Leaf::Inverse(q)) => below.push(leaf(reg, &Leaf::Param(*q), *k)),
+            Factor::Leaf(l) => top.push(leaf(reg, l, *k)),
+            Factor::Sum(s) => top.push(sum_factor(reg, s, *k)),
+        }
+    }
+    let top = if top.is_empty() {
         "1".to_string()
     } else {
-        f.join("\\,")
-    }
+        top.join("\\,")
+    };
+    format!("\\frac{{{top}}}{{{}}}", below.join("\\,"))
 }
 
 fn sign(neg: bool, first: bool) -> &'static str {

@@ -104,6 +104,13 @@ fn sentence(m: &Mechanism, s: &Step) -> String {
                     solid(&mo.moving),
                     frame(&mo.reference)
                 )
+            } else if t.starts_with("point de vitesse nulle") {
+                format!(
+                    "${}$ est un point de ${}$ de vitesse nulle dans ${}$ : ${sigma} = {i}\\cdot{om}$ :",
+                    point(a),
+                    solid(&mo.moving),
+                    frame(&mo.reference)
+                )
             } else {
                 let g = m
                     .bodies

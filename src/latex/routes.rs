@@ -351,6 +351,7 @@ fn kinetic_projections(
             motion: mo.clone(),
         });
         let fixed = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
+        let point_velocity = crate::kinematics::point_velocity;
         let oml = omega_of(&mo.moving, &mo.reference);
         let sentence = if body.inertia.is_none() {
             let p = m.point_name(body.centre).to_string();
@@ -366,8 +367,13 @@ fn kinetic_projections(
                 })
             )
         } else if fixed {
+            let how = if point_velocity(m, pa, rf).is_zero(&m.frames) {
+                "fixe"
+            } else {
+                "de vitesse nulle"
+            };
             format!(
-                "${}$ est un point de ${}$ fixe dans ${}$ : ${sigma} = I_{{{}}}({})\\cdot{oml}$ :",
+                "${}$ est un point de ${}$ {how} dans ${}$ : ${sigma} = I_{{{}}}({})\\cdot{oml}$ :",
                 point(&a),
                 solid(&mo.moving),
                 frame(reference),

@@ -200,6 +200,16 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                         let _ = writeln!(doc.o, "Sous l'hypothèse {hname}, elle est inchangée.\n");
                         continue;
                     }
+                    // An equilibrium (or an imposed motion) that the equation admits: no
+                    // « 0 = 0 » in a box.
+                    if eh.is_zero() {
+                        let _ = writeln!(
+                            doc.o,
+                            "Sous l'hypothèse {hname}, l'équation est identiquement vérifiée : \
+                             le mouvement que pose l'hypothèse en est une solution.\n"
+                        );
+                        continue;
+                    }
                     let _ = writeln!(doc.o, "Sous l'hypothèse {hname} :");
                     let (lhs, rhs) = split_equation(&eh);
                     doc.results.push((

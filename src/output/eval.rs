@@ -317,6 +317,19 @@ fn point_where(
                     None => miss(&mut missing_parameters, name),
                 }
             }
+            // 1/k, for a parameter k the spec divides by.
+            VarRole::Inverse(k) => {
+                let name = reg.scalar_name(k);
+                match values.parameters.get(name) {
+                    Some(v) if *v == 0.0 => {
+                        return Err(ValuesError(format!(
+                            "`{name}` = 0, and the results divide by it"
+                        )));
+                    }
+                    Some(v) => 1.0 / v,
+                    None => miss(&mut missing_parameters, name),
+                }
+            }
             // A constant angle parameter: its value is among the parameters.
             VarRole::Cos(q) | VarRole::Sin(q) if reg.coord_info(q).is_constant() => {
                 let name = &reg.coord_info(q).name;

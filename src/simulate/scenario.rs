@@ -87,6 +87,14 @@ impl Plan {
                 VarRole::Parameter(k) if !reg.is_unknown(k) => {
                     base[i] = sc.values[reg.scalar_name(k)];
                 }
+                // 1/k, for a parameter k the spec divides by.
+                VarRole::Inverse(k) => {
+                    let name = reg.scalar_name(k);
+                    if sc.values[name] == 0.0 {
+                        return Err(err(format!("`{name}` = 0, and the spec divides by it")));
+                    }
+                    base[i] = 1.0 / sc.values[name];
+                }
                 // cos and sin of a constant angle parameter.
                 VarRole::Cos(q) if reg.coord_info(q).is_constant() => {
                     base[i] = sc.values[&reg.coord_info(q).name].cos();

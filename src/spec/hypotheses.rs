@@ -14,6 +14,7 @@ fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecErro
     for v in reg.var_ids().filter(|v| e.contains_var(*v)) {
         let ok = match reg.role(v) {
             VarRole::Parameter(p) => !reg.is_unknown(p),
+            VarRole::Inverse(_) => true,
             VarRole::Cos(q) | VarRole::Sin(q) => reg.coord_info(q).is_constant(),
             _ => false,
         };
@@ -167,6 +168,60 @@ pub(super) fn small_parameters(
             return Err(at(&field, format!("`{p}` is listed twice")));
         }
         out.push(v);
+    }
+    Ok(out)
+}
+
+/// The substitutions of a hypothesis with, after each one that sets a parameter the spec
+/// divides by, the value of its inverse: k = k2 brings 1/k = 1/k2. A parameter the spec
+/// divides by may be set to a product of parameters only, and may not be small: refused at
+/// `path` otherwise (D = 0 would divide by zero).
+pub(super) fn with_inverses(
+    reg: &Rc<Registry>,
+    subs: Vec<(VarId, Expr)>,
+    first_order: &[VarId],
+    path: &str,
+) -> Result<Vec<(VarId, Expr)>, SpecError> {
+    let inverse = |v: VarId| match reg.role(v) {
+        VarRole::Parameter(p) => reg.index_of(VarRole::Inverse(p)).map(|w| (p, w)),
+        _ => None,
+    };
+    for v in first_order {
+        if let Some((p, _)) = inverse(*v) {
+            return Err(at(
+                path,
+                format!(
+                    "`{}` is a small parameter, and the spec divides by it: a first-order \
+                     result would hold 1/{}",
+                    reg.scalar_name(p),
+                    reg.scalar_name(p)
+                ),
+            ));
+        }
+    }
+    let mut out = Vec::with_capacity(subs.len());
+    for (v, val) in subs {
+        let Some((p, w)) = inverse(v) else {
+            out.push((v, val));
+            continue;
+        };
+        let name = reg.scalar_name(p);
+        if val.is_zero() {
+            return Err(at(
+                path,
+                format!("the hypothesis sets `{name}` to 0, and the spec divides by it"),
+            ));
+        }
+        let inv = val.monomial_inverse().map_err(|why| {
+            at(
+                path,
+                format!(
+                    "the hypothesis sets `{name}`, which the spec divides by, to `{val}`: {why}"
+                ),
+            )
+        })?;
+        out.push((v, val));
+        out.push((w, inv));
     }
     Ok(out)
 }

@@ -138,6 +138,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             }
         }
     }
+    let divisors = divisors(spec, &params);
     let builder = spec
         .coordinates
         .iter()
@@ -151,6 +152,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         .raw_angles(&raw_angles)
         .angle_parameters(&angle_params)
         .phases(&pulsations)
+        .inverses(&divisors)
         .display_ranks(spec.parameters.iter().map(display_rank).collect());
     let aliases: Vec<(String, String)> = spec
         .aliases
@@ -545,6 +547,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         }
         super::hypotheses::motions(&reg, h, &path, &mut subs, &mut effects)?;
         let first_order = super::hypotheses::small_parameters(&reg, h, &path)?;
+        let subs = super::hypotheses::with_inverses(&reg, subs, &first_order, &path)?;
         hypotheses.push(Hypothesis {
             name: h.name.clone(),
             text: h.text.clone(),
@@ -777,4 +780,52 @@ fn display_rank(p: &crate::wire::ParameterSpec) -> u32 {
         Some(Dimension::INERTIA) => 3,
         _ => 4,
     }
+}
+
+/// The parameters the spec divides by (`l0 - m*g*sin(beta)/k`, a rate `V/R`), in every
+/// expression it gives: the texts of [`expression_texts`], the aliases and the hypotheses.
+/// A divisor that is an alias brings the parameters of its value, and a hypothesis relation
+/// that sets a divisor brings those of the value it gives (k = k2 divides by k2 too).
+fn divisors(spec: &SpecFile, params: &[String]) -> Vec<String> {
+    let mut texts: Vec<&str> = expression_texts(spec).into_iter().map(|(_, t)| t).collect();
+    texts.extend(spec.aliases.iter().map(|a| a.value.as_str()));
+    for h in &spec.hypotheses {
+        texts.extend(h.equilibrium.values().map(String::as_str));
+        texts.extend(h.rates.values().map(String::as_str));
+        texts.extend(h.relations.values().map(String::as_str));
+    }
+    let mut found: Vec<String> = texts
+        .iter()
+        .flat_map(|t| crate::expr::divisors_in(t))
+        .collect();
+    // Aliases and relations bring the names of their values, until nothing new comes.
+    let mut k = 0;
+    while k < found.len() {
+        let n = found[k].clone();
+        let values = spec
+            .aliases
+            .iter()
+            .filter(|a| a.name == n)
+            .map(|a| a.value.as_str())
+            .chain(
+                spec.hypotheses
+                    .iter()
+                    .filter_map(|h| h.relations.get(&n).map(String::as_str)),
+            );
+        for v in values.collect::<Vec<_>>() {
+            for x in crate::expr::bare_names(v) {
+                if !found.contains(&x) {
+                    found.push(x);
+                }
+            }
+        }
+        k += 1;
+    }
+    let mut out: Vec<String> = Vec::new();
+    for n in found {
+        if params.contains(&n) && !out.contains(&n) {
+            out.push(n);
+        }
+    }
+    out
 }

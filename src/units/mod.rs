@@ -132,7 +132,7 @@ impl Dimensions {
         let vars = reg
             .var_ids()
             .map(|i| match reg.role(i) {
-                VarRole::Parameter(k) => {
+                VarRole::Parameter(k) | VarRole::Inverse(k) => {
                     let is_angle = !reg.is_unknown(k)
                         && reg
                             .angle(reg.scalar_name(k))
@@ -206,6 +206,12 @@ impl Dimensions {
         match self.scalar_var(name) {
             Some(i) => {
                 self.vars[i.index()] = dimension;
+                // 1/p, if the mechanism divides by p.
+                if let VarRole::Parameter(p) = self.reg.role(i)
+                    && let Some(j) = self.reg.index_of(VarRole::Inverse(p))
+                {
+                    self.vars[j.index()] = dimension.map(|d| Dimension::NONE / d);
+                }
                 true
             }
             None => false,

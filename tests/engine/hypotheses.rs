@@ -158,3 +158,101 @@ fn a_relation_no_sample_can_satisfy_is_said_not_compared() {
     // Derived under it all the same, exactly.
     torseur::assert_equivalent!(m, "I(G2,2)", under "H5", "[[C2, -F2, -E2], [-F2, B2, -D2], [-E2, -D2, C2]]");
 }
+
+/// The derived value of a scalar quantity, under hypothesis `h` if given.
+fn scalar_under(m: &Mechanism, q: &str, h: Option<&str>) -> torseur::expr::Expr {
+    let d =
+        torseur::derivation::derive(m, &torseur::quantity::Quantity::parse(q).unwrap()).unwrap();
+    let torseur::derivation::Value::Scalar(e) = d.value else {
+        panic!("{q} is not a scalar")
+    };
+    match h {
+        Some(h) => m.hypotheses.iter().find(|x| x.name == h).unwrap().apply(&e),
+        None => e,
+    }
+}
+
+#[test]
+fn an_equilibrium_that_divides_by_a_parameter_by_hand() {
+    // Issue 15, item 6: x_e = l0 − m g sin β / k, written in the spec. By hand, at rest
+    // (ẋ = ẍ = 0) the resultant theorem on x1 gives 0 = −k (x_e − l0) − m g sin β, so the
+    // equation of motion under E is exactly 0; k (x_e − l0) = −m g sin β, exactly.
+    let m = torseur::spec::load("derivations/systeme_masse_ressort.json").unwrap();
+    let eom = scalar_under(&m, "eom(x)", Some("E"));
+    assert!(eom.is_zero(), "eom(x) under E = {eom}");
+    let reg = &m.reg;
+    let xe = reg.parse("l0 - m*g*sin(beta)/k").unwrap();
+    let k = reg.parse("k").unwrap();
+    let lhs = &k * &(&xe - &reg.parse("l0").unwrap());
+    assert_eq!(lhs, reg.parse("-m*g*sin(beta)").unwrap());
+    // A wrong equilibrium (the sign of the weight's component) is not one.
+    let wrong = torseur::spec::from_str(
+        &std::fs::read_to_string("derivations/systeme_masse_ressort.json")
+            .unwrap()
+            .replace("l0 - m*g*sin(beta)/k\"", "l0 + m*g*sin(beta)/k\""),
+    )
+    .unwrap();
+    let e = scalar_under(&wrong, "eom(x)", Some("E"));
+    assert_eq!(e, wrong.reg.parse("2*m*g*sin(beta)").unwrap());
+    // The text and the JSON write the quotient back as it reads.
+    assert_eq!(xe.to_string(), "l0 - m*g*sin(beta)/k");
+    assert_eq!(xe.presentation().to_string(), "l0 - m*g*sin(beta)/k");
+}
+
+#[test]
+fn a_rate_divided_by_a_radius_by_hand() {
+    // A wheel rolling without slipping at the imposed speed V: OC = x x0 + R y0, ẋ = V,
+    // θ̇ = −V/R. By hand: Ω(1/0) = −V/R z0; V(I,1/0) = V(C,1/0) + IC ∧ Ω(1/0)
+    // = V x0 + R y0 ∧ (−V/R) z0 = V x0 − V x0 = 0 (the rolling condition, exact only once
+    // R·(1/R) = 1); σ(C,1/0) = C1 θ̇ z0, σ(I,1/0) = σ(C,1/0) + IC ∧ m V(C,1/0)
+    // = −C1 V/R z0 − m R V z0; Ec = ½ m V² + ½ C1 V²/R².
+    let m = torseur::spec::load("tests/specs/roue_vitesse_imposee.json").unwrap();
+    torseur::assert_equivalent!(m, "Omega(1/0) in B0", "[0, 0, -V/R]");
+    torseur::assert_equivalent!(m, "V(I,1/0) in B0", "[0, 0, 0]");
+    torseur::assert_equivalent!(m, "sigma(I,1/0).z0", "-(C1/R + m*R)*V");
+    torseur::assert_equivalent!(m, "Ec(1/0)", "1/2*m*V^2 + 1/2*C1*V^2/R^2");
+    // A sign error in the rolling condition is caught.
+    let v = torseur::verify::verify(&m, "sigma(I,1/0).z0", "(C1/R - m*R)*V", None).unwrap();
+    assert!(!v.is_equivalent());
+    // The float backend reads `-V/R` with its own parser and agrees.
+    let report = check(&m, 10, 1).unwrap();
+    assert!(report.passed(), "{report}");
+}
+
+#[test]
+fn a_parameter_the_spec_divides_by_cannot_be_set_to_zero_or_a_sum() {
+    let text = std::fs::read_to_string("derivations/systeme_masse_ressort.json").unwrap();
+    let with = |relation: &str| {
+        text.replace(
+            "\"equilibrium\": {\"x\": \"l0 - m*g*sin(beta)/k\"}}",
+            &format!(
+                "\"equilibrium\": {{\"x\": \"l0 - m*g*sin(beta)/k\"}}, \"relations\": {{\"k\": \"{relation}\"}}}}"
+            ),
+        )
+    };
+    let zero = torseur::spec::from_str(&with("0")).unwrap_err().to_string();
+    assert!(
+        zero.contains("hypotheses[0]") && zero.contains("sets `k` to 0"),
+        "{zero}"
+    );
+    let sum = torseur::spec::from_str(&with("m + c"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        sum.contains("hypotheses[0]") && sum.contains("the sum"),
+        "{sum}"
+    );
+    // A product of parameters is fine: 1/k becomes 1/(2 m g) and x_e = l0 − sin β / 2.
+    let m = torseur::spec::from_str(&with("2*m*g")).unwrap();
+    let h = m.hypotheses.iter().find(|x| x.name == "E").unwrap();
+    let xe = m.reg.parse("x").unwrap();
+    let xe = h.apply(&xe);
+    assert_eq!(xe, m.reg.parse("l0 - 1/2*sin(beta)").unwrap());
+    // A sum below the line in a spec is refused, naming the place.
+    let bad = text.replace("l0 - m*g*sin(beta)/k\"", "l0 - m*g*sin(beta)/(k + c)\"");
+    let e = torseur::spec::from_str(&bad).unwrap_err().to_string();
+    assert!(
+        e.contains("hypotheses[0].equilibrium.x") && e.contains("the sum"),
+        "{e}"
+    );
+}

@@ -77,6 +77,8 @@ impl Angle {
 pub enum Leaf {
     /// A parameter or an unknown.
     Param(ParamId),
+    /// 1/p, a parameter the mechanism divides by: written below the line of its product.
+    Inverse(ParamId),
     /// A length coordinate, or an angle written as itself.
     Value(CoordId),
     /// q̇ (order 1), q̈ (order 2)…
@@ -282,25 +284,47 @@ impl Product {
         v
     }
 
-    /// (negative, text without the sign).
+    /// (negative, text without the sign): `m*g*sin(beta)/k`, `1/2*m*L^2`, `m/(2*k*l)`.
     fn text(&self, reg: &Registry) -> (bool, String) {
         let neg = self.coef.is_negative();
         let (n, d) = num_den(&self.coef);
         let mut parts: Vec<String> = Vec::new();
-        if n != "1" || d != "1" {
-            parts.push(if d == "1" { n } else { format!("{n}/{d}") });
-        }
+        let mut below: Vec<String> = Vec::new();
         for (f, k) in self.ordered(reg) {
             let base = match f {
                 Factor::Leaf(a) => leaf_text(reg, a),
                 Factor::Sum(s) => format!("({})", s.text(reg)),
             };
-            parts.push(if *k == 1 { base } else { format!("{base}^{k}") });
+            let text = if *k == 1 { base } else { format!("{base}^{k}") };
+            match f {
+                Factor::Leaf(Leaf::Inverse(_)) => below.push(text),
+                _ => parts.push(text),
+            }
+        }
+        if below.is_empty() {
+            if n != "1" || d != "1" {
+                parts.insert(0, if d == "1" { n } else { format!("{n}/{d}") });
+            }
+        } else {
+            if n != "1" {
+                parts.insert(0, n);
+            }
+            if d != "1" {
+                below.insert(0, d);
+            }
         }
         if parts.is_empty() {
             parts.push("1".to_string());
         }
-        (neg, parts.join("*"))
+        let top = parts.join("*");
+        (
+            neg,
+            match below.len() {
+                0 => top,
+                1 => format!("{top}/{}", below[0]),
+                _ => format!("{top}/({})", below.join("*")),
+            },
+        )
     }
 }
 
@@ -319,6 +343,7 @@ fn plain_var(reg: &Registry, f: &Factor) -> Option<(usize, bool)> {
     let Factor::Leaf(l) = f else { return None };
     let (role, is_sin) = match l {
         Leaf::Param(p) => (VarRole::Parameter(*p), false),
+        Leaf::Inverse(p) => (VarRole::Inverse(*p), false),
         Leaf::Value(q) => (VarRole::Value(*q), false),
         Leaf::Rate(q, o) => (VarRole::Rate(*q, *o), false),
         Leaf::Cos(a) if a.is_simple() => (VarRole::Cos(a.0[0].0), false),
@@ -342,6 +367,8 @@ pub(crate) fn factor_key(reg: &Registry, f: &Factor) -> (u8, u32, usize, u8, Vec
             (0, 0, 0, 0, vec![])
         }
         Factor::Leaf(Leaf::Param(p)) => (1, reg.display_rank(*p), p.0, 0, vec![]),
+        // Below the line, in the parameters' order (m g / (k l)).
+        Factor::Leaf(Leaf::Inverse(p)) => (6, reg.display_rank(*p), p.0, 0, vec![]),
         Factor::Leaf(Leaf::Value(q)) => (2, 0, q.0, 0, vec![]),
         Factor::Sum(s) => (3, u32::from(s.terms.iter().any(has_rates)), 0, 0, vec![]),
         Factor::Leaf(Leaf::Rate(q, o)) => (4, 0, usize::MAX - *o as usize, q.0 as u8, vec![]),
@@ -355,7 +382,7 @@ pub(crate) fn factor_key(reg: &Registry, f: &Factor) -> (u8, u32, usize, u8, Vec
 /// trigonometric function, or a sum holding one.
 fn varies(f: &Factor) -> bool {
     match f {
-        Factor::Leaf(Leaf::Param(_)) => false,
+        Factor::Leaf(Leaf::Param(_) | Leaf::Inverse(_)) => false,
         Factor::Leaf(_) => true,
         Factor::Sum(s) => s
             .terms
@@ -366,7 +393,7 @@ fn varies(f: &Factor) -> bool {
 
 fn leaf_text(reg: &Registry, a: &Leaf) -> String {
     match a {
-        Leaf::Param(p) => reg.scalar_name(*p).to_string(),
+        Leaf::Param(p) | Leaf::Inverse(p) => reg.scalar_name(*p).to_string(),
         Leaf::Value(q) => reg.coord_info(*q).name.clone(),
         Leaf::Rate(q, o) => {
             let head = ["dot", "ddot", "dddot"][(o.clamp(&1, &3) - 1) as usize];
@@ -386,6 +413,7 @@ pub(crate) fn leaf_expr(reg: &Rc<Registry>, a: &Leaf) -> Expr {
     };
     match a {
         Leaf::Param(p) => var(VarRole::Parameter(*p)),
+        Leaf::Inverse(p) => var(VarRole::Inverse(*p)),
         Leaf::Value(q) => var(VarRole::Value(*q)),
         Leaf::Rate(q, o) => var(VarRole::Rate(*q, *o)),
         Leaf::Cos(x) | Leaf::Sin(x) => {

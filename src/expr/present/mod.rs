@@ -31,6 +31,7 @@ mod form;
 mod rewrite;
 mod search;
 
+pub(crate) use form::num_den;
 pub use form::{Angle, Cost, Factor, Form, Leaf, Product};
 
 use super::{Expr, Registry, VarId, VarRole};
@@ -133,6 +134,7 @@ impl Expr {
                     .map(|(i, &k)| {
                         let a = match reg.role(VarId(i)) {
                             VarRole::Parameter(p) => Leaf::Param(p),
+                            VarRole::Inverse(p) => Leaf::Inverse(p),
                             VarRole::Value(q) => Leaf::Value(q),
                             VarRole::Rate(q, o) => Leaf::Rate(q, o),
                             VarRole::Cos(q) => Leaf::Cos(Angle::of(q)),
@@ -493,6 +495,7 @@ fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
     for (a, k) in &m.atoms {
         let role = match a {
             Leaf::Param(p) => VarRole::Parameter(*p),
+            Leaf::Inverse(p) => VarRole::Inverse(*p),
             Leaf::Value(q) => VarRole::Value(*q),
             Leaf::Rate(q, o) => VarRole::Rate(*q, *o),
             // Only single angles here: a compound angle is no variable of the registry.
