@@ -370,6 +370,21 @@ impl Parser<'_> {
     }
 }
 
+/// Why a divisor is refused: what a spec may divide by.
+const DIVISOR: &str = "a spec divides by a product of parameters only (…/k, …/(2*m*l)), not by a \
+     sum, a coordinate, a rate or a sin or cos";
+
+/// Whether `node` is a number times a product of powers of parameters (what a spec may
+/// divide by: the exact side then keeps a variable 1/p for each).
+fn product_of_parameters(node: &Node) -> bool {
+    match node {
+        Node::Num(_) | Node::Param(_) => true,
+        Node::Neg(a) | Node::Pow(a, _) => product_of_parameters(a),
+        Node::Mul(a, b) | Node::Div(a, b) => product_of_parameters(a) && product_of_parameters(b),
+        _ => false,
+    }
+}
+
 /// Static type of `node`, or why a scalar and a vector are mixed wrongly.
 pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
     use Kind::*;
@@ -405,11 +420,13 @@ pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
         Node::Div(a, b) => match (kind(a)?, kind(b)?) {
             (_, Vector) => return Err("division by a vector".into()),
             (_, Zero) => return Err("division by zero".into()),
+            _ if !product_of_parameters(b) => return Err(DIVISOR.into()),
             (k, Scalar) => k,
         },
         Node::Pow(a, n) => match kind(a)? {
             Vector => return Err("a basis vector cannot be raised to a power".into()),
             Zero if *n <= 0 => return Err("zero raised to a non-positive power".into()),
+            _ if *n < 0 && !product_of_parameters(a) => return Err(DIVISOR.into()),
             k => k,
         },
         Node::Sin(a) | Node::Cos(a) => match kind(a)? {

@@ -351,3 +351,46 @@ fn both_sides_read_the_time_alike() {
         }
     }
 }
+
+#[test]
+fn both_sides_divide_by_the_same_things() {
+    // Issue 15, item 6: a spec divides by a product of parameters, in every expression it
+    // gives; a sum, a coordinate, a rate or a sin below the line is refused by both sides.
+    let text = std::fs::read_to_string("derivations/systeme_masse_ressort.json").unwrap();
+    let base: Value = serde_json::from_str(&text).unwrap();
+    let at_rest = |x: &str| {
+        let mut s = base.clone();
+        s["hypotheses"][0]["equilibrium"]["x"] = x.into();
+        s
+    };
+    let weight = |g: &str| {
+        let mut s = base.clone();
+        s["gravity"] = g.into();
+        s
+    };
+    let accepted = [
+        at_rest("l0 - m*g*sin(beta)/k"),
+        at_rest("l0 - m*g/(2*k)"),
+        at_rest("l0 - m*g*k^-1"),
+        at_rest("l0 - c^2/(k*m)"),
+        at_rest("l0 - g/(k/m)"),
+        weight("-k*l0/m*y0"),
+        weight("-g*(m/k)^2*k^2/m^2*y0"),
+    ];
+    let refused = [
+        at_rest("l0 - m*g/(k + c)"),
+        at_rest("l0 - m*g/cos(beta)"),
+        at_rest("l0 - m*g/k^2/(1 - m)"),
+        weight("-g/x*l0*y0"),
+        weight("-g/dot(x)*l0*y0"),
+        weight("-g*l0/(k - c)*y0"),
+    ];
+    for (specs, ok) in [(&accepted[..], true), (&refused[..], false)] {
+        for s in specs {
+            let (exact, float) = verdicts(s).expect("a spec's shape");
+            let what = (&s["hypotheses"][0]["equilibrium"], &s["gravity"]);
+            assert_eq!(exact.is_ok(), ok, "exact, {what:?}: {exact:?}");
+            assert_eq!(float.is_ok(), ok, "float, {what:?}: {float:?}");
+        }
+    }
+}
