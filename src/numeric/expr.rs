@@ -420,13 +420,18 @@ pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
         Node::Div(a, b) => match (kind(a)?, kind(b)?) {
             (_, Vector) => return Err("division by a vector".into()),
             (_, Zero) => return Err("division by zero".into()),
-            _ if !product_of_parameters(b) => return Err(DIVISOR.into()),
+            // An unknown below the line has its own message (see `unknown_degree`).
+            _ if !product_of_parameters(b) && matches!(unknown_degree(b), Ok(0)) => {
+                return Err(DIVISOR.into());
+            }
             (k, Scalar) => k,
         },
         Node::Pow(a, n) => match kind(a)? {
             Vector => return Err("a basis vector cannot be raised to a power".into()),
             Zero if *n <= 0 => return Err("zero raised to a non-positive power".into()),
-            _ if *n < 0 && !product_of_parameters(a) => return Err(DIVISOR.into()),
+            _ if *n < 0 && !product_of_parameters(a) && matches!(unknown_degree(a), Ok(0)) => {
+                return Err(DIVISOR.into());
+            }
             k => k,
         },
         Node::Sin(a) | Node::Cos(a) => match kind(a)? {
