@@ -488,6 +488,71 @@ pub fn kinetic_energy(m: &Mechanism, solids: &[BodyId]) -> Expr {
     acc
 }
 
+/// The power of one action in the motion of the solid that receives it relative to the
+/// frame `reference`: {T} ⊗ {V(S/R)} = R·V(A∈S/R) + M(A)·Ω(S/R), at the action's point A.
+pub fn action_power(m: &Mechanism, a: &Action, reference: crate::frame::FrameId) -> Expr {
+    let f = m.body(a.on).frame;
+    let v = velocity(m, a.point, f, reference);
+    let w = omega(m, f, reference);
+    &a.resultant.dot(&m.frames, &v) + &a.moment.dot(&m.frames, &w)
+}
+
+/// P(from→on/R): the power of the actions `from` exerts on the solids `on` (named
+/// `on_name`, as [`actions_of`] reads them) in their motion relative to `reference`, each
+/// action at its own point: Σ R·V(A∈S/R) + M(A)·Ω(S/R).
+///
+/// ```
+/// use torseur::pfd::power;
+/// let m = torseur::spec::load("derivations/pendule_inverse_ressort.json").unwrap();
+/// let one = m.solids_of("1").unwrap();
+/// let p = power(&m, "pes", &one, "1", m.frames.ground()).unwrap();
+/// // The weight's power is the opposite of d/dt of its potential: m g l sin θ θ̇.
+/// assert_eq!(p, m.reg.parse("m*g*l*sin(theta)*dot(theta)").unwrap());
+/// ```
+pub fn power(
+    m: &Mechanism,
+    from: &str,
+    on: &[BodyId],
+    on_name: &str,
+    reference: crate::frame::FrameId,
+) -> Result<Expr, String> {
+    let mut acc = m.reg.zero();
+    for a in actions_of(m, from, on, on_name)? {
+        acc = &acc + &action_power(m, &a, reference);
+    }
+    Ok(acc)
+}
+
+/// The actions between two solids of `set` (the links inside it, their friction and springs,
+/// and the given actions between its solids), each as the action of one on the other.
+pub fn internal_actions<'m>(m: &'m Mechanism, set: &[BodyId]) -> Vec<&'m Action> {
+    m.dynamics
+        .actions
+        .iter()
+        .filter(|a| set.contains(&a.on) && matches!(a.from, Source::Body(b) if set.contains(&b)))
+        .collect()
+}
+
+/// P_int(E): the power of the actions between the solids of `set`,
+/// Σ {T(i→j)} ⊗ {V(j/i)} = R·V(A∈j/i) + M(A)·Ω(j/i): zero for perfect links, the friction's
+/// and the springs' otherwise. It depends on no reference frame.
+///
+/// ```
+/// use torseur::pfd::internal_power;
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let e = m.solids_of("E").unwrap();
+/// // The viscous friction f of the pivot 1–2: −f θ̇2².
+/// assert_eq!(internal_power(&m, &e), m.reg.parse("-f*dot(theta2)^2").unwrap());
+/// ```
+pub fn internal_power(m: &Mechanism, set: &[BodyId]) -> Expr {
+    let mut acc = m.reg.zero();
+    for a in internal_actions(m, set) {
+        let Source::Body(i) = a.from else { continue };
+        acc = &acc + &action_power(m, a, m.body(i).frame);
+    }
+    acc
+}
+
 /// Potential energy of gravity (−Σ m g⃗·O0G) and of the springs (½ k (q − q0)²).
 pub fn potential_energy(m: &Mechanism) -> Expr {
     let mut acc = m.reg.zero();

@@ -77,6 +77,15 @@ pub enum QuantityKind {
     ActionMoment { point: String, action: ActionRef },
     /// {T(from→on)}_A: the torsor of an action at A.
     ActionTorsor { action: ActionRef, point: String },
+    /// P(from→on/R): the power of an action in the motion of what receives it relative to R,
+    /// Σ {T(from→S)} ⊗ {V(S/R)} over the solids S of `on` (théorème de l'énergie cinétique).
+    Power {
+        action: ActionRef,
+        reference: String,
+    },
+    /// P_int(E): the power of the actions between the solids of E (the links' friction and
+    /// springs), Σ {T(i→j)} ⊗ {V(j/i)}: independent of any reference frame.
+    InternalPower(String),
 }
 
 /// A requested quantity: a kind, an optional basis to express it in, an optional projection.
@@ -221,6 +230,20 @@ impl Quantity {
                     }
                 }
                 "Ec" => QuantityKind::KineticEnergy(motion(args).map_err(|r| err(&r))?),
+                "P" => {
+                    let (a, reference) = args.rsplit_once('/').ok_or_else(|| {
+                        err("a power is written P(from->on/reference), e.g. P(ext->E/0)")
+                    })?;
+                    check_name(reference).map_err(|r| err(&r))?;
+                    QuantityKind::Power {
+                        action: action(a).map_err(|r| err(&r))?,
+                        reference: reference.to_string(),
+                    }
+                }
+                "Pint" => {
+                    check_name(args).map_err(|r| err(&r))?;
+                    QuantityKind::InternalPower(args.to_string())
+                }
                 "R" => QuantityKind::ActionResultant(action(args).map_err(|r| err(&r))?),
                 "M" => {
                     let (p, a) = args
@@ -250,8 +273,8 @@ impl Quantity {
                 other => {
                     return Err(err(&format!(
                         "unknown quantity `{other}` (known: Omega, V, Gamma, I, Rc, sigma, Rd, \
-                         delta, Ec, eom, R, M, {{V(..)}}_A, {{C(..)}}_A, {{D(..)}}_A, \
-                         {{T(..)}}_A, or the name of an unknown)"
+                         delta, Ec, eom, R, M, P, Pint, {{V(..)}}_A, {{C(..)}}_A, \
+                         {{D(..)}}_A, {{T(..)}}_A, or the name of an unknown)"
                     )));
                 }
             }
@@ -300,7 +323,8 @@ impl QuantityKind {
         match self {
             QuantityKind::ActionResultant(a)
             | QuantityKind::ActionMoment { action: a, .. }
-            | QuantityKind::ActionTorsor { action: a, .. } => Some(a),
+            | QuantityKind::ActionTorsor { action: a, .. }
+            | QuantityKind::Power { action: a, .. } => Some(a),
             _ => None,
         }
     }
@@ -320,7 +344,11 @@ impl QuantityKind {
     pub fn is_scalar_kind(&self) -> bool {
         matches!(
             self,
-            QuantityKind::KineticEnergy(_) | QuantityKind::Unknown(_) | QuantityKind::Eom(_)
+            QuantityKind::KineticEnergy(_)
+                | QuantityKind::Unknown(_)
+                | QuantityKind::Eom(_)
+                | QuantityKind::Power { .. }
+                | QuantityKind::InternalPower(_)
         )
     }
 
@@ -342,7 +370,9 @@ impl QuantityKind {
             | Eom(_)
             | ActionResultant(_)
             | ActionMoment { .. }
-            | ActionTorsor { .. } => None,
+            | ActionTorsor { .. }
+            | Power { .. }
+            | InternalPower(_) => None,
         }
     }
 }
@@ -368,6 +398,8 @@ impl fmt::Display for QuantityKind {
             ActionResultant(a) => write!(f, "R({a})"),
             ActionMoment { point, action } => write!(f, "M({point},{action})"),
             ActionTorsor { action, point } => write!(f, "{{T({action})}}_{point}"),
+            Power { action, reference } => write!(f, "P({action}/{reference})"),
+            InternalPower(set) => write!(f, "Pint({set})"),
         }
     }
 }

@@ -1,5 +1,6 @@
 //! The actions of the bilan as quantities: R(from→on), M(A, from→on), {T(from→on)}_A, each
-//! the sum of the actions `from` exerts on `on`, moved to A by M(A) = M(P) + AP ∧ R.
+//! the sum of the actions `from` exerts on `on`, moved to A by M(A) = M(P) + AP ∧ R; their
+//! power P(from→on/R) and the power of the actions inside a set, P_int(E).
 
 use super::{ResolveError, Resolved, Step, StepKind, torsor_value};
 use crate::mechanism::Mechanism;
@@ -25,21 +26,57 @@ pub(super) fn total(
         moment: Vector::zero(),
     };
     for act in &actions {
-        let t = act.torsor();
-        let point = m.point_name(act.point).to_string();
-        steps.push(Step {
-            label: format!("T({}->{})", act.from_label, act.on_label),
-            kind: StepKind::Action {
-                from: act.from_label.clone(),
-                on: act.on_label.clone(),
-                point,
-            },
-            theorem: super::dynamics::bilan_line(act),
-            value: torsor_value(m, &t, act.basis),
-        });
-        let moved = t.at(m, a);
+        steps.push(action_step(m, act));
+        let moved = act.torsor().at(m, a);
         sum.resultant = sum.resultant.add(&moved.resultant);
         sum.moment = sum.moment.add(&moved.moment);
     }
     Ok(sum)
+}
+
+/// The step of one action's torsor at its own point, as the bilan writes it.
+fn action_step(m: &Mechanism, act: &crate::pfd::Action) -> Step {
+    Step {
+        label: format!("T({}->{})", act.from_label, act.on_label),
+        kind: StepKind::Action {
+            from: act.from_label.clone(),
+            on: act.on_label.clone(),
+            point: m.point_name(act.point).to_string(),
+        },
+        theorem: super::dynamics::bilan_line(act),
+        value: torsor_value(m, &act.torsor(), act.basis),
+    }
+}
+
+/// P(from→on/R) = Σ R·V(A∈S/R) + M(A)·Ω(S/R) over the actions `from` exerts on `on`, each
+/// recorded as a step at its own point.
+pub(super) fn power(
+    m: &Mechanism,
+    q: &Quantity,
+    action: &ActionRef,
+    r: &Resolved,
+    reference: crate::frame::FrameId,
+    steps: &mut Vec<Step>,
+) -> Result<crate::expr::Expr, ResolveError> {
+    let actions = crate::pfd::actions_of(m, &action.from, &r.solids, &action.on)
+        .map_err(|e| ResolveError::new(q, e))?;
+    let mut sum = m.reg.zero();
+    for act in &actions {
+        steps.push(action_step(m, act));
+        sum = &sum + &crate::pfd::action_power(m, act, reference);
+    }
+    Ok(sum)
+}
+
+/// P_int(E) = Σ {T(i→j)} ⊗ {V(j/i)} over the actions between two solids of E, each recorded
+/// as a step.
+pub(super) fn internal_power(
+    m: &Mechanism,
+    r: &Resolved,
+    steps: &mut Vec<Step>,
+) -> crate::expr::Expr {
+    for act in crate::pfd::internal_actions(m, &r.solids) {
+        steps.push(action_step(m, act));
+    }
+    crate::pfd::internal_power(m, &r.solids)
 }

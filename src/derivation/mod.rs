@@ -143,6 +143,11 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
         KineticResultant(mo) | DynamicResultant(mo) | KineticEnergy(mo) => kinetic(mo, &mut r)?,
         Unknown(_) | Eom(_) => {}
         ActionResultant(a) => r.solids = solids(&a.on)?,
+        Power { action, reference } => {
+            r.solids = solids(&action.on)?;
+            r.reference = Some(frame(reference)?);
+        }
+        InternalPower(set) => r.solids = solids(set)?,
         ActionMoment { point: p, action } | ActionTorsor { action, point: p } => {
             r.point = Some(point(p)?);
             r.solids = solids(&action.on)?;
@@ -283,6 +288,22 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
         }
         Omega(_) => {
             vector = Some(omega(m, r.moving_frame.unwrap_or(reference), reference));
+        }
+        Power { action, .. } => {
+            let p = actions::power(m, q, action, &r, reference, &mut steps)?;
+            return Ok(Derivation {
+                quantity: q.clone(),
+                steps,
+                value: Value::Scalar(p),
+            });
+        }
+        InternalPower(_) => {
+            let p = actions::internal_power(m, &r, &mut steps);
+            return Ok(Derivation {
+                quantity: q.clone(),
+                steps,
+                value: Value::Scalar(p),
+            });
         }
         ActionResultant(action) | ActionMoment { action, .. } | ActionTorsor { action, .. } => {
             let t = actions::total(m, q, action, &r, &mut steps)?;

@@ -262,7 +262,7 @@ pub fn basis_vector(axis: char, frame: &str) -> String {
     }
 }
 
-fn escape_ident(s: &str) -> String {
+pub(crate) fn escape_ident(s: &str) -> String {
     s.chars()
         .filter(|c| c.is_ascii_alphanumeric() || *c == '_')
         .map(|c| if c == '_' { ' ' } else { c })
@@ -375,6 +375,11 @@ pub fn quantity(k: &QuantityKind) -> String {
             )
         }
         KineticEnergy(mo) => format!("E_{{c}}({})", motion(mo)),
+        Power {
+            action: a,
+            reference,
+        } => format!("\\mathcal{{P}}({}/{})", action(a), escape_ident(reference)),
+        InternalPower(set) => format!("\\mathcal{{P}}_{{\\mathrm{{int}}}}({})", escape_ident(set)),
         Unknown(n) => name(n),
         Eom(q) => format!("\\text{{Équation du mouvement en }} {}", name(q)),
     }

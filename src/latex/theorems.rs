@@ -372,6 +372,9 @@ fn split_equation(e: &crate::expr::Expr) -> (crate::expr::Expr, crate::expr::Exp
 /// actions of the bilan cited above, each reduced at the point asked. None when there is
 /// nothing to say (one action, asked where it is given).
 pub(super) fn action_sentence(d: &Derivation) -> Option<String> {
+    if let Some(s) = power_sentence(d) {
+        return Some(s);
+    }
     let at = match &d.quantity.kind {
         QuantityKind::ActionResultant(_) => None,
         QuantityKind::ActionMoment { point, .. } | QuantityKind::ActionTorsor { point, .. } => {
@@ -424,6 +427,38 @@ pub(super) fn action_sentence(d: &Derivation) -> Option<String> {
             })
         }
         _ if many => Some("On somme les actions :".to_string()),
+        _ => None,
+    }
+}
+
+/// The method of a power: the product of each action's torsor by the kinematic torsor of the
+/// solid that receives it, at the action's point (« $\mathcal{P} = \vec{R}\cdot
+/// \overrightarrow{V(A\in S/R)} + \vec{M}(A)\cdot\overrightarrow{\Omega(S/R)}$ »); between the
+/// solids of a set, in their relative motion.
+fn power_sentence(d: &Derivation) -> Option<String> {
+    let many = d.steps.len() > 1;
+    let sum = if many { "\\sum " } else { "" };
+    match &d.quantity.kind {
+        QuantityKind::Power { reference, .. } => {
+            let r = super::escape_ident(reference);
+            Some(format!(
+                "Puissance {} : ${} = {sum}\\vec{{R}}\\cdot\\overrightarrow{{V(A\\in S/{r})}} + \
+                 \\vec{{M}}(A)\\cdot\\overrightarrow{{\\Omega(S/{r})}}$, chaque action en son point $A$, \
+                 $S$ le solide qui la reçoit{} :",
+                if many { "des actions" } else { "de l'action" },
+                quantity(&d.quantity.kind),
+                if many { ", puis on somme" } else { "" }
+            ))
+        }
+        QuantityKind::InternalPower(_) if d.steps.is_empty() => Some(format!(
+            "Aucune action n'est déclarée entre les solides de l'ensemble : ${} = 0$.",
+            quantity(&d.quantity.kind)
+        )),
+        QuantityKind::InternalPower(_) => Some(format!(
+            "Puissance des inter-efforts : ${} = {sum}\\vec{{R}}(i\\rightarrow j)\\cdot\\overrightarrow{{V(A\\in j/i)}} + \
+             \\vec{{M}}(A, i\\rightarrow j)\\cdot\\overrightarrow{{\\Omega(j/i)}}$ pour chaque liaison entre deux solides $i$, $j$ de l'ensemble (nulle pour une liaison parfaite) :",
+            quantity(&d.quantity.kind)
+        )),
         _ => None,
     }
 }

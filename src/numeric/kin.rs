@@ -225,6 +225,13 @@ pub(super) fn omega(st: &State, i: usize, j: usize) -> Vector3<f64> {
     st.rot0(j) * in_j
 }
 
+/// V(P ∈ i/j) in ground components, P given by its ground position at t = 0: the material
+/// point of i there, moved with i and differentiated in j.
+pub(super) fn velocity_at(st: &State, i: usize, p: &Vector3<f64>, j: usize) -> Vector3<f64> {
+    let [_, v, _] = parts(&st.track(i, &st.local0(i, p), j));
+    st.rot0(j) * v
+}
+
 /// V(P, i/j) and Γ(P, i/j) in ground components: the point of i that coincides with P at
 /// t = 0, moved with i and differentiated in j.
 pub(super) fn point_motion(st: &State, p: usize, i: usize, j: usize) -> [Vector3<f64>; 2] {

@@ -121,6 +121,20 @@ pub(super) fn evaluate(
             let [r, mo] = action(a, m.point(point)?)?;
             Raw::Torsor(point.clone(), r?, mo?)
         }
+        K::Power {
+            action: a,
+            reference,
+        } => {
+            let solids = m.solids_of(&a.on)?;
+            let j = m.body_frame(reference, q)?;
+            Raw::Scalar(dynamics::power(
+                m, &st, &vals, &a.from, &solids, &a.on, j, unknowns,
+            )?)
+        }
+        K::InternalPower(set) => {
+            let solids = m.solids_of(set)?;
+            Raw::Scalar(dynamics::internal_power(m, &st, &vals, &solids, unknowns)?)
+        }
     };
     let not_finite = || NumericError::Quantity {
         quantity: q.to_string(),

@@ -59,7 +59,9 @@ use std::rc::Rc;
 /// ```
 pub fn unit_style(kind: &QuantityKind) -> UnitStyle {
     match kind {
-        QuantityKind::KineticEnergy(_) => UnitStyle::Energy,
+        QuantityKind::KineticEnergy(_)
+        | QuantityKind::Power { .. }
+        | QuantityKind::InternalPower(_) => UnitStyle::Energy,
         _ => UnitStyle::Mechanics,
     }
 }
@@ -377,6 +379,7 @@ pub fn expected_dimension(m: &Mechanism, dims: &Dimensions, q: &Quantity) -> Exp
         DynamicMoment { .. } | ActionMoment { .. } => one(Dimension::MOMENT),
         ActionResultant(_) => one(Dimension::FORCE),
         KineticEnergy(_) => one(Dimension::ENERGY),
+        Power { .. } | InternalPower(_) => one(Dimension::POWER),
         KinematicTorsor { .. } => Torsor {
             resultant: Dimension::ANGULAR_VELOCITY,
             moment: Dimension::VELOCITY,

@@ -20,6 +20,7 @@ mod library;
 mod links;
 mod parity;
 mod pfd;
+mod power;
 mod printed;
 mod properties;
 mod regulator;

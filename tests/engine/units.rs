@@ -351,6 +351,8 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         "Rd" => one(d(1, 1, -2)),
         "delta" => one(d(1, 2, -2)),
         "Ec" => one(d(1, 2, -2)),
+        // A power: an energy per second, W.
+        "P" | "Pint" => one(d(1, 2, -3)),
         "{V" => (d(0, 0, -1), Some(d(0, 1, -1))),
         "{C" => (d(1, 1, -1), Some(d(1, 2, -1))),
         "{D" | "{T" => (d(1, 1, -2), Some(d(1, 2, -2))),

@@ -35,7 +35,7 @@ const APPEARS: f64 = 1e-9;
 const SINGULAR: f64 = 1e-10;
 
 mod solve;
-pub(super) use solve::{action, eom, unknown};
+pub(super) use solve::{action, eom, internal_power, power, unknown};
 
 /// What exerts or receives an action: a solid, or a frame that is not a solid (the ground).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -1,0 +1,128 @@
+//! The power of the actions, P(from→on/R) and P_int(E) (issue 16, item 3: the kinetic energy
+//! theorem): by hand, against Lagrange's equations (the energy theorem as an exact identity),
+//! and against the float backend, which sums R·V + M·Ω over its own actions and point clouds.
+
+use super::*;
+use torseur::mechanism::BodyId;
+
+#[test]
+fn powers_by_hand() {
+    // Inverted pendulum on a torsion spring k and a viscous friction f at O (OG = l y1, the
+    // weight −m g y0): V(G,1/0) = −l θ̇ x1, so P(pes→1/0) = −m g y0·(−l θ̇ x1) = m g l θ̇ sin θ
+    // (y0·x1 = −sin θ). The pivot transmits −(k θ + f θ̇) z0 as moment on z0, and
+    // Ω(1/0) = θ̇ z0: P(0→1/0) = −(k θ + f θ̇) θ̇.
+    let m = torseur::spec::load("derivations/pendule_inverse_ressort.json").unwrap();
+    torseur::assert_equivalent!(m, "P(pes->1/0)", "m*g*l*sin(theta)*dot(theta)");
+    torseur::assert_equivalent!(m, "P(0->1/0)", "-(k*theta + f*dot(theta))*dot(theta)");
+    torseur::assert_equivalent!(
+        m,
+        "P(ext->1/0)",
+        "(m*g*l*sin(theta) - k*theta - f*dot(theta))*dot(theta)"
+    );
+    let wrong =
+        torseur::verify::verify(&m, "P(pes->1/0)", "-m*g*l*sin(theta)*dot(theta)", None).unwrap();
+    assert!(!wrong.is_equivalent());
+    // The regulator: the motor's torque C_m z0 on 1 turning at θ̇1 z0 gives C_m θ̇1; the pivot
+    // 1–2 with viscous friction f on x1 gives the inter-effort power −f θ̇2²; the pivot 0–1 is
+    // perfect and its point O1 fixed: no power. The weight of 2 lowers G2 by L2 sin θ2 (OG2·z0
+    // holds L2 sin θ2): −m2 g L2 θ̇2 cos θ2.
+    let m = regulator();
+    torseur::assert_equivalent!(m, "P(moteur->E/0)", "C_m*dot(theta1)");
+    torseur::assert_equivalent!(m, "Pint(E)", "-f*dot(theta2)^2");
+    torseur::assert_equivalent!(m, "P(0->1/0)", "0");
+    torseur::assert_equivalent!(
+        m,
+        "P(ext->E/0)",
+        "C_m*dot(theta1) - m2*g*L2*cos(theta2)*dot(theta2)"
+    );
+    // Inside E, the actions of 1 on 2 are internal.
+    assert!(
+        torseur::derivation::derive(
+            &m,
+            &torseur::quantity::Quantity::parse("P(1->E/0)").unwrap()
+        )
+        .is_err()
+    );
+}
+
+#[test]
+fn the_kinetic_energy_theorem_is_lagrange_summed_over_the_rates() {
+    // For the whole mechanism (every solid, R0 galilean, no imposed rate), the kinetic energy
+    // theorem dEc/dt = P(ext→E/0) + P_int(E) is the sum of Lagrange's equations weighted by
+    // the rates: Σ q̇ (d/dt ∂Ec/∂q̇ − ∂Ec/∂q + ∂Ep/∂q − Q_q) = dEc/dt − P, exactly, the links'
+    // unknowns included. Lagrange's side is built by `pfd::lagrange` from the energies and
+    // virtual powers (∂V/∂q̇), the power side from each action's R·V + M·Ω.
+    let mut tried = 0;
+    for path in specs_in(&["derivations", "tests/specs"]) {
+        let m = torseur::spec::load(&path).unwrap();
+        let reg = &m.reg;
+        if reg.coordinates().iter().any(|c| c.has_imposed_rate()) || m.bodies.is_empty() {
+            continue;
+        }
+        let all: Vec<BodyId> = m
+            .bodies
+            .iter()
+            .flat_map(|b| m.solids_of(&b.name).unwrap())
+            .collect();
+        let g0 = m.frames.ground();
+        let ec = torseur::pfd::kinetic_energy(&m, &all);
+        let p_ext = torseur::pfd::power(&m, "ext", &all, "all", g0).unwrap();
+        let p_int = torseur::pfd::internal_power(&m, &all);
+        let theorem = &(&ec.dt() - &p_ext) - &p_int;
+        let mut lagrange = reg.zero();
+        for c in reg.coordinates() {
+            let q = reg.coord(&c.name).unwrap();
+            lagrange = &lagrange + &(&reg.dot(q) * &torseur::pfd::lagrange(&m, q));
+        }
+        assert_eq!(theorem, lagrange, "{}", path.display());
+        tried += 1;
+    }
+    assert!(tried >= 10, "{tried} specs");
+}
+
+#[test]
+fn powers_agree_with_the_float_backend() {
+    for (file, extra) in [
+        (
+            "derivations/regulateur_centrifuge.json",
+            &[
+                "P(ext->E/0)",
+                "Pint(E)",
+                "P(1->2/0)",
+                "P(ext->2/1)",
+                "P(pes->2/0)",
+            ][..],
+        ),
+        (
+            "derivations/pendule_inverse_ressort.json",
+            &["P(ext->1/0)", "P(0->1/0)"][..],
+        ),
+        (
+            "derivations/double_pendule.json",
+            &["P(ext->E/0)", "Pint(E)", "P(1->2/0)", "P(2->1/0)"][..],
+        ),
+        (
+            "tests/specs/roue_vitesse_imposee.json",
+            &["P(ext->1/0)"][..],
+        ),
+    ] {
+        let text = std::fs::read_to_string(file).unwrap();
+        let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let qs = v["quantities"].as_array_mut().unwrap();
+        for q in extra {
+            qs.push((*q).into());
+        }
+        let m = match torseur::spec::from_str(&v.to_string()) {
+            Ok(m) => m,
+            Err(e) => panic!("{file}: {e}"),
+        };
+        let report = torseur::check::check(&m, 10, 2).unwrap();
+        assert!(report.passed(), "{file}: {report}");
+        for q in extra {
+            assert!(
+                report.rows.iter().any(|r| r.quantity == *q),
+                "{file}: {q} not checked"
+            );
+        }
+    }
+}
