@@ -115,11 +115,7 @@ impl Walker<'_> {
             }
             AtomView::Pow(p) => {
                 let (base, exp) = p.get_base_exp();
-                let negative = matches!(exp, AtomView::Num(_))
-                    && exp
-                        .try_to_polynomial::<_, u8>(&symbolica::domains::rational::Q, None)
-                        .is_ok_and(|e| e.is_constant() && e.get_constant().is_negative());
-                if !negative {
+                if !super::names::negative_number(exp) {
                     return Ok((self.scalar(v)?, reg.one()));
                 }
                 let n = exp

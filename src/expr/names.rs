@@ -94,7 +94,7 @@ pub(super) fn names_in(s: &str) -> Vec<(usize, usize, bool)> {
 /// assert!(torseur::expr::divisors_in("m*L^2/12").is_empty());
 /// ```
 pub fn divisors_in(s: &str) -> Vec<String> {
-    use symbolica::atom::{AtomCore, AtomView};
+    use symbolica::atom::AtomView;
     fn names(v: AtomView, out: &mut Vec<String>) {
         match v {
             AtomView::Var(x) => {
@@ -114,11 +114,7 @@ pub fn divisors_in(s: &str) -> Vec<String> {
         match v {
             AtomView::Pow(p) => {
                 let (base, exp) = p.get_base_exp();
-                let negative = matches!(exp, AtomView::Num(_))
-                    && exp
-                        .try_to_polynomial::<_, u8>(&symbolica::domains::rational::Q, None)
-                        .is_ok_and(|e| e.is_constant() && e.get_constant().is_negative());
-                if negative {
+                if negative_number(exp) {
                     names(base, out);
                 } else {
                     walk(base, out);
@@ -137,4 +133,13 @@ pub fn divisors_in(s: &str) -> Vec<String> {
         walk(a.as_view(), &mut out);
     }
     out
+}
+
+/// Whether an exponent is a negative number (a division: `k^-1`, `1/(m*l)`).
+pub(super) fn negative_number(exp: symbolica::atom::AtomView) -> bool {
+    use symbolica::atom::{AtomCore, AtomView};
+    matches!(exp, AtomView::Num(_))
+        && exp
+            .try_to_polynomial::<_, u8>(&symbolica::domains::rational::Q, None)
+            .is_ok_and(|e| e.is_constant() && e.get_constant().is_negative())
 }
