@@ -404,7 +404,10 @@ pub fn solve_with_residuals(
             unknown: names[&v].clone(),
         })?;
         if c.as_rational().is_none() {
-            let unit = Fraction::new(m.reg.one(), c).map(|f| f.den);
+            // The pivot itself, its first coefficient made 1 (r2, L, not 1/r2 when the
+            // mechanism divides by r2 and the value came out whole).
+            let lead = c.terms().next().map(|(r, _)| r.clone());
+            let unit = lead.map(|r| &c * &m.reg.constant(r.inv()));
             if let Some(p) = unit.filter(|p| !conditions.contains(p)) {
                 conditions.push(p);
             }
@@ -553,6 +556,32 @@ pub fn internal_power(m: &Mechanism, set: &[BodyId]) -> Expr {
     acc
 }
 
+/// J_eq(q): Ec(all/0) = ½ J_eq q̇², the inertia (or the mass, for a length) of the whole
+/// mechanism brought back to q: ∂²Ec/∂q̇², kept only when Ec is exactly ½ J_eq q̇² (every
+/// other rate driven by q̇, as a gear ratio drives it; no constant imposed rate).
+///
+/// ```
+/// let m = torseur::spec::load("derivations/treuil.json").unwrap();
+/// let q = m.reg.coord("theta").unwrap();
+/// // The drum and the load raised by R θ: J + m R².
+/// assert_eq!(torseur::pfd::equivalent_inertia(&m, q).unwrap(), m.reg.parse("J + m*R^2").unwrap());
+/// ```
+pub fn equivalent_inertia(m: &Mechanism, q: CoordId) -> Result<Expr, String> {
+    let all: Vec<BodyId> = (0..m.bodies.len()).map(BodyId).collect();
+    let ec = kinetic_energy(m, &all);
+    let j = ec.partial_rate(q, 1).partial_rate(q, 1);
+    let qd = m.reg.dot(q);
+    if &(&m.reg.rational(1, 2) * &j) * &(&qd * &qd) != ec {
+        return Err(format!(
+            "the kinetic energy is not ½ J q̇² in `{}` alone: another rate is free, or a rate is \
+             imposed (drive the other coordinates by it, `\"rate\": \"k*dot({})\"`)",
+            m.reg.coord_info(q).name,
+            m.reg.coord_info(q).name
+        ));
+    }
+    Ok(j)
+}
+
 /// Potential energy of gravity (−Σ m g⃗·O0G) and of the springs (½ k (q − q0)²).
 pub fn potential_energy(m: &Mechanism) -> Expr {
     let mut acc = m.reg.zero();
@@ -570,6 +599,27 @@ pub fn potential_energy(m: &Mechanism) -> Expr {
     acc
 }
 
+/// ∂e/∂q through q and through the coordinates its rate drives: a driven coordinate d with
+/// ḋ = Σ kⱼ q̇ⱼ + c moves by k_q when q does (a gear ratio, rolling without slipping), so
+/// ∂e/∂q = ∂e/∂q|_d + k_q ∂e/∂d.
+fn total_partial(m: &Mechanism, e: &Expr, q: CoordId) -> Expr {
+    let reg = &m.reg;
+    let mut acc = e.partial_coordinate(q);
+    for c in reg.coordinates() {
+        if !c.is_driven() {
+            continue;
+        }
+        let Some(d) = reg.coord(&c.name) else {
+            continue;
+        };
+        let k = reg.dot(d).partial_rate(q, 1);
+        if !k.is_zero() {
+            acc = &acc + &(&k * &e.partial_coordinate(d));
+        }
+    }
+    acc
+}
+
 /// Lagrange's equation of coordinate q as a residual:
 /// d/dt ∂Ec/∂q̇ − ∂Ec/∂q + ∂Ep/∂q − Q_q = 0, with Ec the kinetic energy of all the solids,
 /// Ep the potential of gravity and springs, and Q_q the generalised force of every other
@@ -581,7 +631,7 @@ pub fn lagrange(m: &Mechanism, q: CoordId) -> Expr {
     let t = kinetic_energy(m, &all);
     let ep = potential_energy(m);
     let mut r =
-        &(&t.partial_rate(q, 1).dt() - &t.partial_coordinate(q)) + &ep.partial_coordinate(q);
+        &(&t.partial_rate(q, 1).dt() - &total_partial(m, &t, q)) + &total_partial(m, &ep, q);
     let g0 = m.frames.ground();
     let coefficient = |body: BodyId, a: &Action, res: &Vector, mom: &Vector| -> Expr {
         let f = m.body(body).frame;

@@ -86,6 +86,9 @@ pub enum QuantityKind {
     /// P_int(E): the power of the actions between the solids of E (the links' friction and
     /// springs), Σ {T(i→j)} ⊗ {V(j/i)}: independent of any reference frame.
     InternalPower(String),
+    /// J_eq(q): the inertia (or mass, for a length) equivalent to the whole mechanism brought
+    /// back to coordinate q, Ec(all/0) = ½ J_eq q̇², when every other rate is driven by q̇.
+    EquivalentInertia(String),
 }
 
 /// A requested quantity: a kind, an optional basis to express it in, an optional projection.
@@ -244,6 +247,10 @@ impl Quantity {
                     check_name(args).map_err(|r| err(&r))?;
                     QuantityKind::InternalPower(args.to_string())
                 }
+                "J_eq" => {
+                    crate::expr::check_identifier(args).map_err(|r| err(&r))?;
+                    QuantityKind::EquivalentInertia(args.to_string())
+                }
                 "R" => QuantityKind::ActionResultant(action(args).map_err(|r| err(&r))?),
                 "M" => {
                     let (p, a) = args
@@ -273,7 +280,7 @@ impl Quantity {
                 other => {
                     return Err(err(&format!(
                         "unknown quantity `{other}` (known: Omega, V, Gamma, I, Rc, sigma, Rd, \
-                         delta, Ec, eom, R, M, P, Pint, {{V(..)}}_A, {{C(..)}}_A, \
+                         delta, Ec, eom, R, M, P, Pint, J_eq, {{V(..)}}_A, {{C(..)}}_A, \
                          {{D(..)}}_A, {{T(..)}}_A, or the name of an unknown)"
                     )));
                 }
@@ -349,6 +356,7 @@ impl QuantityKind {
                 | QuantityKind::Eom(_)
                 | QuantityKind::Power { .. }
                 | QuantityKind::InternalPower(_)
+                | QuantityKind::EquivalentInertia(_)
         )
     }
 
@@ -372,7 +380,8 @@ impl QuantityKind {
             | ActionMoment { .. }
             | ActionTorsor { .. }
             | Power { .. }
-            | InternalPower(_) => None,
+            | InternalPower(_)
+            | EquivalentInertia(_) => None,
         }
     }
 }
@@ -400,6 +409,7 @@ impl fmt::Display for QuantityKind {
             ActionTorsor { action, point } => write!(f, "{{T({action})}}_{point}"),
             Power { action, reference } => write!(f, "P({action}/{reference})"),
             InternalPower(set) => write!(f, "Pint({set})"),
+            EquivalentInertia(q) => write!(f, "J_eq({q})"),
         }
     }
 }

@@ -148,6 +148,9 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             r.reference = Some(frame(reference)?);
         }
         InternalPower(set) => r.solids = solids(set)?,
+        EquivalentInertia(c) => {
+            m.reg.coord(c).ok_or_else(|| unknown("coordinate", c))?;
+        }
         ActionMoment { point: p, action } | ActionTorsor { action, point: p } => {
             r.point = Some(point(p)?);
             r.solids = solids(&action.on)?;
@@ -295,6 +298,19 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
                 quantity: q.clone(),
                 steps,
                 value: Value::Scalar(p),
+            });
+        }
+        EquivalentInertia(c) => {
+            let coord = m
+                .reg
+                .coord(c)
+                .ok_or_else(|| ResolveError::unknown(q, "coordinate", c))?;
+            let j =
+                crate::pfd::equivalent_inertia(m, coord).map_err(|e| ResolveError::new(q, e))?;
+            return Ok(Derivation {
+                quantity: q.clone(),
+                steps,
+                value: Value::Scalar(j),
             });
         }
         InternalPower(_) => {

@@ -38,6 +38,10 @@ impl Fraction {
         if den.as_rational().is_some() {
             return Some(Fraction::whole(num.div_constant(&den)?));
         }
+        // A product of parameters the mechanism divides by has an exact inverse.
+        if let Ok(inv) = den.monomial_inverse() {
+            return Some(Fraction::whole(&num * &inv));
+        }
         if !den.is_parameter_polynomial() {
             return None;
         }

@@ -179,6 +179,9 @@ pub struct CoordInfo {
     constant: bool,
     /// A phase Ω t (named `Omega*t`): the pulsation Ω, a parameter, is its imposed rate.
     phase: Option<String>,
+    /// The imposed rate is a linear form of other coordinates' rates (a gear ratio, rolling
+    /// without slipping): q̈ is its time derivative, not 0.
+    driven: bool,
 }
 
 impl CoordInfo {
@@ -188,9 +191,18 @@ impl CoordInfo {
         self.value.map(VarId)
     }
 
-    /// Whether the rate is imposed (q̇ given, q̈ = 0).
+    /// Whether the rate is imposed: a constant (q̇ = ω, q̈ = 0), or driven by the rates of
+    /// other coordinates (see [`CoordInfo::is_driven`]); the coordinate then has no rate
+    /// variables and no equation of motion.
     pub fn has_imposed_rate(&self) -> bool {
         self.imposed_rate.is_some()
+    }
+
+    /// Whether the rate is driven by other coordinates' rates, a linear relation between
+    /// coordinates that the spec declares as `"rate": "-r1/r2*dot(theta1)"` (a gear ratio,
+    /// rolling without slipping ẋ = −R θ̇): q̇ is that form, q̈ its time derivative.
+    pub fn is_driven(&self) -> bool {
+        self.driven
     }
 
     /// The pulsation Ω when this is the phase Ω t of a forcing or an imposed law written

@@ -200,6 +200,7 @@ impl Registry {
                 imposed_rate: None,
                 constant: false,
                 phase,
+                driven: false,
             };
             match kind {
                 CoordinateKind::Angle => {
@@ -276,6 +277,7 @@ impl Registry {
                 imposed_rate: None,
                 constant: true,
                 phase: None,
+                driven: false,
             });
         }
         let mut param_var = HashMap::new();
@@ -375,15 +377,30 @@ impl Registry {
             let base = snapshot(&reg)?;
             for (i, (_, _, rate)) in coords.iter().enumerate() {
                 if let Some(r) = rate {
-                    let e = base.parse(r)?;
-                    if !e.is_time_independent() {
+                    // The rate of a coordinate whose rate is itself imposed reads as 0 in
+                    // `base`: refused by name rather than silently dropped.
+                    let compact: String = r.chars().filter(|c| !c.is_whitespace()).collect();
+                    if let Some((other, _, _)) = coords
+                        .iter()
+                        .find(|(n, _, w)| w.is_some() && compact.contains(&format!("dot({n})")))
+                    {
                         return Err(ExprError::Unsupported {
                             input: r.clone(),
-                            reason: "an imposed rate must be a constant (parameters only)"
-                                .to_string(),
+                            reason: format!(
+                                "the rate of `{other}` is imposed too: write the rate with the \
+                                 coordinates whose rates are free"
+                            ),
                         });
                     }
+                    let e = base.parse(r)?;
+                    let driven = driven_by(&base, CoordId(i), &e).map_err(|reason| {
+                        ExprError::Unsupported {
+                            input: r.clone(),
+                            reason,
+                        }
+                    })?;
                     reg.coords[i].imposed_rate = Some(e.p);
+                    reg.coords[i].driven = driven;
                 }
             }
         }
@@ -617,6 +634,10 @@ impl Registry {
         match (&c.rates, &c.imposed_rate) {
             (Some(r), _) => self.var(r[(order.clamp(1, 3) - 1) as usize]),
             (None, Some(w)) if order == 1 => self.wrap(w.clone()),
+            // Driven by the other rates: q̈ = d/dt q̇, with constant coefficients.
+            (None, Some(w)) if c.driven => {
+                (1..order.clamp(1, 3)).fold(self.wrap(w.clone()), |e, _| e.dt())
+            }
             _ => self.zero(),
         }
     }
@@ -756,4 +777,43 @@ impl Registry {
     ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
         vector_text::parse_vector(self, s, basis_vector, names)
     }
+}
+
+/// Whether the rate `e` imposed on `q` is driven by other coordinates' rates (a gear ratio
+/// θ̇2 = −(r1/r2) θ̇1, rolling without slipping ẋ = −R θ̇): a linear form in the first
+/// derivatives of coordinates whose rates are free, with coefficients made of parameters,
+/// plus a constant. False for a constant (ψ̇ = ω); why not, for anything else.
+fn driven_by(reg: &Registry, q: CoordId, e: &Expr) -> Result<bool, String> {
+    if e.is_time_independent() {
+        return Ok(false);
+    }
+    let name = &reg.coords[q.0].name;
+    let why = format!(
+        "the rate of `{name}` is a constant (parameters only), or a linear form of the rates \
+         of other coordinates whose rates are free, with coefficients of parameters \
+         (`-r1/r2*dot(theta1)`, `R*dot(theta)`)"
+    );
+    let (with, without) = e.split_by_rates();
+    if !without.is_time_independent() {
+        return Err(why);
+    }
+    for (_, x) in with.terms() {
+        let mut rate = None;
+        for (i, &k) in x.iter().enumerate() {
+            if k == 0 {
+                continue;
+            }
+            match reg.roles[i] {
+                VarRole::Parameter(p) if !reg.is_unknown(p) => {}
+                VarRole::Inverse(_) => {}
+                VarRole::Cos(c) | VarRole::Sin(c) if reg.coords[c.0].constant => {}
+                VarRole::Rate(c, 1) if k == 1 && rate.is_none() && c != q => rate = Some(c),
+                _ => return Err(why),
+            }
+        }
+        if rate.is_none() {
+            return Err(why);
+        }
+    }
+    Ok(true)
 }

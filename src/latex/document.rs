@@ -541,7 +541,11 @@ pub fn answer_key_document(
             Some(q) if !constant && m.reg.coord_info(q).has_imposed_rate() => {
                 let rate = m.reg.dot(q);
                 let math = format!("\\dot{{{}}} = {}", name(&c.name), super::expr(&rate));
-                let text = format!(", de vitesse imposée ${math}$");
+                let text = if m.reg.coord_info(q).is_driven() {
+                    format!(", liée aux autres par ${math}$")
+                } else {
+                    format!(", de vitesse imposée ${math}$")
+                };
                 rates.push(Inline {
                     what: format!("dot({})", c.name),
                     latex: math,

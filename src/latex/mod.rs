@@ -380,6 +380,7 @@ pub fn quantity(k: &QuantityKind) -> String {
             reference,
         } => format!("\\mathcal{{P}}({}/{})", action(a), escape_ident(reference)),
         InternalPower(set) => format!("\\mathcal{{P}}_{{\\mathrm{{int}}}}({})", escape_ident(set)),
+        EquivalentInertia(c) => format!("J_{{\\mathrm{{eq}}}}({})", name(c)),
         Unknown(n) => name(n),
         Eom(q) => format!("\\text{{Équation du mouvement en }} {}", name(q)),
     }

@@ -442,12 +442,22 @@ fn power_sentence(d: &Derivation) -> Option<String> {
         QuantityKind::Power { reference, .. } => {
             let r = super::escape_ident(reference);
             Some(format!(
-                "Puissance {} : ${} = {sum}\\vec{{R}}\\cdot\\overrightarrow{{V(A\\in S/{r})}} + \
-                 \\vec{{M}}(A)\\cdot\\overrightarrow{{\\Omega(S/{r})}}$, chaque action en son point $A$, \
-                 $S$ le solide qui la reçoit{} :",
+                "Puissance {} : ${} = {sum}\\left\\{{\\mathcal{{T}}\\right\\}}\\otimes\\left\\{{\\mathcal{{V}}(S/{r})\\right\\}}$, \
+                 produit du torseur de chaque action par le torseur cinématique du solide $S$ qui la \
+                 reçoit, réduits au même point{} :",
                 if many { "des actions" } else { "de l'action" },
                 quantity(&d.quantity.kind),
                 if many { ", puis on somme" } else { "" }
+            ))
+        }
+        QuantityKind::EquivalentInertia(c) => {
+            let q = super::name(c);
+            Some(format!(
+                "Les vitesses des autres coordonnées se déduisent de $\\dot{{{q}}}$ : l'énergie \
+                 cinétique du mécanisme s'écrit $E_c = \\frac{{1}}{{2}}\\,{}\\,\\dot{{{q}}}^{{2}}$, \
+                 où ${}$ est l'inertie équivalente ramenée à ${q}$ :",
+                quantity(&d.quantity.kind),
+                quantity(&d.quantity.kind)
             ))
         }
         QuantityKind::InternalPower(_) if d.steps.is_empty() => Some(format!(
@@ -455,8 +465,9 @@ fn power_sentence(d: &Derivation) -> Option<String> {
             quantity(&d.quantity.kind)
         )),
         QuantityKind::InternalPower(_) => Some(format!(
-            "Puissance des inter-efforts : ${} = {sum}\\vec{{R}}(i\\rightarrow j)\\cdot\\overrightarrow{{V(A\\in j/i)}} + \
-             \\vec{{M}}(A, i\\rightarrow j)\\cdot\\overrightarrow{{\\Omega(j/i)}}$ pour chaque liaison entre deux solides $i$, $j$ de l'ensemble (nulle pour une liaison parfaite) :",
+            "Puissance des inter-efforts : ${} = {sum}\\left\\{{\\mathcal{{T}}(i\\rightarrow j)\\right\\}}\\otimes\\left\\{{\\mathcal{{V}}(j/i)\\right\\}}$ \
+             pour chaque liaison entre deux solides $i$, $j$ de l'ensemble (nulle pour une liaison \
+             parfaite) :",
             quantity(&d.quantity.kind)
         )),
         _ => None,

@@ -385,6 +385,37 @@ fn product_of_parameters(node: &Node) -> bool {
     }
 }
 
+/// The degree of `node` in the first derivatives q̇ⱼ of the coordinates `free(j)` allows, or
+/// why it is not a polynomial in them alone: a coordinate's value, a q̈, a rate inside sin, cos,
+/// or below a division line, the time, a basis vector or an unknown (what a rate driven by
+/// other coordinates may hold: a gear ratio −r1/r2 θ̇1).
+pub(crate) fn rate_degree(node: &Node, free: &dyn Fn(usize) -> bool) -> Result<u32, String> {
+    let no = |what: &str| Err(format!("a driven rate holds {what}"));
+    match node {
+        Node::Num(_) | Node::Param(_) => Ok(0),
+        Node::Rate(j, 1) if free(*j) => Ok(1),
+        Node::Rate(..) => no("a rate that is not free, or an acceleration"),
+        Node::Coord(_) => no("a coordinate's value"),
+        Node::Unknown(_) | Node::Time | Node::Basis(..) => no("an unknown, the time or a vector"),
+        Node::Neg(a) => rate_degree(a, free),
+        Node::Add(a, b) | Node::Sub(a, b) => Ok(rate_degree(a, free)?.max(rate_degree(b, free)?)),
+        Node::Mul(a, b) => Ok(rate_degree(a, free)? + rate_degree(b, free)?),
+        Node::Div(a, b) => match rate_degree(b, free)? {
+            0 => rate_degree(a, free),
+            _ => no("a rate below a division line"),
+        },
+        Node::Pow(a, n) => match (rate_degree(a, free)?, *n) {
+            (0, _) => Ok(0),
+            (d, n) if n > 0 => Ok(d * n as u32),
+            _ => no("a rate to a negative power"),
+        },
+        Node::Sin(a) | Node::Cos(a) => match rate_degree(a, free)? {
+            0 => Ok(0),
+            _ => no("a rate inside sin or cos"),
+        },
+    }
+}
+
 /// Static type of `node`, or why a scalar and a vector are mixed wrongly.
 pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
     use Kind::*;

@@ -82,7 +82,24 @@ pub(super) fn values(m: &NumericModel, s: &Sample) -> Result<Values, NumericErro
         if v.iter().any(|x| !x.is_finite()) {
             return Err(bad(format!("coordinate `{}` is not finite", c.name)));
         }
-        if let Some(rate) = &c.rate {
+        if let (Some(rate), true) = (&c.rate, c.driven) {
+            let w =
+                driven(rate, &vals_with(&vals, s, m)?).map_err(|e| NumericError::Evaluation {
+                    what: format!("the rate of `{}`", c.name),
+                    message: e,
+                })?;
+            if (v[1] - w[0]).abs() > RATE_TOL * w[0].abs().max(1.0)
+                || (v[2] - w[1]).abs() > RATE_TOL * w[1].abs().max(1.0)
+            {
+                return Err(bad(format!(
+                    "coordinate `{}` is driven by `{}` = [{}, {}] here, not {v:?}",
+                    c.name,
+                    c.rate_text.as_deref().unwrap_or(""),
+                    w[0],
+                    w[1]
+                )));
+            }
+        } else if let Some(rate) = &c.rate {
             let w = expr::eval_scalar(rate, &vals.constants()).map_err(|e| {
                 NumericError::Evaluation {
                     what: format!("imposed rate of `{}`", c.name),
@@ -101,6 +118,48 @@ pub(super) fn values(m: &NumericModel, s: &Sample) -> Result<Values, NumericErro
         vals.coords.push(v);
     }
     Ok(vals)
+}
+
+/// The sample's coordinates as given, for a driven rate that reads them (before they are
+/// checked).
+fn vals_with(vals: &Values, s: &Sample, m: &NumericModel) -> Result<Values, NumericError> {
+    let mut coords = Vec::with_capacity(m.coords.len());
+    for c in &m.coords {
+        coords.push(s.coordinates.get(&c.name).copied().unwrap_or([f64::NAN; 3]));
+    }
+    Ok(Values {
+        params: vals.params.clone(),
+        coords,
+        time: vals.time,
+    })
+}
+
+/// [q̇, q̈] of a coordinate whose rate is driven by the others' (affine in their rates, see
+/// `expr::rate_degree`): its value at their rates, and its value at their accelerations less
+/// its value at rest.
+pub(super) fn driven(rate: &expr::Node, vals: &Values) -> Result<[f64; 2], String> {
+    let qs: Vec<f64> = vals.coords.iter().map(|c| c[0]).collect();
+    let at = |k: usize| -> Result<f64, String> {
+        let rates: Vec<[f64; 2]> = vals
+            .coords
+            .iter()
+            .map(|c| match k {
+                1 => [c[1], 0.0],
+                2 => [c[2], 0.0],
+                _ => [0.0, 0.0],
+            })
+            .collect();
+        let env = Env {
+            params: &vals.params,
+            coords: &qs,
+            rates: &rates,
+            frames: &[],
+            time: vals.time,
+        };
+        expr::eval_scalar(rate, &env)
+    };
+    let rest = at(0)?;
+    Ok([at(1)?, at(2)? - rest])
 }
 
 /// Every frame's orientation and every point's position at t → 0, as dual numbers in t.

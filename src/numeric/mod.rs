@@ -187,9 +187,12 @@ struct ParamInfo {
 struct CoordInfo {
     name: String,
     kind: CoordinateKind,
-    /// Imposed rate (parameters only): q̇ is its value and q̈ = 0.
+    /// Imposed rate: q̇ is its value and q̈ = 0 for parameters only; driven by the rates of
+    /// other coordinates (`driven`), q̇ is its value at their rates and q̈ its value at their
+    /// accelerations less its value at rest (it is affine in them).
     rate: Option<expr::Node>,
     rate_text: Option<String>,
+    driven: bool,
 }
 
 /// A frame: orientation from its parent, and origin point.

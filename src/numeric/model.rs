@@ -324,20 +324,30 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         .iter()
         .enumerate()
         .map(|(i, c)| {
-            let rate = c
-                .rate
-                .as_ref()
-                .map(|r| {
-                    names
-                        .parse(r, Context::Constant)
-                        .map_err(|m| spec_err(format!("coordinates[{i}].rate"), m))
-                })
-                .transpose()?;
+            let path = format!("coordinates[{i}].rate");
+            let (rate, driven) = match c.rate.as_ref() {
+                None => (None, false),
+                Some(r) => match names.parse(r, Context::Constant) {
+                    Ok(node) => (Some(node), false),
+                    // A relation between coordinates: affine in the rates of the others.
+                    Err(constant) => {
+                        let node = names
+                            .parse(r, Context::Instant)
+                            .map_err(|_| spec_err(&path, constant.clone()))?;
+                        let free = |j: usize| j != i && spec.coordinates[j].rate.is_none();
+                        match expr::rate_degree(&node, &free) {
+                            Ok(1) => (Some(node), true),
+                            _ => return Err(spec_err(&path, constant)),
+                        }
+                    }
+                },
+            };
             Ok(CoordInfo {
                 name: c.name.clone(),
                 kind: c.kind,
                 rate,
                 rate_text: c.rate.clone(),
+                driven,
             })
         })
         .collect::<Result<Vec<_>, NumericError>>()?;

@@ -131,6 +131,18 @@ pub(super) fn evaluate(
                 m, &st, &vals, &a.from, &solids, &a.on, j, unknowns,
             )?)
         }
+        K::EquivalentInertia(c) => {
+            // 2 Ec(all/0)/q̇², from the clouds: the rate q̇ is the sample's.
+            let all: Vec<usize> = (0..m.solids.len()).collect();
+            let i = m.coords.iter().position(|x| &x.name == c).ok_or_else(|| {
+                NumericError::Quantity {
+                    quantity: q.to_string(),
+                    message: format!("unknown coordinate `{c}`"),
+                }
+            })?;
+            let qd = vals.coords[i][1];
+            Raw::Scalar(2.0 * kinetic_energy(m, &st, &vals, &all, 0)? / (qd * qd))
+        }
         K::InternalPower(set) => {
             let solids = m.solids_of(set)?;
             Raw::Scalar(dynamics::internal_power(m, &st, &vals, &solids, unknowns)?)

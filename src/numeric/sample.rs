@@ -363,7 +363,9 @@ pub(super) fn draw(
         };
         let mut qd = rng.random_range(-2.0..=2.0);
         let mut qdd = rng.random_range(-2.0..=2.0);
-        if let Some(rate) = &c.rate {
+        if let Some(rate) = &c.rate
+            && !c.driven
+        {
             qd = expr::eval_scalar(rate, &vals.constants())
                 .map_err(|e| fail(format!("imposed rate of `{}`: {e}", c.name)))?;
             qdd = 0.0;
@@ -387,6 +389,15 @@ pub(super) fn draw(
             qdd = 0.0;
         }
         vals.coords.push([q, qd, qdd]);
+    }
+    // Rates driven by the others' (a gear ratio), once those are drawn.
+    for (i, c) in m.coords.iter().enumerate() {
+        if let (Some(rate), true) = (&c.rate, c.driven) {
+            let [qd, qdd] = super::kin::driven(rate, &vals)
+                .map_err(|e| fail(format!("the rate of `{}`: {e}", c.name)))?;
+            vals.coords[i][1] = qd;
+            vals.coords[i][2] = qdd;
+        }
     }
     if m.uses_time {
         vals.time = rng.random_range(0.0..=10.0);

@@ -130,6 +130,13 @@ impl Plan {
             if imposed.iter().any(|x| x.coord == q) {
                 continue;
             }
+            if c.is_driven() {
+                return Err(err(format!(
+                    "`{}` is driven by other coordinates' rates: simulate does not integrate \
+                     such a mechanism yet",
+                    c.name
+                )));
+            }
             if c.has_imposed_rate() {
                 let w = reg.rate(q, 1).eval(&base);
                 imposed.push(Imposed {

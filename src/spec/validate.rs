@@ -171,9 +171,20 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                     .map(|e| (k, e))
             })
         });
-        match alias_at_fault {
-            Some((k, e)) => at(format!("aliases[{k}].value"), e.to_string()),
-            None => at("coordinates", e.to_string()),
+        // The coordinate whose rate the registry could not read, if one is at fault.
+        let rate_at_fault = match &e {
+            crate::expr::ExprError::Unsupported { input, .. }
+            | crate::expr::ExprError::Parse { input, .. }
+            | crate::expr::ExprError::UnknownName { input, .. } => spec
+                .coordinates
+                .iter()
+                .position(|c| c.rate.as_deref() == Some(input.as_str())),
+            _ => None,
+        };
+        match (alias_at_fault, rate_at_fault) {
+            (Some((k, e)), _) => at(format!("aliases[{k}].value"), e.to_string()),
+            (None, Some(i)) => at(format!("coordinates[{i}].rate"), e.to_string()),
+            (None, None) => at("coordinates", e.to_string()),
         }
     })?;
 

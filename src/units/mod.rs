@@ -380,6 +380,10 @@ pub fn expected_dimension(m: &Mechanism, dims: &Dimensions, q: &Quantity) -> Exp
         ActionResultant(_) => one(Dimension::FORCE),
         KineticEnergy(_) => one(Dimension::ENERGY),
         Power { .. } | InternalPower(_) => one(Dimension::POWER),
+        EquivalentInertia(c) => one(match m.reg.coord(c).map(|q| m.reg.coord_info(q).kind) {
+            Some(CoordinateKind::Length) => Dimension::MASS,
+            _ => Dimension::INERTIA,
+        }),
         KinematicTorsor { .. } => Torsor {
             resultant: Dimension::ANGULAR_VELOCITY,
             moment: Dimension::VELOCITY,

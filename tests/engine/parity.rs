@@ -394,3 +394,41 @@ fn both_sides_divide_by_the_same_things() {
         }
     }
 }
+
+#[test]
+fn both_sides_read_a_driven_rate_alike() {
+    // Issue 16: a coordinate whose rate is driven by the others' (a gear ratio): affine in the
+    // first derivatives of coordinates with free rates, coefficients of parameters.
+    let text = std::fs::read_to_string("derivations/train_engrenages.json").unwrap();
+    let base: Value = serde_json::from_str(&text).unwrap();
+    let rate = |r: &str| {
+        let mut s = base.clone();
+        s["coordinates"][1]["rate"] = r.into();
+        s
+    };
+    let accepted = [
+        rate("-r1/r2*dot(theta1)"),
+        rate("-r1*dot(theta1)/r2"),
+        rate("2*dot(theta1) + r1/r2"),
+        rate("(r1 + r2)/r2*dot(theta1)"),
+        rate("r1/r2"),
+    ];
+    let refused = [
+        rate("dot(theta1)^2"),
+        rate("theta1*dot(theta1)"),
+        rate("cos(theta1)*dot(theta1)"),
+        rate("ddot(theta1)"),
+        rate("dot(theta2)"),
+        rate("sin(dot(theta1))"),
+        rate("r1/dot(theta1)"),
+        rate("dot(theta1)/(r1 + r2)"),
+    ];
+    for (specs, ok) in [(&accepted[..], true), (&refused[..], false)] {
+        for s in specs {
+            let (exact, float) = verdicts(s).expect("a spec's shape");
+            let what = &s["coordinates"][1]["rate"];
+            assert_eq!(exact.is_ok(), ok, "exact, {what:?}: {exact:?}");
+            assert_eq!(float.is_ok(), ok, "float, {what:?}: {float:?}");
+        }
+    }
+}

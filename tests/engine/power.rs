@@ -56,7 +56,14 @@ fn the_kinetic_energy_theorem_is_lagrange_summed_over_the_rates() {
     for path in specs_in(&["derivations", "tests/specs"]) {
         let m = torseur::spec::load(&path).unwrap();
         let reg = &m.reg;
-        if reg.coordinates().iter().any(|c| c.has_imposed_rate()) || m.bodies.is_empty() {
+        // A constant imposed rate needs the torque that keeps it; a driven one (a gear
+        // ratio) is a relation between the coordinates, which Lagrange's side follows.
+        if reg
+            .coordinates()
+            .iter()
+            .any(|c| c.has_imposed_rate() && !c.is_driven())
+            || m.bodies.is_empty()
+        {
             continue;
         }
         let all: Vec<BodyId> = m
@@ -70,7 +77,7 @@ fn the_kinetic_energy_theorem_is_lagrange_summed_over_the_rates() {
         let p_int = torseur::pfd::internal_power(&m, &all);
         let theorem = &(&ec.dt() - &p_ext) - &p_int;
         let mut lagrange = reg.zero();
-        for c in reg.coordinates() {
+        for c in reg.coordinates().iter().filter(|c| !c.has_imposed_rate()) {
             let q = reg.coord(&c.name).unwrap();
             lagrange = &lagrange + &(&reg.dot(q) * &torseur::pfd::lagrange(&m, q));
         }
@@ -125,4 +132,50 @@ fn powers_agree_with_the_float_backend() {
             );
         }
     }
+}
+
+#[test]
+fn a_gear_train_and_its_equivalent_inertia_by_hand() {
+    // Pinion 1 (J1, r1) on (O, z0), wheel 2 (J2, r2) on (O2, z0), OO2 = (r1 + r2) x0, meshing
+    // at I, OI = r1 x0; the pitch circles roll without slipping: θ̇2 = −(r1/r2) θ̇1.
+    // V(I,1/0) = θ̇1 z0 ∧ r1 x0 = r1 θ̇1 y0; V(I,2/0) = θ̇2 z0 ∧ (−r2 x0) = −r2 θ̇2 y0 = r1 θ̇1 y0:
+    // the same, so the tooth force T y0 (1 on 2 at I) has no power inside E.
+    // Ec = ½ J1 θ̇1² + ½ J2 θ̇2² = ½ (J1 + J2 r1²/r2²) θ̇1²: J_eq = J1 + J2 r1²/r2².
+    // Isolate 2, moment at O2 on z0: J2 θ̈2 = (O2I ∧ T y0)·z0 + C_r = −r2 T + C_r, so
+    // T = (C_r + J2 (r1/r2) θ̈1)/r2. Isolate 1, moment at O on z0: J1 θ̈1 = C_m − r1 T, so
+    // (J1 + J2 r1²/r2²) θ̈1 = C_m − (r1/r2) C_r; the power of the exterior actions is
+    // C_m θ̇1 + C_r θ̇2 = (C_m − (r1/r2) C_r) θ̇1.
+    let m = torseur::spec::load("derivations/train_engrenages.json").unwrap();
+    torseur::assert_equivalent!(m, "V(I,1/0) in B0", "r1*dot(theta1)*y0");
+    torseur::assert_equivalent!(m, "V(I,2/0) in B0", "r1*dot(theta1)*y0");
+    torseur::assert_equivalent!(m, "J_eq(theta1)", "J1 + J2*r1^2/r2^2");
+    torseur::assert_equivalent!(m, "Ec(E/0)", "1/2*(J1 + J2*(r1/r2)^2)*dot(theta1)^2");
+    torseur::assert_equivalent!(m, "T", "(C_r + J2*r1/r2*ddot(theta1))/r2");
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta1)",
+        "(J1 + J2*r1^2/r2^2)*ddot(theta1) = C_m - r1/r2*C_r"
+    );
+    torseur::assert_equivalent!(m, "P(ext->E/0)", "(C_m - r1/r2*C_r)*dot(theta1)");
+    torseur::assert_equivalent!(m, "Pint(E)", "0");
+    // The ratio squared is what a wrong reduction forgets.
+    let v = torseur::verify::verify(&m, "J_eq(theta1)", "J1 + J2*r1/r2", None).unwrap();
+    assert!(!v.is_equivalent());
+    // The float backend reads the driven rate `-r1/r2*dot(theta1)` with its own parser.
+    let report = torseur::check::check(&m, 10, 1).unwrap();
+    assert!(report.passed(), "{report}");
+    // Two free rates: Ec is not ½ J θ̇1² alone.
+    let free = torseur::spec::from_str(
+        &std::fs::read_to_string("derivations/train_engrenages.json")
+            .unwrap()
+            .replace(", \"rate\": \"-r1/r2*dot(theta1)\"", ""),
+    )
+    .unwrap();
+    let e = torseur::derivation::derive(
+        &free,
+        &torseur::quantity::Quantity::parse("J_eq(theta1)").unwrap(),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("another rate is free"), "{e}");
 }

@@ -353,6 +353,8 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         "Ec" => one(d(1, 2, -2)),
         // A power: an energy per second, W.
         "P" | "Pint" => one(d(1, 2, -3)),
+        // An inertia brought back to an angle.
+        "J_eq" => one(d(1, 2, 0)),
         "{V" => (d(0, 0, -1), Some(d(0, 1, -1))),
         "{C" => (d(1, 1, -1), Some(d(1, 2, -1))),
         "{D" | "{T" => (d(1, 1, -2), Some(d(1, 2, -2))),
@@ -368,6 +370,8 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
                 .any(|x| x.name == c && x.kind == torseur::spec::wire::CoordinateKind::Length);
             one(if length { d(1, 1, -2) } else { d(1, 2, -2) })
         }
+        // The gear train's tooth force.
+        "T" => one(d(1, 1, -2)),
         u if u.starts_with('X') || u.starts_with('Y') || u.starts_with('Z') => one(d(1, 1, -2)),
         u if u.starts_with('L') || u.starts_with('M') || u.starts_with('N') => one(d(1, 2, -2)),
         u if u.starts_with("C_m") => one(d(1, 2, -2)),
@@ -375,7 +379,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 15] = [
+const LIBRARY: [&str; 16] = [
     "bille_tube_tournant",
     "bras_robot_deux_axes",
     "double_pendule",
@@ -390,6 +394,7 @@ const LIBRARY: [&str; 15] = [
     "rotor_vitesse_imposee",
     "systeme_masse_ressort",
     "toupie",
+    "train_engrenages",
     "treuil",
 ];
 

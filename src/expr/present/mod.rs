@@ -314,7 +314,9 @@ fn grouped(e: &Expr, cheap: bool) -> Form {
     }
     // The content of every group out: m L (L θ̈ + g sin θ).
     let all = e.monos();
-    let (g, common) = search::content(&all);
+    let (g, mut common) = search::content(&all);
+    // A 1/p out in front only when no term keeps one: never a fraction inside a fraction.
+    common.retain(|(a, k)| !matches!(a, Leaf::Inverse(_)) || all.iter().all(|m| m.power(a) == *k));
     if common.is_empty() && g.abs().is_one() {
         return whole;
     }
@@ -412,6 +414,16 @@ fn clustered(reg: &Rc<Registry>, units: &[Unit], search: &mut search::Search) ->
                     .iter()
                     .map(|u| (u.0.clone(), u.1.exact_div(&d).expect("d divides it")))
                     .collect();
+                // A 1/p out in front only when no term keeps one: never a fraction inside a
+                // fraction.
+                let nested = reg.var_ids().any(|w| {
+                    matches!(reg.role(w), VarRole::Inverse(_))
+                        && d.contains_var(w)
+                        && inner_units.iter().any(|u| u.1.contains_var(w))
+                });
+                if nested {
+                    continue;
+                }
                 let inner_refs: Vec<&Unit> = inner_units.iter().collect();
                 let mut inner = unit_products(reg, &inner_refs, search);
                 inner.sort_by(|a, b| a.0.cmp(&b.0));

@@ -76,11 +76,19 @@ impl Mono {
         }
     }
 
-    /// The monomial divided by a common factor `g · leaves` (which must divide it).
+    /// The monomial divided by a common factor `g · leaves` (which must divide it; a
+    /// common denominator 1/p^k divides every term, a term with fewer 1/p getting p's).
     pub fn divided(&self, g: &Rational, leaves: &[(Leaf, u8)]) -> Mono {
         let mut r = self.clone();
         for (a, k) in leaves {
-            r = r.div(a, *k).expect("a common factor divides every term");
+            let have = r.power(a);
+            r = match a {
+                Leaf::Inverse(p) if have < *k => {
+                    let without = r.div(a, have).expect("its own power divides a term");
+                    without.mul(Leaf::Param(*p), *k - have)
+                }
+                _ => r.div(a, *k).expect("a common factor divides every term"),
+            };
         }
         r.coef = &r.coef / g;
         r

@@ -83,6 +83,11 @@ impl<'a> Search<'a> {
                 *best = f;
             }
         };
+        if let Some((g, common)) = common_denominator(&ms) {
+            let inner: Vec<Mono> = normalize(ms.iter().map(|m| m.divided(&g, &common)).collect());
+            let f = self.best(inner);
+            consider(wrap(g, common, f), &mut best);
+        }
         let (g, common) = content(&ms);
         if !common.is_empty() || !g.abs().is_one() {
             let inner: Vec<Mono> = ms.iter().map(|m| m.divided(&g, &common)).collect();
@@ -323,6 +328,34 @@ pub(crate) fn content(ms: &[Mono]) -> (Rational, Vec<(Leaf, u8)>) {
         common
     };
     (g, common)
+}
+
+/// The content with the common denominator below the line: the highest power of each 1/p
+/// any term holds ((r1 J2 θ̈1 + r2 C_r)/r2², never a fraction inside a fraction); none when
+/// it is the content itself.
+fn common_denominator(ms: &[Mono]) -> Option<(Rational, Vec<(Leaf, u8)>)> {
+    let (g, mut common) = content(ms);
+    let mut changed = false;
+    for m in ms {
+        for (a, k) in &m.atoms {
+            if !matches!(a, Leaf::Inverse(_)) {
+                continue;
+            }
+            match common.iter_mut().find(|x| &x.0 == a) {
+                Some(x) if x.1 >= *k => {}
+                Some(x) => {
+                    x.1 = *k;
+                    changed = true;
+                }
+                None => {
+                    common.push((a.clone(), *k));
+                    changed = true;
+                }
+            }
+        }
+    }
+    common.sort();
+    changed.then_some((g, common))
 }
 
 fn raw_content(ms: &[Mono]) -> (Rational, Vec<(Leaf, u8)>) {
