@@ -655,7 +655,7 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
     {
         let _ = writeln!(doc.o, "{}", omega_sentence(m, mo));
     }
-    if let Some(s) = super::theorems::action_sentence(d)
+    if let Some(s) = super::theorems::action_sentence(m, d)
         .or_else(|| super::theorems::kinetic_energy_sentence(m, d))
     {
         let _ = writeln!(doc.o, "{s}");

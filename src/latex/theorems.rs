@@ -371,8 +371,8 @@ fn split_equation(e: &crate::expr::Expr) -> (crate::expr::Expr, crate::expr::Exp
 /// The method of an action asked as a quantity (R(0→1), M(A, ext→E)·z0): the sum of the
 /// actions of the bilan cited above, each reduced at the point asked. None when there is
 /// nothing to say (one action, asked where it is given).
-pub(super) fn action_sentence(d: &Derivation) -> Option<String> {
-    if let Some(s) = power_sentence(d) {
+pub(super) fn action_sentence(m: &crate::mechanism::Mechanism, d: &Derivation) -> Option<String> {
+    if let Some(s) = power_sentence(m, d) {
         return Some(s);
     }
     let at = match &d.quantity.kind {
@@ -435,7 +435,7 @@ pub(super) fn action_sentence(d: &Derivation) -> Option<String> {
 /// solid that receives it, at the action's point (« $\mathcal{P} = \vec{R}\cdot
 /// \overrightarrow{V(A\in S/R)} + \vec{M}(A)\cdot\overrightarrow{\Omega(S/R)}$ »); between the
 /// solids of a set, in their relative motion.
-fn power_sentence(d: &Derivation) -> Option<String> {
+fn power_sentence(m: &crate::mechanism::Mechanism, d: &Derivation) -> Option<String> {
     let many = d.steps.len() > 1;
     let sum = if many { "\\sum " } else { "" };
     match &d.quantity.kind {
@@ -452,12 +452,21 @@ fn power_sentence(d: &Derivation) -> Option<String> {
         }
         QuantityKind::EquivalentInertia(c) => {
             let q = super::name(c);
+            let length = m
+                .reg
+                .coord(c)
+                .is_some_and(|x| m.reg.coord_info(x).kind == crate::expr::CoordinateKind::Length);
             Some(format!(
                 "Les vitesses des autres coordonnées se déduisent de $\\dot{{{q}}}$ : l'énergie \
                  cinétique du mécanisme s'écrit $E_c = \\frac{{1}}{{2}}\\,{}\\,\\dot{{{q}}}^{{2}}$, \
-                 où ${}$ est l'inertie équivalente ramenée à ${q}$ :",
+                 où ${}$ est {} ramenée à ${q}$ :",
                 quantity(&d.quantity.kind),
-                quantity(&d.quantity.kind)
+                quantity(&d.quantity.kind),
+                if length {
+                    "la masse équivalente"
+                } else {
+                    "l'inertie équivalente"
+                }
             ))
         }
         QuantityKind::InternalPower(_) if d.steps.is_empty() => Some(format!(

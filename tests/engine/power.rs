@@ -179,3 +179,31 @@ fn a_gear_train_and_its_equivalent_inertia_by_hand() {
     .to_string();
     assert!(e.contains("another rate is free"), "{e}");
 }
+
+#[test]
+fn a_disc_rolling_down_an_incline_by_hand() {
+    // OC = x x1 + R y1, CI = −R y1, θ̇ = −ẋ/R (driven). V(I,2/0) = ẋ x1 + θ̇ z0 ∧ (−R y1)
+    // = (ẋ + R θ̇) x1 = 0. Ec = ½ m ẋ² + ½ J θ̇² = ½ (m + J/R²) ẋ²: the equivalent mass.
+    // Moment at I on z0 (the contact force passes through I; V(I/0) = ẋ x1 ∥ V(C), so
+    // δ(I) = dσ(I)/dt): σ(I)·z0 = J θ̇ + (IC ∧ m V(C))·z0 = −(J/R + m R) ẋ, and the weight
+    // gives (R y1 ∧ −m g y0)·z0 = m g R sin α: −(J/R + m R) ẍ = m g R sin α. On x1 and y1:
+    // m ẍ = T − m g sin α, 0 = N − m g cos α. The contact does not work: P = −m g ẋ sin α.
+    let m = torseur::spec::load("derivations/disque_plan_incline.json").unwrap();
+    torseur::assert_equivalent!(m, "V(I,2/0) in B1", "[0, 0, 0]");
+    torseur::assert_equivalent!(m, "J_eq(x)", "m + J/R^2");
+    torseur::assert_equivalent!(m, "eom(x)", "(m + J/R^2)*ddot(x) + m*g*sin(alpha) = 0");
+    torseur::assert_equivalent!(m, "T", "m*(ddot(x) + g*sin(alpha))");
+    torseur::assert_equivalent!(m, "N", "m*g*cos(alpha)");
+    torseur::assert_equivalent!(m, "P(ext->2/0)", "-m*g*sin(alpha)*dot(x)");
+    torseur::assert_equivalent!(m, "P(contact->2/0)", "0");
+    // Rolling the wrong way (θ̇ = +ẋ/R) slips: V(I,2/0) = 2 ẋ x1.
+    let slipping = torseur::spec::from_str(
+        &std::fs::read_to_string("derivations/disque_plan_incline.json")
+            .unwrap()
+            .replace("\"-dot(x)/R\"", "\"dot(x)/R\""),
+    )
+    .unwrap();
+    torseur::assert_equivalent!(slipping, "V(I,2/0) in B1", "2*dot(x)*x1");
+    let report = torseur::check::check(&m, 10, 1).unwrap();
+    assert!(report.passed(), "{report}");
+}

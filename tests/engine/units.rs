@@ -354,6 +354,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         // A power: an energy per second, W.
         "P" | "Pint" => one(d(1, 2, -3)),
         // An inertia brought back to an angle.
+        "J_eq" if q.contains("(x)") => one(d(1, 0, 0)),
         "J_eq" => one(d(1, 2, 0)),
         "{V" => (d(0, 0, -1), Some(d(0, 1, -1))),
         "{C" => (d(1, 1, -1), Some(d(1, 2, -1))),
@@ -362,16 +363,16 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         "R" => one(d(1, 1, -2)),
         "M" => one(d(1, 2, -2)),
         "eom" => {
+            // A force for the resultant theorem that gives it, a moment for the moment
+            // theorem (the disc on the incline takes x's equation from the moment at I).
             let c = &q[4..q.find(')').unwrap()];
-            let length = m
-                .spec
-                .coordinates
-                .iter()
-                .any(|x| x.name == c && x.kind == torseur::spec::wire::CoordinateKind::Length);
-            one(if length { d(1, 1, -2) } else { d(1, 2, -2) })
+            let moment = m.spec.pfd.iter().any(|t| {
+                t.eom.as_deref() == Some(c) && t.theorem == torseur::spec::wire::TheoremKind::Moment
+            });
+            one(if moment { d(1, 2, -2) } else { d(1, 1, -2) })
         }
         // The gear train's tooth force.
-        "T" => one(d(1, 1, -2)),
+        "T" | "N" => one(d(1, 1, -2)),
         u if u.starts_with('X') || u.starts_with('Y') || u.starts_with('Z') => one(d(1, 1, -2)),
         u if u.starts_with('L') || u.starts_with('M') || u.starts_with('N') => one(d(1, 2, -2)),
         u if u.starts_with("C_m") => one(d(1, 2, -2)),
@@ -379,9 +380,10 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 16] = [
+const LIBRARY: [&str; 17] = [
     "bille_tube_tournant",
     "bras_robot_deux_axes",
+    "disque_plan_incline",
     "double_pendule",
     "masse_ressort_forcee",
     "pendule_arbre_tournant",
