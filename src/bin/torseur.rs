@@ -687,8 +687,8 @@ fn run_verify(a: VerifyArgs, emit: &mut Emit) -> Result<(), Failure> {
         .filter(|(_, d)| !d.is_zero())
     {
         emit(&format!(
-            "  component {} (LaTeX): {}\n",
-            k + 1,
+            "  {} (LaTeX): {}\n",
+            v.difference_label(k),
             torseur::latex::expr(d)
         ))?;
     }

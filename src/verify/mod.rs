@@ -22,7 +22,7 @@
 mod reader;
 
 use crate::derivation::{Value, derive_values};
-use crate::expr::{Expr, ExprError, VarRole};
+use crate::expr::{Expr, ExprError, Fraction, VarRole};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::pfd::{PfdError, Solution};
 use crate::quantity::{NotationError, Quantity, QuantityKind};
@@ -166,6 +166,16 @@ pub struct Verdict {
 }
 
 impl Verdict {
+    /// How the k-th difference is named: « difference » for a scalar, « component k + 1 »
+    /// for a vector, a torsor or a matrix.
+    pub fn difference_label(&self, k: usize) -> String {
+        if self.difference.len() == 1 {
+            "difference".to_string()
+        } else {
+            format!("component {}", k + 1)
+        }
+    }
+
     /// Whether the hand-written value equals the derived one exactly (for an equation: is
     /// equivalent to the engine's relation, see [`Check`]).
     pub fn is_equivalent(&self) -> bool {
@@ -256,10 +266,19 @@ impl fmt::Display for Verdict {
                                     conditions.join(" and ")
                                 )?;
                             }
-                            Ok(())
                         }
-                        _ => write!(f, "{subject}: equivalent{is}"),
+                        _ => write!(f, "{subject}: equivalent{is}")?,
                     }
+                    // Identically 0: the hypothesis' motion satisfies it, and so does every
+                    // equation that holds under the hypothesis; say so.
+                    if self.derived.exprs().iter().all(|e| e.is_zero()) {
+                        write!(
+                            f,
+                            "\n  note: {eom} is identically 0{under}: any equation true{under} \
+                             is equivalent to it"
+                        )?;
+                    }
+                    Ok(())
                 }
             };
         }
@@ -298,7 +317,7 @@ impl fmt::Display for Verdict {
         }
         for (k, d) in self.difference.iter().enumerate() {
             if !d.is_zero() {
-                writeln!(f, "  component {}: {}", k + 1, d.presentation())?;
+                writeln!(f, "  {}: {}", self.difference_label(k), d.presentation())?;
                 if let Some(den) = self.denominators.get(k).filter(|x| !x.is_one()) {
                     writeln!(f, "    (multiplied by the denominator typed, {den})")?;
                 }
@@ -523,9 +542,19 @@ fn equation_of_motion(
         None => &given - &d,
     };
     // Against lhs − rhs itself the factor holds the denominator: eom = (n · den / d)(lhs − rhs).
-    let factor = factor.map(|k| Factor {
-        numerator: &k.numerator * &den,
-        denominator: k.denominator,
+    // In lowest terms: l/l, when the typed denominator is the factor's, is 1.
+    let factor = factor.map(|k| {
+        let numerator = &k.numerator * &den;
+        match Fraction::new(numerator.clone(), k.denominator.clone()) {
+            Some(q) => Factor {
+                numerator: q.num,
+                denominator: q.den,
+            },
+            None => Factor {
+                numerator,
+                denominator: k.denominator,
+            },
+        }
     });
     Ok(Verdict {
         quantity: q.to_string(),

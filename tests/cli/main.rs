@@ -773,7 +773,7 @@ fn verify_accepts_an_equation_up_to_a_factor_of_parameters_and_reports_it() {
     ]);
     assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
     assert!(
-        stdout(&o).contains("component 1: -2*m*g*l*sin(theta)\n"),
+        stdout(&o).contains("difference: -2*m*g*l*sin(theta)\n"),
         "{}",
         stdout(&o)
     );
