@@ -600,8 +600,10 @@ pub fn potential_energy(m: &Mechanism) -> Expr {
 }
 
 /// ∂e/∂q through q and through the coordinates its rate drives: a driven coordinate d with
-/// ḋ = Σ kⱼ q̇ⱼ + c moves by k_q when q does (a gear ratio, rolling without slipping), so
-/// ∂e/∂q = ∂e/∂q|_d + k_q ∂e/∂d.
+/// ḋ = Σ kⱼ q̇ⱼ + c, kⱼ constant, moves by k_q when q does (a gear ratio, rolling without
+/// slipping on a line), so ∂e/∂q = ∂e/∂q|_d + k_q ∂e/∂d. (A nonholonomic relation, ẋ = R θ̇
+/// cos ψ, has no such position-level meaning: Lagrange's equations without multipliers do not
+/// hold for it, see [`lagrange`].)
 fn total_partial(m: &Mechanism, e: &Expr, q: CoordId) -> Expr {
     let reg = &m.reg;
     let mut acc = e.partial_coordinate(q);
@@ -620,7 +622,8 @@ fn total_partial(m: &Mechanism, e: &Expr, q: CoordId) -> Expr {
     acc
 }
 
-/// Lagrange's equation of coordinate q as a residual:
+/// Lagrange's equation of coordinate q as a residual (for holonomic mechanisms: a driven
+/// rate with constant coefficients is followed, a nonholonomic one is not):
 /// d/dt ∂Ec/∂q̇ − ∂Ec/∂q + ∂Ep/∂q − Q_q = 0, with Ec the kinetic energy of all the solids,
 /// Ep the potential of gravity and springs, and Q_q the generalised force of every other
 /// action (links' unknowns, friction, given actions) by virtual power:

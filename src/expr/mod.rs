@@ -182,6 +182,8 @@ pub struct CoordInfo {
     /// The imposed rate is a linear form of other coordinates' rates (a gear ratio, rolling
     /// without slipping): q̈ is its time derivative, not 0.
     driven: bool,
+    /// A driven rate whose coefficients hold coordinates (ẋ = R θ̇ cos ψ).
+    nonholonomic: bool,
 }
 
 impl CoordInfo {
@@ -198,11 +200,20 @@ impl CoordInfo {
         self.imposed_rate.is_some()
     }
 
-    /// Whether the rate is driven by other coordinates' rates, a linear relation between
+    /// Whether the rate is driven by other coordinates' rates, a relation between
     /// coordinates that the spec declares as `"rate": "-r1/r2*dot(theta1)"` (a gear ratio,
-    /// rolling without slipping ẋ = −R θ̇): q̇ is that form, q̈ its time derivative.
+    /// rolling without slipping ẋ = −R θ̇, or on a plane ẋ = R θ̇ cos ψ): q̇ is that form,
+    /// linear in the free rates, q̈ its time derivative.
     pub fn is_driven(&self) -> bool {
         self.driven
+    }
+
+    /// Whether the driven rate's coefficients are constant (the relation integrates to one
+    /// between the coordinates, θ2 = −(r1/r2) θ1 + c): Lagrange's equations of the free
+    /// coordinates then follow it. A coefficient that holds a coordinate (ẋ = R θ̇ cos ψ, a
+    /// disc rolling on a plane) is a nonholonomic constraint.
+    pub fn is_holonomic(&self) -> bool {
+        !self.nonholonomic
     }
 
     /// The pulsation Ω when this is the phase Ω t of a forcing or an imposed law written

@@ -201,6 +201,7 @@ impl Registry {
                 constant: false,
                 phase,
                 driven: false,
+                nonholonomic: false,
             };
             match kind {
                 CoordinateKind::Angle => {
@@ -278,6 +279,7 @@ impl Registry {
                 constant: true,
                 phase: None,
                 driven: false,
+                nonholonomic: false,
             });
         }
         let mut param_var = HashMap::new();
@@ -400,7 +402,8 @@ impl Registry {
                         }
                     })?;
                     reg.coords[i].imposed_rate = Some(e.p);
-                    reg.coords[i].driven = driven;
+                    reg.coords[i].driven = driven.is_some();
+                    reg.coords[i].nonholonomic = driven == Some(false);
                 }
             }
         }
@@ -780,18 +783,21 @@ impl Registry {
 }
 
 /// Whether the rate `e` imposed on `q` is driven by other coordinates' rates (a gear ratio
-/// θ̇2 = −(r1/r2) θ̇1, rolling without slipping ẋ = −R θ̇): a linear form in the first
-/// derivatives of coordinates whose rates are free, with coefficients made of parameters,
-/// plus a constant. False for a constant (ψ̇ = ω); why not, for anything else.
-fn driven_by(reg: &Registry, q: CoordId, e: &Expr) -> Result<bool, String> {
+/// θ̇2 = −(r1/r2) θ̇1, rolling without slipping ẋ = −R θ̇ on a line, ẋ = R θ̇ cos ψ on a
+/// plane): a linear form in the first derivatives of coordinates whose rates are free, with
+/// coefficients made of parameters and of the coordinates' values (cos ψ), plus a constant.
+/// None for a constant (ψ̇ = ω), Some(holonomic) for a driven rate, holonomic when no
+/// coefficient holds a coordinate; why not, for anything else.
+fn driven_by(reg: &Registry, q: CoordId, e: &Expr) -> Result<Option<bool>, String> {
     if e.is_time_independent() {
-        return Ok(false);
+        return Ok(None);
     }
+    let mut holonomic = true;
     let name = &reg.coords[q.0].name;
     let why = format!(
         "the rate of `{name}` is a constant (parameters only), or a linear form of the rates \
-         of other coordinates whose rates are free, with coefficients of parameters \
-         (`-r1/r2*dot(theta1)`, `R*dot(theta)`)"
+         of other coordinates whose rates are free, with coefficients of parameters and \
+         coordinates (`-r1/r2*dot(theta1)`, `R*dot(theta)*cos(psi)`)"
     );
     let (with, without) = e.split_by_rates();
     if !without.is_time_independent() {
@@ -806,7 +812,9 @@ fn driven_by(reg: &Registry, q: CoordId, e: &Expr) -> Result<bool, String> {
             match reg.roles[i] {
                 VarRole::Parameter(p) if !reg.is_unknown(p) => {}
                 VarRole::Inverse(_) => {}
-                VarRole::Cos(c) | VarRole::Sin(c) if reg.coords[c.0].constant => {}
+                VarRole::Cos(c) | VarRole::Sin(c) | VarRole::Value(c) => {
+                    holonomic &= reg.coords[c.0].is_fixed();
+                }
                 VarRole::Rate(c, 1) if k == 1 && rate.is_none() && c != q => rate = Some(c),
                 _ => return Err(why),
             }
@@ -815,5 +823,5 @@ fn driven_by(reg: &Registry, q: CoordId, e: &Expr) -> Result<bool, String> {
             return Err(why);
         }
     }
-    Ok(true)
+    Ok(Some(holonomic))
 }

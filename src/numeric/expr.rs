@@ -386,16 +386,17 @@ fn product_of_parameters(node: &Node) -> bool {
 }
 
 /// The degree of `node` in the first derivatives q̇ⱼ of the coordinates `free(j)` allows, or
-/// why it is not a polynomial in them alone: a coordinate's value, a q̈, a rate inside sin, cos,
-/// or below a division line, the time, a basis vector or an unknown (what a rate driven by
-/// other coordinates may hold: a gear ratio −r1/r2 θ̇1).
+/// why it is not a polynomial in them: a q̈, a rate inside sin, cos, or below a division line,
+/// the time, a basis vector or an unknown (what a rate driven by other coordinates may hold:
+/// a gear ratio −r1/r2 θ̇1, R θ̇ cos ψ; coordinates' values are coefficients).
 pub(crate) fn rate_degree(node: &Node, free: &dyn Fn(usize) -> bool) -> Result<u32, String> {
     let no = |what: &str| Err(format!("a driven rate holds {what}"));
     match node {
         Node::Num(_) | Node::Param(_) => Ok(0),
         Node::Rate(j, 1) if free(*j) => Ok(1),
         Node::Rate(..) => no("a rate that is not free, or an acceleration"),
-        Node::Coord(_) => no("a coordinate's value"),
+        // A coefficient may hold the coordinates (ẋ = R θ̇ cos ψ, rolling on a plane).
+        Node::Coord(_) => Ok(0),
         Node::Unknown(_) | Node::Time | Node::Basis(..) => no("an unknown, the time or a vector"),
         Node::Neg(a) => rate_degree(a, free),
         Node::Add(a, b) | Node::Sub(a, b) => Ok(rate_degree(a, free)?.max(rate_degree(b, free)?)),

@@ -134,32 +134,31 @@ fn vals_with(vals: &Values, s: &Sample, m: &NumericModel) -> Result<Values, Nume
     })
 }
 
-/// [q̇, q̈] of a coordinate whose rate is driven by the others' (affine in their rates, see
-/// `expr::rate_degree`): its value at their rates, and its value at their accelerations less
-/// its value at rest.
+/// [q̇, q̈] of a coordinate whose rate is driven by the others' (linear in their rates,
+/// see `expr::rate_degree`, with coefficients that may hold the coordinates, ẋ = R θ̇ cos ψ):
+/// the form evaluated along the motion with dual numbers in t, each coordinate
+/// q + q̇ t + ½ q̈ t² and each rate q̇ + q̈ t; its value and its first derivative.
 pub(super) fn driven(rate: &expr::Node, vals: &Values) -> Result<[f64; 2], String> {
-    let qs: Vec<f64> = vals.coords.iter().map(|c| c[0]).collect();
-    let at = |k: usize| -> Result<f64, String> {
-        let rates: Vec<[f64; 2]> = vals
-            .coords
-            .iter()
-            .map(|c| match k {
-                1 => [c[1], 0.0],
-                2 => [c[2], 0.0],
-                _ => [0.0, 0.0],
-            })
-            .collect();
-        let env = Env {
-            params: &vals.params,
-            coords: &qs,
-            rates: &rates,
-            frames: &[],
-            time: vals.time,
-        };
-        expr::eval_scalar(rate, &env)
+    let qs: Vec<D2> = vals
+        .coords
+        .iter()
+        .map(|c| D2::new(c[0], c[1], c[2]))
+        .collect();
+    let rates: Vec<[D2; 2]> = vals
+        .coords
+        .iter()
+        .map(|c| [D2::new(c[1], c[2], 0.0), D2::new(c[2], 0.0, 0.0)])
+        .collect();
+    let params: Vec<f64> = vals.params.clone();
+    let env = Env {
+        params: &params,
+        coords: &qs,
+        rates: &rates,
+        frames: &[],
+        time: D2::new(vals.time, 1.0, 0.0),
     };
-    let rest = at(0)?;
-    Ok([at(1)?, at(2)? - rest])
+    let v = expr::eval_scalar(rate, &env)?;
+    Ok([v.re, v.v1])
 }
 
 /// Every frame's orientation and every point's position at t → 0, as dual numbers in t.

@@ -390,13 +390,16 @@ pub(super) fn draw(
         }
         vals.coords.push([q, qd, qdd]);
     }
-    // Rates driven by the others' (a gear ratio), once those are drawn.
-    for (i, c) in m.coords.iter().enumerate() {
-        if let (Some(rate), true) = (&c.rate, c.driven) {
-            let [qd, qdd] = super::kin::driven(rate, &vals)
-                .map_err(|e| fail(format!("the rate of `{}`: {e}", c.name)))?;
-            vals.coords[i][1] = qd;
-            vals.coords[i][2] = qdd;
+    // Rates driven by the others' (a gear ratio), once those are drawn; a coefficient may
+    // hold a driven coordinate's value, whose rates are then settled by the passes before.
+    for _ in 0..m.coords.len() {
+        for (i, c) in m.coords.iter().enumerate() {
+            if let (Some(rate), true) = (&c.rate, c.driven) {
+                let [qd, qdd] = super::kin::driven(rate, &vals)
+                    .map_err(|e| fail(format!("the rate of `{}`: {e}", c.name)))?;
+                vals.coords[i][1] = qd;
+                vals.coords[i][2] = qdd;
+            }
         }
     }
     if m.uses_time {

@@ -61,7 +61,9 @@ fn the_kinetic_energy_theorem_is_lagrange_summed_over_the_rates() {
         if reg
             .coordinates()
             .iter()
-            .any(|c| c.has_imposed_rate() && !c.is_driven())
+            // A nonholonomic relation (ẋ = R θ̇ cos ψ) needs multipliers, which Lagrange's
+            // side does not have.
+            .any(|c| (c.has_imposed_rate() && !c.is_driven()) || !c.is_holonomic())
             || m.bodies.is_empty()
         {
             continue;
@@ -204,6 +206,60 @@ fn a_disc_rolling_down_an_incline_by_hand() {
     )
     .unwrap();
     torseur::assert_equivalent!(slipping, "V(I,2/0) in B1", "2*dot(x)*x1");
+    let report = torseur::check::check(&m, 10, 1).unwrap();
+    assert!(report.passed(), "{report}");
+}
+
+#[test]
+fn a_wheel_rolling_on_a_plane_by_hand() {
+    // A vertical wheel, heading ψ about z0, spin θ about y1, OC = x x0 + y y0 + R z0, rolling
+    // at I (CI = −R z0): V(I,2/0) = V(C) + (ψ̇ z0 + θ̇ y1) ∧ (−R z0) = V(C) − R θ̇ x1 = 0, so
+    // ẋ = R θ̇ cos ψ, ẏ = R θ̇ sin ψ (nonholonomic: the coefficients hold ψ).
+    // Γ(C,2/0) = d/dt (R θ̇ x1) = R θ̈ x1 + R θ̇ ψ̇ y1.
+    // σ(C) = A ψ̇ z0 + C2 θ̇ y1 (axisymmetric), δ(C) = A ψ̈ z0 + C2 θ̈ y1 − C2 θ̇ ψ̇ x1;
+    // δ(I) = δ(C) + IC ∧ m Γ(C) = δ(C) + R z0 ∧ m (R θ̈ x1 + R θ̇ ψ̇ y1)
+    //      = −(C2 + m R²) θ̇ ψ̇ x1 + (C2 + m R²) θ̈ y1 + A ψ̈ z0.
+    // The plane's action passes through I and the weight through C on the vertical of I: no
+    // moment at I on y1 or z0, so (C2 + m R²) θ̈ = 0 and A ψ̈ = 0; the x1 component is the
+    // guide's couple. X x0 + Y y0 + (Z − m g) z0 = m Γ(C).
+    let m = torseur::spec::load("derivations/roue_sur_plan.json").unwrap();
+    let reg = &m.reg;
+    assert!(!reg.coord_info(reg.coord("x").unwrap()).is_holonomic());
+    torseur::assert_equivalent!(m, "V(I,2/0) in B1", "[0, 0, 0]");
+    torseur::assert_equivalent!(
+        m,
+        "Gamma(C,2/0) in B1",
+        "R*ddot(theta)*x1 + R*dot(theta)*dot(psi)*y1"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "delta(I,2/0) in B1",
+        "-(C2 + m*R^2)*dot(theta)*dot(psi)*x1 + (C2 + m*R^2)*ddot(theta)*y1 + A*ddot(psi)*z0"
+    );
+    torseur::assert_equivalent!(m, "eom(theta)", "(C2 + m*R^2)*ddot(theta) = 0");
+    torseur::assert_equivalent!(m, "eom(psi)", "A*ddot(psi) = 0");
+    torseur::assert_equivalent!(
+        m,
+        "X",
+        "m*R*(ddot(theta)*cos(psi) - dot(theta)*dot(psi)*sin(psi))"
+    );
+    torseur::assert_equivalent!(m, "Z", "m*g");
+    // The kinetic energy theorem along the constrained motion: neither the contact (V(I) = 0)
+    // nor the weight (V(C) horizontal) works, so dEc/dt = θ̇ eom(θ) + ψ̇ eom(ψ) exactly.
+    let scalar = |q: &str| match torseur::derivation::derive(
+        &m,
+        &torseur::quantity::Quantity::parse(q).unwrap(),
+    )
+    .unwrap()
+    .value
+    {
+        torseur::derivation::Value::Scalar(e) => e,
+        _ => panic!("{q}"),
+    };
+    let sum = &(&reg.parse("dot(theta)").unwrap() * &scalar("eom(theta)"))
+        + &(&reg.parse("dot(psi)").unwrap() * &scalar("eom(psi)"));
+    assert_eq!(scalar("Ec(2/0)").dt(), sum);
+    assert!(scalar("P(ext->2/0)").is_zero());
     let report = torseur::check::check(&m, 10, 1).unwrap();
     assert!(report.passed(), "{report}");
 }

@@ -380,7 +380,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 17] = [
+const LIBRARY: [&str; 18] = [
     "bille_tube_tournant",
     "bras_robot_deux_axes",
     "disque_plan_incline",
@@ -394,6 +394,7 @@ const LIBRARY: [&str; 17] = [
     "rotor_balourd",
     "rotor_deux_paliers",
     "rotor_vitesse_imposee",
+    "roue_sur_plan",
     "systeme_masse_ressort",
     "toupie",
     "train_engrenages",
