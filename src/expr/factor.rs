@@ -60,12 +60,7 @@ impl Expr {
             return None;
         }
         let (n, d) = lowest_terms(n, d.clone());
-        let kinematic = |e: &Expr| {
-            e.by_kinematic_monomial()
-                .iter()
-                .any(|(m, _)| m.iter().any(|&k| k > 0))
-        };
-        if !(kinematic(self) || kinematic(other)) && (n.nterms() > 1 || d.nterms() > 1) {
+        if !(self.is_kinematic() || other.is_kinematic()) && (n.nterms() > 1 || d.nterms() > 1) {
             return None;
         }
         Some((n, d))
@@ -105,7 +100,20 @@ impl Expr {
                 best = Some((k, n, d));
             }
         }
-        best.map(|(_, n, d)| lowest_terms(n.clone(), d.clone()))
+        let (n, d) = best.map(|(_, n, d)| lowest_terms(n.clone(), d.clone()))?;
+        // As in `parameter_ratio`: between relations of parameters only, a factor that is not
+        // a product of parameters would make any relation match.
+        if !(self.is_kinematic() || other.is_kinematic()) && (n.nterms() > 1 || d.nterms() > 1) {
+            return None;
+        }
+        Some((n, d))
+    }
+
+    /// Whether a term holds a coordinate, a rate or an unknown (a kinematic part).
+    fn is_kinematic(&self) -> bool {
+        self.by_kinematic_monomial()
+            .iter()
+            .any(|(m, _)| m.iter().any(|&k| k > 0))
     }
 
     /// The terms grouped by their kinematic part μ (coordinates, rates, unknowns: every
@@ -156,7 +164,10 @@ impl Expr {
 
     /// `self / d` when d divides it exactly as polynomials.
     pub fn exact_div(&self, d: &Expr) -> Option<Expr> {
-        self.p.try_div(&d.p).map(|q| self.with(q))
+        // Reduced: with 1/p variables a polynomial quotient may hold p·(1/p).
+        self.p
+            .try_div(&d.p)
+            .map(|q| self.with(Expr::reduce(q, &self.reg)))
     }
 
     /// Whether the expression is a nonzero polynomial in the parameters only (no coordinate,
@@ -252,6 +263,17 @@ impl Expr {
 /// n/d in lowest terms (divided by their polynomial gcd), the denominator's first coefficient
 /// made 1.
 pub(crate) fn lowest_terms(n: Expr, d: Expr) -> (Expr, Expr) {
+    // 1/p below or above the line is cleared first (both sides times p^k), so that the gcd
+    // sees polynomials: (x_e − l0 + m g s/k) / 1 and k x_e − k l0 + m g s share their factor.
+    let (mut n, mut d) = (n, d);
+    for &(_, v, w) in &n.reg.inverses.clone() {
+        let k = n.p.degree(w).max(d.p.degree(w));
+        if k > 0 {
+            let pk = n.reg.var(v).pow(k as u32);
+            n = &n * &pk;
+            d = &d * &pk;
+        }
+    }
     let g = n.p.gcd(&d.p);
     let (np, dp) = match (n.p.try_div(&g), d.p.try_div(&g)) {
         (Some(a), Some(b)) => (a, b),

@@ -615,12 +615,20 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         }
         let mut constant_rates = Vec::new();
         for (k, q) in h.constant_rates.iter().enumerate() {
-            constant_rates.push(*coord_index.get(q).ok_or_else(|| {
+            let i = *coord_index.get(q).ok_or_else(|| {
                 spec_err(
                     format!("{path}.constant_rates[{k}]"),
                     format!("unknown coordinate `{q}`"),
                 )
-            })?);
+            })?;
+            // Its q̈ follows the others' rates: hold those constant instead.
+            if coords[i].driven {
+                return Err(spec_err(
+                    format!("{path}.constant_rates[{k}]"),
+                    format!("`{q}` is driven by other coordinates' rates"),
+                ));
+            }
+            constant_rates.push(i);
         }
         let (motions, relations) =
             held_motions(spec, &names, &coord_index, &param_index, h, &path)?;

@@ -124,18 +124,19 @@ impl Plan {
                 law: ImposedLaw::Law(law),
             });
         }
+        // Before any imposed law: a law on a driven coordinate would contradict its relation.
+        if let Some(c) = reg.coordinates().iter().find(|c| c.is_driven()) {
+            return Err(err(format!(
+                "`{}` is driven by other coordinates' rates: simulate does not integrate such a \
+                 mechanism yet",
+                c.name
+            )));
+        }
         let mut free = Vec::new();
         for (i, c) in reg.coordinates().iter().enumerate() {
             let q = CoordId(i);
             if imposed.iter().any(|x| x.coord == q) {
                 continue;
-            }
-            if c.is_driven() {
-                return Err(err(format!(
-                    "`{}` is driven by other coordinates' rates: simulate does not integrate \
-                     such a mechanism yet",
-                    c.name
-                )));
             }
             if c.has_imposed_rate() {
                 let w = reg.rate(q, 1).eval(&base);

@@ -494,6 +494,15 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
                     format!("unknown coordinate `{c}`"),
                 )
             })?;
+            if reg.coord_info(q).is_driven() {
+                return Err(at(
+                    format!("{path}.constant_rates[{k}]"),
+                    format!(
+                        "`{c}` is driven by other coordinates' rates: hold those constant \
+                         instead"
+                    ),
+                ));
+            }
             let dd = reg.ddot(q);
             if let Some(v) = dd.single_variable() {
                 subs.push((v, reg.zero()));

@@ -424,6 +424,10 @@ fn both_sides_read_a_driven_rate_alike() {
         rate("r1/dot(theta1)"),
         rate("dot(theta1)/(r1 + r2)"),
     ];
+    // A hypothesis holding a driven coordinate's rate constant: its q̈ follows θ̈1.
+    let mut held = rate("-r1/r2*dot(theta1)");
+    held["hypotheses"] = serde_json::json!([{"name": "C", "constant_rates": ["theta2"]}]);
+    let refused: Vec<Value> = refused.into_iter().chain([held]).collect();
     for (specs, ok) in [(&accepted[..], true), (&refused[..], false)] {
         for s in specs {
             let (exact, float) = verdicts(s).expect("a spec's shape");

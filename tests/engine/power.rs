@@ -263,3 +263,46 @@ fn a_wheel_rolling_on_a_plane_by_hand() {
     let report = torseur::check::check(&m, 10, 1).unwrap();
     assert!(report.passed(), "{report}");
 }
+
+#[test]
+fn lagrange_follows_a_driven_coordinate_through_its_ratio() {
+    // The gear train with a torsion spring k2 on the wheel's pivot: Ep = ½ k2 θ2² depends on
+    // the driven coordinate's value, so Lagrange's ∂Ep/∂θ1 is (∂θ2/∂θ1) k2 θ2 = −(r1/r2) k2 θ2
+    // (`total_partial`). The energy theorem (powers, with the spring's −k2 θ2 θ̇2) must equal
+    // θ̇1 · Lagrange(θ1) exactly; without the ratio term it would not.
+    let text = std::fs::read_to_string("derivations/train_engrenages.json").unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["parameters"]
+        .as_array_mut()
+        .unwrap()
+        .push(serde_json::json!({"name": "k2", "unit": "N m/rad"}));
+    v["links"][1]["spring"] = serde_json::json!({"coordinate": "theta2", "stiffness": "k2"});
+    let m = torseur::spec::from_str(&v.to_string()).unwrap();
+    let reg = &m.reg;
+    let all: Vec<BodyId> = m
+        .bodies
+        .iter()
+        .flat_map(|b| m.solids_of(&b.name).unwrap())
+        .collect();
+    let g0 = m.frames.ground();
+    let ec = torseur::pfd::kinetic_energy(&m, &all);
+    let p = &torseur::pfd::power(&m, "ext", &all, "E", g0).unwrap()
+        + &torseur::pfd::internal_power(&m, &all);
+    let t1 = reg.coord("theta1").unwrap();
+    let lagrange = torseur::pfd::lagrange(&m, t1);
+    assert_eq!(&ec.dt() - &p, &reg.dot(t1) * &lagrange);
+    // By hand: Lagrange(θ1) = J_eq θ̈1 − C_m + (r1/r2) C_r − (r1/r2) k2 θ2.
+    assert_eq!(
+        lagrange,
+        reg.parse("(J1 + J2*r1^2/r2^2)*ddot(theta1) - C_m + r1/r2*C_r - r1/r2*k2*theta2")
+            .unwrap()
+    );
+    // And it is the PFD's equation of motion (moment on the pinion, T eliminated).
+    torseur::assert_equivalent!(
+        m,
+        "eom(theta1)",
+        "(J1 + J2*r1^2/r2^2)*ddot(theta1) = C_m - r1/r2*C_r + r1/r2*k2*theta2"
+    );
+    let report = torseur::check::check(&m, 10, 1).unwrap();
+    assert!(report.passed(), "{report}");
+}

@@ -377,3 +377,25 @@ fn a_relative_equilibrium_written_as_a_quotient_is_the_equation_of_motion() {
             .is_equivalent()
     );
 }
+
+#[test]
+fn a_relation_of_parameters_only_is_not_any_relation() {
+    // At the pendulum's relative equilibrium, eom(θ) under H holds parameters only; a wrong
+    // relation (1 = 0, g = 0) must not be accepted up to its own quotient with the engine's.
+    let m = torseur::spec::load("derivations/pendule_arbre_tournant.json").unwrap();
+    for wrong in [
+        "1 = 0",
+        "g = 0",
+        "sin(beta)*(m*g*a + (A + m*a^2 - C)*omega^2*cos(beta)) = 0",
+    ] {
+        let v = torseur::verify::verify(&m, "eom(theta)", wrong, Some("H")).unwrap();
+        assert!(!v.is_equivalent(), "{wrong}: {v}");
+    }
+    let right = "sin(beta)*(m*g*a - (A + m*a^2 - C)*omega^2*cos(beta)) = 0";
+    let v = torseur::verify::verify(&m, "eom(theta)", right, Some("H")).unwrap();
+    assert!(v.is_equivalent(), "{v}");
+    // Up to a product of parameters it is still the same relation.
+    let scaled = "m*a*sin(beta)*(g - (A + m*a^2 - C)/(m*a)*omega^2*cos(beta)) = 0";
+    let v = torseur::verify::verify(&m, "eom(theta)", scaled, Some("H")).unwrap();
+    assert!(v.is_equivalent(), "{v}");
+}
