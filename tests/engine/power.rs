@@ -5,6 +5,14 @@
 use super::*;
 use torseur::mechanism::BodyId;
 
+/// Every solid of the mechanism (the whole of E for the energy theorem).
+fn all_solids(m: &Mechanism) -> Vec<BodyId> {
+    m.bodies
+        .iter()
+        .flat_map(|b| m.solids_of(&b.name).unwrap())
+        .collect()
+}
+
 #[test]
 fn powers_by_hand() {
     // Inverted pendulum on a torsion spring k and a viscous friction f at O (OG = l y1, the
@@ -68,11 +76,7 @@ fn the_kinetic_energy_theorem_is_lagrange_summed_over_the_rates() {
         {
             continue;
         }
-        let all: Vec<BodyId> = m
-            .bodies
-            .iter()
-            .flat_map(|b| m.solids_of(&b.name).unwrap())
-            .collect();
+        let all = all_solids(&m);
         let g0 = m.frames.ground();
         let ec = torseur::pfd::kinetic_energy(&m, &all);
         let p_ext = torseur::pfd::power(&m, "ext", &all, "all", g0).unwrap();
@@ -279,11 +283,7 @@ fn lagrange_follows_a_driven_coordinate_through_its_ratio() {
     v["links"][1]["spring"] = serde_json::json!({"coordinate": "theta2", "stiffness": "k2"});
     let m = torseur::spec::from_str(&v.to_string()).unwrap();
     let reg = &m.reg;
-    let all: Vec<BodyId> = m
-        .bodies
-        .iter()
-        .flat_map(|b| m.solids_of(&b.name).unwrap())
-        .collect();
+    let all = all_solids(&m);
     let g0 = m.frames.ground();
     let ec = torseur::pfd::kinetic_energy(&m, &all);
     let p = &torseur::pfd::power(&m, "ext", &all, "E", g0).unwrap()
