@@ -19,6 +19,7 @@ mod number_text;
 mod parse;
 pub(crate) mod present;
 pub(crate) mod print;
+mod rates;
 mod registry;
 mod time;
 mod vector_text;

@@ -395,12 +395,13 @@ impl Registry {
                         });
                     }
                     let e = base.parse(r)?;
-                    let driven = driven_by(&base, CoordId(i), &e).map_err(|reason| {
-                        ExprError::Unsupported {
-                            input: r.clone(),
-                            reason,
-                        }
-                    })?;
+                    let driven =
+                        super::rates::driven_by(&base, CoordId(i), &e).map_err(|reason| {
+                            ExprError::Unsupported {
+                                input: r.clone(),
+                                reason,
+                            }
+                        })?;
                     reg.coords[i].imposed_rate = Some(e.p);
                     reg.coords[i].driven = driven.is_some();
                     reg.coords[i].nonholonomic = driven == Some(false);
@@ -578,25 +579,6 @@ impl Registry {
     /// A parameter, by name.
     pub fn param(self: &Rc<Self>, name: &str) -> Option<Expr> {
         self.param_var.get(name).map(|&i| self.var(i))
-    }
-
-    /// 1/p, for a parameter `p` the mechanism divides by (see [`RegistryBuilder::inverses`]).
-    ///
-    /// ```
-    /// use torseur::expr::Registry;
-    /// let reg = Registry::builder().parameters(&["R".into(), "V".into()])
-    ///     .inverses(&["R".into()]).build().unwrap();
-    /// let r = reg.param_id("R").unwrap();
-    /// assert_eq!(reg.inverse(r).unwrap(), reg.parse("1/R").unwrap());
-    /// assert!(reg.inverse(reg.param_id("V").unwrap()).is_none());
-    /// ```
-    pub fn inverse(self: &Rc<Self>, p: ParamId) -> Option<Expr> {
-        self.index_of(VarRole::Inverse(p)).map(|i| self.variable(i))
-    }
-
-    /// The parameters the mechanism divides by, in declaration order.
-    pub fn divisors(&self) -> impl Iterator<Item = ParamId> + '_ {
-        self.inverses.iter().map(|&(p, _, _)| p)
     }
 
     /// cos q (for a length coordinate, which has none, this is 1: never used so).
@@ -780,48 +762,4 @@ impl Registry {
     ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
         vector_text::parse_vector(self, s, basis_vector, names)
     }
-}
-
-/// Whether the rate `e` imposed on `q` is driven by other coordinates' rates (a gear ratio
-/// θ̇2 = −(r1/r2) θ̇1, rolling without slipping ẋ = −R θ̇ on a line, ẋ = R θ̇ cos ψ on a
-/// plane): a linear form in the first derivatives of coordinates whose rates are free, with
-/// coefficients made of parameters and of the coordinates' values (cos ψ), plus a constant.
-/// None for a constant (ψ̇ = ω), Some(holonomic) for a driven rate, holonomic when no
-/// coefficient holds a coordinate; why not, for anything else.
-fn driven_by(reg: &Registry, q: CoordId, e: &Expr) -> Result<Option<bool>, String> {
-    if e.is_time_independent() {
-        return Ok(None);
-    }
-    let mut holonomic = true;
-    let name = &reg.coords[q.0].name;
-    let why = format!(
-        "the rate of `{name}` is a constant (parameters only), or a linear form of the rates \
-         of other coordinates whose rates are free, with coefficients of parameters and \
-         coordinates (`-r1/r2*dot(theta1)`, `R*dot(theta)*cos(psi)`)"
-    );
-    let (with, without) = e.split_by_rates();
-    if !without.is_time_independent() {
-        return Err(why);
-    }
-    for (_, x) in with.terms() {
-        let mut rate = None;
-        for (i, &k) in x.iter().enumerate() {
-            if k == 0 {
-                continue;
-            }
-            match reg.roles[i] {
-                VarRole::Parameter(p) if !reg.is_unknown(p) => {}
-                VarRole::Inverse(_) => {}
-                VarRole::Cos(c) | VarRole::Sin(c) | VarRole::Value(c) => {
-                    holonomic &= reg.coords[c.0].is_fixed();
-                }
-                VarRole::Rate(c, 1) if k == 1 && rate.is_none() && c != q => rate = Some(c),
-                _ => return Err(why),
-            }
-        }
-        if rate.is_none() {
-            return Err(why);
-        }
-    }
-    Ok(Some(holonomic))
 }

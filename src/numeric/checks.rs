@@ -360,3 +360,66 @@ pub(super) fn named_vectors(
     }
     Ok(vectors)
 }
+
+/// The degree of `node` in the first derivatives q̇ⱼ of the coordinates `free(j)` allows, or
+/// why it is not a polynomial in them: a q̈, a rate inside sin, cos, or below a division line,
+/// the time, a basis vector or an unknown (what a rate driven by other coordinates may hold:
+/// a gear ratio −r1/r2 θ̇1, R θ̇ cos ψ; coordinates' values are coefficients).
+pub(super) fn rate_degree(node: &Node, free: &dyn Fn(usize) -> bool) -> Result<u32, String> {
+    let no = |what: &str| Err(format!("a driven rate holds {what}"));
+    match node {
+        Node::Num(_) | Node::Param(_) => Ok(0),
+        Node::Rate(j, 1) if free(*j) => Ok(1),
+        Node::Rate(..) => no("a rate that is not free, or an acceleration"),
+        // A coefficient may hold the coordinates (ẋ = R θ̇ cos ψ, rolling on a plane).
+        Node::Coord(_) => Ok(0),
+        Node::Unknown(_) | Node::Time | Node::Basis(..) => no("an unknown, the time or a vector"),
+        Node::Neg(a) => rate_degree(a, free),
+        Node::Add(a, b) | Node::Sub(a, b) => Ok(rate_degree(a, free)?.max(rate_degree(b, free)?)),
+        Node::Mul(a, b) => Ok(rate_degree(a, free)? + rate_degree(b, free)?),
+        Node::Div(a, b) => match rate_degree(b, free)? {
+            0 => rate_degree(a, free),
+            _ => no("a rate below a division line"),
+        },
+        Node::Pow(a, n) => match (rate_degree(a, free)?, *n) {
+            (0, _) => Ok(0),
+            (d, n) if n > 0 => Ok(d * n as u32),
+            _ => no("a rate to a negative power"),
+        },
+        Node::Sin(a) | Node::Cos(a) => match rate_degree(a, free)? {
+            0 => Ok(0),
+            _ => no("a rate inside sin or cos"),
+        },
+    }
+}
+
+/// Why a divisor is refused: what a spec may divide by.
+const DIVISOR: &str = "a spec divides by a product of parameters only (…/k, …/(2*m*l)), not by a \
+     sum, a coordinate, a rate or a sin or cos";
+
+/// Whether `node` is a number times a product of powers of parameters (what a spec may
+/// divide by: the exact side then keeps a variable 1/p for each).
+fn product_of_parameters(node: &Node) -> bool {
+    match node {
+        Node::Num(_) | Node::Param(_) => true,
+        Node::Neg(a) | Node::Pow(a, _) => product_of_parameters(a),
+        Node::Mul(a, b) | Node::Div(a, b) => product_of_parameters(a) && product_of_parameters(b),
+        _ => false,
+    }
+}
+
+/// Every division of `node` is by a product of parameters (a negative power likewise); an
+/// unknown below the line is left to its own message (`expr::unknown_degree`).
+pub(super) fn divisors(node: &Node) -> Result<(), String> {
+    let refused = |d: &Node| !product_of_parameters(d) && matches!(expr::unknown_degree(d), Ok(0));
+    match node {
+        Node::Div(a, b) if refused(b) => Err(DIVISOR.into()),
+        Node::Pow(a, n) if *n < 0 && refused(a) => Err(DIVISOR.into()),
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            divisors(a)?;
+            divisors(b)
+        }
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => divisors(a),
+        _ => Ok(()),
+    }
+}

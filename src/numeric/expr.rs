@@ -370,53 +370,6 @@ impl Parser<'_> {
     }
 }
 
-/// Why a divisor is refused: what a spec may divide by.
-const DIVISOR: &str = "a spec divides by a product of parameters only (…/k, …/(2*m*l)), not by a \
-     sum, a coordinate, a rate or a sin or cos";
-
-/// Whether `node` is a number times a product of powers of parameters (what a spec may
-/// divide by: the exact side then keeps a variable 1/p for each).
-fn product_of_parameters(node: &Node) -> bool {
-    match node {
-        Node::Num(_) | Node::Param(_) => true,
-        Node::Neg(a) | Node::Pow(a, _) => product_of_parameters(a),
-        Node::Mul(a, b) | Node::Div(a, b) => product_of_parameters(a) && product_of_parameters(b),
-        _ => false,
-    }
-}
-
-/// The degree of `node` in the first derivatives q̇ⱼ of the coordinates `free(j)` allows, or
-/// why it is not a polynomial in them: a q̈, a rate inside sin, cos, or below a division line,
-/// the time, a basis vector or an unknown (what a rate driven by other coordinates may hold:
-/// a gear ratio −r1/r2 θ̇1, R θ̇ cos ψ; coordinates' values are coefficients).
-pub(crate) fn rate_degree(node: &Node, free: &dyn Fn(usize) -> bool) -> Result<u32, String> {
-    let no = |what: &str| Err(format!("a driven rate holds {what}"));
-    match node {
-        Node::Num(_) | Node::Param(_) => Ok(0),
-        Node::Rate(j, 1) if free(*j) => Ok(1),
-        Node::Rate(..) => no("a rate that is not free, or an acceleration"),
-        // A coefficient may hold the coordinates (ẋ = R θ̇ cos ψ, rolling on a plane).
-        Node::Coord(_) => Ok(0),
-        Node::Unknown(_) | Node::Time | Node::Basis(..) => no("an unknown, the time or a vector"),
-        Node::Neg(a) => rate_degree(a, free),
-        Node::Add(a, b) | Node::Sub(a, b) => Ok(rate_degree(a, free)?.max(rate_degree(b, free)?)),
-        Node::Mul(a, b) => Ok(rate_degree(a, free)? + rate_degree(b, free)?),
-        Node::Div(a, b) => match rate_degree(b, free)? {
-            0 => rate_degree(a, free),
-            _ => no("a rate below a division line"),
-        },
-        Node::Pow(a, n) => match (rate_degree(a, free)?, *n) {
-            (0, _) => Ok(0),
-            (d, n) if n > 0 => Ok(d * n as u32),
-            _ => no("a rate to a negative power"),
-        },
-        Node::Sin(a) | Node::Cos(a) => match rate_degree(a, free)? {
-            0 => Ok(0),
-            _ => no("a rate inside sin or cos"),
-        },
-    }
-}
-
 /// Static type of `node`, or why a scalar and a vector are mixed wrongly.
 pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
     use Kind::*;
@@ -452,18 +405,11 @@ pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
         Node::Div(a, b) => match (kind(a)?, kind(b)?) {
             (_, Vector) => return Err("division by a vector".into()),
             (_, Zero) => return Err("division by zero".into()),
-            // An unknown below the line has its own message (see `unknown_degree`).
-            _ if !product_of_parameters(b) && matches!(unknown_degree(b), Ok(0)) => {
-                return Err(DIVISOR.into());
-            }
             (k, Scalar) => k,
         },
         Node::Pow(a, n) => match kind(a)? {
             Vector => return Err("a basis vector cannot be raised to a power".into()),
             Zero if *n <= 0 => return Err("zero raised to a non-positive power".into()),
-            _ if *n < 0 && !product_of_parameters(a) && matches!(unknown_degree(a), Ok(0)) => {
-                return Err(DIVISOR.into());
-            }
             k => k,
         },
         Node::Sin(a) | Node::Cos(a) => match kind(a)? {

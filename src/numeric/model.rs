@@ -1,6 +1,8 @@
 //! Building a [`NumericModel`] from a spec: names, frame and point trees, parsed expressions.
 
-use super::checks::{fixed_in_solid, identifier, linear_angle, symmetric, symmetries_hold};
+use super::checks::{
+    divisors, fixed_in_solid, identifier, linear_angle, rate_degree, symmetric, symmetries_hold,
+};
 use super::expr::{self, Kind, Name, Node};
 use super::{
     CoordInfo, FrameInfo, Hypothesis, InertiaInfo, NumericError, NumericModel, ParamInfo,
@@ -135,6 +137,7 @@ impl Names<'_> {
             &values,
         )?;
         let k = expr::kind(&node)?;
+        divisors(&node)?;
         expr::check_time(&node, ctx == Context::Angle)?;
         match (ctx, k) {
             (Context::Position, Kind::Scalar) => Err(
@@ -335,7 +338,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
                             .parse(r, Context::Instant)
                             .map_err(|_| spec_err(&path, constant.clone()))?;
                         let free = |j: usize| j != i && spec.coordinates[j].rate.is_none();
-                        match expr::rate_degree(&node, &free) {
+                        match rate_degree(&node, &free) {
                             Ok(1) => (Some(node), true),
                             _ => return Err(spec_err(&path, constant)),
                         }

@@ -138,7 +138,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
             }
         }
     }
-    let divisors = divisors(spec, &params);
+    let divisors = super::texts::divisors(spec, &params);
     let builder = spec
         .coordinates
         .iter()
@@ -159,34 +159,11 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         .iter()
         .map(|a| (a.name.clone(), a.value.clone()))
         .collect();
-    let reg = builder.clone().aliases(&aliases).build().map_err(|e| {
-        // The first alias whose value the registry cannot read, if one is at fault.
-        let alias_at_fault = builder.clone().build().ok().and_then(|_| {
-            (0..aliases.len()).find_map(|k| {
-                builder
-                    .clone()
-                    .aliases(&aliases[..=k])
-                    .build()
-                    .err()
-                    .map(|e| (k, e))
-            })
-        });
-        // The coordinate whose rate the registry could not read, if one is at fault.
-        let rate_at_fault = match &e {
-            crate::expr::ExprError::Unsupported { input, .. }
-            | crate::expr::ExprError::Parse { input, .. }
-            | crate::expr::ExprError::UnknownName { input, .. } => spec
-                .coordinates
-                .iter()
-                .position(|c| c.rate.as_deref() == Some(input.as_str())),
-            _ => None,
-        };
-        match (alias_at_fault, rate_at_fault) {
-            (Some((k, e)), _) => at(format!("aliases[{k}].value"), e.to_string()),
-            (None, Some(i)) => at(format!("coordinates[{i}].rate"), e.to_string()),
-            (None, None) => at("coordinates", e.to_string()),
-        }
-    })?;
+    let reg = builder
+        .clone()
+        .aliases(&aliases)
+        .build()
+        .map_err(|e| super::texts::registry_error(spec, &builder, &aliases, e))?;
 
     // Frames, in an order where each parent comes first (the spec may list them in any order).
     name_ok("ground", &spec.ground)?;
@@ -800,52 +777,4 @@ fn display_rank(p: &crate::wire::ParameterSpec) -> u32 {
         Some(Dimension::INERTIA) => 3,
         _ => 4,
     }
-}
-
-/// The parameters the spec divides by (`l0 - m*g*sin(beta)/k`, a rate `V/R`), in every
-/// expression it gives: the texts of [`expression_texts`], the aliases and the hypotheses.
-/// A divisor that is an alias brings the parameters of its value, and a hypothesis relation
-/// that sets a divisor brings those of the value it gives (k = k2 divides by k2 too).
-fn divisors(spec: &SpecFile, params: &[String]) -> Vec<String> {
-    let mut texts: Vec<&str> = expression_texts(spec).into_iter().map(|(_, t)| t).collect();
-    texts.extend(spec.aliases.iter().map(|a| a.value.as_str()));
-    for h in &spec.hypotheses {
-        texts.extend(h.equilibrium.values().map(String::as_str));
-        texts.extend(h.rates.values().map(String::as_str));
-        texts.extend(h.relations.values().map(String::as_str));
-    }
-    let mut found: Vec<String> = texts
-        .iter()
-        .flat_map(|t| crate::expr::divisors_in(t))
-        .collect();
-    // Aliases and relations bring the names of their values, until nothing new comes.
-    let mut k = 0;
-    while k < found.len() {
-        let n = found[k].clone();
-        let values = spec
-            .aliases
-            .iter()
-            .filter(|a| a.name == n)
-            .map(|a| a.value.as_str())
-            .chain(
-                spec.hypotheses
-                    .iter()
-                    .filter_map(|h| h.relations.get(&n).map(String::as_str)),
-            );
-        for v in values.collect::<Vec<_>>() {
-            for x in crate::expr::bare_names(v) {
-                if !found.contains(&x) {
-                    found.push(x);
-                }
-            }
-        }
-        k += 1;
-    }
-    let mut out: Vec<String> = Vec::new();
-    for n in found {
-        if params.contains(&n) && !out.contains(&n) {
-            out.push(n);
-        }
-    }
-    out
 }
