@@ -608,7 +608,8 @@ fn total_partial(m: &Mechanism, e: &Expr, q: CoordId) -> Expr {
     let reg = &m.reg;
     let mut acc = e.partial_coordinate(q);
     for c in reg.coordinates() {
-        if !c.is_driven() {
+        // A nonholonomic relation (ẋ = R θ̇ cos ψ) ties no positions: nothing to follow.
+        if !c.is_driven() || !c.is_holonomic() {
             continue;
         }
         let Some(d) = reg.coord(&c.name) else {
