@@ -70,10 +70,15 @@ pub struct SpecFile {
     /// means gravity is neglected.
     #[serde(default)]
     pub gravity: Option<String>,
+    /// Loop closures (« fermeture géométrique »): each a vector sum that is zero around a
+    /// closed kinematic chain, and the coordinates it determines.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub closures: Vec<ClosureSpec>,
     /// Perfect links between solids (and the ground), with optional viscous friction and
-    /// torsion spring. They form a tree: a link between two solids already connected by other
-    /// links (a closed kinematic loop, a four-bar linkage) is refused; links in parallel
-    /// between the same two solids (two bearings) are one connection.
+    /// torsion spring. They form a tree, unless `closures` close the loops: a link between two
+    /// solids already connected by other links (a crank–slider's slide) is refused without a
+    /// closure; links in parallel between the same two solids (two bearings) are one
+    /// connection.
     #[serde(default)]
     pub links: Vec<LinkSpec>,
     /// Other actions: given or unknown forces and torques (a motor torque).
@@ -452,6 +457,7 @@ impl Default for SpecFile {
             quantities: vec![],
             questions: vec![],
             gravity: None,
+            closures: vec![],
             links: vec![],
             actions: vec![],
             pfd: vec![],
@@ -531,6 +537,20 @@ pub struct CoordinateSpec {
     /// better declared as a parameter of kind `angle`).
     #[serde(default)]
     pub rate: Option<String>,
+}
+
+/// A loop closure: OA + AB + BO = 0 around a closed chain (a crank–slider:
+/// `R*x1 + L*x2 - x*x0`), projected on the ground's basis. Its derivative gives the rates of
+/// the `dependent` coordinates as linear forms of the free ones (the loop law, « loi
+/// entrée–sortie »); the relation itself stays implicit.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ClosureSpec {
+    /// The vector that is zero, a sum over the basis vectors (`R*x1 + L*x2 - x*x0`).
+    pub vector: String,
+    /// The coordinates it determines, as many as it has independent scalar equations (two
+    /// for a planar loop); each without a `rate` of its own.
+    pub dependent: Vec<String>,
 }
 
 /// A frame turned (and possibly moved) from its parent.

@@ -33,6 +33,8 @@ pub struct RegistryBuilder {
     pub(super) phases: Vec<String>,
     pub(super) aliases: Vec<(String, String)>,
     pub(super) inverses: Vec<String>,
+    pub(super) secants: Vec<String>,
+    pub(super) holonomic: Vec<String>,
     pub(super) display_ranks: Vec<u32>,
 }
 
@@ -120,6 +122,42 @@ impl RegistryBuilder {
                 self.inverses.push(n.clone());
             }
         }
+        self
+    }
+
+    /// The angle coordinates whose cosine a loop closure divides by (the crank–slider's rod,
+    /// φ̇ = −R θ̇ cos θ / (L cos φ)): each gets a variable 1/cos q, and cos q·(1/cos q) is
+    /// reduced to 1 after every product. Its leading monomial is coprime with sin²q's, so the
+    /// reduced form stays unique; d(1/cos q)/dt = sin q q̇ / cos²q.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::builder()
+    ///     .parameters(&["L".into()])
+    ///     .coordinate("phi", CoordinateKind::Angle)
+    ///     .secants(&["phi".into()])
+    ///     .build()
+    ///     .unwrap();
+    /// let t = reg.parse("sin(phi)/cos(phi)").unwrap();
+    /// assert!((&t * &reg.parse("cos(phi)").unwrap() - reg.parse("sin(phi)").unwrap()).is_zero());
+    /// // d(tan φ)/dt = φ̇ / cos²φ.
+    /// assert_eq!(t.dt(), reg.parse("dot(phi)/cos(phi)^2").unwrap());
+    /// assert_eq!(t.to_string(), "sin(phi)/cos(phi)");
+    /// ```
+    pub fn secants(mut self, names: &[String]) -> Self {
+        for n in names {
+            if !self.secants.contains(n) {
+                self.secants.push(n.clone());
+            }
+        }
+        self
+    }
+
+    /// The coordinates whose imposed rate was solved from a loop closure f(q) = 0: holonomic
+    /// even when its coefficients hold coordinates (see [`super::CoordInfo::is_holonomic`]).
+    pub fn holonomic(mut self, names: &[String]) -> Self {
+        self.holonomic.extend_from_slice(names);
         self
     }
 

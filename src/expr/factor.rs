@@ -214,7 +214,7 @@ impl Expr {
             if k == 0 {
                 continue;
             }
-            let twin = reg.inverses.iter().find_map(|&(_, v, w)| {
+            let twin = reg.inverse_pairs().find_map(|(v, w)| {
                 if v == i {
                     Some(w)
                 } else if w == i {
@@ -241,7 +241,7 @@ impl Expr {
                 _ => {
                     return Err(
                         "division by a coordinate, a rate, or a sin or cos: a spec divides by \
-                         parameters only"
+                         parameters only (and a loop closure by the cosine of a coordinate)"
                             .to_string(),
                     );
                 }
@@ -266,7 +266,8 @@ pub(crate) fn lowest_terms(n: Expr, d: Expr) -> (Expr, Expr) {
     // 1/p below or above the line is cleared first (both sides times p^k), so that the gcd
     // sees polynomials: (x_e − l0 + m g s/k) / 1 and k x_e − k l0 + m g s share their factor.
     let (mut n, mut d) = (n, d);
-    for &(_, v, w) in &n.reg.inverses.clone() {
+    let pairs: Vec<(usize, usize)> = n.reg.inverse_pairs().collect();
+    for (v, w) in pairs {
         let k = n.p.degree(w).max(d.p.degree(w));
         if k > 0 {
             let pk = n.reg.var(v).pow(k as u32);

@@ -253,6 +253,9 @@ pub enum VarRole {
     /// 1/p of a parameter the mechanism divides by (see [`RegistryBuilder::inverses`]):
     /// p·(1/p) is reduced to 1 after every product, as sin² is.
     Inverse(ParamId),
+    /// 1/cos q of an angle coordinate a loop closure divides by (see
+    /// [`RegistryBuilder::secants`]): cos q·(1/cos q) is reduced to 1 after every product.
+    Secant(CoordId),
 }
 
 /// An angle Σ nᵢ aᵢ + k π/2, read by [`Registry::parse_angle`].
@@ -347,7 +350,7 @@ impl Expr {
     pub fn is_time_independent(&self) -> bool {
         (0..self.reg.nvars()).all(|i| match self.reg.roles[i] {
             VarRole::Parameter(_) | VarRole::Inverse(_) => true,
-            VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q)
+            VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q) | VarRole::Secant(q)
                 if self.reg.coords[q.0].is_fixed() =>
             {
                 true
@@ -424,9 +427,7 @@ impl Expr {
     /// p^a (1/p)^b → p^(a − min) (1/p)^(b − min) in every term.
     fn reduce_inverses(p: Poly, reg: &Registry) -> Poly {
         let pairs: Vec<(usize, usize)> = reg
-            .inverses
-            .iter()
-            .map(|&(_, v, w)| (v, w))
+            .inverse_pairs()
             .filter(|&(v, w)| p.degree(v) > 0 && p.degree(w) > 0)
             .collect();
         if pairs.is_empty() {
@@ -520,6 +521,13 @@ impl Expr {
                 && self.p.degree(vi) > 0
             {
                 acc = &acc + &(&self.p.derivative(vi) * &qdot);
+            }
+            // d(1/cos q)/dt = (1/cos q)² sin q q̇.
+            if let Some(w) = reg.secant_var(q)
+                && self.p.degree(w) > 0
+            {
+                let sec = reg.var(w).p;
+                acc = &acc + &(&(&(&self.p.derivative(w) * &sec) * &(&sec * &reg.sin(q).p)) * &qdot);
             }
             if let Some(r) = c.rates {
                 for k in 0..2 {
@@ -628,6 +636,12 @@ impl Expr {
         }
         if let Some(vi) = c.value {
             acc = &acc + &self.derivative(VarId(vi));
+        }
+        if let Some(w) = reg.secant_var(q)
+            && self.p.degree(w) > 0
+        {
+            let sec = reg.var(w);
+            acc = &acc + &(&(&self.derivative(VarId(w)) * &sec) * &(&sec * &reg.sin(q)));
         }
         acc
     }

@@ -15,6 +15,8 @@ pub struct TermParts {
     pub params: Vec<(ParamId, u8)>,
     /// (parameter, exponent) of the parameters the term divides by.
     pub inverses: Vec<(ParamId, u8)>,
+    /// (coordinate, exponent) of the cosines the term divides by (a loop closure's 1/cos q).
+    pub secants: Vec<(CoordId, u8)>,
     /// (coordinate, is_cos, exponent): trigonometric factors.
     pub trig: Vec<(CoordId, bool, u8)>,
     /// (coordinate, exponent): length coordinates.
@@ -29,6 +31,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
         coef: coef.clone(),
         params: vec![],
         inverses: vec![],
+        secants: vec![],
         trig: vec![],
         values: vec![],
         rates: vec![],
@@ -40,6 +43,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
         match reg.role(VarId(i)) {
             VarRole::Parameter(p) => t.params.push((p, k)),
             VarRole::Inverse(p) => t.inverses.push((p, k)),
+            VarRole::Secant(q) => t.secants.push((q, k)),
             VarRole::Cos(q) => t.trig.push((q, true, k)),
             VarRole::Sin(q) => t.trig.push((q, false, k)),
             VarRole::Value(q) => t.values.push((q, k)),
@@ -48,6 +52,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
     }
     t.params.sort();
     t.inverses.sort();
+    t.secants.sort();
     t.trig.sort_by_key(|&(q, is_cos, _)| (q, !is_cos));
     t.rates.sort_by_key(|&(q, o, _)| (Reverse(o), q));
     t
@@ -75,7 +80,7 @@ type OtherKey = (
 
 fn other_key(t: &TermParts) -> OtherKey {
     (
-        t.params.is_empty() && t.trig.is_empty() && t.inverses.is_empty(),
+        t.params.is_empty() && t.trig.is_empty() && t.inverses.is_empty() && t.secants.is_empty(),
         t.params.iter().map(|&(_, k)| k as u32).sum(),
         t.params.iter().map(|&(p, k)| (p, Reverse(k))).collect(),
         t.trig
@@ -136,17 +141,16 @@ fn term_text(reg: &Registry, t: &TermParts) -> (bool, String) {
     } else {
         format!("{abs}*{}", f.join("*"))
     };
+    let pw = |n: String, k: u8| if k == 1 { n } else { format!("{n}^{k}") };
     let below: Vec<String> = t
         .inverses
         .iter()
-        .map(|&(p, k)| {
-            let n = reg.scalar_name(p);
-            if k == 1 {
-                n.to_string()
-            } else {
-                format!("{n}^{k}")
-            }
-        })
+        .map(|&(p, k)| pw(reg.scalar_name(p).to_string(), k))
+        .chain(
+            t.secants
+                .iter()
+                .map(|&(q, k)| pw(format!("cos({})", reg.coord_info(q).name), k)),
+        )
         .collect();
     let s = match below.len() {
         0 => s,
@@ -255,6 +259,9 @@ impl Expr {
                         for &(p, k) in &t.inverses {
                             strip(&mut e, VarRole::Inverse(p), k);
                         }
+                        for &(q, k) in &t.secants {
+                            strip(&mut e, VarRole::Secant(q), k);
+                        }
                         (&t.coef * &factor.coef.inv(), e)
                     })
                     .collect();
@@ -307,6 +314,7 @@ fn common_factor(ts: &[TermParts]) -> TermParts {
         coef,
         params,
         inverses: vec![],
+        secants: vec![],
         trig,
         values: vec![],
         rates: vec![],
@@ -335,6 +343,7 @@ impl std::fmt::Display for Grouped {
                 coef: Rational::one(),
                 params: vec![],
                 inverses: vec![],
+                secants: vec![],
                 trig: vec![],
                 values: vec![],
                 rates: g.kinematic.clone(),

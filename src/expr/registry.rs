@@ -43,12 +43,21 @@ pub struct Registry {
     /// (p, variable of p, variable of 1/p) for each parameter the mechanism divides by (see
     /// [`RegistryBuilder::inverses`]).
     pub(super) inverses: Vec<(ParamId, usize, usize)>,
+    /// (q, variable of cos q, variable of 1/cos q) for each angle coordinate a loop closure
+    /// divides by (see [`RegistryBuilder::secants`]).
+    pub(super) secants: Vec<(CoordId, usize, usize)>,
 }
 
 /// The symbol of the variable 1/p, `inv(p)` in symbolica's atoms (never in a text: a text
 /// writes `/p`).
 pub(super) fn inverse_symbol() -> Symbol {
     symbolica::symbol!("inv")
+}
+
+/// The symbol of the variable 1/cos q, `sec(q)` in symbolica's atoms (never in a text: a
+/// text writes `/cos(q)`).
+pub(super) fn secant_symbol() -> Symbol {
+    symbolica::symbol!("sec")
 }
 
 /// Symbols used for the rate functions dot(q), ddot(q), dddot(q).
@@ -134,6 +143,8 @@ impl Registry {
             phases,
             aliases,
             inverses,
+            secants,
+            holonomic,
             display_ranks,
         } = b;
         for w in &phases {
@@ -318,6 +329,33 @@ impl Registry {
             roles.push(VarRole::Inverse(p));
             inverse_pairs.push((p, v, vars.len() - 1));
         }
+        let mut secant_pairs = Vec::new();
+        for name in &secants {
+            let Some((q, c)) = infos
+                .iter()
+                .enumerate()
+                .take(n_declared)
+                .find(|(_, c)| &c.name == name)
+            else {
+                return Err(ExprError::Declaration(format!(
+                    "cannot divide by `cos({name})`: `{name}` is not an angle coordinate"
+                )));
+            };
+            let Some((ci, _)) = c.trig.filter(|_| c.kind == CoordinateKind::Angle) else {
+                return Err(ExprError::Declaration(format!(
+                    "cannot divide by `cos({name})`: `{name}` is not an angle coordinate"
+                )));
+            };
+            vars.push(PolyVariable::Function(
+                secant_symbol(),
+                symbolica::function!(
+                    secant_symbol(),
+                    Atom::var(symbolica::symbol!(name.as_str()))
+                ),
+            ));
+            roles.push(VarRole::Secant(CoordId(q)));
+            secant_pairs.push((CoordId(q), ci, vars.len() - 1));
+        }
         for (n, _) in &aliases {
             check(n)?;
         }
@@ -342,6 +380,7 @@ impl Registry {
             display_ranks,
             aliases: Vec::new(),
             inverses: inverse_pairs,
+            secants: secant_pairs,
         };
         // Aliases, then imposed rates, are expressions in the parameters: parse them with a
         // registry that shares the same variable list (and the aliases read so far).
@@ -360,6 +399,7 @@ impl Registry {
                 display_ranks: Vec::new(),
                 aliases: reg.aliases.clone(),
                 inverses: reg.inverses.clone(),
+                secants: reg.secants.clone(),
             }))
         };
         for (name, text) in &aliases {
@@ -404,7 +444,10 @@ impl Registry {
                         })?;
                     reg.coords[i].imposed_rate = Some(e.p);
                     reg.coords[i].driven = driven.is_some();
-                    reg.coords[i].nonholonomic = driven == Some(false);
+                    // A rate solved from a loop closure f(q) = 0 is holonomic, whatever its
+                    // coefficients hold.
+                    reg.coords[i].nonholonomic =
+                        driven == Some(false) && !holonomic.contains(&reg.coords[i].name);
                 }
             }
         }
@@ -439,6 +482,7 @@ impl Registry {
             VarRole::Parameter(k) => !self.is_unknown(k),
             VarRole::Inverse(_) => true,
             VarRole::Cos(q) | VarRole::Sin(q) => self.coords[q.0].constant,
+            VarRole::Secant(_) => false,
             VarRole::Value(_) | VarRole::Rate(..) => false,
         }
     }
@@ -520,6 +564,19 @@ impl Registry {
     /// The variable standing for `role`, if the registry has one.
     pub fn index_of(&self, role: VarRole) -> Option<VarId> {
         self.role_index.get(&role).copied().map(VarId)
+    }
+
+    /// The variable 1/cos q, if a loop closure divides by cos q.
+    pub(super) fn secant_var(&self, q: CoordId) -> Option<usize> {
+        self.secants.iter().find(|s| s.0 == q).map(|s| s.2)
+    }
+
+    /// (v, w) for every pair reduced v·w → 1: a parameter and its inverse, cos q and 1/cos q.
+    pub(super) fn inverse_pairs(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.inverses
+            .iter()
+            .map(|&(_, v, w)| (v, w))
+            .chain(self.secants.iter().map(|&(_, v, w)| (v, w)))
     }
 
     /// What variable `i` stands for.

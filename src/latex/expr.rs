@@ -56,6 +56,10 @@ fn leaf(reg: &Registry, l: &Leaf, k: u8) -> String {
         // Alone (a factor of a product broken across lines); a whole product writes its
         // inverses below one line (see `product`).
         Leaf::Inverse(p) => format!("\\frac{{1}}{{{}}}", pw(name(reg.scalar_name(*p)))),
+        Leaf::Secant(q) => format!(
+            "\\frac{{1}}{{{}}}",
+            leaf(reg, &Leaf::Cos(Angle::of(*q)), k)
+        ),
         Leaf::Value(q) => pw(name(&reg.coord_info(*q).name)),
         Leaf::Rate(q, o) => pw(rate(reg, *q, *o)),
         Leaf::Cos(a) | Leaf::Sin(a) => {
@@ -130,7 +134,7 @@ fn product(reg: &Registry, p: &Product) -> String {
     let divides = p
         .factors
         .iter()
-        .any(|(f, _)| matches!(f, Factor::Leaf(Leaf::Inverse(_))));
+        .any(|(f, _)| matches!(f, Factor::Leaf(Leaf::Inverse(_) | Leaf::Secant(_))));
     if !divides {
         let f: Vec<String> = factors(reg, p).into_iter().map(|x| x.1).collect();
         return if f.is_empty() {
@@ -151,6 +155,7 @@ fn product(reg: &Registry, p: &Product) -> String {
     for (f, k) in p.ordered(reg) {
         match f {
             Factor::Leaf(Leaf::Inverse(q)) => below.push(leaf(reg, &Leaf::Param(*q), *k)),
+            Factor::Leaf(Leaf::Secant(q)) => below.push(leaf(reg, &Leaf::Cos(Angle::of(*q)), *k)),
             Factor::Leaf(l) => top.push(leaf(reg, l, *k)),
             Factor::Sum(s) => top.push(sum_factor(reg, s, *k)),
         }

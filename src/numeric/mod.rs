@@ -32,6 +32,7 @@
 //! ```
 
 mod checks;
+mod closure;
 mod cloud;
 mod dynamics;
 pub(crate) mod expr;
@@ -281,6 +282,8 @@ pub struct NumericModel {
     solid_index: BTreeMap<String, usize>,
     /// Gravity, links, actions and the declared equations of the PFD.
     dynamics: dynamics::Dynamics,
+    /// Loop closures, solved numerically at each sample.
+    closures: Vec<closure::Closure>,
 }
 
 impl NumericModel {
@@ -295,6 +298,7 @@ impl NumericModel {
     /// ```
     pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         let mut model = model::build(spec)?;
+        model.closures = closure::build(spec, &model)?;
         model.dynamics = dynamics::build(spec, &model)?;
         model::mark_positive(&mut model);
         model.uses_time = model.writes_time();
@@ -424,7 +428,28 @@ impl NumericModel {
     /// assert_eq!(a, b);
     /// ```
     pub fn sample(&self, rng: &mut impl rand::Rng) -> Result<Sample, NumericError> {
-        sample::draw(self, rng, None)
+        self.draw_closed(rng, None)
+    }
+
+    /// A sample whose loops close: drawn again (up to 100 times) while a loop closure cannot
+    /// close at the drawn lengths and angles (a crank longer than its rod at that angle).
+    fn draw_closed(
+        &self,
+        rng: &mut impl rand::Rng,
+        h: Option<&Hypothesis>,
+    ) -> Result<Sample, NumericError> {
+        let mut last = None;
+        for _ in 0..100 {
+            match sample::draw(self, rng, h) {
+                Err(NumericError::Sampling(m))
+                    if !self.closures.is_empty() && m.starts_with("closures:") =>
+                {
+                    last = Some(m);
+                }
+                r => return r,
+            }
+        }
+        Err(NumericError::Sampling(last.unwrap_or_default()))
     }
 
     /// Draws a random sample that satisfies the spec's hypothesis `name`: its symmetric solids
@@ -452,7 +477,7 @@ impl NumericModel {
                 what: "hypothesis".into(),
                 name: hypothesis.into(),
             })?;
-        sample::draw(self, rng, Some(h))
+        self.draw_closed(rng, Some(h))
     }
 
     /// Evaluates a scalar expression of the spec's syntax (parameters, coordinates, `dot(q)`,

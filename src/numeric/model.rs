@@ -701,6 +701,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         point_index,
         solid_index,
         dynamics: Default::default(),
+        closures: Vec::new(),
     };
     Ok(model)
 }

@@ -390,6 +390,8 @@ pub(super) fn draw(
         }
         vals.coords.push([q, qd, qdd]);
     }
+    // Coordinates a loop closure determines: moved onto the loop.
+    super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
     // Rates driven by the others' (a gear ratio), once those are drawn; a coefficient may
     // hold a driven coordinate's value, whose rates are then settled by the passes before.
     for _ in 0..m.coords.len() {

@@ -355,9 +355,23 @@ fn point_where(
                     }
                 }
             }
-            VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q) | VarRole::Rate(q, _) => {
+            VarRole::Cos(q)
+            | VarRole::Sin(q)
+            | VarRole::Value(q)
+            | VarRole::Rate(q, _)
+            | VarRole::Secant(q) => {
                 let name = &reg.coord_info(q).name;
                 match values.coordinates.get(name) {
+                    // 1/cos q, for an angle a loop closure divides by.
+                    Some(c) if matches!(reg.role(i), VarRole::Secant(_)) => {
+                        if c[0].cos().abs() < 1e-12 {
+                            return Err(ValuesError(format!(
+                                "cos({name}) = 0 here, and the results divide by it (the loop \
+                                 closure is singular)"
+                            )));
+                        }
+                        1.0 / c[0].cos()
+                    }
                     Some(c) => match reg.role(i) {
                         VarRole::Cos(_) => c[0].cos(),
                         VarRole::Sin(_) => c[0].sin(),

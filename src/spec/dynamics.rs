@@ -276,7 +276,8 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
             Source::Body(b) => b.0 + 1,
         };
         let (na, nb) = (node(&from), node(&Source::Body(on)));
-        if let Some(chain) = closes_loop(&graph, na, nb) {
+        // A loop closed by a closure (a crank–slider's slide) is a loop of the mechanism.
+        if let Some(chain) = closes_loop(&graph, na, nb).filter(|_| spec.closures.is_empty()) {
             let names: Vec<&str> = chain.iter().map(|&k| spec.links[k].name.as_str()).collect();
             return Err(at(
                 format!("{path}.between"),

@@ -1,5 +1,6 @@
 //! Problem specs: JSON wire types and their validation into a [`crate::mechanism::Mechanism`].
 
+mod closures;
 mod dynamics;
 mod hypotheses;
 mod locate;

@@ -45,6 +45,27 @@ fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
 
 /// Builds the mechanism described by a spec.
 pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
+    // Loop closures give the dependent coordinates their rates (driven by the free ones),
+    // read on the geometry alone; the mechanism keeps the spec as written.
+    match super::closures::solve(spec)? {
+        None => build_with(spec, spec, None),
+        Some(solved) => {
+            let mut with_rates = spec.clone();
+            for (k, rate) in &solved.rates {
+                with_rates.coordinates[*k].rate = Some(rate.clone());
+            }
+            build_with(&with_rates, spec, Some(&solved))
+        }
+    }
+}
+
+/// [`build`] from a spec whose dependent coordinates have their rates; `written` is the spec
+/// as the user wrote it, kept in the mechanism.
+fn build_with(
+    spec: &SpecFile,
+    written: &SpecFile,
+    solved: Option<&super::closures::Solved>,
+) -> Result<Mechanism, SpecError> {
     // Free texts first: a formula the answer key could not print safely refuses the spec.
     for (path, text) in free_texts(spec) {
         crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
@@ -153,6 +174,9 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         .angle_parameters(&angle_params)
         .phases(&pulsations)
         .inverses(&divisors)
+        .inverses(solved.map_or(&[][..], |s| &s.inverses))
+        .secants(solved.map_or(&[][..], |s| &s.secants))
+        .holonomic(solved.map_or(&[][..], |s| &s.dependent))
         .display_ranks(spec.parameters.iter().map(display_rank).collect());
     let aliases: Vec<(String, String)> = spec
         .aliases
@@ -608,7 +632,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
         default_basis,
         quantities,
         dynamics: Default::default(),
-        spec: spec.clone(),
+        spec: written.clone(),
     };
     m.dynamics = super::dynamics::build(&m, spec)?;
     // Each requested quantity must refer to known objects.

@@ -79,6 +79,8 @@ pub enum Leaf {
     Param(ParamId),
     /// 1/p, a parameter the mechanism divides by: written below the line of its product.
     Inverse(ParamId),
+    /// 1/cos q, an angle a loop closure divides by: written below the line of its product.
+    Secant(CoordId),
     /// A length coordinate, or an angle written as itself.
     Value(CoordId),
     /// q̇ (order 1), q̈ (order 2)…
@@ -297,7 +299,7 @@ impl Product {
             };
             let text = if *k == 1 { base } else { format!("{base}^{k}") };
             match f {
-                Factor::Leaf(Leaf::Inverse(_)) => below.push(text),
+                Factor::Leaf(Leaf::Inverse(_) | Leaf::Secant(_)) => below.push(text),
                 _ => parts.push(text),
             }
         }
@@ -344,6 +346,7 @@ fn plain_var(reg: &Registry, f: &Factor) -> Option<(usize, bool)> {
     let (role, is_sin) = match l {
         Leaf::Param(p) => (VarRole::Parameter(*p), false),
         Leaf::Inverse(p) => (VarRole::Inverse(*p), false),
+        Leaf::Secant(q) => (VarRole::Secant(*q), false),
         Leaf::Value(q) => (VarRole::Value(*q), false),
         Leaf::Rate(q, o) => (VarRole::Rate(*q, *o), false),
         Leaf::Cos(a) if a.is_simple() => (VarRole::Cos(a.0[0].0), false),
@@ -369,6 +372,8 @@ pub(crate) fn factor_key(reg: &Registry, f: &Factor) -> (u8, u32, usize, u8, Vec
         Factor::Leaf(Leaf::Param(p)) => (1, reg.display_rank(*p), p.0, 0, vec![]),
         // Below the line, in the parameters' order (m g / (k l)).
         Factor::Leaf(Leaf::Inverse(p)) => (6, reg.display_rank(*p), p.0, 0, vec![]),
+        // The cosines a loop closure divides by, after the parameters below the line.
+        Factor::Leaf(Leaf::Secant(q)) => (6, u32::MAX, q.0, 1, vec![]),
         Factor::Leaf(Leaf::Value(q)) => (2, 0, q.0, 0, vec![]),
         Factor::Sum(s) => (3, u32::from(s.terms.iter().any(has_rates)), 0, 0, vec![]),
         Factor::Leaf(Leaf::Rate(q, o)) => (4, 0, usize::MAX - *o as usize, q.0 as u8, vec![]),
@@ -395,6 +400,8 @@ fn leaf_text(reg: &Registry, a: &Leaf) -> String {
     match a {
         Leaf::Param(p) | Leaf::Inverse(p) => reg.scalar_name(*p).to_string(),
         Leaf::Value(q) => reg.coord_info(*q).name.clone(),
+        // Below the line: `/cos(phi)`.
+        Leaf::Secant(q) => format!("cos({})", reg.coord_info(*q).name),
         Leaf::Rate(q, o) => {
             let head = ["dot", "ddot", "dddot"][(o.clamp(&1, &3) - 1) as usize];
             format!("{head}({})", reg.coord_info(*q).name)
@@ -414,6 +421,7 @@ pub(crate) fn leaf_expr(reg: &Rc<Registry>, a: &Leaf) -> Expr {
     match a {
         Leaf::Param(p) => var(VarRole::Parameter(*p)),
         Leaf::Inverse(p) => var(VarRole::Inverse(*p)),
+        Leaf::Secant(q) => var(VarRole::Secant(*q)),
         Leaf::Value(q) => var(VarRole::Value(*q)),
         Leaf::Rate(q, o) => var(VarRole::Rate(*q, *o)),
         Leaf::Cos(x) | Leaf::Sin(x) => {

@@ -135,6 +135,7 @@ impl Expr {
                         let a = match reg.role(VarId(i)) {
                             VarRole::Parameter(p) => Leaf::Param(p),
                             VarRole::Inverse(p) => Leaf::Inverse(p),
+                            VarRole::Secant(q) => Leaf::Secant(q),
                             VarRole::Value(q) => Leaf::Value(q),
                             VarRole::Rate(q, o) => Leaf::Rate(q, o),
                             VarRole::Cos(q) => Leaf::Cos(Angle::of(q)),
@@ -316,7 +317,9 @@ fn grouped(e: &Expr, cheap: bool) -> Form {
     let all = e.monos();
     let (g, mut common) = search::content(&all);
     // A 1/p out in front only when no term keeps one: never a fraction inside a fraction.
-    common.retain(|(a, k)| !matches!(a, Leaf::Inverse(_)) || all.iter().all(|m| m.power(a) == *k));
+    common.retain(|(a, k)| {
+        !matches!(a, Leaf::Inverse(_) | Leaf::Secant(_)) || all.iter().all(|m| m.power(a) == *k)
+    });
     if common.is_empty() && g.abs().is_one() {
         return whole;
     }
@@ -417,7 +420,7 @@ fn clustered(reg: &Rc<Registry>, units: &[Unit], search: &mut search::Search) ->
                 // A 1/p out in front only when no term keeps one: never a fraction inside a
                 // fraction.
                 let nested = reg.var_ids().any(|w| {
-                    matches!(reg.role(w), VarRole::Inverse(_))
+                    matches!(reg.role(w), VarRole::Inverse(_) | VarRole::Secant(_))
                         && d.contains_var(w)
                         && inner_units.iter().any(|u| u.1.contains_var(w))
                 });
@@ -508,6 +511,7 @@ fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
         let role = match a {
             Leaf::Param(p) => VarRole::Parameter(*p),
             Leaf::Inverse(p) => VarRole::Inverse(*p),
+            Leaf::Secant(q) => VarRole::Secant(*q),
             Leaf::Value(q) => VarRole::Value(*q),
             Leaf::Rate(q, o) => VarRole::Rate(*q, *o),
             // Only single angles here: a compound angle is no variable of the registry.

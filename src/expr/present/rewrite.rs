@@ -87,6 +87,10 @@ impl Mono {
                     let without = r.div(a, have).expect("its own power divides a term");
                     without.mul(Leaf::Param(*p), *k - have)
                 }
+                Leaf::Secant(q) if have < *k => {
+                    let without = r.div(a, have).expect("its own power divides a term");
+                    without.mul(Leaf::Cos(Angle::of(*q)), *k - have)
+                }
                 _ => r.div(a, *k).expect("a common factor divides every term"),
             };
         }

@@ -1,0 +1,198 @@
+//! Loop closures, moved numerically: the dependent coordinates found by Newton's method on
+//! the loop's vector (its own frames, its own parser), their rates and accelerations from
+//! the loop's first and second time derivatives (dual numbers), by least squares. Nothing
+//! here reads the exact side's solution.
+
+use super::NumericError;
+use super::NumericModel;
+use super::expr::{self, Env, Node};
+use super::kin::{Values, state};
+use super::model::{Context, Names};
+use crate::wire::SpecFile;
+use nalgebra::{DMatrix, DVector, Vector3};
+
+/// A closure: the vector that is zero, and the coordinates it determines.
+#[derive(Debug, Clone)]
+pub(super) struct Closure {
+    vector: Node,
+    dependent: Vec<usize>,
+}
+
+/// Newton iterations before a loop is declared open.
+const NEWTON_STEPS: usize = 60;
+/// Largest residual of a closed loop, relative to its lengths.
+const CLOSED_TOL: f64 = 1e-12;
+
+/// Reads the spec's closures with the float backend's own parser.
+pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Vec<Closure>, NumericError> {
+    let names = Names {
+        params: &m.param_index,
+        coords: &m.coord_index,
+        frames: &m.frame_index,
+        aliases: &m.aliases,
+        vectors: &m.vectors,
+    };
+    let mut out: Vec<Closure> = Vec::new();
+    for (i, c) in spec.closures.iter().enumerate() {
+        let vector = names
+            .parse(&c.vector, Context::Position)
+            .map_err(|e| super::model::spec_err(format!("closures[{i}].vector"), e))?;
+        let mut dependent = Vec::new();
+        for (j, d) in c.dependent.iter().enumerate() {
+            let path = format!("closures[{i}].dependent[{j}]");
+            let Some(&k) = m.coord_index.get(d) else {
+                return Err(super::model::spec_err(path, format!("unknown coordinate `{d}`")));
+            };
+            if m.coords[k].rate.is_some() {
+                return Err(super::model::spec_err(
+                    path,
+                    format!("`{d}` has a rate of its own: the closure determines it"),
+                ));
+            }
+            if dependent.contains(&k) || out.iter().any(|o| o.dependent.contains(&k)) {
+                return Err(super::model::spec_err(
+                    path,
+                    format!("`{d}` is determined by two closures"),
+                ));
+            }
+            dependent.push(k);
+        }
+        out.push(Closure { vector, dependent });
+    }
+    Ok(out)
+}
+
+/// Every closure's vector in ground components, as dual numbers in t.
+fn loops(m: &NumericModel, v: &Values) -> Result<Vec<Vector3<num_dual::Dual2_64>>, NumericError> {
+    let st = state(m, v)?;
+    let coords: Vec<num_dual::Dual2_64> = v
+        .coords
+        .iter()
+        .map(|c| num_dual::Dual2_64::new(c[0], c[1], c[2]))
+        .collect();
+    let rates: Vec<[num_dual::Dual2_64; 2]> = v
+        .coords
+        .iter()
+        .map(|c| [c[1].into(), c[2].into()])
+        .collect();
+    let env = Env {
+        params: &v.params,
+        coords: &coords,
+        rates: &rates,
+        frames: &st.rot,
+        time: num_dual::Dual2_64::new(v.time, 1.0, 0.0),
+    };
+    m.closures
+        .iter()
+        .map(|c| {
+            expr::eval_vector(&c.vector, &env).map_err(|e| NumericError::Evaluation {
+                what: "a loop closure".to_string(),
+                message: e,
+            })
+        })
+        .collect()
+}
+
+/// The stacked components of every loop, order `k` of the time derivative (0, 1, 2).
+fn stacked(m: &NumericModel, v: &Values, k: usize) -> Result<DVector<f64>, NumericError> {
+    let l = loops(m, v)?;
+    Ok(DVector::from_iterator(
+        3 * l.len(),
+        l.iter().flat_map(|x| {
+            x.iter()
+                .map(|d| match k {
+                    0 => d.re,
+                    1 => d.v1,
+                    _ => d.v2,
+                })
+                .collect::<Vec<_>>()
+        }),
+    ))
+}
+
+/// ∂(loop)/∂q_d for each dependent coordinate: the first derivative in t when only q_d moves,
+/// at unit rate.
+fn jacobian(m: &NumericModel, v: &Values, dep: &[usize]) -> Result<DMatrix<f64>, NumericError> {
+    let mut cols = Vec::new();
+    for &d in dep {
+        let mut w = Values {
+            params: v.params.clone(),
+            coords: v.coords.iter().map(|c| [c[0], 0.0, 0.0]).collect(),
+            time: v.time,
+        };
+        w.coords[d][1] = 1.0;
+        cols.push(stacked(m, &w, 1)?);
+    }
+    Ok(DMatrix::from_columns(&cols))
+}
+
+fn least_squares(j: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
+    j.clone().svd(true, true).solve(b, 1e-14).ok()
+}
+
+/// Moves the dependent coordinates of `v` onto the loops: their values (Newton from those
+/// drawn), rates and accelerations. Err with the reason when a loop does not close.
+pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
+    if m.closures.is_empty() {
+        return Ok(());
+    }
+    let dep: Vec<usize> = m.closures.iter().flat_map(|c| c.dependent.clone()).collect();
+    let scale = v
+        .params
+        .iter()
+        .map(|p| p.abs())
+        .fold(1.0_f64, f64::max);
+    let err = |e: NumericError| e.to_string();
+    let at_rest = |v: &Values| Values {
+        params: v.params.clone(),
+        coords: v.coords.iter().map(|c| [c[0], 0.0, 0.0]).collect(),
+        time: v.time,
+    };
+    let mut closed = false;
+    for _ in 0..NEWTON_STEPS {
+        let f = stacked(m, &at_rest(v), 0).map_err(err)?;
+        if f.amax() <= CLOSED_TOL * scale {
+            closed = true;
+            break;
+        }
+        let j = jacobian(m, v, &dep).map_err(err)?;
+        let Some(dq) = least_squares(&j, &(-f)) else {
+            break;
+        };
+        for (k, &d) in dep.iter().enumerate() {
+            v.coords[d][0] += dq[k];
+        }
+    }
+    if !closed {
+        return Err("the loop does not close here (Newton's method found no position)".into());
+    }
+    let j = jacobian(m, v, &dep).map_err(err)?;
+    // J_d q̇_d = −(the loop's rate with the dependent rates at 0).
+    for &d in &dep {
+        v.coords[d][1] = 0.0;
+        v.coords[d][2] = 0.0;
+    }
+    let b = stacked(m, v, 1).map_err(err)?;
+    let qd = least_squares(&j, &(-&b)).ok_or("the loop's rates are singular here")?;
+    for (k, &d) in dep.iter().enumerate() {
+        v.coords[d][1] = qd[k];
+    }
+    // J_d q̈_d = −(the loop's second derivative with the dependent q̈ at 0).
+    let b = stacked(m, v, 2).map_err(err)?;
+    let qdd = least_squares(&j, &(-&b)).ok_or("the loop's accelerations are singular here")?;
+    for (k, &d) in dep.iter().enumerate() {
+        v.coords[d][2] = qdd[k];
+    }
+    // The solution must close the loop at every order, not only in the least-squares sense.
+    for k in 0..3 {
+        let r = stacked(m, v, k).map_err(err)?;
+        if r.amax() > 1e-9 * scale.max(1.0) {
+            return Err(format!(
+                "the loop does not close at order {k} of d/dt here (residual {:e}): the \
+                 closure determines its coordinates only in part",
+                r.amax()
+            ));
+        }
+    }
+    Ok(())
+}

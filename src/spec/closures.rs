@@ -1,0 +1,245 @@
+//! Loop closures (« fermeture géométrique »): the rates of the dependent coordinates, solved
+//! exactly from the derivative of the loop's vector equation.
+//!
+//! A closure OA + AB + BO = 0 projected on the ground's basis gives scalar relations
+//! fᵢ(q) = 0. Their derivative is linear in the rates, J_d q̇_d + J_f q̇_f = 0, and Cramer's
+//! rule gives each dependent rate as a linear form of the free ones, q̇_d = N_d / det J_d.
+//! The determinant must be a product of parameters and cosines of coordinates (the
+//! crank–slider's L cos φ), which the canonical form inverts exactly (1/p, 1/cos q); the
+//! relation itself stays implicit. The rates become driven rates of the registry, holonomic.
+
+use super::SpecError;
+use super::validate::{at, expr_err};
+use crate::expr::{CoordId, Expr, VarRole};
+use crate::vector::Vector;
+use crate::wire::SpecFile;
+
+/// What the closures give the registry.
+pub(super) struct Solved {
+    /// (index in `coordinates`, the rate as a text of the free rates).
+    pub rates: Vec<(usize, String)>,
+    /// The angles whose cosine the rates divide by.
+    pub secants: Vec<String>,
+    /// The parameters the rates divide by.
+    pub inverses: Vec<String>,
+    /// The dependent coordinates (holonomic driven rates).
+    pub dependent: Vec<String>,
+}
+
+/// The spec with only what places the frames and points: the closures are read on it.
+fn geometry(spec: &SpecFile) -> SpecFile {
+    let mut g = spec.clone();
+    g.closures.clear();
+    g.solids.clear();
+    g.sets.clear();
+    g.hypotheses.clear();
+    g.quantities.clear();
+    g.questions.clear();
+    g.gravity = None;
+    g.links.clear();
+    g.actions.clear();
+    g.pfd.clear();
+    g.scenarios.clear();
+    g.small.clear();
+    g.default_basis = None;
+    g
+}
+
+/// The determinant of a square matrix by cofactors along the first row (n ≤ a few).
+fn det(m: &[Vec<Expr>], zero: &Expr) -> Expr {
+    match m.len() {
+        0 => zero.registry().integer(1),
+        1 => m[0][0].clone(),
+        n => {
+            let mut acc = zero.clone();
+            for j in 0..n {
+                if m[0][j].is_zero() {
+                    continue;
+                }
+                let minor: Vec<Vec<Expr>> = m[1..]
+                    .iter()
+                    .map(|r| {
+                        r.iter()
+                            .enumerate()
+                            .filter(|(k, _)| *k != j)
+                            .map(|(_, e)| e.clone())
+                            .collect()
+                    })
+                    .collect();
+                let t = &m[0][j] * &det(&minor, zero);
+                acc = if j % 2 == 0 { &acc + &t } else { &acc - &t };
+            }
+            acc
+        }
+    }
+}
+
+/// Solves the closures of a spec, if it has any.
+pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
+    if spec.closures.is_empty() {
+        return Ok(None);
+    }
+    let mut dependent: Vec<(String, usize)> = Vec::new();
+    for (i, c) in spec.closures.iter().enumerate() {
+        if c.dependent.is_empty() {
+            return Err(at(
+                format!("closures[{i}].dependent"),
+                "name the coordinates the closure determines (two for a planar loop)",
+            ));
+        }
+        for (j, d) in c.dependent.iter().enumerate() {
+            let path = format!("closures[{i}].dependent[{j}]");
+            let Some(k) = spec.coordinates.iter().position(|q| &q.name == d) else {
+                return Err(at(path, format!("unknown coordinate `{d}`")));
+            };
+            if spec.coordinates[k].rate.is_some() {
+                return Err(at(
+                    path,
+                    format!(
+                        "`{d}` has a rate of its own (coordinates[{k}].rate): the closure \
+                         determines it"
+                    ),
+                ));
+            }
+            if dependent.iter().any(|x| &x.0 == d) {
+                return Err(at(path, format!("`{d}` is determined by two closures")));
+            }
+            dependent.push((d.clone(), k));
+        }
+    }
+    let m = super::validate::build(&geometry(spec))?;
+    let reg = m.reg.clone();
+    let zero = reg.zero();
+    let ids: Vec<CoordId> = dependent
+        .iter()
+        .map(|(d, _)| reg.coord(d).expect("a declared coordinate"))
+        .collect();
+    let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
+    let ground = m.frames.ground();
+    let axes = ["x", "y", "z"];
+    // The scalar relations: each closure's nonzero components on the ground's basis.
+    let mut rows: Vec<Expr> = Vec::new();
+    for (i, c) in spec.closures.iter().enumerate() {
+        let path = format!("closures[{i}].vector");
+        let parts = reg
+            .parse_vector(&c.vector, &bv)
+            .map_err(|e| expr_err(&path, e))?;
+        let mut v = Vector::zero();
+        for (f, comps) in parts {
+            v.add_part(f, comps);
+        }
+        let comps = v.express_in(&m.frames, ground);
+        let mut n = 0;
+        for (k, e) in comps.into_iter().enumerate() {
+            if e.is_zero() {
+                continue;
+            }
+            if e.is_time_independent() {
+                return Err(at(
+                    &path,
+                    format!(
+                        "its component on {}{}, `{}`, holds no coordinate: the loop does not \
+                         close",
+                        axes[k],
+                        m.frame_name(ground),
+                        crate::excerpt::excerpt(&e.to_string())
+                    ),
+                ));
+            }
+            rows.push(e);
+            n += 1;
+        }
+        if n != c.dependent.len() {
+            return Err(at(
+                &path,
+                format!(
+                    "it gives {n} scalar relation{} on the ground's basis, for {} dependent \
+                     coordinate{}: as many relations as dependent coordinates",
+                    if n == 1 { "" } else { "s" },
+                    c.dependent.len(),
+                    if c.dependent.len() == 1 { "" } else { "s" },
+                ),
+            ));
+        }
+    }
+    // d/dt fᵢ = Σ_d J_id q̇_d − bᵢ, bᵢ the free rates' part with its sign changed.
+    let mut jac: Vec<Vec<Expr>> = Vec::new();
+    let mut rhs: Vec<Expr> = Vec::new();
+    for r in &rows {
+        let d = r.dt();
+        let js: Vec<Expr> = ids.iter().map(|&q| d.partial_rate(q, 1)).collect();
+        let mut b = -&d;
+        for (q, j) in ids.iter().zip(&js) {
+            b = &b + &(j * &reg.dot(*q));
+        }
+        jac.push(js);
+        rhs.push(b);
+    }
+    let names: Vec<&str> = dependent.iter().map(|d| d.0.as_str()).collect();
+    let d = det(&jac, &zero);
+    if d.is_zero() {
+        return Err(at(
+            "closures",
+            format!(
+                "the closures do not determine {}: their relations are redundant (the \
+                 derivative's determinant in these rates is 0)",
+                names.join(", ")
+            ),
+        ));
+    }
+    // The determinant must be invertible in the canonical form: a number times parameters
+    // and cosines of coordinates.
+    let mut secants = Vec::new();
+    let mut inverses = Vec::new();
+    let monomial = d.nterms() == 1
+        && reg.var_ids().all(|v| {
+            if !d.contains_var(v) {
+                return true;
+            }
+            match reg.role(v) {
+                VarRole::Parameter(p) if !reg.is_unknown(p) => {
+                    inverses.push(reg.scalar_name(p).to_string());
+                    true
+                }
+                VarRole::Inverse(_) => true,
+                VarRole::Cos(q) if q.index() < reg.coordinates().len() => {
+                    secants.push(reg.coord_info(q).name.clone());
+                    true
+                }
+                _ => false,
+            }
+        });
+    if !monomial {
+        return Err(at(
+            "closures",
+            format!(
+                "solving the closures for {} divides by `{}`, which is not a product of \
+                 parameters and cosines of coordinates: not supported yet (an angle measured \
+                 so that the loop's determinant is L cos φ, as in a crank–slider, is)",
+                names.join(", "),
+                crate::excerpt::excerpt(&d.to_string())
+            ),
+        ));
+    }
+    let mut rates = Vec::new();
+    for (col, (name, k)) in dependent.iter().enumerate() {
+        let replaced: Vec<Vec<Expr>> = jac
+            .iter()
+            .zip(&rhs)
+            .map(|(row, b)| {
+                let mut r = row.clone();
+                r[col] = b.clone();
+                r
+            })
+            .collect();
+        let n = det(&replaced, &zero);
+        let _ = name;
+        rates.push((*k, format!("({n})/({d})")));
+    }
+    Ok(Some(Solved {
+        rates,
+        secants,
+        inverses,
+        dependent: dependent.into_iter().map(|d| d.0).collect(),
+    }))
+}
