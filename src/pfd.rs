@@ -110,8 +110,8 @@ pub enum PfdError {
         /// The unknowns they hold.
         unknowns: Vec<String>,
     },
-    /// No remaining equation has a number or a polynomial in the parameters as the
-    /// coefficient of this unknown.
+    /// No remaining equation has a number, a polynomial in the parameters, or a product of
+    /// parameters and cosines a loop closure divides by as the coefficient of this unknown.
     #[error(
         "cannot solve for {unknown}: in every remaining equation its coefficient is zero or \
          depends on the motion (project the theorems on the basis of the link's axis)"
@@ -389,6 +389,13 @@ pub fn solve_with_residuals(
                     .filter(|(_, c)| c.is_parameter_polynomial())
                     .min_by_key(|(_, c)| c.nterms())
                     .map(|(i, _)| i)
+            })
+            .or_else(|| {
+                // A product of parameters and cosines a loop closure divides by (L cos φ):
+                // inverted exactly, its nonvanishing a condition.
+                pending
+                    .iter()
+                    .position(|(_, r)| coefficient(r).monomial_inverse().is_ok())
             });
         let Some(pos) = pos else {
             return Err(PfdError::NoNumericPivot {

@@ -347,6 +347,16 @@ impl<'m> Doc<'m> {
             (b, a, super::expr(b))
         };
         let rv = Value::Scalar(r.clone());
+        // The lines of the right side are aligned after the left side. A wide left side over
+        // a right side of several lines goes on a line of its own, the right side's lines
+        // starting at the margin with its `=` (else they would run into the margin).
+        let own_line = super::width(&lhs) > super::LINE / 4
+            && super::width(&super::expr(r)) + super::width(&lhs) > super::LINE - 6;
+        let lhs = if own_line {
+            format!("&{lhs} \\\\\n")
+        } else {
+            lhs
+        };
         let body = super::value_within(self.m, self.style, &lhs, &rv, None, super::LINE - 6);
         self.record(role, what, body, &Value::Scalar(l.clone()), Some(rv), true);
         if let Some(d) = self.displays.last_mut() {
@@ -622,6 +632,38 @@ pub fn answer_key_document(
             value: Value::Vector {
                 basis: ground,
                 components: pt.offset.express_in(&m.frames, ground),
+            },
+        });
+    }
+    // The loop closures, as the statement writes them: their derivative gives the rates of
+    // the dependent coordinates above.
+    for c in &m.spec.closures {
+        let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
+        let Ok(parts) = m.reg.parse_vector(&c.vector, &bv) else {
+            continue;
+        };
+        let mut v = crate::vector::Vector::zero();
+        for (f, comps) in parts {
+            v.add_part(f, comps);
+        }
+        let rhs = super::vector_over_bases(m, &v);
+        let math = format!("\\vec{{0}} = {rhs}");
+        let _ = writeln!(
+            o,
+            "\\item Fermeture géométrique : ${math}$ ; elle détermine {}.",
+            c.dependent
+                .iter()
+                .map(|d| format!("${}$", name(d)))
+                .collect::<Vec<_>>()
+                .join(" et ")
+        );
+        let ground = m.frames.ground();
+        positions.push(Inline {
+            what: format!("closure {}", c.vector),
+            latex: math,
+            value: Value::Vector {
+                basis: ground,
+                components: v.express_in(&m.frames, ground),
             },
         });
     }

@@ -196,3 +196,74 @@ pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
     }
     Ok(())
 }
+
+/// The closures' shape, checked at three configurations (parameters fixed, coordinates
+/// varied): each closure's nonzero ground components as many as its dependent coordinates,
+/// none without a coordinate, and their derivative invertible in the dependent rates.
+pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
+    if m.closures.is_empty() {
+        return Ok(());
+    }
+    let configs: Vec<Values> = (0..3)
+        .map(|c| Values {
+            params: (0..m.params.len())
+                .map(|i| 0.6 + 0.29 * (i % 5) as f64)
+                .collect(),
+            coords: (0..m.coords.len())
+                .map(|j| [0.3 + 0.41 * j as f64 + 0.77 * c as f64, 0.0, 0.0])
+                .collect(),
+            time: 0.0,
+        })
+        .collect();
+    let mut at = Vec::new();
+    for v in &configs {
+        at.push(loops(m, v)?);
+    }
+    let axes = ["x", "y", "z"];
+    let mut rank_needed = 0;
+    for (i, c) in m.closures.iter().enumerate() {
+        let path = format!("closures[{i}].vector");
+        let mut n = 0;
+        for k in 0..3 {
+            let vals: Vec<f64> = at.iter().map(|l| l[i][k].re).collect();
+            let size = vals.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
+            if size <= 1e-12 {
+                continue;
+            }
+            if vals.iter().all(|x| (x - vals[0]).abs() <= 1e-12 * size) {
+                return Err(super::model::spec_err(
+                    path,
+                    format!(
+                        "its component on the ground's {} axis holds no coordinate: the loop \
+                         does not close",
+                        axes[k]
+                    ),
+                ));
+            }
+            n += 1;
+        }
+        if n != c.dependent.len() {
+            return Err(super::model::spec_err(
+                path,
+                format!(
+                    "it gives {n} scalar relations on the ground's basis for {} dependent \
+                     coordinates: as many relations as dependent coordinates",
+                    c.dependent.len()
+                ),
+            ));
+        }
+        rank_needed += n;
+    }
+    let dep: Vec<usize> = m.closures.iter().flat_map(|c| c.dependent.clone()).collect();
+    let full = configs.iter().any(|v| {
+        jacobian(m, v, &dep).is_ok_and(|j| j.rank(1e-9 * j.amax().max(1e-300)) == rank_needed)
+    });
+    if !full {
+        return Err(super::model::spec_err(
+            "closures",
+            "the closures do not determine their dependent coordinates: their relations are \
+             redundant",
+        ));
+    }
+    Ok(())
+}

@@ -299,6 +299,7 @@ impl NumericModel {
     pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         let mut model = model::build(spec)?;
         model.closures = closure::build(spec, &model)?;
+        closure::check_shape(&model)?;
         model.dynamics = dynamics::build(spec, &model)?;
         model::mark_positive(&mut model);
         model.uses_time = model.writes_time();

@@ -362,7 +362,21 @@ fn equations(body: &str) -> Vec<(Vec<Tok>, Vec<Tok>)> {
         rows.last_mut().unwrap().push(t);
     }
     let mut eqs: Vec<(Vec<Tok>, Vec<Tok>)> = Vec::new();
+    // A wide left side on a row of its own (`&lhs`), its `&= …` on the next row.
+    let mut alone: Option<Vec<Tok>> = None;
     for r in rows {
+        if let Some(lhs) = alone.take() {
+            assert!(
+                r.starts_with(&[Tok::Sym('&'), Tok::Sym('=')]),
+                "a left side alone is followed by its `&=`: {r:?}"
+            );
+            eqs.push((lhs, r[2..].to_vec()));
+            continue;
+        }
+        if r.first() == Some(&Tok::Sym('&')) && !r.contains(&Tok::Sym('=')) {
+            alone = Some(r[1..].to_vec());
+            continue;
+        }
         let phantom = [
             Tok::Sym('&'),
             Tok::Cmd("phantom".into()),

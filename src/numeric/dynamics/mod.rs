@@ -282,6 +282,7 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
     // Links.
     let letters = ['X', 'Y', 'Z', 'L', 'M', 'N'];
     let mut link_names = BTreeSet::new();
+    let mut joined: Vec<(Body, Body)> = Vec::new();
     for (i, l) in spec.links.iter().enumerate() {
         let path = format!("links[{i}]");
         if crate::quantity::check_name(&l.name).is_err() {
@@ -309,6 +310,21 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
                 "a link joins two different solids",
             ));
         }
+        // A closed kinematic loop needs its closure; links in parallel between the same two
+        // solids (two bearings) are one connection.
+        let parallel = joined
+            .iter()
+            .any(|&(a, b)| [a, b] == between || [b, a] == between);
+        if spec.closures.is_empty() && !parallel && connected(&joined, between[0], between[1]) {
+            return Err(spec_err(
+                format!("{path}.between"),
+                format!(
+                    "the link {} closes a kinematic loop: declare its closure (`closures`)",
+                    l.name
+                ),
+            ));
+        }
+        joined.push((between[0], between[1]));
         let p = point(&l.point, format!("{path}.point"))?;
         let axis = l
             .axis
@@ -557,4 +573,27 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
         });
     }
     Ok(d)
+}
+
+/// Whether `a` and `b` are already connected through the links `joined` (breadth-first).
+fn connected(joined: &[(Body, Body)], a: Body, b: Body) -> bool {
+    let mut reached = vec![a];
+    let mut k = 0;
+    while k < reached.len() {
+        let n = reached[k];
+        for &(x, y) in joined {
+            let other = if x == n {
+                y
+            } else if y == n {
+                x
+            } else {
+                continue;
+            };
+            if !reached.contains(&other) {
+                reached.push(other);
+            }
+        }
+        k += 1;
+    }
+    reached.contains(&b)
 }
