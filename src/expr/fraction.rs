@@ -144,6 +144,15 @@ impl Walker<'_> {
                     }
                     return Ok((num, reg.one()));
                 }
+                // A product of parameters and cosines a loop closure divides by has an
+                // exact inverse: it goes above the line.
+                if let Ok(inv) = bn.monomial_inverse() {
+                    let mut num = reg.one();
+                    for _ in 0..k {
+                        num = self.times(&num, &self.times(&bd, &inv)?)?;
+                    }
+                    return Ok((num, reg.one()));
+                }
                 if reg
                     .var_ids()
                     .any(|i| bn.contains_var(i) && !reg.is_factor_variable(i))

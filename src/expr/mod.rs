@@ -527,7 +527,8 @@ impl Expr {
                 && self.p.degree(w) > 0
             {
                 let sec = reg.var(w).p;
-                acc = &acc + &(&(&(&self.p.derivative(w) * &sec) * &(&sec * &reg.sin(q).p)) * &qdot);
+                acc =
+                    &acc + &(&(&(&self.p.derivative(w) * &sec) * &(&sec * &reg.sin(q).p)) * &qdot);
             }
             if let Some(r) = c.rates {
                 for k in 0..2 {

@@ -56,10 +56,7 @@ fn leaf(reg: &Registry, l: &Leaf, k: u8) -> String {
         // Alone (a factor of a product broken across lines); a whole product writes its
         // inverses below one line (see `product`).
         Leaf::Inverse(p) => format!("\\frac{{1}}{{{}}}", pw(name(reg.scalar_name(*p)))),
-        Leaf::Secant(q) => format!(
-            "\\frac{{1}}{{{}}}",
-            leaf(reg, &Leaf::Cos(Angle::of(*q)), k)
-        ),
+        Leaf::Secant(q) => format!("\\frac{{1}}{{{}}}", leaf(reg, &Leaf::Cos(Angle::of(*q)), k)),
         Leaf::Value(q) => pw(name(&reg.coord_info(*q).name)),
         Leaf::Rate(q, o) => pw(rate(reg, *q, *o)),
         Leaf::Cos(a) | Leaf::Sin(a) => {

@@ -41,7 +41,10 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Vec<Closure>, N
         for (j, d) in c.dependent.iter().enumerate() {
             let path = format!("closures[{i}].dependent[{j}]");
             let Some(&k) = m.coord_index.get(d) else {
-                return Err(super::model::spec_err(path, format!("unknown coordinate `{d}`")));
+                return Err(super::model::spec_err(
+                    path,
+                    format!("unknown coordinate `{d}`"),
+                ));
             };
             if m.coords[k].rate.is_some() {
                 return Err(super::model::spec_err(
@@ -136,12 +139,12 @@ pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
     if m.closures.is_empty() {
         return Ok(());
     }
-    let dep: Vec<usize> = m.closures.iter().flat_map(|c| c.dependent.clone()).collect();
-    let scale = v
-        .params
+    let dep: Vec<usize> = m
+        .closures
         .iter()
-        .map(|p| p.abs())
-        .fold(1.0_f64, f64::max);
+        .flat_map(|c| c.dependent.clone())
+        .collect();
+    let scale = v.params.iter().map(|p| p.abs()).fold(1.0_f64, f64::max);
     let err = |e: NumericError| e.to_string();
     let at_rest = |v: &Values| Values {
         params: v.params.clone(),
@@ -254,7 +257,11 @@ pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
         }
         rank_needed += n;
     }
-    let dep: Vec<usize> = m.closures.iter().flat_map(|c| c.dependent.clone()).collect();
+    let dep: Vec<usize> = m
+        .closures
+        .iter()
+        .flat_map(|c| c.dependent.clone())
+        .collect();
     let full = configs.iter().any(|v| {
         jacobian(m, v, &dep).is_ok_and(|j| j.rank(1e-9 * j.amax().max(1e-300)) == rank_needed)
     });

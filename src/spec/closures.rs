@@ -222,7 +222,7 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
         ));
     }
     let mut rates = Vec::new();
-    for (col, (name, k)) in dependent.iter().enumerate() {
+    for (col, (_, k)) in dependent.iter().enumerate() {
         let replaced: Vec<Vec<Expr>> = jac
             .iter()
             .zip(&rhs)
@@ -233,7 +233,6 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
             })
             .collect();
         let n = det(&replaced, &zero);
-        let _ = name;
         rates.push((*k, format!("({n})/({d})")));
     }
     Ok(Some(Solved {

@@ -8,6 +8,7 @@ mod actions;
 mod bilan;
 mod chain;
 mod check;
+mod closures;
 mod corpus;
 mod derivation;
 mod eval;

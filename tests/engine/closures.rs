@@ -1,0 +1,176 @@
+//! Loop closures (issue 16, item 1): the crank–slider's loop law and dynamics by hand and
+//! by Lagrange's equations, and bad closures refused by both sides with their place.
+
+use super::*;
+use torseur::numeric::NumericModel;
+
+fn crank_slider() -> serde_json::Value {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/bielle_manivelle.json"
+    ))
+    .unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+/// Both sides' verdicts: the exact side's error, and whether the float backend refuses too.
+fn refused_by_both(v: &serde_json::Value) -> (String, String) {
+    let file = torseur::spec::parse_spec(&v.to_string()).unwrap();
+    let exact = torseur::spec::build(&file).expect_err("the exact side accepted it");
+    let float = NumericModel::new(&file).expect_err("the float backend accepted it");
+    (exact.to_string(), float.to_string())
+}
+
+#[test]
+fn the_crank_slider_loop_law_by_hand() {
+    // OA + AB + BO = 0 on y0: R sin θ + L sin φ = 0, so R cos θ θ̇ + L cos φ φ̇ = 0 and
+    // φ̇ = −R θ̇ cos θ / (L cos φ). On x0: ẋ = −R θ̇ sin θ − L φ̇ sin φ
+    // = −R θ̇ sin(θ − φ) / cos φ, the piston's speed.
+    let m = torseur::spec::load("derivations/bielle_manivelle.json").unwrap();
+    torseur::assert_equivalent!(m, "Omega(2/0)", "-R*dot(theta)*cos(theta)/(L*cos(phi))*z0");
+    torseur::assert_equivalent!(
+        m,
+        "V(B,3/0)",
+        "-R*dot(theta)*(sin(theta)*cos(phi) - cos(theta)*sin(phi))/cos(phi)*x0"
+    );
+    // The rates of the dependent coordinates are those forms, and q̈ their derivatives.
+    let reg = &m.reg;
+    let phi = reg.coord("phi").unwrap();
+    assert!(reg.coord_info(phi).is_driven() && reg.coord_info(phi).is_holonomic());
+    assert_eq!(
+        reg.dot(phi),
+        ex(&m, "-R*dot(theta)*cos(theta)/(L*cos(phi))")
+    );
+    assert_eq!(reg.rate(phi, 2), reg.dot(phi).dt());
+    // (1/cos φ) cos φ = 1 exactly, and the wrong sign is caught.
+    assert!((&ex(&m, "1/cos(phi)") * &ex(&m, "cos(phi)")).is_one());
+    let wrong = torseur::verify::verify(
+        &m,
+        "Omega(2/0)",
+        "R*dot(theta)*cos(theta)/(L*cos(phi))*z0",
+        None,
+    )
+    .unwrap();
+    assert!(!wrong.is_equivalent());
+}
+
+#[test]
+fn the_crank_slider_equivalent_inertia_by_hand() {
+    // Ec = ½ J1 θ̇² + ½ m2 V(G2)² + ½ (m2 L²/12) φ̇² + ½ m3 ẋ², with
+    // V(G2) = θ̇ (−R sin θ + (R/2) cos θ tan φ, (R/2) cos θ) from V(A) + Ω ∧ AG2.
+    let m = torseur::spec::load("derivations/bielle_manivelle.json").unwrap();
+    torseur::assert_equivalent!(
+        m,
+        "J_eq(theta)",
+        "J1 + m2*((-R*sin(theta) + R/2*cos(theta)*sin(phi)/cos(phi))^2 + R^2/4*cos(theta)^2) \
+         + m2*R^2/12*cos(theta)^2/cos(phi)^2 \
+         + m3*R^2*(sin(theta) - cos(theta)*sin(phi)/cos(phi))^2"
+    );
+    // The gas pushes the piston back: P = C_m θ̇ − F ẋ.
+    torseur::assert_equivalent!(
+        m,
+        "P(ext->E/0)",
+        "C_m*dot(theta) - F*(-R*dot(theta)*(sin(theta) - cos(theta)*sin(phi)/cos(phi)))"
+    );
+    torseur::assert_equivalent!(m, "Pint(E)", "0");
+}
+
+#[test]
+fn the_crank_slider_equation_of_motion_is_lagranges() {
+    // The PFD (piston, rod, crank; the links' unknowns eliminated through the pivot L cos φ)
+    // and Lagrange's equation of θ (energies and virtual powers, following φ(θ) and x(θ)
+    // through their rates) are one equation: a second route of other code.
+    let m = torseur::spec::load("derivations/bielle_manivelle.json").unwrap();
+    let sol = torseur::pfd::solve(&m).unwrap();
+    let theta = m.reg.coord("theta").unwrap();
+    let lagrange = torseur::pfd::lagrange(&m, theta);
+    let eom = &sol.eom["theta"];
+    assert!(
+        (eom - &lagrange).is_zero() || (eom + &lagrange).is_zero(),
+        "{eom}\n{lagrange}"
+    );
+    // Its θ̈ coefficient is the equivalent inertia.
+    let jeq = torseur::derivation::derive(
+        &m,
+        &torseur::quantity::Quantity::parse("J_eq(theta)").unwrap(),
+    )
+    .unwrap();
+    let torseur::derivation::Value::Scalar(j) = jeq.value else {
+        panic!("J_eq is a scalar")
+    };
+    assert_eq!(eom.partial_rate(theta, 2), j);
+    // The pivot L cos φ is stated as a condition of the solution.
+    assert!(sol.conditions.iter().any(|c| *c == ex(&m, "L*cos(phi)")));
+}
+
+#[test]
+fn bad_closures_are_refused_by_both_sides_with_their_place() {
+    // Without its closure, the slide closes a loop.
+    let mut v = crank_slider();
+    v.as_object_mut().unwrap().remove("closures");
+    let (e, f) = refused_by_both(&v);
+    assert!(
+        e.contains("links[3].between") && e.contains("kinematic loop"),
+        "{e}"
+    );
+    assert!(f.contains("links[3].between"), "{f}");
+    // One dependent coordinate for two relations.
+    let mut v = crank_slider();
+    v["closures"][0]["dependent"] = serde_json::json!(["phi"]);
+    let (e, f) = refused_by_both(&v);
+    assert!(
+        e.contains("closures[0].vector") && e.contains("2 scalar relations"),
+        "{e}"
+    );
+    assert!(f.contains("closures[0].vector"), "{f}");
+    // A dependent coordinate with a rate of its own.
+    let mut v = crank_slider();
+    v["coordinates"][1]["rate"] = "dot(theta)".into();
+    let (e, f) = refused_by_both(&v);
+    assert!(
+        e.contains("closures[0].dependent[0]") && e.contains("rate of its own"),
+        "{e}"
+    );
+    assert!(f.contains("closures[0].dependent[0]"), "{f}");
+    // An unknown coordinate.
+    let mut v = crank_slider();
+    v["closures"][0]["dependent"][1] = "y".into();
+    let (e, f) = refused_by_both(&v);
+    assert!(
+        e.contains("closures[0].dependent[1]") && e.contains("`y`"),
+        "{e}"
+    );
+    assert!(f.contains("closures[0].dependent[1]"), "{f}");
+    // A component without coordinate: the loop cannot close.
+    let mut v = crank_slider();
+    v["closures"][0]["vector"] = "R*x1 + L*x2 - x*x0 + L*z0".into();
+    let (e, f) = refused_by_both(&v);
+    assert!(
+        e.contains("closures[0].vector") && e.contains("does not close"),
+        "{e}"
+    );
+    assert!(f.contains("closures[0].vector"), "{f}");
+    // Redundant relations: the same relation twice (θ's rate only).
+    let mut v = crank_slider();
+    v["closures"][0]["vector"] = "(R*cos(theta) - x)*x0 + (R*cos(theta) - x)*y0".into();
+    let (e, f) = refused_by_both(&v);
+    assert!(e.contains("redundant"), "{e}");
+    assert!(f.contains("redundant"), "{f}");
+}
+
+#[test]
+fn a_loop_that_cannot_close_is_found_by_the_float_backend() {
+    // The exact side reads only the closure's derivative: a constant offset of 10 L on y0
+    // changes no rate. The float backend, which places the loop, finds it cannot close
+    // (|R sin θ + L sin φ| ≤ R + L < 10 L for the drawn lengths) and says so.
+    let mut v = crank_slider();
+    v["closures"][0]["vector"] = "R*x1 + L*x2 - x*x0 + 10*L*y0".into();
+    let file = torseur::spec::parse_spec(&v.to_string()).unwrap();
+    let model = NumericModel::new(&file).unwrap();
+    use rand::SeedableRng;
+    let e = model
+        .sample(&mut rand_chacha::ChaCha8Rng::seed_from_u64(1))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("does not close"), "{e}");
+}
