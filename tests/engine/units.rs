@@ -380,7 +380,8 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 18] = [
+const LIBRARY: [&str; 19] = [
+    "bielle_manivelle",
     "bille_tube_tournant",
     "bras_robot_deux_axes",
     "disque_plan_incline",
