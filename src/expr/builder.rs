@@ -34,6 +34,7 @@ pub struct RegistryBuilder {
     pub(super) aliases: Vec<(String, String)>,
     pub(super) inverses: Vec<String>,
     pub(super) secants: Vec<String>,
+    pub(super) cosecants: Vec<String>,
     pub(super) holonomic: Vec<String>,
     pub(super) display_ranks: Vec<u32>,
 }
@@ -149,6 +150,34 @@ impl RegistryBuilder {
         for n in names {
             if !self.secants.contains(n) {
                 self.secants.push(n.clone());
+            }
+        }
+        self
+    }
+
+    /// The angle coordinates whose sine a loop closure divides by (a four-bar's rocker
+    /// measured from its coupler, ψ, whose loop determinant is L2 L3 sin ψ): each gets a
+    /// variable 1/sin q, reduced sin q·(1/sin q) → 1, and the angle's other rule becomes
+    /// cos²q → 1 − sin²q, so that the two leading monomials stay coprime and the reduced
+    /// form unique. A coordinate cannot have both.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::builder()
+    ///     .coordinate("psi", CoordinateKind::Angle)
+    ///     .cosecants(&["psi".into()])
+    ///     .build()
+    ///     .unwrap();
+    /// let c = reg.parse("cos(psi)/sin(psi)").unwrap();
+    /// // d(cot ψ)/dt = −ψ̇ / sin²ψ, and cos²ψ + sin²ψ = 1 still.
+    /// assert_eq!(c.dt(), reg.parse("-dot(psi)/sin(psi)^2").unwrap());
+    /// assert!(reg.parse("cos(psi)^2 + sin(psi)^2 - 1").unwrap().is_zero());
+    /// ```
+    pub fn cosecants(mut self, names: &[String]) -> Self {
+        for n in names {
+            if !self.cosecants.contains(n) {
+                self.cosecants.push(n.clone());
             }
         }
         self

@@ -9,6 +9,7 @@
 //! test is exact and costs nothing.
 
 mod builder;
+mod compile;
 mod eval;
 mod factor;
 mod flat;
@@ -185,6 +186,9 @@ pub struct CoordInfo {
     driven: bool,
     /// A driven rate whose coefficients hold coordinates (ẋ = R θ̇ cos ψ).
     nonholonomic: bool,
+    /// cos²q is reduced to 1 − sin²q instead of sin²q to 1 − cos²q: a loop closure divides
+    /// by sin q (see [`RegistryBuilder::cosecants`]).
+    cos_reduced: bool,
 }
 
 impl CoordInfo {
@@ -253,9 +257,29 @@ pub enum VarRole {
     /// 1/p of a parameter the mechanism divides by (see [`RegistryBuilder::inverses`]):
     /// p·(1/p) is reduced to 1 after every product, as sin² is.
     Inverse(ParamId),
-    /// 1/cos q of an angle coordinate a loop closure divides by (see
-    /// [`RegistryBuilder::secants`]): cos q·(1/cos q) is reduced to 1 after every product.
-    Secant(CoordId),
+    /// 1/cos q or 1/sin q of an angle coordinate a loop closure divides by (see
+    /// [`RegistryBuilder::secants`], [`RegistryBuilder::cosecants`]): cos q·(1/cos q), or
+    /// sin q·(1/sin q), is reduced to 1 after every product.
+    Reciprocal(CoordId, Trig),
+}
+
+/// Which trigonometric function of an angle: the cos or the sin.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Trig {
+    /// cos q.
+    Cos,
+    /// sin q.
+    Sin,
+}
+
+impl Trig {
+    /// `cos` or `sin`, as the syntax writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Trig::Cos => "cos",
+            Trig::Sin => "sin",
+        }
+    }
 }
 
 /// An angle Σ nᵢ aᵢ + k π/2, read by [`Registry::parse_angle`].
@@ -350,7 +374,7 @@ impl Expr {
     pub fn is_time_independent(&self) -> bool {
         (0..self.reg.nvars()).all(|i| match self.reg.roles[i] {
             VarRole::Parameter(_) | VarRole::Inverse(_) => true,
-            VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q) | VarRole::Secant(q)
+            VarRole::Cos(q) | VarRole::Sin(q) | VarRole::Value(q) | VarRole::Reciprocal(q, _)
                 if self.reg.coords[q.0].is_fixed() =>
             {
                 true
@@ -450,10 +474,13 @@ impl Expr {
         Poly::from_coefficient_list(coefficients, exponents, reg.vars.clone(), &Q)
     }
 
-    /// sin²q → 1 − cos²q for every angle.
+    /// sin²q → 1 − cos²q for every angle (cos²q → 1 − sin²q for an angle whose sine a loop
+    /// closure divides by).
     fn reduce_trig(mut p: Poly, reg: &Registry) -> Poly {
         for c in &reg.coords {
             let Some((ci, si)) = c.trig else { continue };
+            // A coordinate whose sine a closure divides by has cos² reduced instead.
+            let (ci, si) = if c.cos_reduced { (si, ci) } else { (ci, si) };
             while p.degree(si) >= 2 {
                 let n = p.nvars();
                 let mut low = p.zero();
@@ -522,13 +549,11 @@ impl Expr {
             {
                 acc = &acc + &(&self.p.derivative(vi) * &qdot);
             }
-            // d(1/cos q)/dt = (1/cos q)² sin q q̇.
-            if let Some(w) = reg.secant_var(q)
-                && self.p.degree(w) > 0
-            {
-                let sec = reg.var(w).p;
-                acc =
-                    &acc + &(&(&(&self.p.derivative(w) * &sec) * &(&sec * &reg.sin(q).p)) * &qdot);
+            // d(1/cos q)/dt = (1/cos q)² sin q q̇, d(1/sin q)/dt = −(1/sin q)² cos q q̇.
+            for (w, d) in reg.reciprocal_derivatives(q) {
+                if self.p.degree(w) > 0 {
+                    acc = &acc + &(&(&self.p.derivative(w) * &d.p) * &qdot);
+                }
             }
             if let Some(r) = c.rates {
                 for k in 0..2 {
@@ -638,11 +663,10 @@ impl Expr {
         if let Some(vi) = c.value {
             acc = &acc + &self.derivative(VarId(vi));
         }
-        if let Some(w) = reg.secant_var(q)
-            && self.p.degree(w) > 0
-        {
-            let sec = reg.var(w);
-            acc = &acc + &(&(&self.derivative(VarId(w)) * &sec) * &(&sec * &reg.sin(q)));
+        for (w, d) in reg.reciprocal_derivatives(q) {
+            if self.p.degree(w) > 0 {
+                acc = &acc + &(&self.derivative(VarId(w)) * &d);
+            }
         }
         acc
     }

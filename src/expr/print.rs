@@ -1,7 +1,7 @@
 //! Printing: the plain-text form (parsable back) and the presentation form, collected by
 //! kinematic monomials (q̈ᵢ, q̇ᵢq̇ⱼ) with the common parameter factor of each group pulled out.
 
-use super::{CoordId, Expr, ParamId, Registry, VarId, VarRole};
+use super::{CoordId, Expr, ParamId, Registry, Trig, VarId, VarRole};
 use std::cmp::Reverse;
 use std::rc::Rc;
 use symbolica::domains::rational::Rational;
@@ -15,8 +15,9 @@ pub struct TermParts {
     pub params: Vec<(ParamId, u8)>,
     /// (parameter, exponent) of the parameters the term divides by.
     pub inverses: Vec<(ParamId, u8)>,
-    /// (coordinate, exponent) of the cosines the term divides by (a loop closure's 1/cos q).
-    pub secants: Vec<(CoordId, u8)>,
+    /// (coordinate, cos or sin, exponent) of what the term divides by (a loop closure's
+    /// 1/cos q).
+    pub reciprocals: Vec<(CoordId, Trig, u8)>,
     /// (coordinate, is_cos, exponent): trigonometric factors.
     pub trig: Vec<(CoordId, bool, u8)>,
     /// (coordinate, exponent): length coordinates.
@@ -31,7 +32,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
         coef: coef.clone(),
         params: vec![],
         inverses: vec![],
-        secants: vec![],
+        reciprocals: vec![],
         trig: vec![],
         values: vec![],
         rates: vec![],
@@ -43,7 +44,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
         match reg.role(VarId(i)) {
             VarRole::Parameter(p) => t.params.push((p, k)),
             VarRole::Inverse(p) => t.inverses.push((p, k)),
-            VarRole::Secant(q) => t.secants.push((q, k)),
+            VarRole::Reciprocal(q, f) => t.reciprocals.push((q, f, k)),
             VarRole::Cos(q) => t.trig.push((q, true, k)),
             VarRole::Sin(q) => t.trig.push((q, false, k)),
             VarRole::Value(q) => t.values.push((q, k)),
@@ -52,7 +53,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
     }
     t.params.sort();
     t.inverses.sort();
-    t.secants.sort();
+    t.reciprocals.sort();
     t.trig.sort_by_key(|&(q, is_cos, _)| (q, !is_cos));
     t.rates.sort_by_key(|&(q, o, _)| (Reverse(o), q));
     t
@@ -80,7 +81,10 @@ type OtherKey = (
 
 fn other_key(t: &TermParts) -> OtherKey {
     (
-        t.params.is_empty() && t.trig.is_empty() && t.inverses.is_empty() && t.secants.is_empty(),
+        t.params.is_empty()
+            && t.trig.is_empty()
+            && t.inverses.is_empty()
+            && t.reciprocals.is_empty(),
         t.params.iter().map(|&(_, k)| k as u32).sum(),
         t.params.iter().map(|&(p, k)| (p, Reverse(k))).collect(),
         t.trig
@@ -147,9 +151,9 @@ fn term_text(reg: &Registry, t: &TermParts) -> (bool, String) {
         .iter()
         .map(|&(p, k)| pw(reg.scalar_name(p).to_string(), k))
         .chain(
-            t.secants
+            t.reciprocals
                 .iter()
-                .map(|&(q, k)| pw(format!("cos({})", reg.coord_info(q).name), k)),
+                .map(|&(q, f, k)| pw(format!("{}({})", f.name(), reg.coord_info(q).name), k)),
         )
         .collect();
     let s = match below.len() {
@@ -259,8 +263,8 @@ impl Expr {
                         for &(p, k) in &t.inverses {
                             strip(&mut e, VarRole::Inverse(p), k);
                         }
-                        for &(q, k) in &t.secants {
-                            strip(&mut e, VarRole::Secant(q), k);
+                        for &(q, f, k) in &t.reciprocals {
+                            strip(&mut e, VarRole::Reciprocal(q, f), k);
                         }
                         (&t.coef * &factor.coef.inv(), e)
                     })
@@ -314,7 +318,7 @@ fn common_factor(ts: &[TermParts]) -> TermParts {
         coef,
         params,
         inverses: vec![],
-        secants: vec![],
+        reciprocals: vec![],
         trig,
         values: vec![],
         rates: vec![],
@@ -343,7 +347,7 @@ impl std::fmt::Display for Grouped {
                 coef: Rational::one(),
                 params: vec![],
                 inverses: vec![],
-                secants: vec![],
+                reciprocals: vec![],
                 trig: vec![],
                 values: vec![],
                 rates: g.kinematic.clone(),

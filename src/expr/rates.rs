@@ -33,7 +33,10 @@ pub(super) fn driven_by(reg: &Registry, q: CoordId, e: &Expr) -> Result<Option<b
             match reg.roles[i] {
                 VarRole::Parameter(p) if !reg.is_unknown(p) => {}
                 VarRole::Inverse(_) => {}
-                VarRole::Cos(c) | VarRole::Sin(c) | VarRole::Value(c) | VarRole::Secant(c) => {
+                VarRole::Cos(c)
+                | VarRole::Sin(c)
+                | VarRole::Value(c)
+                | VarRole::Reciprocal(c, _) => {
                     holonomic &= reg.coords[c.0].is_fixed();
                 }
                 VarRole::Rate(c, 1) if k == 1 && rate.is_none() && c != q => rate = Some(c),

@@ -43,9 +43,9 @@ pub struct Registry {
     /// (p, variable of p, variable of 1/p) for each parameter the mechanism divides by (see
     /// [`RegistryBuilder::inverses`]).
     pub(super) inverses: Vec<(ParamId, usize, usize)>,
-    /// (q, variable of cos q, variable of 1/cos q) for each angle coordinate a loop closure
-    /// divides by (see [`RegistryBuilder::secants`]).
-    pub(super) secants: Vec<(CoordId, usize, usize)>,
+    /// (q, cos or sin, variable of cos q or sin q, variable of its reciprocal) for each
+    /// angle coordinate a loop closure divides by (see [`RegistryBuilder::secants`]).
+    pub(super) reciprocals: Vec<(CoordId, Trig, usize, usize)>,
 }
 
 /// The symbol of the variable 1/p, `inv(p)` in symbolica's atoms (never in a text: a text
@@ -54,10 +54,13 @@ pub(super) fn inverse_symbol() -> Symbol {
     symbolica::symbol!("inv")
 }
 
-/// The symbol of the variable 1/cos q, `sec(q)` in symbolica's atoms (never in a text: a
-/// text writes `/cos(q)`).
-pub(super) fn secant_symbol() -> Symbol {
-    symbolica::symbol!("sec")
+/// The symbol of the variable 1/cos q, `sec(q)`, or 1/sin q, `csc(q)`, in symbolica's atoms
+/// (never in a text: a text writes `/cos(q)`).
+pub(super) fn reciprocal_symbol(t: Trig) -> Symbol {
+    match t {
+        Trig::Cos => symbolica::symbol!("sec"),
+        Trig::Sin => symbolica::symbol!("csc"),
+    }
 }
 
 /// Symbols used for the rate functions dot(q), ddot(q), dddot(q).
@@ -144,6 +147,7 @@ impl Registry {
             aliases,
             inverses,
             secants,
+            cosecants,
             holonomic,
             display_ranks,
         } = b;
@@ -213,6 +217,7 @@ impl Registry {
                 phase,
                 driven: false,
                 nonholonomic: false,
+                cos_reduced: false,
             };
             match kind {
                 CoordinateKind::Angle => {
@@ -291,6 +296,7 @@ impl Registry {
                 phase: None,
                 driven: false,
                 nonholonomic: false,
+                cos_reduced: false,
             });
         }
         let mut param_var = HashMap::new();
@@ -329,32 +335,39 @@ impl Registry {
             roles.push(VarRole::Inverse(p));
             inverse_pairs.push((p, v, vars.len() - 1));
         }
-        let mut secant_pairs = Vec::new();
-        for name in &secants {
-            let Some((q, c)) = infos
+        let mut reciprocals = Vec::new();
+        let over = secants
+            .iter()
+            .map(|n| (n, Trig::Cos))
+            .chain(cosecants.iter().map(|n| (n, Trig::Sin)));
+        for (name, t) in over {
+            let found = infos
                 .iter()
                 .enumerate()
                 .take(n_declared)
-                .find(|(_, c)| &c.name == name)
-            else {
+                .find(|(_, c)| &c.name == name && c.kind == CoordinateKind::Angle);
+            let Some((q, (ci, si))) = found.and_then(|(q, c)| Some((q, c.trig?))) else {
                 return Err(ExprError::Declaration(format!(
-                    "cannot divide by `cos({name})`: `{name}` is not an angle coordinate"
+                    "cannot divide by `{}({name})`: `{name}` is not an angle coordinate",
+                    t.name()
                 )));
             };
-            let Some((ci, _)) = c.trig.filter(|_| c.kind == CoordinateKind::Angle) else {
+            if secants.contains(name) && cosecants.contains(name) {
                 return Err(ExprError::Declaration(format!(
-                    "cannot divide by `cos({name})`: `{name}` is not an angle coordinate"
+                    "cannot divide by both `cos({name})` and `sin({name})`"
                 )));
-            };
+            }
             vars.push(PolyVariable::Function(
-                secant_symbol(),
+                reciprocal_symbol(t),
                 symbolica::function!(
-                    secant_symbol(),
+                    reciprocal_symbol(t),
                     Atom::var(symbolica::symbol!(name.as_str()))
                 ),
             ));
-            roles.push(VarRole::Secant(CoordId(q)));
-            secant_pairs.push((CoordId(q), ci, vars.len() - 1));
+            roles.push(VarRole::Reciprocal(CoordId(q), t));
+            let v = if t == Trig::Cos { ci } else { si };
+            reciprocals.push((CoordId(q), t, v, vars.len() - 1));
+            infos[q].cos_reduced = t == Trig::Sin;
         }
         for (n, _) in &aliases {
             check(n)?;
@@ -380,7 +393,7 @@ impl Registry {
             display_ranks,
             aliases: Vec::new(),
             inverses: inverse_pairs,
-            secants: secant_pairs,
+            reciprocals,
         };
         // Aliases, then imposed rates, are expressions in the parameters: parse them with a
         // registry that shares the same variable list (and the aliases read so far).
@@ -399,7 +412,7 @@ impl Registry {
                 display_ranks: Vec::new(),
                 aliases: reg.aliases.clone(),
                 inverses: reg.inverses.clone(),
-                secants: reg.secants.clone(),
+                reciprocals: reg.reciprocals.clone(),
             }))
         };
         for (name, text) in &aliases {
@@ -482,7 +495,7 @@ impl Registry {
             VarRole::Parameter(k) => !self.is_unknown(k),
             VarRole::Inverse(_) => true,
             VarRole::Cos(q) | VarRole::Sin(q) => self.coords[q.0].constant,
-            VarRole::Secant(_) => false,
+            VarRole::Reciprocal(..) => false,
             VarRole::Value(_) | VarRole::Rate(..) => false,
         }
     }
@@ -566,9 +579,22 @@ impl Registry {
         self.role_index.get(&role).copied().map(VarId)
     }
 
-    /// The variable 1/cos q, if a loop closure divides by cos q.
-    pub(super) fn secant_var(&self, q: CoordId) -> Option<usize> {
-        self.secants.iter().find(|s| s.0 == q).map(|s| s.2)
+    /// (variable of 1/cos q or 1/sin q, its derivative in q) for the reciprocals of q a
+    /// loop closure divides by: ∂(1/cos q)/∂q = (1/cos q)² sin q, ∂(1/sin q)/∂q =
+    /// −(1/sin q)² cos q.
+    pub(super) fn reciprocal_derivatives(self: &Rc<Self>, q: CoordId) -> Vec<(usize, Expr)> {
+        self.reciprocals
+            .iter()
+            .filter(|r| r.0 == q)
+            .map(|&(_, t, _, w)| {
+                let r = self.var(w);
+                let d = match t {
+                    Trig::Cos => &(&r * &r) * &self.sin(q),
+                    Trig::Sin => -&(&(&r * &r) * &self.cos(q)),
+                };
+                (w, d)
+            })
+            .collect()
     }
 
     /// (v, w) for every pair reduced v·w → 1: a parameter and its inverse, cos q and 1/cos q.
@@ -576,7 +602,7 @@ impl Registry {
         self.inverses
             .iter()
             .map(|&(_, v, w)| (v, w))
-            .chain(self.secants.iter().map(|&(_, v, w)| (v, w)))
+            .chain(self.reciprocals.iter().map(|&(_, _, v, w)| (v, w)))
     }
 
     /// What variable `i` stands for.
@@ -682,57 +708,6 @@ impl Registry {
             }
             _ => self.zero(),
         }
-    }
-
-    /// Compiles expressions of this registry into one fast evaluator (symbolica's optimised
-    /// instruction list: Horner schemes and common subexpressions). Its input is the value of
-    /// every variable, as [`Expr::eval`] takes it.
-    ///
-    /// ```
-    /// use torseur::expr::Registry;
-    /// use torseur::spec::wire::CoordinateKind;
-    /// let reg = Registry::new(&["m".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
-    /// let e = reg.parse("m*cos(q)*dot(q)^2 + 1/2*m*ddot(q)").unwrap();
-    /// let mut c = reg.compile(&[&e]).unwrap();
-    /// let point: Vec<f64> = (0..reg.nvars()).map(|i| 0.3 + i as f64).collect();
-    /// let mut out = [0.0];
-    /// c.evaluate(&point, &mut out);
-    /// assert!((out[0] - e.eval(&point)).abs() < 1e-12);
-    /// ```
-    pub fn compile(&self, exprs: &[&Expr]) -> Result<Compiled, ExprError> {
-        self.compile_with(exprs, COMPILE_HORNER, COMPILE_CPE)
-    }
-
-    /// [`Registry::compile`] with explicit optimisation effort (Horner scheme iterations,
-    /// common-pair elimination iterations). One core: symbolica's restricted mode allows no
-    /// more.
-    pub fn compile_with(
-        &self,
-        exprs: &[&Expr],
-        horner: usize,
-        cpe: Option<usize>,
-    ) -> Result<Compiled, ExprError> {
-        // The factored presentation form (groups by kinematic monomial, common factors out)
-        // is a better starting point for the optimiser than the expanded polynomial.
-        let atoms: Vec<Atom> = exprs
-            .iter()
-            .map(|e| {
-                let text = e.grouped().to_string();
-                symbolica::try_parse!(&text).unwrap_or_else(|_| e.to_atom())
-            })
-            .collect();
-        let params: Vec<Atom> = self.vars.iter().map(|v| v.to_atom()).collect();
-        let ev = Atom::evaluator_multiple(&atoms, &params)
-            .cores(1)
-            .horner_iterations(horner)
-            .cpe_iterations(cpe)
-            .build()
-            .map_err(|e| ExprError::Declaration(format!("cannot compile: {e:?}")))?
-            .map_coeff(&|c| c.re.to_f64());
-        Ok(Compiled {
-            ev,
-            outputs: exprs.len(),
-        })
     }
 
     /// Parses an expression of the spec syntax (see DESIGN.md) into canonical form.

@@ -4,7 +4,7 @@
 
 use super::{name, width};
 use crate::expr::{
-    Angle, CoordId, Expr, Factor, Form, Fraction, Leaf, Presentation, Product, Registry,
+    Angle, CoordId, Expr, Factor, Form, Fraction, Leaf, Presentation, Product, Registry, Trig,
 };
 
 /// A rate: \dot{\theta}_{1}, the accent on the head, the subscript after.
@@ -46,6 +46,14 @@ fn angle(reg: &Registry, a: &Angle) -> (String, bool) {
     (s, phase || a.terms().len() > 1)
 }
 
+/// cos q or sin q as a leaf.
+fn trig_leaf(q: CoordId, f: Trig) -> Leaf {
+    match f {
+        Trig::Cos => Leaf::Cos(Angle::of(q)),
+        Trig::Sin => Leaf::Sin(Angle::of(q)),
+    }
+}
+
 /// A leaf raised to `k`: \cos^{2}\theta_{2}, L_{2}^{2}, \dot{\theta}_{1}^{2}.
 fn leaf(reg: &Registry, l: &Leaf, k: u8) -> String {
     let pw = |b: String| {
@@ -56,7 +64,7 @@ fn leaf(reg: &Registry, l: &Leaf, k: u8) -> String {
         // Alone (a factor of a product broken across lines); a whole product writes its
         // inverses below one line (see `product`).
         Leaf::Inverse(p) => format!("\\frac{{1}}{{{}}}", pw(name(reg.scalar_name(*p)))),
-        Leaf::Secant(q) => format!("\\frac{{1}}{{{}}}", leaf(reg, &Leaf::Cos(Angle::of(*q)), k)),
+        Leaf::Reciprocal(q, f) => format!("\\frac{{1}}{{{}}}", leaf(reg, &trig_leaf(*q, *f), k)),
         Leaf::Value(q) => pw(name(&reg.coord_info(*q).name)),
         Leaf::Rate(q, o) => pw(rate(reg, *q, *o)),
         Leaf::Cos(a) | Leaf::Sin(a) => {
@@ -116,11 +124,18 @@ fn coefficient(p: &Product) -> Option<String> {
 /// The factors of a product, in reading order, each as LaTeX.
 fn factors(reg: &Registry, p: &Product) -> Vec<(bool, String)> {
     let mut out: Vec<(bool, String)> = coefficient(p).into_iter().map(|c| (false, c)).collect();
+    // What the product divides by, below one line at its end: \frac{1}{L_{2}\,\sin\psi}.
+    let mut below = Vec::new();
     for (f, k) in p.ordered(reg) {
-        out.push(match f {
-            Factor::Leaf(l) => (false, leaf(reg, l, *k)),
-            Factor::Sum(s) => (true, sum_factor(reg, s, *k)),
-        });
+        match f {
+            Factor::Leaf(Leaf::Inverse(q)) => below.push(leaf(reg, &Leaf::Param(*q), *k)),
+            Factor::Leaf(Leaf::Reciprocal(q, t)) => below.push(leaf(reg, &trig_leaf(*q, *t), *k)),
+            Factor::Leaf(l) => out.push((false, leaf(reg, l, *k))),
+            Factor::Sum(s) => out.push((true, sum_factor(reg, s, *k))),
+        }
+    }
+    if !below.is_empty() {
+        out.push((false, format!("\\frac{{1}}{{{}}}", below.join("\\,"))));
     }
     out
 }
@@ -131,7 +146,7 @@ fn product(reg: &Registry, p: &Product) -> String {
     let divides = p
         .factors
         .iter()
-        .any(|(f, _)| matches!(f, Factor::Leaf(Leaf::Inverse(_) | Leaf::Secant(_))));
+        .any(|(f, _)| matches!(f, Factor::Leaf(Leaf::Inverse(_) | Leaf::Reciprocal(..))));
     if !divides {
         let f: Vec<String> = factors(reg, p).into_iter().map(|x| x.1).collect();
         return if f.is_empty() {
@@ -149,11 +164,20 @@ fn product(reg: &Registry, p: &Product) -> String {
     if d != "1" {
         below.push(d);
     }
-    for (f, k) in p.ordered(reg) {
+    let ordered = p.ordered(reg);
+    // A whole sum over one line needs no bracket: \frac{a + b}{\sin\psi}.
+    let alone = top.is_empty()
+        && ordered
+            .iter()
+            .filter(|(f, _)| !matches!(f, Factor::Leaf(Leaf::Inverse(_) | Leaf::Reciprocal(..))))
+            .count()
+            == 1;
+    for (f, k) in ordered {
         match f {
             Factor::Leaf(Leaf::Inverse(q)) => below.push(leaf(reg, &Leaf::Param(*q), *k)),
-            Factor::Leaf(Leaf::Secant(q)) => below.push(leaf(reg, &Leaf::Cos(Angle::of(*q)), *k)),
+            Factor::Leaf(Leaf::Reciprocal(q, f)) => below.push(leaf(reg, &trig_leaf(*q, *f), *k)),
             Factor::Leaf(l) => top.push(leaf(reg, l, *k)),
+            Factor::Sum(s) if alone && *k == 1 => top.push(form(reg, s)),
             Factor::Sum(s) => top.push(sum_factor(reg, s, *k)),
         }
     }
@@ -228,63 +252,75 @@ fn pieces(p: &Presentation, max: usize) -> Vec<String> {
     let reg = p.registry();
     let mut out = Vec::new();
     for (i, t) in p.form().terms.iter().enumerate() {
-        let s = sign(t.coef.is_negative(), i == 0);
-        let whole = product(reg, t);
-        let fs = factors(reg, t);
-        let widest = fs
-            .iter()
-            .enumerate()
-            .filter(|(_, f)| f.0)
-            .max_by_key(|(_, f)| width(&f.1))
-            .map(|(k, _)| k);
-        let Some(k) = widest.filter(|_| width(&whole) > max) else {
-            out.push(format!("{s}{whole}"));
-            continue;
-        };
-        let sum = t
-            .ordered(reg)
-            .into_iter()
-            .filter_map(|(f, e)| match f {
-                Factor::Sum(s) => Some((s, *e)),
-                Factor::Leaf(_) => None,
-            })
-            .max_by_key(|(s, e)| width(&sum_factor(reg, s, *e)))
-            .expect("a sum factor");
-        let (l, r) = if nests(sum.0) {
-            ("\\Big[", "\\Big]")
-        } else {
-            ("\\Big(", "\\Big)")
-        };
-        let before: Vec<&str> = fs[..k].iter().map(|x| x.1.as_str()).collect();
-        let after: Vec<&str> = fs[k + 1..].iter().map(|x| x.1.as_str()).collect();
-        let n = sum.0.terms.len();
-        for (j, q) in sum.0.terms.iter().enumerate() {
-            let mut piece = String::new();
-            if j == 0 {
-                piece.push_str(s);
-                for b in &before {
-                    piece.push_str(b);
-                    piece.push_str("\\,");
-                }
-                piece.push_str(l);
-            }
-            piece.push_str(sign(q.coef.is_negative(), j == 0));
-            piece.push_str(&product(reg, q));
-            if j + 1 == n {
-                piece.push_str(r);
-                if sum.1 > 1 {
-                    piece.push_str(&format!("^{{{}}}", sum.1));
-                }
-                for a in &after {
-                    piece.push_str("\\,");
-                    piece.push_str(a);
-                }
-            }
-            out.push(piece);
-        }
+        out.extend(product_pieces(
+            reg,
+            t,
+            sign(t.coef.is_negative(), i == 0),
+            max,
+        ));
     }
     if out.is_empty() {
         out.push("0".to_string());
+    }
+    out
+}
+
+/// A signed product as pieces of lines: whole when it fits, else broken inside its widest
+/// sum, each term of that sum broken again when it is still too wide.
+fn product_pieces(reg: &Registry, t: &Product, s: &str, max: usize) -> Vec<String> {
+    let whole = product(reg, t);
+    let fs = factors(reg, t);
+    let widest = fs
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f.0)
+        .max_by_key(|(_, f)| width(&f.1))
+        .map(|(k, _)| k);
+    let Some(k) = widest.filter(|_| width(&whole) > max) else {
+        return vec![format!("{s}{whole}")];
+    };
+    let sum = t
+        .ordered(reg)
+        .into_iter()
+        .filter_map(|(f, e)| match f {
+            Factor::Sum(s) => Some((s, *e)),
+            Factor::Leaf(_) => None,
+        })
+        .max_by_key(|(s, e)| width(&sum_factor(reg, s, *e)))
+        .expect("a sum factor");
+    let (l, r) = if nests(sum.0) {
+        ("\\Big[", "\\Big]")
+    } else {
+        ("\\Big(", "\\Big)")
+    };
+    let mut head = s.to_string();
+    for b in &fs[..k] {
+        head.push_str(&b.1);
+        head.push_str("\\,");
+    }
+    head.push_str(l);
+    let mut tail = r.to_string();
+    if sum.1 > 1 {
+        tail.push_str(&format!("^{{{}}}", sum.1));
+    }
+    for a in &fs[k + 1..] {
+        tail.push_str("\\,");
+        tail.push_str(&a.1);
+    }
+    let mut out: Vec<String> = Vec::new();
+    for (j, q) in sum.0.terms.iter().enumerate() {
+        out.extend(product_pieces(
+            reg,
+            q,
+            sign(q.coef.is_negative(), j == 0),
+            max,
+        ));
+    }
+    if let Some(first) = out.first_mut() {
+        first.insert_str(0, &head);
+    }
+    if let Some(last) = out.last_mut() {
+        last.push_str(&tail);
     }
     out
 }

@@ -1,7 +1,7 @@
 //! Numeric evaluation of derived values at given parameters and coordinates.
 
 use crate::derivation::Value;
-use crate::expr::{Expr, VarRole};
+use crate::expr::{Expr, Trig, VarRole};
 use crate::mechanism::Mechanism;
 use serde::Deserialize;
 use serde_json::{Value as Json, json};
@@ -359,18 +359,22 @@ fn point_where(
             | VarRole::Sin(q)
             | VarRole::Value(q)
             | VarRole::Rate(q, _)
-            | VarRole::Secant(q) => {
+            | VarRole::Reciprocal(q, _) => {
                 let name = &reg.coord_info(q).name;
                 match values.coordinates.get(name) {
-                    // 1/cos q, for an angle a loop closure divides by.
-                    Some(c) if matches!(reg.role(i), VarRole::Secant(_)) => {
-                        if c[0].cos().abs() < 1e-12 {
+                    // 1/cos q or 1/sin q, for an angle a loop closure divides by.
+                    Some(c) if matches!(reg.role(i), VarRole::Reciprocal(..)) => {
+                        let (f, v) = match reg.role(i) {
+                            VarRole::Reciprocal(_, Trig::Sin) => ("sin", c[0].sin()),
+                            _ => ("cos", c[0].cos()),
+                        };
+                        if v.abs() < 1e-12 {
                             return Err(ValuesError(format!(
-                                "cos({name}) = 0 here, and the results divide by it (the loop \
+                                "{f}({name}) = 0 here, and the results divide by it (the loop \
                                  closure is singular)"
                             )));
                         }
-                        1.0 / c[0].cos()
+                        1.0 / v
                     }
                     Some(c) => match reg.role(i) {
                         VarRole::Cos(_) => c[0].cos(),

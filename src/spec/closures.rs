@@ -20,6 +20,8 @@ pub(super) struct Solved {
     pub rates: Vec<(usize, String)>,
     /// The angles whose cosine the rates divide by.
     pub secants: Vec<String>,
+    /// The angles whose sine the rates divide by.
+    pub cosecants: Vec<String>,
     /// The parameters the rates divide by.
     pub inverses: Vec<String>,
     /// The dependent coordinates (holonomic driven rates).
@@ -190,6 +192,7 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
     // The determinant must be invertible in the canonical form: a number times parameters
     // and cosines of coordinates.
     let mut secants = Vec::new();
+    let mut cosecants = Vec::new();
     let mut inverses = Vec::new();
     let monomial = d.nterms() == 1
         && reg.var_ids().all(|v| {
@@ -206,16 +209,23 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
                     secants.push(reg.coord_info(q).name.clone());
                     true
                 }
+                VarRole::Sin(q) if q.index() < reg.coordinates().len() => {
+                    cosecants.push(reg.coord_info(q).name.clone());
+                    true
+                }
                 _ => false,
             }
         });
-    if !monomial {
+    // 1/cos q and 1/sin q of one angle would tie the two reductions of sin² and cos².
+    let both: Vec<&String> = secants.iter().filter(|n| cosecants.contains(n)).collect();
+    if !monomial || !both.is_empty() {
         return Err(at(
             "closures",
             format!(
                 "solving the closures for {} divides by `{}`, which is not a product of \
-                 parameters and cosines of coordinates: not supported yet (an angle measured \
-                 so that the loop's determinant is L cos φ, as in a crank–slider, is)",
+                 parameters and of a cosine or a sine of each coordinate: not supported yet \
+                 (measure the angles so that it is one: L cos φ for a crank–slider's rod, \
+                 L2 L3 sin ψ for a four-bar whose rocker turns by ψ from its coupler)",
                 names.join(", "),
                 crate::excerpt::excerpt(&d.to_string())
             ),
@@ -238,6 +248,7 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
     Ok(Some(Solved {
         rates,
         secants,
+        cosecants,
         inverses,
         dependent: dependent.into_iter().map(|d| d.0).collect(),
     }))

@@ -176,6 +176,7 @@ fn build_with(
         .inverses(&divisors)
         .inverses(solved.map_or(&[][..], |s| &s.inverses))
         .secants(solved.map_or(&[][..], |s| &s.secants))
+        .cosecants(solved.map_or(&[][..], |s| &s.cosecants))
         .holonomic(solved.map_or(&[][..], |s| &s.dependent))
         .display_ranks(spec.parameters.iter().map(display_rank).collect());
     let aliases: Vec<(String, String)> = spec
@@ -754,38 +755,6 @@ fn invariant_in_solid(
             frames.get(basis).name,
             frames.get(solid).name
         ))
-    }
-}
-
-/// Reads a spec from JSON text, with the JSON path and line/column of a structural error.
-/// serde_json's recursion limit turns absurdly deep nesting into an error, not a stack overflow.
-pub fn parse_spec(text: &str) -> Result<SpecFile, SpecError> {
-    let mut de = serde_json::Deserializer::from_str(text);
-    let spec: SpecFile = serde_path_to_error::deserialize(&mut de).map_err(|e| {
-        let path = e.path().to_string();
-        let inner = e.into_inner();
-        // A syntax error has no path (`?`); the line and column say where.
-        let path = if inner.is_syntax() || inner.is_eof() || path == "?" {
-            String::new()
-        } else {
-            path
-        };
-        json_error(path, &inner)
-    })?;
-    de.end().map_err(|e| json_error(String::new(), &e))?;
-    Ok(spec)
-}
-
-/// A JSON error at `path`, its message without serde_json's « at line L column C » (the
-/// error prints the line and column once, after the path).
-fn json_error(path: String, e: &serde_json::Error) -> SpecError {
-    let text = e.to_string();
-    let suffix = format!(" at line {} column {}", e.line(), e.column());
-    SpecError::Json {
-        path,
-        line: e.line(),
-        column: e.column(),
-        message: text.strip_suffix(&suffix).unwrap_or(&text).to_string(),
     }
 }
 

@@ -141,7 +141,9 @@ impl Dimensions {
                             .is_some_and(|q| reg.coord_info(q).is_constant());
                     is_angle.then_some(Dimension::NONE)
                 }
-                VarRole::Cos(_) | VarRole::Sin(_) | VarRole::Secant(_) => Some(Dimension::NONE),
+                VarRole::Cos(_) | VarRole::Sin(_) | VarRole::Reciprocal(..) => {
+                    Some(Dimension::NONE)
+                }
                 VarRole::Value(q) => Some(coordinate(q)),
                 VarRole::Rate(q, order) => {
                     Some(coordinate(q) / Dimension::TIME.pow(i32::from(order)))

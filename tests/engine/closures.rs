@@ -174,3 +174,73 @@ fn a_loop_that_cannot_close_is_found_by_the_float_backend() {
         .to_string();
     assert!(e.contains("does not close"), "{e}");
 }
+
+#[test]
+fn the_four_bar_linkage_by_hand() {
+    // The loop's derivative L1 θ̇1 y1 + L2 ω2 y2 + L3 ω3 y3 = 0 (ω2 = θ̇1 + α̇, ω3 = ω2 + ψ̇)
+    // dotted with x2 (y1·x2 = sin α, y3·x2 = −sin ψ) gives ω3 = L1 θ̇1 sin α / (L3 sin ψ);
+    // with x3 (y1·x3 = sin(α + ψ), y2·x3 = sin ψ), ω2 = −L1 θ̇1 sin(α + ψ) / (L2 sin ψ).
+    let m = torseur::spec::load("derivations/quadrilatere_articule.json").unwrap();
+    torseur::assert_equivalent!(
+        m,
+        "Omega(3/0)",
+        "L1*dot(theta1)*sin(alpha)/(L3*sin(psi))*z0"
+    );
+    torseur::assert_equivalent!(
+        m,
+        "Omega(2/0)",
+        "-L1*dot(theta1)*(sin(alpha)*cos(psi) + cos(alpha)*sin(psi))/(L2*sin(psi))*z0"
+    );
+    // König: the crank about O, the coupler V(G2) = L1 θ̇1 y1 + (L2/2) ω2 y2 (y1·y2 = cos α)
+    // with m2 L2²/12, the rocker about C with m3 L3²/3; with r2 = ω2/θ̇1, r3 = ω3/θ̇1,
+    // J_eq = J1 + m2 L1² + m2 L2² r2²/3 + m2 L1 L2 r2 cos α + m3 L3² r3²/3.
+    let r2 = "(-L1*(sin(alpha)*cos(psi) + cos(alpha)*sin(psi))/(L2*sin(psi)))";
+    let r3 = "(L1*sin(alpha)/(L3*sin(psi)))";
+    torseur::assert_equivalent!(
+        m,
+        "J_eq(theta1)",
+        &format!("J1 + m2*L1^2 + m2*L2^2*{r2}^2/3 + m2*L1*L2*{r2}*cos(alpha) + m3*L3^2*{r3}^2/3")
+    );
+    // The resisting torque's power through the loop law; the perfect pivots do no work.
+    torseur::assert_equivalent!(
+        m,
+        "P(ext->E/0)",
+        "C_m*dot(theta1) - C_r*L1*dot(theta1)*sin(alpha)/(L3*sin(psi))"
+    );
+    torseur::assert_equivalent!(m, "Pint(E)", "0");
+    // The sine a closure divides by turns the angle's rule: cos²ψ → 1 − sin²ψ.
+    let psi = m.reg.coord("psi").unwrap();
+    assert!((&ex(&m, "1/sin(psi)") * &m.reg.sin(psi)).is_one());
+    assert_eq!(
+        ex(&m, "cos(psi)^2"),
+        ex(&m, "1 - sin(psi)^2"),
+        "one canonical form"
+    );
+    // The PFD (rocker, coupler, crank; pivots L3 and L2 sin ψ) and Lagrange agree.
+    let sol = torseur::pfd::solve(&m).unwrap();
+    let theta1 = m.reg.coord("theta1").unwrap();
+    let lagrange = torseur::pfd::lagrange(&m, theta1);
+    let eom = &sol.eom["theta1"];
+    assert!((eom - &lagrange).is_zero() || (eom + &lagrange).is_zero());
+    assert!(sol.conditions.iter().any(|c| *c == ex(&m, "L2*sin(psi)")));
+}
+
+#[test]
+fn a_loop_determinant_that_is_not_a_product_is_refused_by_name() {
+    // The four-bar with absolute angles: the determinant L2 L3 sin(α − ψ) is a sum in the
+    // canonical form, which cannot be inverted exactly; the message says which angles work.
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/quadrilatere_articule.json"
+    ))
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["frames"][1]["parent"] = "0".into();
+    v["frames"][2]["parent"] = "0".into();
+    let file = torseur::spec::parse_spec(&v.to_string()).unwrap();
+    let e = torseur::spec::build(&file).unwrap_err().to_string();
+    assert!(
+        e.starts_with("at closures:") && e.contains("not supported yet"),
+        "{e}"
+    );
+}

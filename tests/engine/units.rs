@@ -380,7 +380,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 19] = [
+const LIBRARY: [&str; 20] = [
     "bielle_manivelle",
     "bille_tube_tournant",
     "bras_robot_deux_axes",
@@ -391,6 +391,7 @@ const LIBRARY: [&str; 19] = [
     "pendule_inverse_ressort",
     "pendule_plan_incline",
     "pendule_sur_chariot",
+    "quadrilatere_articule",
     "regulateur_centrifuge",
     "rotor_balourd",
     "rotor_deux_paliers",

@@ -1,7 +1,7 @@
 //! The presentation tree: sums of signed products of atoms and parenthesised sums, its
 //! operation count, its exact value, and its plain text (parsable back).
 
-use super::super::{CoordId, Expr, ParamId, Registry, VarRole};
+use super::super::{CoordId, Expr, ParamId, Registry, Trig, VarRole};
 use std::cmp::Ordering;
 use std::rc::Rc;
 use symbolica::domains::rational::Rational;
@@ -79,8 +79,9 @@ pub enum Leaf {
     Param(ParamId),
     /// 1/p, a parameter the mechanism divides by: written below the line of its product.
     Inverse(ParamId),
-    /// 1/cos q, an angle a loop closure divides by: written below the line of its product.
-    Secant(CoordId),
+    /// 1/cos q or 1/sin q, an angle a loop closure divides by: written below the line of
+    /// its product.
+    Reciprocal(CoordId, Trig),
     /// A length coordinate, or an angle written as itself.
     Value(CoordId),
     /// q̇ (order 1), q̈ (order 2)…
@@ -299,7 +300,7 @@ impl Product {
             };
             let text = if *k == 1 { base } else { format!("{base}^{k}") };
             match f {
-                Factor::Leaf(Leaf::Inverse(_) | Leaf::Secant(_)) => below.push(text),
+                Factor::Leaf(Leaf::Inverse(_) | Leaf::Reciprocal(..)) => below.push(text),
                 _ => parts.push(text),
             }
         }
@@ -346,7 +347,7 @@ fn plain_var(reg: &Registry, f: &Factor) -> Option<(usize, bool)> {
     let (role, is_sin) = match l {
         Leaf::Param(p) => (VarRole::Parameter(*p), false),
         Leaf::Inverse(p) => (VarRole::Inverse(*p), false),
-        Leaf::Secant(q) => (VarRole::Secant(*q), false),
+        Leaf::Reciprocal(q, f) => (VarRole::Reciprocal(*q, *f), false),
         Leaf::Value(q) => (VarRole::Value(*q), false),
         Leaf::Rate(q, o) => (VarRole::Rate(*q, *o), false),
         Leaf::Cos(a) if a.is_simple() => (VarRole::Cos(a.0[0].0), false),
@@ -373,7 +374,7 @@ pub(crate) fn factor_key(reg: &Registry, f: &Factor) -> (u8, u32, usize, u8, Vec
         // Below the line, in the parameters' order (m g / (k l)).
         Factor::Leaf(Leaf::Inverse(p)) => (6, reg.display_rank(*p), p.0, 0, vec![]),
         // The cosines a loop closure divides by, after the parameters below the line.
-        Factor::Leaf(Leaf::Secant(q)) => (6, u32::MAX, q.0, 1, vec![]),
+        Factor::Leaf(Leaf::Reciprocal(q, f)) => (6, u32::MAX, q.0, 1 + *f as u8, vec![]),
         Factor::Leaf(Leaf::Value(q)) => (2, 0, q.0, 0, vec![]),
         Factor::Sum(s) => (3, u32::from(s.terms.iter().any(has_rates)), 0, 0, vec![]),
         Factor::Leaf(Leaf::Rate(q, o)) => (4, 0, usize::MAX - *o as usize, q.0 as u8, vec![]),
@@ -401,7 +402,7 @@ fn leaf_text(reg: &Registry, a: &Leaf) -> String {
         Leaf::Param(p) | Leaf::Inverse(p) => reg.scalar_name(*p).to_string(),
         Leaf::Value(q) => reg.coord_info(*q).name.clone(),
         // Below the line: `/cos(phi)`.
-        Leaf::Secant(q) => format!("cos({})", reg.coord_info(*q).name),
+        Leaf::Reciprocal(q, f) => format!("{}({})", f.name(), reg.coord_info(*q).name),
         Leaf::Rate(q, o) => {
             let head = ["dot", "ddot", "dddot"][(o.clamp(&1, &3) - 1) as usize];
             format!("{head}({})", reg.coord_info(*q).name)
@@ -421,7 +422,7 @@ pub(crate) fn leaf_expr(reg: &Rc<Registry>, a: &Leaf) -> Expr {
     match a {
         Leaf::Param(p) => var(VarRole::Parameter(*p)),
         Leaf::Inverse(p) => var(VarRole::Inverse(*p)),
-        Leaf::Secant(q) => var(VarRole::Secant(*q)),
+        Leaf::Reciprocal(q, f) => var(VarRole::Reciprocal(*q, *f)),
         Leaf::Value(q) => var(VarRole::Value(*q)),
         Leaf::Rate(q, o) => var(VarRole::Rate(*q, *o)),
         Leaf::Cos(x) | Leaf::Sin(x) => {

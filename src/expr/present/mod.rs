@@ -135,7 +135,7 @@ impl Expr {
                         let a = match reg.role(VarId(i)) {
                             VarRole::Parameter(p) => Leaf::Param(p),
                             VarRole::Inverse(p) => Leaf::Inverse(p),
-                            VarRole::Secant(q) => Leaf::Secant(q),
+                            VarRole::Reciprocal(q, f) => Leaf::Reciprocal(q, f),
                             VarRole::Value(q) => Leaf::Value(q),
                             VarRole::Rate(q, o) => Leaf::Rate(q, o),
                             VarRole::Cos(q) => Leaf::Cos(Angle::of(q)),
@@ -318,7 +318,8 @@ fn grouped(e: &Expr, cheap: bool) -> Form {
     let (g, mut common) = search::content(&all);
     // A 1/p out in front only when no term keeps one: never a fraction inside a fraction.
     common.retain(|(a, k)| {
-        !matches!(a, Leaf::Inverse(_) | Leaf::Secant(_)) || all.iter().all(|m| m.power(a) == *k)
+        !matches!(a, Leaf::Inverse(_) | Leaf::Reciprocal(..))
+            || all.iter().all(|m| m.power(a) == *k)
     });
     if common.is_empty() && g.abs().is_one() {
         return whole;
@@ -420,7 +421,7 @@ fn clustered(reg: &Rc<Registry>, units: &[Unit], search: &mut search::Search) ->
                 // A 1/p out in front only when no term keeps one: never a fraction inside a
                 // fraction.
                 let nested = reg.var_ids().any(|w| {
-                    matches!(reg.role(w), VarRole::Inverse(_) | VarRole::Secant(_))
+                    matches!(reg.role(w), VarRole::Inverse(_) | VarRole::Reciprocal(..))
                         && d.contains_var(w)
                         && inner_units.iter().any(|u| u.1.contains_var(w))
                 });
@@ -511,7 +512,7 @@ fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
         let role = match a {
             Leaf::Param(p) => VarRole::Parameter(*p),
             Leaf::Inverse(p) => VarRole::Inverse(*p),
-            Leaf::Secant(q) => VarRole::Secant(*q),
+            Leaf::Reciprocal(q, f) => VarRole::Reciprocal(*q, *f),
             Leaf::Value(q) => VarRole::Value(*q),
             Leaf::Rate(q, o) => VarRole::Rate(*q, *o),
             // Only single angles here: a compound angle is no variable of the registry.
@@ -531,6 +532,77 @@ fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
 
 /// The cheapest of the coefficient's rewritings (see the module documentation).
 fn best_coefficient(search: &mut search::Search, ms: Vec<Mono>, n_coords: usize) -> Form {
+    let plain = searched_coefficient(search, ms.clone(), n_coords);
+    // What a loop closure divides by (1/cos φ, 1/sin ψ) goes below one line for the whole
+    // coefficient when the plain form would write a fraction inside a fraction, or when one
+    // line makes it a single product: R sin(φ − θ)/cos φ, not R (sin φ cos θ/cos φ − sin θ).
+    if !divides_inside(&plain) {
+        return plain;
+    }
+    // Below the line: the cosines and sines, and the parameters divided by with them.
+    let mut below: Vec<(Leaf, u8)> = Vec::new();
+    for m in &ms {
+        for (a, k) in &m.atoms {
+            if matches!(a, Leaf::Reciprocal(..) | Leaf::Inverse(_)) {
+                match below.iter_mut().find(|x| &x.0 == a) {
+                    Some(x) => x.1 = x.1.max(*k),
+                    None => below.push((a.clone(), *k)),
+                }
+            }
+        }
+    }
+    let top: Vec<Mono> = ms
+        .iter()
+        .map(|m| m.divided(&Rational::one(), &below))
+        .collect();
+    let n = searched_coefficient(search, top, n_coords);
+    let p = times_rates(n, below);
+    let single = !p.factors.iter().any(|(x, _)| matches!(x, Factor::Sum(_)));
+    let over_one_line = p
+        .factors
+        .iter()
+        .any(|(x, _)| matches!(x, Factor::Leaf(Leaf::Reciprocal(..))));
+    if over_one_line && (single || nested_fraction(&plain)) {
+        Form::single(p)
+    } else {
+        plain
+    }
+}
+
+/// Whether a product written as a fraction (it divides by a loop closure's cos q or sin q)
+/// holds a sum that divides too: a fraction inside a fraction.
+fn nested_fraction(f: &Form) -> bool {
+    f.terms.iter().any(|p| {
+        let over = p
+            .factors
+            .iter()
+            .any(|(x, _)| matches!(x, Factor::Leaf(Leaf::Reciprocal(..) | Leaf::Inverse(_))));
+        (over && divides_inside(&Form::single(p.clone())))
+            || p.factors
+                .iter()
+                .any(|(x, _)| matches!(x, Factor::Sum(s) if nested_fraction(s)))
+    })
+}
+
+/// Whether a parenthesised sum of the form holds a term that divides by a loop closure's
+/// cos q or sin q (a fraction inside a bracket).
+fn divides_inside(f: &Form) -> bool {
+    fn divides(f: &Form) -> bool {
+        f.terms.iter().any(|p| {
+            p.factors.iter().any(|(x, _)| match x {
+                Factor::Leaf(l) => matches!(l, Leaf::Reciprocal(..)),
+                Factor::Sum(s) => divides(s),
+            })
+        })
+    }
+    f.terms.iter().any(|p| {
+        p.factors
+            .iter()
+            .any(|(x, _)| matches!(x, Factor::Sum(s) if divides(s)))
+    })
+}
+
+fn searched_coefficient(search: &mut search::Search, ms: Vec<Mono>, n_coords: usize) -> Form {
     search.fresh_budget();
     let compound = rewrite::squares(rewrite::compound_angles(ms.clone(), n_coords));
     let candidates = [
@@ -552,7 +624,7 @@ fn best_coefficient(search: &mut search::Search, ms: Vec<Mono>, n_coords: usize)
     best.unwrap_or_default()
 }
 
-/// `coefficient · rates` as one product.
+/// `coefficient · rates` as one product (or `numerator · what it divides by`).
 fn times_rates(coef: Form, kin: Kinematic) -> Product {
     let rates = kin.into_iter().map(|(a, k)| (Factor::Leaf(a), k));
     match <[Product; 1]>::try_from(coef.terms) {

@@ -15,7 +15,7 @@
 //! Every rule is an identity, and the presentation keeps a form only if its exact value is
 //! the canonical form it started from, so a wrong rule could cost readability, never a sign.
 
-use super::super::CoordId;
+use super::super::{CoordId, Trig};
 use super::form::{Angle, Leaf};
 use std::collections::HashMap;
 use symbolica::domains::rational::Rational;
@@ -87,9 +87,14 @@ impl Mono {
                     let without = r.div(a, have).expect("its own power divides a term");
                     without.mul(Leaf::Param(*p), *k - have)
                 }
-                Leaf::Secant(q) if have < *k => {
+                Leaf::Reciprocal(q, f) if have < *k => {
                     let without = r.div(a, have).expect("its own power divides a term");
-                    without.mul(Leaf::Cos(Angle::of(*q)), *k - have)
+                    let x = Angle::of(*q);
+                    let t = match f {
+                        Trig::Cos => Leaf::Cos(x),
+                        Trig::Sin => Leaf::Sin(x),
+                    };
+                    without.mul(t, *k - have)
                 }
                 _ => r.div(a, *k).expect("a common factor divides every term"),
             };

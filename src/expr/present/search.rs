@@ -338,7 +338,7 @@ fn common_denominator(ms: &[Mono]) -> Option<(Rational, Vec<(Leaf, u8)>)> {
     let mut changed = false;
     for m in ms {
         for (a, k) in &m.atoms {
-            if !matches!(a, Leaf::Inverse(_) | Leaf::Secant(_)) {
+            if !matches!(a, Leaf::Inverse(_) | Leaf::Reciprocal(..)) {
                 continue;
             }
             match common.iter_mut().find(|x| &x.0 == a) {
