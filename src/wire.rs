@@ -319,7 +319,9 @@ pub struct ScenarioSpec {
     pub duration: f64,
     /// Value of every parameter (SI units).
     pub values: BTreeMap<String, f64>,
-    /// Initial value and rate of the free coordinates: `[q, q̇]`.
+    /// Initial value and rate of the free coordinates: `[q, q̇]`; for a coordinate driven by
+    /// the others (a gear ratio, a loop closure), its value (its rate follows), which must
+    /// close the loop.
     #[serde(default)]
     pub initial: BTreeMap<String, [f64; 2]>,
     /// Coordinates whose motion is imposed: their rate as a function of `t`, piece by piece.

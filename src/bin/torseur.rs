@@ -648,10 +648,14 @@ fn run_simulate(a: SimulateArgs, emit: &mut Emit) -> Result<(), Failure> {
         write_atomic(p, b)?;
     }
     eprintln!(
-        "simulate: {} points, {} evaluations, {} steps",
+        "simulate: {} points, {} evaluations, {} steps{}",
         run.times.len(),
         run.stats.evaluations,
-        run.stats.accepted_steps
+        run.stats.accepted_steps,
+        match run.drift {
+            Some(d) => format!(", loop closure drift at most {d:.1e} (SI)"),
+            None => String::new(),
+        }
     );
     match output {
         None => emit(&csv),

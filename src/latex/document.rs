@@ -637,15 +637,7 @@ pub fn answer_key_document(
     }
     // The loop closures, as the statement writes them: their derivative gives the rates of
     // the dependent coordinates above.
-    for c in &m.spec.closures {
-        let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
-        let Ok(parts) = m.reg.parse_vector(&c.vector, &bv) else {
-            continue;
-        };
-        let mut v = crate::vector::Vector::zero();
-        for (f, comps) in parts {
-            v.add_part(f, comps);
-        }
+    for (c, v) in m.spec.closures.iter().zip(m.closure_vectors()) {
         let rhs = super::vector_over_bases(m, &v);
         let math = format!("\\vec{{0}} = {rhs}");
         let _ = writeln!(

@@ -108,6 +108,25 @@ pub struct Mechanism {
 }
 
 impl Mechanism {
+    /// The vector of each loop closure of the spec (`closures`: OA + AB + BO, zero along
+    /// the motion), read with the mechanism's bases; a closure the spec validated always
+    /// reads.
+    pub fn closure_vectors(&self) -> Vec<crate::vector::Vector> {
+        let bv = |s: &str| self.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
+        self.spec
+            .closures
+            .iter()
+            .filter_map(|c| self.reg.parse_vector(&c.vector, &bv).ok())
+            .map(|parts| {
+                let mut v = crate::vector::Vector::zero();
+                for (f, comps) in parts {
+                    v.add_part(f, comps);
+                }
+                v
+            })
+            .collect()
+    }
+
     /// Solid by id.
     pub fn body(&self, id: BodyId) -> &Body {
         &self.bodies[id.0]

@@ -69,6 +69,10 @@ pub struct Run {
     pub columns: Vec<Column>,
     /// Right-hand side evaluations and accepted steps.
     pub stats: Stats,
+    /// The largest component of the loop closures over the output instants (0 on the
+    /// loop): how far the integration of the dependent coordinates drifted from it. None
+    /// without a closure.
+    pub drift: Option<f64>,
 }
 
 impl Run {
@@ -169,6 +173,23 @@ pub fn simulate_with(
         ..Options::default()
     };
     let y0 = plan.initial_state();
+    // The dependent coordinates start on the loop: their initial values are given.
+    let scale = sc.values.values().fold(1.0_f64, |a, v| a.max(v.abs()));
+    if let Some(r) = plan.closure_residual(m, 0.0, &y0)
+        && r > 1e-9 * scale
+    {
+        let names: Vec<&str> = plan
+            .driven
+            .iter()
+            .map(|&q| m.reg.coord_info(q).name.as_str())
+            .collect();
+        return Err(SimulateError::Scenario(format!(
+            "scenario `{}`: the initial values do not close the loop (a component of the \
+             closure is {r:e}): give {} values on it in `initial`",
+            sc.name,
+            names.join(", ")
+        )));
+    }
     let traj = integrate(|t, y, dy| plan.rhs(m, t, y, dy), &y0, sc.duration, &opts)?;
     let reg = &m.reg;
     let unit = |q: crate::expr::CoordId, rate: bool| {
@@ -201,7 +222,7 @@ pub fn simulate_with(
         push(n.clone(), unit(im.coord, false));
         push(format!("dot({n})"), unit(im.coord, true));
     }
-    for &q in &plan.free {
+    for &q in plan.free.iter().chain(&plan.driven) {
         let n = &reg.coord_info(q).name;
         push(n.clone(), unit(q, false));
         push(format!("dot({n})"), unit(q, true));
@@ -214,6 +235,8 @@ pub fn simulate_with(
     }
     let ni = plan.imposed.len();
     let nf = plan.free.len();
+    let at = ni + 2 * nf + plan.integrals;
+    let mut drift: Option<f64> = None;
     for (k, y) in traj.states().enumerate() {
         let t = traj.times()[k];
         let e = plan
@@ -232,6 +255,13 @@ pub fn simulate_with(
             put(y[ni + i], &mut c);
             put(y[ni + nf + i], &mut c);
         }
+        for (i, w) in e.driven_rates.iter().enumerate() {
+            put(y[at + i], &mut c);
+            put(*w, &mut c);
+        }
+        if let Some(r) = plan.closure_residual(m, t, y) {
+            drift = Some(drift.map_or(r, |d| d.max(r)));
+        }
         for v in e.recorded.iter().take(sc.record.len()) {
             put(*v, &mut c);
         }
@@ -245,6 +275,7 @@ pub fn simulate_with(
         times: traj.times().to_vec(),
         columns,
         stats: traj.stats(),
+        drift,
     })
 }
 

@@ -3,7 +3,7 @@
 
 use super::SimulateError;
 use super::law::TimeLaw;
-use crate::expr::{Compiled, CoordId, Expr, VarRole};
+use crate::expr::{Compiled, CoordId, Expr, Trig, VarRole};
 use crate::mechanism::Mechanism;
 use crate::pfd;
 use crate::wire::ScenarioSpec;
@@ -53,6 +53,16 @@ pub(super) struct Plan {
     pub initial: Vec<[f64; 2]>,
     /// Breakpoints of the imposed laws.
     pub breakpoints: Vec<f64>,
+    /// Coordinates driven by the free rates (a gear ratio, a loop closure): their values are
+    /// integrated from their rates, in the state after the integrals.
+    pub driven: Vec<CoordId>,
+    /// Initial value of each driven coordinate.
+    pub driven_initial: Vec<f64>,
+    /// q̇ of each driven coordinate.
+    pub driven_rates: Compiled,
+    /// The nonzero components of the loop closures on the ground's basis (0 on the loop):
+    /// what the integration lets them drift to.
+    pub closure: Option<Compiled>,
 }
 
 impl Plan {
@@ -124,18 +134,25 @@ impl Plan {
                 law: ImposedLaw::Law(law),
             });
         }
-        // Before any imposed law: a law on a driven coordinate would contradict its relation.
-        if let Some(c) = reg.coordinates().iter().find(|c| c.is_driven()) {
+        // A law on a driven coordinate would contradict its relation.
+        if let Some(im) = imposed
+            .iter()
+            .find(|im| reg.coord_info(im.coord).is_driven())
+        {
             return Err(err(format!(
-                "`{}` is driven by other coordinates' rates: simulate does not integrate such a \
-                 mechanism yet",
-                c.name
+                "`{}` is driven by other coordinates' rates: its motion cannot be imposed",
+                reg.coord_info(im.coord).name
             )));
         }
         let mut free = Vec::new();
+        let mut driven = Vec::new();
         for (i, c) in reg.coordinates().iter().enumerate() {
             let q = CoordId(i);
             if imposed.iter().any(|x| x.coord == q) {
+                continue;
+            }
+            if c.is_driven() {
+                driven.push(q);
                 continue;
             }
             if c.has_imposed_rate() {
@@ -213,7 +230,42 @@ impl Plan {
             .map_err(|e| err(format!("compiling the recorded quantities: {e}")))?;
         breakpoints.sort_by(f64::total_cmp);
         breakpoints.dedup();
+        let driven_initial: Vec<f64> = driven
+            .iter()
+            .map(|&q| {
+                let name = &reg.coord_info(q).name;
+                sc.initial.get(name).map(|v| v[0]).unwrap_or(0.0)
+            })
+            .collect();
+        let mut rates: Vec<Expr> = driven.iter().map(|&q| reg.dot(q)).collect();
+        if rates.is_empty() {
+            rates.push(reg.zero());
+        }
+        let refs: Vec<&Expr> = rates.iter().collect();
+        let driven_rates = reg
+            .compile(&refs)
+            .map_err(|e| err(format!("compiling the driven rates: {e}")))?;
+        let g0 = m.frames.ground();
+        let rows: Vec<Expr> = m
+            .closure_vectors()
+            .iter()
+            .flat_map(|v| v.express_in(&m.frames, g0))
+            .filter(|e| !e.is_zero())
+            .collect();
+        let closure = if rows.is_empty() {
+            None
+        } else {
+            let refs: Vec<&Expr> = rows.iter().collect();
+            Some(
+                reg.compile(&refs)
+                    .map_err(|e| err(format!("compiling the loop closures: {e}")))?,
+            )
+        };
         Ok(Plan {
+            driven,
+            driven_initial,
+            driven_rates,
+            closure,
             free,
             imposed,
             base,
@@ -232,38 +284,48 @@ impl Plan {
         y.extend(self.initial.iter().map(|v| v[0]));
         y.extend(self.initial.iter().map(|v| v[1]));
         y.extend(std::iter::repeat_n(0.0, self.integrals));
+        y.extend(&self.driven_initial);
         y
+    }
+
+    /// The largest component of the loop closures at state `y` (0 on the loop), or None
+    /// without a closure.
+    pub fn closure_residual(&mut self, m: &Mechanism, t: f64, y: &[f64]) -> Option<f64> {
+        let point = self.point(m, t, y).ok()?;
+        let c = self.closure.as_mut()?;
+        let mut out = vec![0.0; c.outputs()];
+        c.evaluate(&point, &mut out);
+        Some(out.iter().fold(0.0_f64, |a, x| a.max(x.abs())))
+    }
+
+    /// The registry point of state `y` at t: parameters, the imposed and driven coordinates
+    /// and the free ones with their rates (accelerations not yet known).
+    fn point(&self, m: &Mechanism, t: f64, y: &[f64]) -> Result<Vec<f64>, String> {
+        let ni = self.imposed.len();
+        let n = self.free.len();
+        let mut point = self.base.clone();
+        for (k, im) in self.imposed.iter().enumerate() {
+            let (w, a) = im.law.at(t)?;
+            set(m, im.coord, [y[k], w, a], &mut point);
+        }
+        for (k, &q) in self.free.iter().enumerate() {
+            set(m, q, [y[ni + k], y[ni + n + k], 0.0], &mut point);
+        }
+        let at = ni + 2 * n + self.integrals;
+        for (k, &q) in self.driven.iter().enumerate() {
+            set(m, q, [y[at + k], 0.0, 0.0], &mut point);
+        }
+        Ok(point)
     }
 
     /// Fills the registry point from the state at t and solves for the free accelerations.
     pub fn evaluate(&mut self, m: &Mechanism, t: f64, y: &[f64]) -> Result<Evaluation, String> {
-        let reg = &m.reg;
         let ni = self.imposed.len();
         let n = self.free.len();
-        let mut point = self.base.clone();
-        // Variable slots of a coordinate: cos, sin, value, q̇, q̈.
-        let set = |q: CoordId, v: [f64; 3], point: &mut Vec<f64>| {
-            let roles = [
-                (VarRole::Cos(q), v[0].cos()),
-                (VarRole::Sin(q), v[0].sin()),
-                (VarRole::Value(q), v[0]),
-                (VarRole::Rate(q, 1), v[1]),
-                (VarRole::Rate(q, 2), v[2]),
-            ];
-            for (role, x) in roles {
-                if let Some(i) = reg.index_of(role) {
-                    point[i.index()] = x;
-                }
-            }
-        };
+        let mut point = self.point(m, t, y)?;
         let mut rates = Vec::with_capacity(ni);
-        for (k, im) in self.imposed.iter().enumerate() {
-            let (w, a) = im.law.at(t)?;
-            rates.push(w);
-            set(im.coord, [y[k], w, a], &mut point);
-        }
-        for (k, &q) in self.free.iter().enumerate() {
-            set(q, [y[ni + k], y[ni + n + k], 0.0], &mut point);
+        for im in &self.imposed {
+            rates.push(im.law.at(t)?.0);
         }
         let mut out = vec![0.0; n * n + n];
         self.dynamics.evaluate(&point, &mut out);
@@ -274,8 +336,11 @@ impl Plan {
             .solve(&(-h))
             .ok_or_else(|| format!("the mass matrix is singular at t = {t}"))?;
         for (k, &q) in self.free.iter().enumerate() {
-            set(q, [y[ni + k], y[ni + n + k], acc[k]], &mut point);
+            set(m, q, [y[ni + k], y[ni + n + k], acc[k]], &mut point);
         }
+        let mut driven_rates = vec![0.0; self.driven_rates.outputs()];
+        self.driven_rates.evaluate(&point, &mut driven_rates);
+        driven_rates.truncate(self.driven.len());
         let mut recorded = vec![0.0; self.recorded.outputs()];
         self.recorded.evaluate(&point, &mut recorded);
         for (r, k) in recorded.iter_mut().zip(&self.scales) {
@@ -288,6 +353,7 @@ impl Plan {
             rates,
             accelerations: acc.iter().copied().collect(),
             recorded,
+            driven_rates,
         })
     }
 
@@ -302,7 +368,9 @@ impl Plan {
             dy[ni + n + k] = e.accelerations[k];
         }
         let first = e.recorded.len() - self.integrals;
-        dy[ni + 2 * n..].copy_from_slice(&e.recorded[first..]);
+        let at = ni + 2 * n + self.integrals;
+        dy[ni + 2 * n..at].copy_from_slice(&e.recorded[first..]);
+        dy[at..].copy_from_slice(&e.driven_rates);
         Ok(())
     }
 }
@@ -315,4 +383,26 @@ pub(super) struct Evaluation {
     pub accelerations: Vec<f64>,
     /// The recorded expressions (unknowns, then integrands).
     pub recorded: Vec<f64>,
+    /// q̇ of the driven coordinates.
+    pub driven_rates: Vec<f64>,
+}
+
+/// Fills the variable slots of coordinate `q` (cos, sin, value, 1/cos or 1/sin, q̇, q̈) in a
+/// registry point from [q, q̇, q̈].
+fn set(m: &Mechanism, q: CoordId, v: [f64; 3], point: &mut [f64]) {
+    let reg = &m.reg;
+    let roles = [
+        (VarRole::Cos(q), v[0].cos()),
+        (VarRole::Sin(q), v[0].sin()),
+        (VarRole::Value(q), v[0]),
+        (VarRole::Reciprocal(q, Trig::Cos), 1.0 / v[0].cos()),
+        (VarRole::Reciprocal(q, Trig::Sin), 1.0 / v[0].sin()),
+        (VarRole::Rate(q, 1), v[1]),
+        (VarRole::Rate(q, 2), v[2]),
+    ];
+    for (role, x) in roles {
+        if let Some(i) = reg.index_of(role) {
+            point[i.index()] = x;
+        }
+    }
 }

@@ -244,3 +244,72 @@ fn a_loop_determinant_that_is_not_a_product_is_refused_by_name() {
         "{e}"
     );
 }
+
+#[test]
+fn the_crank_slider_runs_up_on_its_loop_and_the_work_is_the_energy() {
+    // The motor's torque against the gas from rest at θ = 0 (then φ = 0, x = R + L). The
+    // dependent coordinates are integrated from their rates: they stay on the loop (checked
+    // here from the columns, R sin θ + L sin φ = 0 and x = R cos θ + L cos φ, and by the
+    // drift simulate reports), and the work of the external actions is the change of Ec
+    // (the pivots and the slide do no work).
+    let m = torseur::spec::load("derivations/bielle_manivelle.json").unwrap();
+    let sc: torseur::wire::ScenarioSpec = serde_json::from_value(serde_json::json!({
+        "name": "demarrage",
+        "duration": 0.4,
+        "values": {"J1": 0.02, "A1": 0.01, "m1": 1.0, "m2": 0.5, "m3": 0.8,
+                   "R": 0.05, "L": 0.2, "C_m": 2.0, "F": 10.0},
+        "initial": {"theta": [0.0, 0.0], "phi": [0.0, 0.0], "x": [0.25, 0.0]}
+    }))
+    .unwrap();
+    let all: Vec<_> = m
+        .bodies
+        .iter()
+        .flat_map(|b| m.solids_of(&b.name).unwrap())
+        .collect();
+    let p = torseur::pfd::power(&m, "ext", &all, "all", m.frames.ground()).unwrap();
+    let run = torseur::simulate::simulate_with(&m, &sc, &[("P".to_string(), p)]).unwrap();
+    let last = run.times.len() - 1;
+    let col = |c: &str| run.column(c).unwrap()[last];
+    let (theta, phi, x) = (col("theta"), col("phi"), col("x"));
+    assert!(theta > 3.0, "the crank turns: θ = {theta}");
+    assert!((0.05 * theta.sin() + 0.2 * phi.sin()).abs() < 1e-8);
+    assert!((x - 0.05 * theta.cos() - 0.2 * phi.cos()).abs() < 1e-8);
+    let drift = run.drift.expect("a closure's drift");
+    assert!(drift < 1e-8, "drift {drift:e}");
+    let ec = torseur::pfd::kinetic_energy(&m, &all);
+    let energy = |k: usize| {
+        let mut coordinates = std::collections::BTreeMap::new();
+        for q in ["theta", "phi", "x"] {
+            let v = run.column(q).unwrap()[k];
+            let w = run.column(&format!("dot({q})")).unwrap()[k];
+            coordinates.insert(q.to_string(), [v, w, 0.0]);
+        }
+        let point = torseur::output::numeric_point(
+            &m,
+            &torseur::output::Values {
+                parameters: sc.values.clone(),
+                coordinates,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        ec.eval(&point)
+    };
+    let work = col("int(P)");
+    assert!(work > 0.1, "the motor does work: {work}");
+    let change = energy(last) - energy(0);
+    assert!(
+        ((work - change) / work).abs() < 1e-7,
+        "W = {work}, ΔEc = {change}"
+    );
+    // Initial values off the loop are refused, naming the dependent coordinates.
+    let mut off = sc.clone();
+    off.initial.insert("x".into(), [0.3, 0.0]);
+    let e = torseur::simulate::simulate_with(&m, &off, &[])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("do not close the loop") && e.contains("phi, x"),
+        "{e}"
+    );
+}
