@@ -266,7 +266,9 @@ pub(crate) fn lowest_terms(n: Expr, d: Expr) -> (Expr, Expr) {
     // 1/p below or above the line is cleared first (both sides times p^k), so that the gcd
     // sees polynomials: (x_e − l0 + m g s/k) / 1 and k x_e − k l0 + m g s share their factor.
     let (mut n, mut d) = (n, d);
-    let pairs: Vec<(usize, usize)> = n.reg.inverse_pairs().collect();
+    // Parameters only: a 1/cos q of a loop closure stays in the numerator (the denominator
+    // of a Fraction is made of parameters).
+    let pairs: Vec<(usize, usize)> = n.reg.inverses.iter().map(|&(_, v, w)| (v, w)).collect();
     for (v, w) in pairs {
         let k = n.p.degree(w).max(d.p.degree(w));
         if k > 0 {

@@ -547,7 +547,14 @@ pub fn answer_key_document(
         let _ = kind;
         let t = if constant { "" } else { "(t)" };
         // An imposed rate is stated where the coordinate is: ψ̇ = ω.
+        let closed = m
+            .spec
+            .closures
+            .iter()
+            .any(|l| l.dependent.contains(&c.name));
         let imposed = match m.reg.coord(&c.name) {
+            // Its rate is the loop law's, written after the paramétrage.
+            Some(_) if closed => ", déterminée par la fermeture géométrique".to_string(),
             Some(q) if !constant && m.reg.coord_info(q).has_imposed_rate() => {
                 let rate = m.reg.dot(q);
                 let math = format!("\\dot{{{}}} = {}", name(&c.name), super::expr(&rate));
@@ -635,30 +642,6 @@ pub fn answer_key_document(
             },
         });
     }
-    // The loop closures, as the statement writes them: their derivative gives the rates of
-    // the dependent coordinates above.
-    for (c, v) in m.spec.closures.iter().zip(m.closure_vectors()) {
-        let rhs = super::vector_over_bases(m, &v);
-        let math = format!("\\vec{{0}} = {rhs}");
-        let _ = writeln!(
-            o,
-            "\\item Fermeture géométrique : ${math}$ ; elle détermine {}.",
-            c.dependent
-                .iter()
-                .map(|d| format!("${}$", name(d)))
-                .collect::<Vec<_>>()
-                .join(" et ")
-        );
-        let ground = m.frames.ground();
-        positions.push(Inline {
-            what: format!("closure {}", c.vector),
-            latex: math,
-            value: Value::Vector {
-                basis: ground,
-                components: v.express_in(&m.frames, ground),
-            },
-        });
-    }
     o.push_str("\\end{itemize}\n\\end{multicols}\n");
     // The figures planes of the rotations and the graph of links, side by side when small.
     let planes = super::figures::rotation_pictures(m);
@@ -679,6 +662,7 @@ pub fn answer_key_document(
     }
     doc.inline.extend(rates);
     doc.inline.extend(positions);
+    loop_law(&mut doc);
     // Each solid's mass, centre and inertia operator; the operators side by side.
     let mut cells = Vec::new();
     let mut widths = Vec::new();
@@ -757,4 +741,89 @@ pub fn answer_key_document(
         displays: doc.displays,
         inline: doc.inline,
     })
+}
+
+/// The loop law after the paramétrage: each closure projected on the ground's basis, the
+/// relations' time derivatives, and the dependent rates they give where the determinant is
+/// not zero; every formula recorded with its value (a derivative reads 0 once the solved
+/// rates stand for the dependent ones).
+fn loop_law(doc: &mut Doc) {
+    let m = doc.m;
+    let Some(law) = &m.loop_law else { return };
+    let ground = m.frames.ground();
+    let lines = |l: &[String]| l.join(" \\\\\n&\\phantom{=} ");
+    let _ = writeln!(doc.o, "\\noindent\\textbf{{Loi entrée-sortie.}} ");
+    for (c, v) in m.spec.closures.iter().zip(m.closure_vectors()) {
+        let comps = v.express_in(&m.frames, ground);
+        let latex = format!("\\vec{{0}} = {}", super::vector_over_bases(m, &v));
+        let _ = writeln!(
+            doc.o,
+            "La fermeture géométrique ${latex}$, projetée sur ${}$, donne :",
+            super::basis(m.frame_name(ground))
+        );
+        doc.inline.push(Inline {
+            what: format!("closure {}", c.vector),
+            latex,
+            value: Value::Vector {
+                basis: ground,
+                components: comps.clone(),
+            },
+        });
+        for e in comps.iter().filter(|e| !e.is_zero()) {
+            let body = format!("0 &= {}", lines(&super::expr_lines(e, super::LINE - 4)));
+            doc.record(
+                DisplayRole::Step,
+                "loop relation",
+                body,
+                &Value::Scalar(e.clone()),
+                None,
+                false,
+            );
+        }
+    }
+    let _ = writeln!(doc.o, "En dérivant par rapport au temps :");
+    let zero = m.reg.zero();
+    for d in &law.derivatives {
+        let body = format!("0 &= {}", lines(d));
+        doc.record(
+            DisplayRole::Step,
+            "loop relation's derivative",
+            body,
+            &Value::Scalar(zero.clone()),
+            None,
+            false,
+        );
+    }
+    let condition = match m.reg.parse(&law.determinant) {
+        Ok(d) if d.as_rational().is_none() => {
+            let math = format!("{} \\neq 0", super::expr(&d));
+            let s = format!(", tant que ${math}$");
+            doc.inline.push(Inline {
+                what: "loop determinant".into(),
+                latex: math,
+                value: Value::Scalar(d),
+            });
+            s
+        }
+        _ => String::new(),
+    };
+    let _ = writeln!(doc.o, "D'où{condition} :");
+    let dependent = m.spec.closures.iter().flat_map(|c| &c.dependent);
+    for q in dependent.filter_map(|n| m.reg.coord(n)) {
+        let rate = m.reg.dot(q);
+        let body = format!(
+            "\\dot{{{}}} &= {}",
+            name(&m.reg.coord_info(q).name),
+            lines(&super::expr_lines(&rate, super::LINE - 4))
+        );
+        let what = format!("dot({})", m.reg.coord_info(q).name);
+        doc.record(
+            DisplayRole::Step,
+            &what,
+            body,
+            &Value::Scalar(rate),
+            None,
+            false,
+        );
+    }
 }

@@ -105,6 +105,21 @@ pub struct Mechanism {
     pub dynamics: Dynamics,
     /// The spec it was built from (the float backend works from it).
     pub spec: SpecFile,
+    /// How the loop closures were solved, for the answer key (None without closures).
+    pub loop_law: Option<LoopLaw>,
+}
+
+/// The loop law (« loi entrée–sortie ») as the closures gave it: each scalar relation's time
+/// derivative written with the dependent rates (which the mechanism's registry no longer has
+/// as variables: there they are the solved forms, and each derivative reads 0), and the
+/// determinant the solution divides by.
+#[derive(Debug, Clone)]
+pub struct LoopLaw {
+    /// The derivative of each scalar relation, in LaTeX lines (an answer key's display),
+    /// the dependent rates as symbols.
+    pub derivatives: Vec<Vec<String>>,
+    /// The determinant of the dependent rates' columns (`L*cos(phi)`), in the spec syntax.
+    pub determinant: String,
 }
 
 impl Mechanism {

@@ -33,6 +33,15 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Vec<Closure>, N
         vectors: &m.vectors,
     };
     let mut out: Vec<Closure> = Vec::new();
+    let dependent_names: Vec<&String> = spec.closures.iter().flat_map(|c| &c.dependent).collect();
+    for (i, c) in spec.coordinates.iter().enumerate() {
+        if !spec.closures.is_empty() && c.rate.is_some() && !dependent_names.contains(&&c.name) {
+            return Err(super::model::spec_err(
+                format!("coordinates[{i}].rate"),
+                "a mechanism with a loop closure takes free rates only for now",
+            ));
+        }
+    }
     for (i, c) in spec.closures.iter().enumerate() {
         let vector = names
             .parse(&c.vector, Context::Position)

@@ -390,8 +390,6 @@ pub(super) fn draw(
         }
         vals.coords.push([q, qd, qdd]);
     }
-    // Coordinates a loop closure determines: moved onto the loop.
-    super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
     // Rates driven by the others' (a gear ratio), once those are drawn; a coefficient may
     // hold a driven coordinate's value, whose rates are then settled by the passes before.
     for _ in 0..m.coords.len() {
@@ -407,6 +405,9 @@ pub(super) fn draw(
     if m.uses_time {
         vals.time = rng.random_range(0.0..=10.0);
     }
+    // Coordinates a loop closure determines: moved onto the loop (after any rate a gear
+    // drives, and the time, which the loop may read).
+    super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
 
     // Inertia parameters: the geometry does not depend on them, so place it once.
     let st = state(m, &vals)?;

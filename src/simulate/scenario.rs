@@ -346,7 +346,12 @@ impl Plan {
         for (r, k) in recorded.iter_mut().zip(&self.scales) {
             *r *= k;
         }
-        if let Some(bad) = out.iter().chain(&recorded).find(|v| !v.is_finite()) {
+        if let Some(bad) = out
+            .iter()
+            .chain(&recorded)
+            .chain(&driven_rates)
+            .find(|v| !v.is_finite())
+        {
             return Err(format!("non-finite value {bad} at t = {t}"));
         }
         Ok(Evaluation {

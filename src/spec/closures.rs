@@ -26,6 +26,10 @@ pub(super) struct Solved {
     pub inverses: Vec<String>,
     /// The dependent coordinates (holonomic driven rates).
     pub dependent: Vec<String>,
+    /// Each relation's time derivative in LaTeX lines, the dependent rates as symbols.
+    pub derivatives: Vec<Vec<String>>,
+    /// The determinant the rates divide by, in the spec syntax.
+    pub determinant: String,
 }
 
 /// The spec with only what places the frames and points: the closures are read on it.
@@ -109,6 +113,16 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
             dependent.push((d.clone(), k));
         }
     }
+    // The loop's derivative is solved for the dependent rates in terms of free rates.
+    for (i, c) in spec.coordinates.iter().enumerate() {
+        if c.rate.is_some() && !dependent.iter().any(|d| d.1 == i) {
+            return Err(at(
+                format!("coordinates[{i}].rate"),
+                "a mechanism with a loop closure takes free rates only for now (drive the crank \
+                 by a torque rather than impose its rate)",
+            ));
+        }
+    }
     let m = super::validate::build(&geometry(spec))?;
     let reg = m.reg.clone();
     let zero = reg.zero();
@@ -167,8 +181,10 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
     // d/dt fᵢ = Σ_d J_id q̇_d − bᵢ, bᵢ the free rates' part with its sign changed.
     let mut jac: Vec<Vec<Expr>> = Vec::new();
     let mut rhs: Vec<Expr> = Vec::new();
+    let mut derivatives = Vec::new();
     for r in &rows {
         let d = r.dt();
+        derivatives.push(crate::latex::expr_lines(&d, crate::latex::LINE - 4));
         let js: Vec<Expr> = ids.iter().map(|&q| d.partial_rate(q, 1)).collect();
         let mut b = -&d;
         for (q, j) in ids.iter().zip(&js) {
@@ -251,5 +267,7 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
         cosecants,
         inverses,
         dependent: dependent.into_iter().map(|d| d.0).collect(),
+        derivatives,
+        determinant: d.to_string(),
     }))
 }

@@ -482,6 +482,15 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
     }
     for (i, s) in spec.small.iter().enumerate() {
         let path = format!("small[{i}]");
+        // lin(…) sets cos q to 1 and sin q to 0 coordinate by coordinate: it would neither
+        // follow the coordinates a loop closure ties to q nor know 1/cos q.
+        if !spec.closures.is_empty() {
+            return Err(at(
+                path,
+                "lin(…) is not available with loop closures yet (the dependent coordinates \
+                 would not follow the small one)",
+            ));
+        }
         let q = reg.coord(&s.coordinate).ok_or_else(|| {
             at(
                 format!("{path}.coordinate"),

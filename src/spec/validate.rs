@@ -634,6 +634,10 @@ fn build_with(
         quantities,
         dynamics: Default::default(),
         spec: written.clone(),
+        loop_law: solved.map(|s| crate::mechanism::LoopLaw {
+            derivatives: s.derivatives.clone(),
+            determinant: s.determinant.clone(),
+        }),
     };
     m.dynamics = super::dynamics::build(&m, spec)?;
     // Each requested quantity must refer to known objects.

@@ -269,6 +269,10 @@ impl Product {
             }
         }
         let mut acc = Expr::from_terms(reg, vec![(self.coef.clone(), mono)]);
+        // cos²q of an angle whose sine a closure divides by, or cos q·(1/cos q): reduced.
+        if !reg.reciprocals.is_empty() {
+            acc = &acc * &reg.one();
+        }
         for (f, k) in rest {
             let base = match f {
                 Factor::Leaf(a) => leaf_expr(reg, a),

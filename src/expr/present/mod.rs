@@ -590,7 +590,7 @@ fn divides_inside(f: &Form) -> bool {
     fn divides(f: &Form) -> bool {
         f.terms.iter().any(|p| {
             p.factors.iter().any(|(x, _)| match x {
-                Factor::Leaf(l) => matches!(l, Leaf::Reciprocal(..)),
+                Factor::Leaf(l) => matches!(l, Leaf::Reciprocal(..) | Leaf::Inverse(_)),
                 Factor::Sum(s) => divides(s),
             })
         })
