@@ -56,16 +56,38 @@ pub(super) fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
             .filter(|w| turns(w[0], w[1]))
             .map(|w| (w[1], w[0])),
     );
+    // A rotation by a coordinate a loop closure determines takes its rate from the loop law.
+    let by_loop = turning.iter().any(|&(a, b)| {
+        // The pair's child frame carries the rotation.
+        let frame = if m.frames.get(a).parent == Some(b) {
+            a
+        } else {
+            b
+        };
+        m.frames.get(frame).rotation.as_ref().is_some_and(|r| {
+            let name = &m.reg.coord_info(r.angle.coord).name;
+            m.spec.closures.iter().any(|c| c.dependent.contains(name))
+        })
+    });
     if turning.len() <= 1 {
-        return "D'après le paramétrage :".to_string();
+        return if by_loop {
+            "D'après la loi entrée-sortie :".to_string()
+        } else {
+            "D'après le paramétrage :".to_string()
+        };
     }
     let parts: Vec<String> = turning
         .iter()
         .map(|&(a, b)| omega_of(m.frame_name(a), m.frame_name(b)))
         .collect();
     format!(
-        "Composition des vitesses de rotation, ${} = {}$ :",
+        "Composition des vitesses de rotation, ${} = {}${} :",
         omega_of(&mo.moving, &mo.reference),
-        parts.join(" + ")
+        parts.join(" + "),
+        if by_loop {
+            ", et la loi entrée-sortie"
+        } else {
+            ""
+        }
     )
 }
