@@ -11,6 +11,7 @@ mod document;
 mod expr;
 mod figures;
 mod hypotheses;
+mod loop_law;
 mod method;
 mod omega;
 mod routes;

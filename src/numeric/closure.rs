@@ -7,7 +7,7 @@ use super::NumericError;
 use super::NumericModel;
 use super::expr::{self, Env, Node};
 use super::kin::{Values, state};
-use super::model::{Context, Names};
+use super::model::Context;
 use crate::wire::SpecFile;
 use nalgebra::{DMatrix, DVector, Vector3};
 
@@ -25,13 +25,7 @@ const CLOSED_TOL: f64 = 1e-12;
 
 /// Reads the spec's closures with the float backend's own parser.
 pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Vec<Closure>, NumericError> {
-    let names = Names {
-        params: &m.param_index,
-        coords: &m.coord_index,
-        frames: &m.frame_index,
-        aliases: &m.aliases,
-        vectors: &m.vectors,
-    };
+    let names = m.names();
     let mut out: Vec<Closure> = Vec::new();
     let dependent_names: Vec<&String> = spec.closures.iter().flat_map(|c| &c.dependent).collect();
     for (i, c) in spec.coordinates.iter().enumerate() {

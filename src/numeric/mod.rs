@@ -287,6 +287,19 @@ pub struct NumericModel {
 }
 
 impl NumericModel {
+    /// The names the spec's expressions read, resolved to this model's indices.
+    fn names(&self) -> model::Names<'_> {
+        model::Names {
+            params: &self.param_index,
+            coords: &self.coord_index,
+            frames: &self.frame_index,
+            aliases: &self.aliases,
+            vectors: &self.vectors,
+        }
+    }
+}
+
+impl NumericModel {
     /// Builds the numeric model of a spec: resolves every name and parses every expression.
     ///
     /// ```

@@ -6,7 +6,7 @@ use super::cloud::{kinetic, kinetic_energy};
 use super::expr::{self, Env, Node};
 use super::kin::{State, Values, omega, point_motion, state, values};
 use super::la::{point_inertia, rows};
-use super::model::{Context, Names};
+use super::model::Context;
 use super::{NumValue, NumericError, NumericModel, Sample, cloud, dynamics};
 use crate::quantity::{ActionRef, Motion, Quantity, QuantityKind};
 use nalgebra::{Matrix3, Vector3};
@@ -229,13 +229,7 @@ pub(super) fn evaluate_expression(
     text: &str,
     sample: &Sample,
 ) -> Result<f64, NumericError> {
-    let names = Names {
-        params: &m.param_index,
-        coords: &m.coord_index,
-        frames: &m.frame_index,
-        aliases: &m.aliases,
-        vectors: &m.vectors,
-    };
+    let names = m.names();
     let node: Node = names
         .parse(text, Context::Instant)
         .map_err(|e| NumericError::Evaluation {

@@ -22,7 +22,7 @@
 use super::checks::identifier;
 use super::expr::{self, Env, Node};
 use super::kin::{self, State, Values};
-use super::model::{Context, Names, spec_err};
+use super::model::{Context, spec_err};
 use super::{NumericError, NumericModel, cloud};
 use crate::wire::{LinkKind, SpecFile, TheoremKind};
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
@@ -184,13 +184,7 @@ fn kind_name(kind: LinkKind) -> &'static str {
 /// Resolves the spec's `gravity`, `links`, `actions` and `pfd` against a model whose other
 /// parts are built. Errors name the JSON path.
 pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, NumericError> {
-    let names = Names {
-        params: &m.param_index,
-        coords: &m.coord_index,
-        frames: &m.frame_index,
-        aliases: &m.aliases,
-        vectors: &m.vectors,
-    };
+    let names = m.names();
     let mut d = Dynamics::default();
 
     let body = |name: &str, path: String| -> Result<Body, NumericError> {
