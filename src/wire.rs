@@ -74,6 +74,10 @@ pub struct SpecFile {
     /// closed kinematic chain, and the coordinates it determines.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub closures: Vec<ClosureSpec>,
+    /// Rolling without slipping (« roulement sans glissement »): each a velocity at a
+    /// contact that is zero, and the coordinates whose rates it determines.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub rolling: Vec<RollingSpec>,
     /// Perfect links between solids (and the ground), with optional viscous friction and
     /// torsion spring. They form a tree, unless `closures` close the loops: a link between two
     /// solids already connected by other links (a crank–slider's slide) is refused without a
@@ -460,6 +464,7 @@ impl Default for SpecFile {
             questions: vec![],
             gravity: None,
             closures: vec![],
+            rolling: vec![],
             links: vec![],
             actions: vec![],
             pfd: vec![],
@@ -553,6 +558,43 @@ pub struct ClosureSpec {
     /// The coordinates it determines, as many as it has independent scalar equations (two
     /// for a planar loop); each without a `rate` of its own.
     pub dependent: Vec<String>,
+}
+
+/// A velocity constraint at a contact: V(I,2/0) = 0⃗ (rolling without slipping), or only its
+/// components along `on` (no sliding across a blade: `["y1"]`). Its components, linear in
+/// the rates, give the rates of the `dependent` coordinates as linear forms of the others,
+/// by Cramer's rule; they are holonomic when their coefficients are constant (a disc on a
+/// line, ẋ = R θ̇), nonholonomic otherwise (a wheel on a plane, ẋ = R θ̇ cos ψ).
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RollingSpec {
+    /// The velocity that is zero, in the course's notation: `V(I,2/0)`, the velocity of the
+    /// point of solid 2 at the contact I in its motion relative to 0.
+    pub velocity: String,
+    /// The basis vectors it is zero along; all of it when absent (then it is projected on
+    /// the first basis, ground first, where it has as many nonzero components as dependent
+    /// coordinates).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub on: Vec<String>,
+    /// The coordinates whose rates it determines; each without a `rate` of its own.
+    pub dependent: Vec<String>,
+}
+
+impl RollingSpec {
+    /// How the answer key names the condition: « le roulement sans glissement » for the whole
+    /// velocity, « la condition de non-glissement » for some directions (`on`).
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/roue_sur_plan.json").unwrap();
+    /// assert_eq!(m.spec.rolling[0].course_name(), "le roulement sans glissement");
+    /// ```
+    pub fn course_name(&self) -> &'static str {
+        if self.on.is_empty() {
+            "le roulement sans glissement"
+        } else {
+            "la condition de non-glissement"
+        }
+    }
 }
 
 /// A frame turned (and possibly moved) from its parent.

@@ -552,9 +552,17 @@ pub fn answer_key_document(
             .closures
             .iter()
             .any(|l| l.dependent.contains(&c.name));
+        let rolls = m
+            .spec
+            .rolling
+            .iter()
+            .find(|l| l.dependent.contains(&c.name));
         let imposed = match m.reg.coord(&c.name) {
             // Its rate is the loop law's, written after the paramétrage.
             Some(_) if closed => ", déterminée par la fermeture géométrique".to_string(),
+            Some(_) if rolls.is_some() => {
+                format!(", déterminée par {}", rolls.map_or("", |r| r.course_name()))
+            }
             Some(q) if !constant && m.reg.coord_info(q).has_imposed_rate() => {
                 let rate = m.reg.dot(q);
                 let math = format!("\\dot{{{}}} = {}", name(&c.name), super::expr(&rate));

@@ -1,20 +1,71 @@
-//! The loop law (« loi entrée-sortie ») after the paramétrage of a mechanism with loop
-//! closures.
+//! The loop law (« loi entrée-sortie ») and the rolling conditions (« roulement sans
+//! glissement ») after the paramétrage of a mechanism with dependent coordinates.
 
 use super::document::{DisplayRole, Doc, Inline};
 use super::name;
 use crate::derivation::Value;
+use crate::mechanism::RollingLaw;
 use std::fmt::Write as _;
 
-/// The loop law after the paramétrage: each closure projected on the ground's basis, the
-/// relations' time derivatives, and the dependent rates they give where the determinant is
-/// not zero; every formula recorded with its value (a derivative reads 0 once the solved
-/// rates stand for the dependent ones).
+/// Display lines of a broken formula, continued under its sign.
+fn lines(l: &[String]) -> String {
+    l.join(" \\\\\n&\\phantom{=} ")
+}
+
+/// The loop law and the rolling conditions after the paramétrage: each closure projected on
+/// the ground's basis and its time derivative, each rolling condition projected, and the
+/// dependent rates they give where the determinant is not zero; every formula recorded with
+/// its value (a relation reads 0 once the solved rates stand for the dependent ones).
 pub(super) fn loop_law(doc: &mut Doc) {
     let m = doc.m;
     let Some(law) = &m.loop_law else { return };
+    if !m.spec.closures.is_empty() {
+        closures(doc, &law.derivatives);
+    }
+    if !law.rolling.is_empty() {
+        rolling(doc, &law.rolling);
+    }
+    let condition = match m.reg.parse(&law.determinant) {
+        // A condition on the coordinates only: a length R ≠ 0 goes without saying.
+        Ok(d) if !d.is_time_independent() => {
+            let math = format!("{} \\neq 0", super::expr(&d));
+            let s = format!(", tant que ${math}$");
+            doc.inline.push(Inline {
+                what: "loop determinant".into(),
+                latex: math,
+                value: Value::Scalar(d),
+            });
+            s
+        }
+        _ => String::new(),
+    };
+    let _ = writeln!(doc.o, "D'où{condition} :");
+    let dependent = (m.spec.closures.iter().map(|c| &c.dependent))
+        .chain(m.spec.rolling.iter().map(|r| &r.dependent))
+        .flatten();
+    for q in dependent.filter_map(|n| m.reg.coord(n)) {
+        let rate = m.reg.dot(q);
+        let body = format!(
+            "\\dot{{{}}} &= {}",
+            name(&m.reg.coord_info(q).name),
+            lines(&super::expr_lines(&rate, super::LINE - 4))
+        );
+        let what = format!("dot({})", m.reg.coord_info(q).name);
+        doc.record(
+            DisplayRole::Step,
+            &what,
+            body,
+            &Value::Scalar(rate),
+            None,
+            false,
+        );
+    }
+}
+
+/// Each closure projected on the ground's basis, then the relations' time derivatives.
+fn closures(doc: &mut Doc, derivatives: &[Vec<String>]) {
+    let m = doc.m;
     let ground = m.frames.ground();
-    let lines = |l: &[String]| l.join(" \\\\\n&\\phantom{=} ");
     let _ = writeln!(doc.o, "\\noindent\\textbf{{Loi entrée-sortie.}} ");
     for (c, v) in m.spec.closures.iter().zip(m.closure_vectors()) {
         let comps = v.express_in(&m.frames, ground);
@@ -46,7 +97,7 @@ pub(super) fn loop_law(doc: &mut Doc) {
     }
     let _ = writeln!(doc.o, "En dérivant par rapport au temps :");
     let zero = m.reg.zero();
-    for d in &law.derivatives {
+    for d in derivatives {
         let body = format!("0 &= {}", lines(d));
         doc.record(
             DisplayRole::Step,
@@ -57,36 +108,84 @@ pub(super) fn loop_law(doc: &mut Doc) {
             false,
         );
     }
-    let condition = match m.reg.parse(&law.determinant) {
-        Ok(d) if d.as_rational().is_none() => {
-            let math = format!("{} \\neq 0", super::expr(&d));
-            let s = format!(", tant que ${math}$");
-            doc.inline.push(Inline {
-                what: "loop determinant".into(),
-                latex: math,
-                value: Value::Scalar(d),
-            });
-            s
-        }
-        _ => String::new(),
+}
+
+/// Each rolling condition V(I,2/0) = 0⃗, projected on its basis (or along its directions):
+/// relations linear in the rates, which read 0 once the solved rates stand in.
+fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
+    let m = doc.m;
+    let whole = m.spec.rolling.iter().all(|r| r.on.is_empty());
+    let title = match (whole, laws.len()) {
+        (true, 1) => "Roulement sans glissement.",
+        (true, _) => "Roulements sans glissement.",
+        (false, 1) => "Condition de non-glissement.",
+        (false, _) => "Conditions de non-glissement.",
     };
-    let _ = writeln!(doc.o, "D'où{condition} :");
-    let dependent = m.spec.closures.iter().flat_map(|c| &c.dependent);
-    for q in dependent.filter_map(|n| m.reg.coord(n)) {
-        let rate = m.reg.dot(q);
-        let body = format!(
-            "\\dot{{{}}} &= {}",
-            name(&m.reg.coord_info(q).name),
-            lines(&super::expr_lines(&rate, super::LINE - 4))
+    let _ = writeln!(doc.o, "\\noindent\\textbf{{{title}}} ");
+    let zero = m.reg.zero();
+    for (r, law) in m.spec.rolling.iter().zip(laws) {
+        let Ok(q) = crate::quantity::Quantity::parse(&r.velocity) else {
+            continue;
+        };
+        let crate::quantity::QuantityKind::Velocity { point, motion } = &q.kind else {
+            continue;
+        };
+        let (Some(p), Some(i), Some(j)) = (
+            m.point(point),
+            m.frame_of(&motion.moving),
+            m.frame_of(&motion.reference),
+        ) else {
+            continue;
+        };
+        let v = super::quantity(&q.kind);
+        let ground = m.frames.ground();
+        let velocity = crate::kinematics::velocity(m, p, i, j);
+        let mut stated = Vec::new();
+        if r.on.is_empty() {
+            let latex = format!("{v} = \\vec{{0}}");
+            doc.inline.push(Inline {
+                what: format!("rolling condition {}", r.velocity),
+                latex: latex.clone(),
+                value: Value::Vector {
+                    basis: ground,
+                    components: velocity.express_in(&m.frames, ground),
+                },
+            });
+            stated.push(format!("${latex}$"));
+        } else {
+            for (f, a) in r.on.iter().filter_map(|u| m.frames.basis_vector(u)) {
+                let u = super::basis_vector(a.letter(), m.frame_name(f));
+                let latex = format!("{v} \\cdot {u} = 0");
+                doc.inline.push(Inline {
+                    what: format!("rolling condition {} on {u}", r.velocity),
+                    latex: latex.clone(),
+                    value: Value::Scalar(velocity.express_in(&m.frames, f)[a.index()].clone()),
+                });
+                stated.push(format!("${latex}$"));
+            }
+        }
+        let (what, projected) = match &law.basis {
+            Some(b) => (
+                "La condition de roulement sans glissement",
+                format!(", projetée sur ${}$", super::basis(b)),
+            ),
+            None => ("La condition de non-glissement", String::new()),
+        };
+        let _ = writeln!(
+            doc.o,
+            "{what} en ${}$, {}{projected}, donne :",
+            super::point(point),
+            stated.join(" et ")
         );
-        let what = format!("dot({})", m.reg.coord_info(q).name);
-        doc.record(
-            DisplayRole::Step,
-            &what,
-            body,
-            &Value::Scalar(rate),
-            None,
-            false,
-        );
+        for row in &law.rows {
+            doc.record(
+                DisplayRole::Step,
+                "rolling relation",
+                format!("0 &= {}", lines(row)),
+                &Value::Scalar(zero.clone()),
+                None,
+                false,
+            );
+        }
     }
 }

@@ -56,24 +56,29 @@ pub(super) fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
             .filter(|w| turns(w[0], w[1]))
             .map(|w| (w[1], w[0])),
     );
-    // A rotation by a coordinate a loop closure determines takes its rate from the loop law.
-    let by_loop = turning.iter().any(|&(a, b)| {
+    // A rotation by a coordinate a loop closure (or a rolling condition) determines takes its
+    // rate from the loop law (or that condition).
+    let source = turning.iter().find_map(|&(a, b)| {
         // The pair's child frame carries the rotation.
         let frame = if m.frames.get(a).parent == Some(b) {
             a
         } else {
             b
         };
-        m.frames.get(frame).rotation.as_ref().is_some_and(|r| {
-            let name = &m.reg.coord_info(r.angle.coord).name;
-            m.spec.closures.iter().any(|c| c.dependent.contains(name))
-        })
+        let r = m.frames.get(frame).rotation.as_ref()?;
+        let name = &m.reg.coord_info(r.angle.coord).name;
+        if m.spec.closures.iter().any(|c| c.dependent.contains(name)) {
+            Some("la loi entrée-sortie")
+        } else if let Some(r) = m.spec.rolling.iter().find(|c| c.dependent.contains(name)) {
+            Some(r.course_name())
+        } else {
+            None
+        }
     });
     if turning.len() <= 1 {
-        return if by_loop {
-            "D'après la loi entrée-sortie :".to_string()
-        } else {
-            "D'après le paramétrage :".to_string()
+        return match source {
+            Some(s) => format!("D'après {s} :"),
+            None => "D'après le paramétrage :".to_string(),
         };
     }
     let parts: Vec<String> = turning
@@ -84,10 +89,9 @@ pub(super) fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
         "Composition des vitesses de rotation, ${} = {}${} :",
         omega_of(&mo.moving, &mo.reference),
         parts.join(" + "),
-        if by_loop {
-            ", et la loi entrée-sortie"
-        } else {
-            ""
+        match source {
+            Some(s) => format!(", et {s}"),
+            None => String::new(),
         }
     )
 }

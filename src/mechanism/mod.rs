@@ -120,6 +120,19 @@ pub struct LoopLaw {
     pub derivatives: Vec<Vec<String>>,
     /// The determinant of the dependent rates' columns (`L*cos(phi)`), in the spec syntax.
     pub determinant: String,
+    /// Each rolling condition of the spec, in its order.
+    pub rolling: Vec<RollingLaw>,
+}
+
+/// A rolling condition V(I,2/0) = 0⃗ as the answer key writes it: the basis it was projected
+/// on (None when the spec names the directions, `on`) and each scalar relation in LaTeX lines,
+/// the dependent rates as symbols (each reads 0 in the mechanism).
+#[derive(Debug, Clone)]
+pub struct RollingLaw {
+    /// The frame whose basis the velocity was projected on, by name.
+    pub basis: Option<String>,
+    /// The scalar relations, linear in the rates, in LaTeX lines.
+    pub rows: Vec<Vec<String>>,
 }
 
 impl Mechanism {

@@ -6,7 +6,7 @@
 use super::NumericError;
 use super::NumericModel;
 use super::expr::{self, Env, Node};
-use super::kin::{Values, state};
+use super::kin::{State, Values, state};
 use super::model::Context;
 use crate::wire::SpecFile;
 use nalgebra::{DMatrix, DVector, Vector3};
@@ -15,6 +15,18 @@ use nalgebra::{DMatrix, DVector, Vector3};
 #[derive(Debug, Clone)]
 pub(super) struct Closure {
     vector: Node,
+    dependent: Vec<usize>,
+}
+
+/// A rolling condition: the velocity V(P, i/j) at a contact that is zero (or its components
+/// along `on`), and the coordinates whose rates it determines.
+#[derive(Debug, Clone)]
+pub(super) struct Rolling {
+    point: usize,
+    moving: usize,
+    reference: usize,
+    /// (frame, axis) of each direction it is zero along; empty: all of it.
+    on: Vec<(usize, usize)>,
     dependent: Vec<usize>,
 }
 
@@ -29,10 +41,13 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Vec<Closure>, N
     let mut out: Vec<Closure> = Vec::new();
     let dependent_names: Vec<&String> = spec.closures.iter().flat_map(|c| &c.dependent).collect();
     for (i, c) in spec.coordinates.iter().enumerate() {
-        if !spec.closures.is_empty() && c.rate.is_some() && !dependent_names.contains(&&c.name) {
+        let constrained = !spec.closures.is_empty() || !spec.rolling.is_empty();
+        let rolled = spec.rolling.iter().any(|r| r.dependent.contains(&c.name));
+        if constrained && c.rate.is_some() && !dependent_names.contains(&&c.name) && !rolled {
             return Err(super::model::spec_err(
                 format!("coordinates[{i}].rate"),
-                "a mechanism with a loop closure takes free rates only for now",
+                "a mechanism with a loop closure or a rolling condition takes free rates only \
+                 for now",
             ));
         }
     }
@@ -40,32 +55,155 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Vec<Closure>, N
         let vector = names
             .parse(&c.vector, Context::Position)
             .map_err(|e| super::model::spec_err(format!("closures[{i}].vector"), e))?;
-        let mut dependent = Vec::new();
-        for (j, d) in c.dependent.iter().enumerate() {
-            let path = format!("closures[{i}].dependent[{j}]");
-            let Some(&k) = m.coord_index.get(d) else {
-                return Err(super::model::spec_err(
-                    path,
-                    format!("unknown coordinate `{d}`"),
-                ));
-            };
-            if m.coords[k].rate.is_some() {
-                return Err(super::model::spec_err(
-                    path,
-                    format!("`{d}` has a rate of its own: the closure determines it"),
-                ));
-            }
-            if dependent.contains(&k) || out.iter().any(|o| o.dependent.contains(&k)) {
-                return Err(super::model::spec_err(
-                    path,
-                    format!("`{d}` is determined by two closures"),
-                ));
-            }
-            dependent.push(k);
-        }
+        let mut taken: Vec<usize> = out.iter().flat_map(|o| o.dependent.clone()).collect();
+        let dependent = dependents(
+            m,
+            &c.dependent,
+            &format!("closures[{i}]"),
+            "closure",
+            &mut taken,
+        )?;
         out.push(Closure { vector, dependent });
     }
     Ok(out)
+}
+
+/// The coordinates a closure or rolling condition at `at` determines, each known, without a
+/// rate of its own, and not already `taken` (which it joins).
+fn dependents(
+    m: &NumericModel,
+    names: &[String],
+    at: &str,
+    what: &str,
+    taken: &mut Vec<usize>,
+) -> Result<Vec<usize>, NumericError> {
+    let mut out = Vec::new();
+    for (j, d) in names.iter().enumerate() {
+        let path = format!("{at}.dependent[{j}]");
+        let err = |msg: String| super::model::spec_err(&path, msg);
+        let &k = m
+            .coord_index
+            .get(d)
+            .ok_or_else(|| err(format!("unknown coordinate `{d}`")))?;
+        if m.coords[k].rate.is_some() {
+            return Err(err(format!(
+                "`{d}` has a rate of its own: the {what} determines it"
+            )));
+        }
+        if taken.contains(&k) {
+            return Err(err(format!("`{d}` is determined twice")));
+        }
+        taken.push(k);
+        out.push(k);
+    }
+    Ok(out)
+}
+
+/// Reads the spec's rolling conditions, after the closures.
+pub(super) fn build_rolling(
+    spec: &SpecFile,
+    m: &NumericModel,
+) -> Result<Vec<Rolling>, NumericError> {
+    let mut taken: Vec<usize> = m
+        .closures
+        .iter()
+        .flat_map(|c| c.dependent.clone())
+        .collect();
+    let mut out = Vec::new();
+    for (i, r) in spec.rolling.iter().enumerate() {
+        let path = format!("rolling[{i}].velocity");
+        let err = |msg: String| super::model::spec_err(&path, msg);
+        let q = crate::quantity::Quantity::parse(&r.velocity).map_err(|e| err(e.to_string()))?;
+        let crate::quantity::QuantityKind::Velocity { point, motion } = &q.kind else {
+            return Err(err(format!("`{}` is not a velocity V(I,2/0)", r.velocity)));
+        };
+        let point = *m
+            .point_index
+            .get(point)
+            .ok_or_else(|| err(format!("unknown point `{point}`")))?;
+        let frame = |n: &str| {
+            m.solid_index
+                .get(n)
+                .map(|&s| m.solids[s].frame)
+                .or_else(|| m.frame_index.get(n).copied())
+                .ok_or_else(|| err(format!("unknown solid or frame `{n}`")))
+        };
+        let (moving, reference) = (frame(&motion.moving)?, frame(&motion.reference)?);
+        let mut on = Vec::new();
+        for (k, u) in r.on.iter().enumerate() {
+            let Some(v) = m.names().basis_vector(u) else {
+                return Err(super::model::spec_err(
+                    format!("rolling[{i}].on[{k}]"),
+                    format!("unknown basis vector `{u}`"),
+                ));
+            };
+            on.push(v);
+        }
+        if !on.is_empty() && on.len() != r.dependent.len() {
+            return Err(super::model::spec_err(
+                format!("rolling[{i}].on"),
+                "as many directions as dependent coordinates",
+            ));
+        }
+        if r.dependent.is_empty() {
+            return Err(super::model::spec_err(
+                format!("rolling[{i}].dependent"),
+                "name the coordinates the rolling condition determines",
+            ));
+        }
+        let dependent = dependents(
+            m,
+            &r.dependent,
+            &format!("rolling[{i}]"),
+            "rolling condition",
+            &mut taken,
+        )?;
+        out.push(Rolling {
+            point,
+            moving,
+            reference,
+            on,
+            dependent,
+        });
+    }
+    Ok(out)
+}
+
+/// V(P ∈ f/0) and its time derivative in ground components, from the frame's motion:
+/// V = Ȯ + W (P − O) with W = Ṙ Rᵀ, and dV/dt = Ö + Ẇ (P − O) + W (Ṗ − Ȯ),
+/// Ẇ = R̈ Rᵀ + Ṙ Ṙᵀ.
+fn carried(st: &State, p: usize, f: usize) -> [Vector3<f64>; 2] {
+    let r = st.rot[f];
+    let (r0, r1, r2) = (r.map(|x| x.re), r.map(|x| x.v1), r.map(|x| x.v2));
+    let w = r1 * r0.transpose();
+    let dw = r2 * r0.transpose() + r1 * r1.transpose();
+    let [o, od, odd] = super::la::parts(&st.origin(f));
+    let [pp, pd, _] = super::la::parts(&st.pos[p]);
+    let rel = pp - o;
+    [od + w * rel, odd + dw * rel + w * (pd - od)]
+}
+
+/// Each rolling condition's scalar relations and their time derivatives.
+fn rolling_rows(m: &NumericModel, v: &Values) -> Result<[Vec<f64>; 2], NumericError> {
+    let st = state(m, v)?;
+    let mut rows = [Vec::new(), Vec::new()];
+    for r in &m.rolling {
+        let [vi, ai] = carried(&st, r.point, r.moving);
+        let [vj, aj] = carried(&st, r.point, r.reference);
+        let (c, dc) = (vi - vj, ai - aj);
+        if r.on.is_empty() {
+            rows[0].extend(c.iter());
+            rows[1].extend(dc.iter());
+        } else {
+            for &(f, a) in &r.on {
+                let u = st.rot[f].column(a).map(|x| x.re);
+                let du = st.rot[f].column(a).map(|x| x.v1);
+                rows[0].push(u.dot(&c));
+                rows[1].push(du.dot(&c) + u.dot(&dc));
+            }
+        }
+    }
+    Ok(rows)
 }
 
 /// Every closure's vector in ground components, as dual numbers in t.
@@ -99,12 +237,13 @@ fn loops(m: &NumericModel, v: &Values) -> Result<Vec<Vector3<num_dual::Dual2_64>
         .collect()
 }
 
-/// The stacked components of every loop, order `k` of the time derivative (0, 1, 2).
+/// The stacked components of every loop, order `k` of the time derivative (0, 1, 2); at
+/// orders 1 and 2, the rolling conditions' relations and their derivatives follow.
 fn stacked(m: &NumericModel, v: &Values, k: usize) -> Result<DVector<f64>, NumericError> {
     let l = loops(m, v)?;
-    Ok(DVector::from_iterator(
-        3 * l.len(),
-        l.iter().flat_map(|x| {
+    let mut out: Vec<f64> = l
+        .iter()
+        .flat_map(|x| {
             x.iter()
                 .map(|d| match k {
                     0 => d.re,
@@ -112,8 +251,13 @@ fn stacked(m: &NumericModel, v: &Values, k: usize) -> Result<DVector<f64>, Numer
                     _ => d.v2,
                 })
                 .collect::<Vec<_>>()
-        }),
-    ))
+        })
+        .collect();
+    if k > 0 && !m.rolling.is_empty() {
+        let [r1, r2] = rolling_rows(m, v)?;
+        out.extend(if k == 1 { r1 } else { r2 });
+    }
+    Ok(DVector::from_vec(out))
 }
 
 /// ∂(loop)/∂q_d for each dependent coordinate: the first derivative in t when only q_d moves,
@@ -139,13 +283,18 @@ fn least_squares(j: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
 /// Moves the dependent coordinates of `v` onto the loops: their values (Newton from those
 /// drawn), rates and accelerations. Err with the reason when a loop does not close.
 pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
-    if m.closures.is_empty() {
+    if m.closures.is_empty() && m.rolling.is_empty() {
         return Ok(());
     }
-    let dep: Vec<usize> = m
+    let looped: Vec<usize> = m
         .closures
         .iter()
         .flat_map(|c| c.dependent.clone())
+        .collect();
+    let dep: Vec<usize> = looped
+        .iter()
+        .copied()
+        .chain(m.rolling.iter().flat_map(|r| r.dependent.clone()))
         .collect();
     let scale = v.params.iter().map(|p| p.abs()).fold(1.0_f64, f64::max);
     let err = |e: NumericError| e.to_string();
@@ -161,11 +310,15 @@ pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
             closed = true;
             break;
         }
-        let j = jacobian(m, v, &dep).map_err(err)?;
+        // The loops' rows only: a rolling condition ties no positions.
+        let j = jacobian(m, v, &looped)
+            .map_err(err)?
+            .rows(0, f.len())
+            .into_owned();
         let Some(dq) = least_squares(&j, &(-f)) else {
             break;
         };
-        for (k, &d) in dep.iter().enumerate() {
+        for (k, &d) in looped.iter().enumerate() {
             v.coords[d][0] += dq[k];
         }
     }
@@ -207,7 +360,7 @@ pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
 /// varied): each closure's nonzero ground components as many as its dependent coordinates,
 /// none without a coordinate, and their derivative invertible in the dependent rates.
 pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
-    if m.closures.is_empty() {
+    if m.closures.is_empty() && m.rolling.is_empty() {
         return Ok(());
     }
     let configs: Vec<Values> = (0..3)
@@ -260,10 +413,46 @@ pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
         }
         rank_needed += n;
     }
+    // Each rolling condition: its relations, linear in the rates, of rank its dependent
+    // coordinates' count over all the rates.
+    let first = 3 * m.closures.len();
+    let mut row = first;
+    for (i, r) in m.rolling.iter().enumerate() {
+        let n = if r.on.is_empty() { 3 } else { r.on.len() };
+        let all: Vec<usize> = (0..m.coords.len()).collect();
+        let rank = configs
+            .iter()
+            .filter_map(|v| jacobian(m, v, &all).ok())
+            .map(|j| {
+                let part = j.rows(row, n).into_owned();
+                part.rank(1e-9 * part.amax().max(1e-300))
+            })
+            .max()
+            .unwrap_or(0);
+        let path = format!("rolling[{i}].velocity");
+        if rank == 0 {
+            return Err(super::model::spec_err(
+                path,
+                "the velocity is zero whatever the rates: it imposes nothing",
+            ));
+        }
+        if rank != r.dependent.len() {
+            return Err(super::model::spec_err(
+                path,
+                format!(
+                    "it gives {rank} independent relations for {} dependent coordinates",
+                    r.dependent.len()
+                ),
+            ));
+        }
+        rank_needed += rank;
+        row += n;
+    }
     let dep: Vec<usize> = m
         .closures
         .iter()
         .flat_map(|c| c.dependent.clone())
+        .chain(m.rolling.iter().flat_map(|r| r.dependent.clone()))
         .collect();
     let full = configs.iter().any(|v| {
         jacobian(m, v, &dep).is_ok_and(|j| j.rank(1e-9 * j.amax().max(1e-300)) == rank_needed)
@@ -271,8 +460,8 @@ pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
     if !full {
         return Err(super::model::spec_err(
             "closures",
-            "the closures do not determine their dependent coordinates: their relations are \
-             redundant",
+            "the closures and rolling conditions do not determine their dependent coordinates: \
+             their relations are redundant",
         ));
     }
     Ok(())

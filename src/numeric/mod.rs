@@ -284,6 +284,8 @@ pub struct NumericModel {
     dynamics: dynamics::Dynamics,
     /// Loop closures, solved numerically at each sample.
     closures: Vec<closure::Closure>,
+    /// Rolling conditions, solved numerically at each sample.
+    rolling: Vec<closure::Rolling>,
 }
 
 impl NumericModel {
@@ -312,6 +314,7 @@ impl NumericModel {
     pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         let mut model = model::build(spec)?;
         model.closures = closure::build(spec, &model)?;
+        model.rolling = closure::build_rolling(spec, &model)?;
         closure::check_shape(&model)?;
         model.dynamics = dynamics::build(spec, &model)?;
         model::mark_positive(&mut model);
@@ -456,7 +459,8 @@ impl NumericModel {
         for _ in 0..100 {
             match sample::draw(self, rng, h) {
                 Err(NumericError::Sampling(m))
-                    if !self.closures.is_empty() && m.starts_with("closures:") =>
+                    if !(self.closures.is_empty() && self.rolling.is_empty())
+                        && m.starts_with("closures:") =>
                 {
                     last = Some(m);
                 }

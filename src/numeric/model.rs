@@ -702,6 +702,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         solid_index,
         dynamics: Default::default(),
         closures: Vec::new(),
+        rolling: Vec::new(),
     };
     Ok(model)
 }

@@ -11,7 +11,11 @@
 use super::SpecError;
 use super::validate::{at, expr_err};
 use crate::expr::{CoordId, Expr, VarRole};
+use crate::frame::FrameId;
+use crate::mechanism::{Mechanism, RollingLaw};
+use crate::quantity::{Quantity, QuantityKind};
 use crate::vector::Vector;
+use crate::wire::RollingSpec;
 use crate::wire::SpecFile;
 
 /// What the closures give the registry.
@@ -24,10 +28,12 @@ pub(super) struct Solved {
     pub cosecants: Vec<String>,
     /// The parameters the rates divide by.
     pub inverses: Vec<String>,
-    /// The dependent coordinates (holonomic driven rates).
+    /// The coordinates a loop closure determines (holonomic driven rates).
     pub dependent: Vec<String>,
     /// Each relation's time derivative in LaTeX lines, the dependent rates as symbols.
     pub derivatives: Vec<Vec<String>>,
+    /// Each rolling condition as the answer key writes it.
+    pub rolling: Vec<crate::mechanism::RollingLaw>,
     /// The determinant the rates divide by, in the spec syntax.
     pub determinant: String,
 }
@@ -36,6 +42,7 @@ pub(super) struct Solved {
 fn geometry(spec: &SpecFile) -> SpecFile {
     let mut g = spec.clone();
     g.closures.clear();
+    g.rolling.clear();
     g.solids.clear();
     g.sets.clear();
     g.hypotheses.clear();
@@ -82,19 +89,30 @@ fn det(m: &[Vec<Expr>], zero: &Expr) -> Expr {
 
 /// Solves the closures of a spec, if it has any.
 pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
-    if spec.closures.is_empty() {
+    if spec.closures.is_empty() && spec.rolling.is_empty() {
         return Ok(None);
     }
     let mut dependent: Vec<(String, usize)> = Vec::new();
-    for (i, c) in spec.closures.iter().enumerate() {
-        if c.dependent.is_empty() {
+    let lists = spec
+        .closures
+        .iter()
+        .enumerate()
+        .map(|(i, c)| (format!("closures[{i}]"), &c.dependent, "closure"))
+        .chain(
+            spec.rolling
+                .iter()
+                .enumerate()
+                .map(|(i, r)| (format!("rolling[{i}]"), &r.dependent, "rolling condition")),
+        );
+    for (at_path, list, what) in lists {
+        if list.is_empty() {
             return Err(at(
-                format!("closures[{i}].dependent"),
-                "name the coordinates the closure determines (two for a planar loop)",
+                format!("{at_path}.dependent"),
+                format!("name the coordinates the {what} determines"),
             ));
         }
-        for (j, d) in c.dependent.iter().enumerate() {
-            let path = format!("closures[{i}].dependent[{j}]");
+        for (j, d) in list.iter().enumerate() {
+            let path = format!("{at_path}.dependent[{j}]");
             let Some(k) = spec.coordinates.iter().position(|q| &q.name == d) else {
                 return Err(at(path, format!("unknown coordinate `{d}`")));
             };
@@ -102,13 +120,13 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
                 return Err(at(
                     path,
                     format!(
-                        "`{d}` has a rate of its own (coordinates[{k}].rate): the closure \
+                        "`{d}` has a rate of its own (coordinates[{k}].rate): the {what} \
                          determines it"
                     ),
                 ));
             }
             if dependent.iter().any(|x| &x.0 == d) {
-                return Err(at(path, format!("`{d}` is determined by two closures")));
+                return Err(at(path, format!("`{d}` is determined twice")));
             }
             dependent.push((d.clone(), k));
         }
@@ -118,8 +136,8 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
         if c.rate.is_some() && !dependent.iter().any(|d| d.1 == i) {
             return Err(at(
                 format!("coordinates[{i}].rate"),
-                "a mechanism with a loop closure takes free rates only for now (drive the crank \
-                 by a torque rather than impose its rate)",
+                "a mechanism with a loop closure or a rolling condition takes free rates only \
+                 for now (drive the crank by a torque rather than impose its rate)",
             ));
         }
     }
@@ -182,11 +200,21 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
     let mut jac: Vec<Vec<Expr>> = Vec::new();
     let mut rhs: Vec<Expr> = Vec::new();
     let mut derivatives = Vec::new();
+    let mut linear = Vec::new();
     for r in &rows {
         let d = r.dt();
         derivatives.push(crate::latex::expr_lines(&d, crate::latex::LINE - 4));
+        linear.push(d);
+    }
+    let mut rolling = Vec::new();
+    for (i, r) in spec.rolling.iter().enumerate() {
+        let (law, rs) = rolling_rows(spec, &m, i, r)?;
+        rolling.push(law);
+        linear.extend(rs);
+    }
+    for d in &linear {
         let js: Vec<Expr> = ids.iter().map(|&q| d.partial_rate(q, 1)).collect();
-        let mut b = -&d;
+        let mut b = -d;
         for (q, j) in ids.iter().zip(&js) {
             b = &b + &(j * &reg.dot(*q));
         }
@@ -194,12 +222,18 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
         rhs.push(b);
     }
     let names: Vec<&str> = dependent.iter().map(|d| d.0.as_str()).collect();
+    let place = match (spec.closures.is_empty(), spec.rolling.is_empty()) {
+        (false, true) => "closures",
+        (true, false) => "rolling",
+        _ => "closures and rolling",
+    };
+    let noun = place.replace("rolling", "rolling conditions");
     let d = det(&jac, &zero);
     if d.is_zero() {
         return Err(at(
-            "closures",
+            place,
             format!(
-                "the closures do not determine {}: their relations are redundant (the \
+                "the {noun} do not determine {}: their relations are redundant (the \
                  derivative's determinant in these rates is 0)",
                 names.join(", ")
             ),
@@ -236,9 +270,9 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
     let both: Vec<&String> = secants.iter().filter(|n| cosecants.contains(n)).collect();
     if !monomial || !both.is_empty() {
         return Err(at(
-            "closures",
+            place,
             format!(
-                "solving the closures for {} divides by `{}`, which is not a product of \
+                "solving the {noun} for {} divides by `{}`, which is not a product of \
                  parameters and of a cosine or a sine of each coordinate: not supported yet \
                  (measure the angles so that it is one: L cos φ for a crank–slider's rod, \
                  L2 L3 sin ψ for a four-bar whose rocker turns by ψ from its coupler)",
@@ -266,8 +300,127 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
         secants,
         cosecants,
         inverses,
-        dependent: dependent.into_iter().map(|d| d.0).collect(),
+        dependent: dependent
+            .into_iter()
+            .map(|d| d.0)
+            .filter(|d| spec.closures.iter().any(|c| c.dependent.contains(d)))
+            .collect(),
         derivatives,
+        rolling,
         determinant: d.to_string(),
     }))
+}
+
+/// The resolved frame of a motion's name in the geometry-only mechanism: a solid's frame, or
+/// a frame by name.
+fn motion_frame(spec: &SpecFile, m: &Mechanism, name: &str) -> Option<FrameId> {
+    let frame = spec
+        .solids
+        .iter()
+        .find(|s| s.name == name)
+        .map_or(name, |s| s.frame.as_str());
+    m.frames.find(frame)
+}
+
+/// A rolling condition's scalar relations (linear in the rates) and how the key writes them.
+fn rolling_rows(
+    spec: &SpecFile,
+    m: &Mechanism,
+    i: usize,
+    r: &RollingSpec,
+) -> Result<(RollingLaw, Vec<Expr>), SpecError> {
+    let path = format!("rolling[{i}].velocity");
+    let q = Quantity::parse(&r.velocity).map_err(|e| at(&path, e.to_string()))?;
+    let QuantityKind::Velocity { point, motion } = &q.kind else {
+        return Err(at(
+            &path,
+            format!(
+                "`{}` is not a velocity: write the velocity that is zero at the contact, \
+                 V(I,2/0)",
+                crate::excerpt::excerpt(&r.velocity)
+            ),
+        ));
+    };
+    let p = m
+        .point(point)
+        .ok_or_else(|| at(&path, format!("unknown point `{point}`")))?;
+    let frame = |n: &str| {
+        motion_frame(spec, m, n).ok_or_else(|| at(&path, format!("unknown solid or frame `{n}`")))
+    };
+    let (fi, fj) = (frame(&motion.moving)?, frame(&motion.reference)?);
+    let v = crate::kinematics::velocity(m, p, fi, fj);
+    let n = r.dependent.len();
+    let ground = m.frames.ground();
+    let (basis, rows) = if r.on.is_empty() {
+        let candidates = std::iter::once(ground).chain(m.frames.ids().filter(|&f| f != ground));
+        let mut counts = Vec::new();
+        let mut found = None;
+        for f in candidates {
+            let rows: Vec<Expr> = v
+                .express_in(&m.frames, f)
+                .into_iter()
+                .filter(|e| !e.is_zero())
+                .collect();
+            if rows.is_empty() {
+                return Err(at(
+                    &path,
+                    format!(
+                        "{} is zero whatever the rates: it imposes nothing",
+                        r.velocity
+                    ),
+                ));
+            }
+            if rows.len() == n {
+                found = Some((Some(m.frame_name(f).to_string()), rows));
+                break;
+            }
+            counts.push(rows.len());
+        }
+        found.ok_or_else(|| {
+            at(
+                &path,
+                format!(
+                    "it has {} nonzero components on every basis, for {n} dependent \
+                     coordinate{}: name as many dependent coordinates, or the directions it \
+                     is zero along (`on`)",
+                    counts.iter().min().copied().unwrap_or(0),
+                    if n == 1 { "" } else { "s" }
+                ),
+            )
+        })?
+    } else {
+        let mut rows = Vec::new();
+        for (k, u) in r.on.iter().enumerate() {
+            let upath = format!("rolling[{i}].on[{k}]");
+            let (f, a) = m
+                .frames
+                .basis_vector(u)
+                .ok_or_else(|| at(&upath, format!("unknown basis vector `{u}`")))?;
+            let e = v.express_in(&m.frames, f)[a.index()].clone();
+            if e.is_zero() {
+                return Err(at(
+                    upath,
+                    format!("{} has no component on {u} whatever the rates", r.velocity),
+                ));
+            }
+            rows.push(e);
+        }
+        if rows.len() != n {
+            return Err(at(
+                format!("rolling[{i}].on"),
+                format!(
+                    "{} directions for {n} dependent coordinate{}: as many as the coordinates \
+                     it determines",
+                    rows.len(),
+                    if n == 1 { "" } else { "s" }
+                ),
+            ));
+        }
+        (None, rows)
+    };
+    let lines = rows
+        .iter()
+        .map(|e| crate::latex::expr_lines(e, crate::latex::LINE - 4))
+        .collect();
+    Ok((RollingLaw { basis, rows: lines }, rows))
 }

@@ -637,6 +637,7 @@ fn build_with(
         loop_law: solved.map(|s| crate::mechanism::LoopLaw {
             derivatives: s.derivatives.clone(),
             determinant: s.determinant.clone(),
+            rolling: s.rolling.clone(),
         }),
     };
     m.dynamics = super::dynamics::build(&m, spec)?;

@@ -2,7 +2,6 @@
 //! by Lagrange's equations, and bad closures refused by both sides with their place.
 
 use super::*;
-use torseur::numeric::NumericModel;
 
 fn crank_slider() -> serde_json::Value {
     let text = std::fs::read_to_string(concat!(
@@ -11,14 +10,6 @@ fn crank_slider() -> serde_json::Value {
     ))
     .unwrap();
     serde_json::from_str(&text).unwrap()
-}
-
-/// Both sides' verdicts: the exact side's error, and whether the float backend refuses too.
-fn refused_by_both(v: &serde_json::Value) -> (String, String) {
-    let file = torseur::spec::parse_spec(&v.to_string()).unwrap();
-    let exact = torseur::spec::build(&file).expect_err("the exact side accepted it");
-    let float = NumericModel::new(&file).expect_err("the float backend accepted it");
-    (exact.to_string(), float.to_string())
 }
 
 #[test]
@@ -183,7 +174,7 @@ fn a_loop_that_cannot_close_is_found_by_the_float_backend() {
     let mut v = crank_slider();
     v["closures"][0]["vector"] = "R*x1 + L*x2 - x*x0 + 10*L*y0".into();
     let file = torseur::spec::parse_spec(&v.to_string()).unwrap();
-    let model = NumericModel::new(&file).unwrap();
+    let model = torseur::numeric::NumericModel::new(&file).unwrap();
     use rand::SeedableRng;
     let e = model
         .sample(&mut rand_chacha::ChaCha8Rng::seed_from_u64(1))

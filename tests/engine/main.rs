@@ -25,6 +25,7 @@ mod power;
 mod printed;
 mod properties;
 mod regulator;
+mod rolling;
 mod simulate;
 mod spec_errors;
 mod spec_schema;
@@ -96,4 +97,13 @@ pub fn assert_components(m: &Mechanism, v: &Vector, b: &str, expected: [&str; 3]
             c[k], e
         );
     }
+}
+
+/// Both sides' verdicts: the exact side's error, and whether the float backend refuses too.
+pub fn refused_by_both(v: &serde_json::Value) -> (String, String) {
+    let file = torseur::spec::parse_spec(&v.to_string()).unwrap();
+    let exact = torseur::spec::build(&file).expect_err("the exact side accepted it");
+    let float =
+        torseur::numeric::NumericModel::new(&file).expect_err("the float backend accepted it");
+    (exact.to_string(), float.to_string())
 }
