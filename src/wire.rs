@@ -185,6 +185,15 @@ pub struct LinkSpec {
     /// opposes the relative rate, -f q̇ along the axis.
     #[serde(default)]
     pub friction: Option<String>,
+    /// Dry (Coulomb) friction of a pivot or slider: the magnitude of the torque or force that
+    /// opposes the relative motion (a constant expression of the parameters, `mu*m*g*cos(alpha)`
+    /// for a block on an incline). The action on the second solid is −C ε along the axis, with
+    /// ε the sign of the relative rate, a parameter named by [`LinkSpec::sign_parameter`]
+    /// (`epsilon01`) of value ±1: `eval` takes it as given, `check` and `simulate` set it from
+    /// the relative rate (`simulate` holds the link stuck while the friction needed to stop it
+    /// stays below C).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coulomb: Option<String>,
     /// Torsion (pivot) or linear (slider) spring: -k (q - q0) along the axis.
     #[serde(default)]
     pub spring: Option<SpringSpec>,
@@ -212,6 +221,21 @@ impl LinkSpec {
             "{article}{kind} entre {} et {}",
             self.between[0], self.between[1]
         )
+    }
+
+    /// The parameter that stands for the sign of the relative rate of a link with dry
+    /// friction (`coulomb`): `epsilon` followed by the link's name.
+    ///
+    /// ```
+    /// let link: torseur::wire::LinkSpec = serde_json::from_str(
+    ///     r#"{"name": "01", "kind": "slider", "between": ["0", "1"], "point": "G",
+    ///         "axis": "x1", "coulomb": "mu*m*g"}"#).unwrap();
+    /// assert_eq!(link.sign_parameter().as_deref(), Some("epsilon01"));
+    /// ```
+    pub fn sign_parameter(&self) -> Option<String> {
+        self.coulomb
+            .as_ref()
+            .map(|_| format!("epsilon{}", self.name))
     }
 }
 

@@ -413,6 +413,9 @@ pub fn link_text(l: &LinkSpec) -> String {
     if l.friction.is_some() {
         t.push_str(", avec frottement visqueux");
     }
+    if l.coulomb.is_some() {
+        t.push_str(", avec frottement sec");
+    }
     if l.spring.is_some() {
         t.push_str(", avec ressort");
     }

@@ -213,13 +213,25 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
             .spec
             .links
             .iter()
-            .filter_map(|l| {
-                let f = l.friction.as_deref()?;
-                Some(format!(
-                    "la liaison {} (frottement visqueux de coefficient ${}$)",
-                    escape_text(&l.name),
-                    tex(format!("friction of {}", l.name), f)
-                ))
+            .flat_map(|l| {
+                let viscous = l.friction.as_deref().map(|f| {
+                    format!(
+                        "la liaison {} (frottement visqueux de coefficient ${}$)",
+                        escape_text(&l.name),
+                        tex(format!("friction of {}", l.name), f)
+                    )
+                });
+                let dry = l.coulomb.as_deref().map(|c| {
+                    let sign = l.sign_parameter().unwrap_or_default();
+                    format!(
+                        "la liaison {} (frottement sec d'intensité ${}$, opposé au glissement : \
+                         ${}$ est le signe de la vitesse relative)",
+                        escape_text(&l.name),
+                        tex(format!("dry friction of {}", l.name), c),
+                        tex(format!("sign of {}", l.name), &sign)
+                    )
+                });
+                viscous.into_iter().chain(dry)
             })
             .collect();
         parts.push(if lossy.is_empty() {

@@ -65,6 +65,7 @@ const PLAIN: &[&str] = &[
     "geq",
     "neq",
     "approx",
+    "pm",
     "rightarrow",
     "ldots",
 ];
@@ -82,7 +83,7 @@ const MATH_CHARS: &str = "+-=()[],.;:/'|<>!*";
 const ALLOWED: &str = "letters, digits, + - = ( ) [ ] , . ; : / ' | < > ! *, _ and ^, braces, \
                        Greek letters, \\vec, \\overrightarrow, \\mathcal, \\mathrm, \\dot, \
                        \\ddot, \\frac, \\cdot, \\wedge, \\times, \\sin, \\cos, \\tan, \\left, \
-                       \\right, \\quad, \\,, \\ell, \\infty, \\leq, \\geq, \\neq, \\approx, \
+                       \\right, \\quad, \\,, \\ell, \\infty, \\leq, \\geq, \\neq, \\approx, \\pm, \
                        \\rightarrow, \\ldots";
 
 /// Why a free text was refused: what is wrong, and where (1-based character position).
@@ -472,7 +473,7 @@ mod tests {
             "$\\left( \\frac{\\pi}{2} - q_1 \\right)$",
             "$\\left\\{ \\mathcal{V}(2/0) \\right\\}_{O_2}$",
             "$\\sin\\theta \\cos\\theta \\tan x$",
-            "$a \\cdot b \\times c \\quad \\ell \\infty \\geq \\neq \\approx \\rightarrow \\ldots$",
+            "$a \\cdot b \\times c \\quad \\ell \\infty \\geq \\neq \\approx \\pm \\rightarrow \\ldots$",
             "$f'(x) + f''^2$",
             "$x^{2}_{1}$",
         ] {

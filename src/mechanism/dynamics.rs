@@ -61,6 +61,18 @@ pub struct Action {
     pub spring: Option<SpringPart>,
 }
 
+/// Dry (Coulomb) friction in a link: its action holds −C ε along the axis, where the
+/// parameter `sign` stands for ε = sgn(`rate`), ±1.
+#[derive(Debug, Clone)]
+pub struct DryFriction {
+    /// The sign's parameter (`epsilon01`).
+    pub sign: String,
+    /// The relative rate whose sign it is: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider.
+    pub rate: Expr,
+    /// The friction's magnitude C (a torque or a force).
+    pub magnitude: Expr,
+}
+
 /// One scalar equation of the PFD, as declared.
 #[derive(Debug, Clone)]
 pub struct Theorem {
@@ -89,6 +101,8 @@ pub struct Dynamics {
     pub theorems: Vec<Theorem>,
     /// Coordinates declared small, for `lin(...)`.
     pub small: Vec<Small>,
+    /// The links with dry friction, in the spec's order.
+    pub dry: Vec<DryFriction>,
 }
 
 /// A coordinate declared small, and the equilibrium value it moves around.

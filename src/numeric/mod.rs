@@ -288,6 +288,33 @@ pub struct NumericModel {
     rolling: Vec<closure::Rolling>,
 }
 
+/// The spec with a parameter ε (the sign of the relative rate, set by each sample) for each
+/// link with dry friction, by the spec's naming convention.
+fn with_signs(spec: &SpecFile) -> Result<SpecFile, NumericError> {
+    let mut out = spec.clone();
+    for (i, l) in spec.links.iter().enumerate() {
+        let Some(name) = l.sign_parameter() else {
+            continue;
+        };
+        if spec.parameters.iter().any(|p| p.name == name)
+            || spec.coordinates.iter().any(|c| c.name == name)
+            || spec.aliases.iter().any(|a| a.name == name)
+        {
+            return Err(model::spec_err(
+                format!("links[{i}].coulomb"),
+                format!("`{name}` names the sign of this link's rate: rename the other `{name}`"),
+            ));
+        }
+        out.parameters.push(crate::wire::ParameterSpec {
+            name,
+            description: None,
+            unit: Some("1".into()),
+            kind: Default::default(),
+        });
+    }
+    Ok(out)
+}
+
 impl NumericModel {
     /// The names the spec's expressions read, resolved to this model's indices.
     fn names(&self) -> model::Names<'_> {
@@ -312,6 +339,8 @@ impl NumericModel {
     /// assert_eq!(e.to_string(), "spec, at frames[0].parent: unknown frame `7`");
     /// ```
     pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
+        let signed = with_signs(spec)?;
+        let spec = &signed;
         let mut model = model::build(spec)?;
         model.closures = closure::build(spec, &model)?;
         model.rolling = closure::build_rolling(spec, &model)?;

@@ -715,6 +715,7 @@ pub(super) fn mark_positive(model: &mut NumericModel) {
     for node in dy.gravity.iter().chain(dy.links.iter().flat_map(|l| {
         l.friction
             .iter()
+            .chain(l.coulomb.iter().map(|c| &c.0))
             .chain(l.spring.iter().map(|s| &s.stiffness))
     })) {
         expr::params_in(node, &mut positive);

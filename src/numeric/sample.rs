@@ -408,6 +408,8 @@ pub(super) fn draw(
     // Coordinates a loop closure determines: moved onto the loop (after any rate a gear
     // drives, and the time, which the loop may read).
     super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
+    // Dry friction's signs, from the relative rates now drawn.
+    super::dynamics::set_signs(m, &mut vals)?;
 
     // Inertia parameters: the geometry does not depend on them, so place it once.
     let st = state(m, &vals)?;

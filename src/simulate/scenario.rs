@@ -63,6 +63,26 @@ pub(super) struct Plan {
     /// The nonzero components of the loop closures on the ground's basis (0 on the loop):
     /// what the integration lets them drift to.
     pub closure: Option<Compiled>,
+    /// The links with dry friction: their sign's slot and relative rate.
+    pub dry: Vec<Dry>,
+}
+
+/// Below this relative rate (SI: m/s or rad/s), a link with dry friction may stick: the
+/// Karnopp model (D. Karnopp, « Computer simulation of stick-slip friction in mechanical
+/// dynamic systems », J. Dyn. Sys., Meas., Control 107, 1985) then gives it the friction that
+/// keeps its relative acceleration at 0, if that friction does not exceed the dry friction's
+/// magnitude, and the full magnitude against the motion's tendency otherwise.
+pub(super) const STICK_BAND: f64 = 1e-6;
+
+/// While stuck, the residual relative rate (below [`STICK_BAND`]) is brought to 0 with this
+/// time constant (s), so that a stuck link does not creep.
+const STICK_TIME: f64 = 1e-3;
+
+/// A link with dry friction: where its sign ε sits in a registry point, and its relative
+/// rate and acceleration (two outputs).
+pub(super) struct Dry {
+    var: usize,
+    motion: Compiled,
 }
 
 impl Plan {
@@ -77,12 +97,19 @@ impl Plan {
         let err = |s: String| SimulateError::Scenario(format!("scenario `{}`: {s}", sc.name));
         let reg = &m.reg;
         let sol = pfd::solve(m).map_err(|e| err(e.to_string()))?;
+        let sign = |p: &str| m.dynamics.dry.iter().any(|d| d.sign == p);
         for p in reg.parameters() {
-            if !sc.values.contains_key(p) {
+            if !sc.values.contains_key(p) && !sign(p) {
                 return Err(err(format!("no value for the parameter `{p}`")));
             }
         }
         for (k, v) in &sc.values {
+            if sign(k) {
+                return Err(err(format!(
+                    "`{k}` is the sign of a link's relative rate under dry friction: the \
+                     simulation sets it"
+                )));
+            }
             if !reg.parameters().contains(k) {
                 return Err(err(format!("`{k}` is not a parameter")));
             }
@@ -95,7 +122,7 @@ impl Plan {
             let i = v.index();
             match reg.role(v) {
                 VarRole::Parameter(k) if !reg.is_unknown(k) => {
-                    base[i] = sc.values[reg.scalar_name(k)];
+                    base[i] = sc.values.get(reg.scalar_name(k)).copied().unwrap_or(0.0);
                 }
                 // 1/k, for a parameter k the spec divides by.
                 VarRole::Inverse(k) => {
@@ -115,7 +142,11 @@ impl Plan {
                 _ => {}
             }
         }
-        let params: Vec<f64> = reg.parameters().iter().map(|p| sc.values[p]).collect();
+        let params: Vec<f64> = reg
+            .parameters()
+            .iter()
+            .map(|p| sc.values.get(p).copied().unwrap_or(0.0))
+            .collect();
         let mut imposed = Vec::new();
         let mut breakpoints = Vec::new();
         for (k, im) in sc.imposed.iter().enumerate() {
@@ -261,7 +292,25 @@ impl Plan {
                     .map_err(|e| err(format!("compiling the loop closures: {e}")))?,
             )
         };
+        let mut dry = Vec::new();
+        for d in &m.dynamics.dry {
+            let var = reg
+                .var_ids()
+                .find(|&v| {
+                    matches!(reg.role(v), VarRole::Parameter(k) if reg.scalar_name(k) == d.sign)
+                })
+                .ok_or_else(|| err(format!("no variable for `{}`", d.sign)))?;
+            let acc = d.rate.dt();
+            let motion = reg
+                .compile(&[&d.rate, &acc])
+                .map_err(|e| err(format!("compiling the dry friction's rates: {e}")))?;
+            dry.push(Dry {
+                var: var.index(),
+                motion,
+            });
+        }
         Ok(Plan {
+            dry,
             driven,
             driven_initial,
             driven_rates,
@@ -328,16 +377,37 @@ impl Plan {
             rates.push(im.law.at(t)?.0);
         }
         let mut out = vec![0.0; n * n + n];
-        self.dynamics.evaluate(&point, &mut out);
-        let mass = DMatrix::from_row_slice(n, n, &out[..n * n]);
-        let h = DVector::from_column_slice(&out[n * n..]);
-        let acc = mass
-            .lu()
-            .solve(&(-h))
-            .ok_or_else(|| format!("the mass matrix is singular at t = {t}"))?;
-        for (k, &q) in self.free.iter().enumerate() {
-            set(m, q, [y[ni + k], y[ni + n + k], acc[k]], &mut point);
+        // Dry friction: ε = the sign of the relative rate, or (Karnopp) the friction that
+        // holds a link whose rate is within the band, as far as its magnitude allows.
+        let mut motion = [0.0; 2];
+        let mut sticking = Vec::new();
+        for (k, d) in self.dry.iter_mut().enumerate() {
+            d.motion.evaluate(&point, &mut motion);
+            point[d.var] = motion[0].signum();
+            if motion[0].abs() <= STICK_BAND {
+                point[d.var] = 0.0;
+                sticking.push(k);
+            }
         }
+        for k in sticking {
+            let mut relative = [0.0; 2];
+            for (eps, r) in [0.0, 1.0].into_iter().zip(relative.iter_mut()) {
+                point[self.dry[k].var] = eps;
+                self.accelerations(m, t, y, &mut point, &mut out)?;
+                self.dry[k].motion.evaluate(&point, &mut motion);
+                *r = motion[1];
+            }
+            // The friction that brings the residual rate r to 0 in STICK_TIME: a(ε) = −r/τ.
+            self.dry[k].motion.evaluate(&point, &mut motion);
+            let target = -motion[0] / STICK_TIME;
+            let slope = relative[0] - relative[1];
+            point[self.dry[k].var] = if slope == 0.0 {
+                0.0
+            } else {
+                ((relative[0] - target) / slope).clamp(-1.0, 1.0)
+            };
+        }
+        let acc = self.accelerations(m, t, y, &mut point, &mut out)?;
         let mut driven_rates = vec![0.0; self.driven_rates.outputs()];
         self.driven_rates.evaluate(&point, &mut driven_rates);
         driven_rates.truncate(self.driven.len());
@@ -360,6 +430,30 @@ impl Plan {
             recorded,
             driven_rates,
         })
+    }
+
+    /// Solves M q̈ + h = 0 at `point` for the free accelerations and writes them in it.
+    fn accelerations(
+        &mut self,
+        m: &Mechanism,
+        t: f64,
+        y: &[f64],
+        point: &mut [f64],
+        out: &mut [f64],
+    ) -> Result<DVector<f64>, String> {
+        let ni = self.imposed.len();
+        let n = self.free.len();
+        self.dynamics.evaluate(point, out);
+        let mass = DMatrix::from_row_slice(n, n, &out[..n * n]);
+        let h = DVector::from_column_slice(&out[n * n..]);
+        let acc = mass
+            .lu()
+            .solve(&(-h))
+            .ok_or_else(|| format!("the mass matrix is singular at t = {t}"))?;
+        for (k, &q) in self.free.iter().enumerate() {
+            set(m, q, [y[ni + k], y[ni + n + k], acc[k]], point);
+        }
+        Ok(acc)
     }
 
     /// The right-hand side y' = f(t, y).

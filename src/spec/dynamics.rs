@@ -342,6 +342,38 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
             }
             description.push_str(", avec frottement visqueux");
         }
+        if let (Some(c), Some(sign)) = (&l.coulomb, l.sign_parameter()) {
+            let cpath = format!("{path}.coulomb");
+            let c = constant(reg, &cpath, c)?;
+            let eps = reg.parse(&sign).map_err(|e| expr_err(&cpath, e))?;
+            let push = u.scale(&(&c * &eps));
+            let rate = match l.kind {
+                LinkKind::Pivot => {
+                    moment = moment.sub(&push);
+                    omega(m, fb, fa).dot(&m.frames, &u)
+                }
+                LinkKind::Slider => {
+                    resultant = resultant.sub(&push);
+                    velocity(m, point, fb, fa).dot(&m.frames, &u)
+                }
+                _ => {
+                    return Err(at(cpath, "dry friction is declared on a pivot or a slider"));
+                }
+            };
+            if rate.is_zero() {
+                return Err(at(
+                    cpath,
+                    "the link's relative rate along its axis is zero whatever the motion: \
+                     nothing slides",
+                ));
+            }
+            d.dry.push(crate::mechanism::DryFriction {
+                sign,
+                rate,
+                magnitude: c,
+            });
+            description.push_str(", avec frottement sec");
+        }
         let mut spring = None;
         if let Some(s) = &l.spring {
             let spath = format!("{path}.spring");
@@ -513,4 +545,44 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
         d.small.push(crate::pfd::Small { coord: q, around });
     }
     Ok(d)
+}
+
+/// The spec with a parameter ε (value ±1, the sign of the relative rate) for each link with
+/// dry friction, named by [`crate::wire::LinkSpec::sign_parameter`].
+pub(super) fn with_signs(spec: &SpecFile) -> Result<std::borrow::Cow<'_, SpecFile>, SpecError> {
+    if spec.links.iter().all(|l| l.coulomb.is_none()) {
+        return Ok(std::borrow::Cow::Borrowed(spec));
+    }
+    let mut out = spec.clone();
+    for (i, l) in spec.links.iter().enumerate() {
+        let Some(name) = l.sign_parameter() else {
+            continue;
+        };
+        let taken = spec
+            .parameters
+            .iter()
+            .map(|p| &p.name)
+            .chain(spec.coordinates.iter().map(|c| &c.name))
+            .chain(spec.aliases.iter().map(|a| &a.name))
+            .any(|n| *n == name);
+        if taken {
+            return Err(at(
+                format!("links[{i}].coulomb"),
+                format!(
+                    "`{name}` is the sign of this link's relative rate under dry friction: \
+                     give the parameter of that name another name"
+                ),
+            ));
+        }
+        out.parameters.push(crate::wire::ParameterSpec {
+            name,
+            description: Some(format!(
+                "signe de la vitesse relative de la liaison {} ($\\pm 1$)",
+                l.name
+            )),
+            unit: Some("1".into()),
+            kind: Default::default(),
+        });
+    }
+    Ok(std::borrow::Cow::Owned(out))
 }

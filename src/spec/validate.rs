@@ -45,16 +45,20 @@ fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
 
 /// Builds the mechanism described by a spec.
 pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
-    // Loop closures give the dependent coordinates their rates (driven by the free ones),
-    // read on the geometry alone; the mechanism keeps the spec as written.
+    // Dry friction's signs are parameters of their own; loop closures and rolling conditions
+    // give the dependent coordinates their rates (driven by the free ones), read on the
+    // geometry alone; the mechanism keeps the spec as written.
+    let signed = super::dynamics::with_signs(spec)?;
+    let written = spec;
+    let spec = signed.as_ref();
     match super::closures::solve(spec)? {
-        None => build_with(spec, spec, None),
+        None => build_with(spec, written, None),
         Some(solved) => {
             let mut with_rates = spec.clone();
             for (k, rate) in &solved.rates {
                 with_rates.coordinates[*k].rate = Some(rate.clone());
             }
-            build_with(&with_rates, spec, Some(&solved))
+            build_with(&with_rates, written, Some(&solved))
         }
     }
 }

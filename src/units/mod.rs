@@ -172,6 +172,10 @@ impl Dimensions {
             };
             d.set(&p.name, dim);
         }
+        // The sign ε of a link's relative rate under dry friction is a pure number.
+        for dry in &m.dynamics.dry {
+            d.set(&dry.sign, Some(Dimension::NONE));
+        }
         let unknowns: Vec<(VarId, String)> = crate::pfd::unknown_vars(m)
             .into_iter()
             .map(|(n, v)| (v, n))

@@ -13,6 +13,7 @@ mod corpus;
 mod derivation;
 mod eval;
 mod figures;
+mod friction;
 mod hypotheses;
 mod kinematics;
 mod latex;

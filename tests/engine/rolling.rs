@@ -168,3 +168,54 @@ fn the_skate_turns_on_a_circle_as_its_closed_form_says() {
         );
     }
 }
+
+#[test]
+fn the_pfd_equations_are_lagranges_with_multipliers() {
+    // Lagrange's equations of the mechanism without its rolling condition (every coordinate
+    // free; the contact's action, whose unknowns are the multipliers, a generalised force),
+    // E_k = 0, from the energies and virtual powers only. The condition q̇_d = Σ_f c_df q̇_f
+    // makes E_f + Σ_d c_df E_d free of the multipliers (their virtual power vanishes on every
+    // motion that respects it); along the constrained motion it is the PFD's equation of
+    // motion of f, up to a factor (compared by cross-multiplying the q̈_f coefficients).
+    let cases: [(&str, &[&str]); 3] = [
+        ("tests/specs/patin.json", &["x", "psi"]),
+        ("derivations/roue_sur_plan.json", &["theta", "psi"]),
+        ("derivations/disque_plan_incline.json", &["x"]),
+    ];
+    for (path, free_coords) in cases {
+        let m = torseur::spec::load(path).unwrap();
+        let mut v = spec(path);
+        let dependent: Vec<String> = v["rolling"][0]["dependent"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|d| d.as_str().unwrap().to_string())
+            .collect();
+        v.as_object_mut().unwrap().remove("rolling");
+        let unconstrained = torseur::spec::from_str(&v.to_string()).unwrap();
+        let ureg = &unconstrained.reg;
+        // Each E_k read into the constrained mechanism, where the dependent rates (and their
+        // derivatives) are the condition's.
+        let e = |k: &str| {
+            let r = torseur::pfd::lagrange(&unconstrained, ureg.coord(k).unwrap());
+            m.reg.parse(&r.to_string()).unwrap()
+        };
+        let sol = torseur::pfd::solve(&m).unwrap();
+        for f in free_coords {
+            let qf = m.reg.coord(f).unwrap();
+            let mut combination = e(f);
+            for d in &dependent {
+                let c = m.reg.dot(m.reg.coord(d).unwrap()).partial_rate(qf, 1);
+                combination = &combination + &(&c * &e(d));
+            }
+            let eom = &sol.eom[*f];
+            let (a, b) = (combination.partial_rate(qf, 2), eom.partial_rate(qf, 2));
+            assert!(!a.is_zero() && !b.is_zero(), "{path}: {f}");
+            assert_eq!(
+                &combination * &b,
+                eom * &a,
+                "{path}: Lagrange with multipliers and the PFD differ on {f}"
+            );
+        }
+    }
+}

@@ -380,9 +380,10 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 20] = [
+const LIBRARY: [&str; 21] = [
     "bielle_manivelle",
     "bille_tube_tournant",
+    "bloc_frottement_sec",
     "bras_robot_deux_axes",
     "disque_plan_incline",
     "double_pendule",

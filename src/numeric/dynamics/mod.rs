@@ -35,7 +35,7 @@ const APPEARS: f64 = 1e-9;
 const SINGULAR: f64 = 1e-10;
 
 mod solve;
-pub(super) use solve::{action, eom, internal_power, power, unknown};
+pub(super) use solve::{action, eom, internal_power, power, set_signs, unknown};
 
 /// What exerts or receives an action: a solid, or a frame that is not a solid (the ground).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -74,6 +74,9 @@ pub(super) struct LinkInfo {
     components: Vec<(usize, usize)>,
     /// Viscous friction coefficient f.
     pub friction: Option<Node>,
+    /// Dry friction: its magnitude C and the index of the parameter ε that the samples set
+    /// to the sign of the relative rate.
+    pub coulomb: Option<(Node, usize)>,
     /// Spring.
     pub spring: Option<SpringInfo>,
 }
@@ -378,6 +381,21 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
             }
             Some(f) => Some(constant(f, format!("{path}.friction"))?),
         };
+        let coulomb = match (&l.coulomb, l.sign_parameter()) {
+            (Some(_), _) if !turns_or_slides => {
+                return Err(spec_err(
+                    format!("{path}.coulomb"),
+                    "dry friction is given for a pivot or a slider",
+                ));
+            }
+            (Some(c), Some(sign)) => {
+                let eps = *m.param_index.get(&sign).ok_or_else(|| {
+                    spec_err(format!("{path}.coulomb"), format!("no parameter `{sign}`"))
+                })?;
+                Some((constant(c, format!("{path}.coulomb"))?, eps))
+            }
+            _ => None,
+        };
         let spring = match &l.spring {
             None => None,
             Some(_) if !turns_or_slides => {
@@ -446,6 +464,7 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
             axis: axis.map(|x| x.1),
             components,
             friction,
+            coulomb,
             spring,
         });
     }

@@ -94,6 +94,30 @@ fn body_frame(m: &NumericModel, b: Body) -> usize {
     }
 }
 
+/// Sets the sign parameter ε of every link with dry friction to the sign of its relative
+/// rate at the sample: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider (0 at rest).
+pub(in crate::numeric) fn set_signs(
+    m: &NumericModel,
+    vals: &mut Values,
+) -> Result<(), NumericError> {
+    if m.dynamics.links.iter().all(|l| l.coulomb.is_none()) {
+        return Ok(());
+    }
+    let st = kin::state(m, vals)?;
+    for l in &m.dynamics.links {
+        let Some((_, eps)) = &l.coulomb else { continue };
+        let [fa, fb] = l.between.map(|b| body_frame(m, b));
+        let u = st.rot0(l.basis).column(l.axis.unwrap_or(0)).into_owned();
+        let rate = if l.kind == LinkKind::Slider {
+            kin::point_motion(&st, l.point, fb, fa)[0].dot(&u)
+        } else {
+            kin::omega(&st, fb, fa).dot(&u)
+        };
+        vals.params[*eps] = if rate == 0.0 { 0.0 } else { rate.signum() };
+    }
+    Ok(())
+}
+
 /// Evaluates a constant scalar.
 fn constant(node: &Node, vals: &Values, what: impl Fn() -> String) -> Result<f64, NumericError> {
     expr::eval_scalar(node, &vals.constants()).map_err(eval_err(what()))
@@ -145,6 +169,15 @@ fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, Numer
             } else {
                 let w = kin::omega(st, fb, fa);
                 moment.c -= u * (f * w.dot(&u));
+            }
+        }
+        if let Some((c, eps)) = &l.coulomb {
+            let c = constant(c, vals, || format!("dry friction of links[{i}]"))?;
+            let push = u * (c * vals.params[*eps]);
+            if slider {
+                resultant.c -= push;
+            } else {
+                moment.c -= push;
             }
         }
         if let Some(s) = &l.spring {
