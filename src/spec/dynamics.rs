@@ -345,6 +345,20 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
         if let (Some(c), Some(sign)) = (&l.coulomb, l.sign_parameter()) {
             let cpath = format!("{path}.coulomb");
             let c = constant(reg, &cpath, c)?;
+            if let Some(n) = reg.unknowns().iter().find(|n| {
+                reg.param(n)
+                    .and_then(|u| u.single_variable())
+                    .is_some_and(|v| c.contains_var(v))
+            }) {
+                return Err(at(
+                    cpath,
+                    format!(
+                        "the magnitude holds the unknown `{n}`: dry friction takes a magnitude \
+                         of the parameters (write the normal force the statement knows, \
+                         f*m*g*cos(alpha))"
+                    ),
+                ));
+            }
             let eps = reg.parse(&sign).map_err(|e| expr_err(&cpath, e))?;
             let push = u.scale(&(&c * &eps));
             let rate = match l.kind {

@@ -133,6 +133,12 @@ fn bad_dry_friction_is_refused_by_both_sides_with_its_place() {
         "{e}"
     );
     assert!(f.contains("links[0].coulomb"), "{f}");
+    // A magnitude that holds an unknown of the PFD (f N with N the normal force).
+    let mut v = spec("derivations/bloc_frottement_sec.json");
+    v["links"][0]["coulomb"] = "f*Y02".into();
+    let (e, f) = refused_by_both(&v);
+    assert!(e.contains("links[0].coulomb") && e.contains("`Y02`"), "{e}");
+    assert!(f.contains("links[0].coulomb"), "{f}");
     // A magnitude that moves.
     let mut v = spec("derivations/bloc_frottement_sec.json");
     v["links"][0]["coulomb"] = "f*m*g*x".into();
