@@ -98,11 +98,9 @@ fn other_key(t: &TermParts) -> OtherKey {
 pub fn ordered_terms(e: &Expr) -> Vec<TermParts> {
     let reg = e.registry();
     let mut v: Vec<TermParts> = e.terms().map(|(c, x)| split(reg, c, x)).collect();
-    v.sort_by(|a, b| {
-        let ka = (rate_key(&a.rates), other_key(a));
-        let kb = (rate_key(&b.rates), other_key(b));
-        ka.cmp(&kb)
-    });
+    // Each key built once (a stable sort): a 188,000-term equation of a planar chain spent
+    // 15 % of its run building them at every comparison.
+    v.sort_by_cached_key(|t| (rate_key(&t.rates), other_key(t)));
     v
 }
 

@@ -2,7 +2,6 @@
 //! operation count, its exact value, and its plain text (parsable back).
 
 use super::super::{CoordId, Expr, ParamId, Registry, Trig, VarRole};
-use std::cmp::Ordering;
 use std::rc::Rc;
 use symbolica::domains::rational::Rational;
 
@@ -437,11 +436,12 @@ pub(crate) fn leaf_expr(reg: &Rc<Registry>, a: &Leaf) -> Expr {
     }
 }
 
-/// Sorts the terms of a sum as a teacher writes it (see [`product_order`]), then brings the
+/// Sorts the terms of a sum as a teacher writes it (see [`ProductKey`]), then brings the
 /// first positive term to the front when the sum would start with a minus sign
 /// (C2 − B2 + m2 L2², not −B2 + C2 + m2 L2²).
 pub(crate) fn sort_terms(reg: &Registry, terms: &mut Vec<Product>) {
-    terms.sort_by(|a, b| product_order(reg, a, b));
+    // Each key built once (a stable sort), not at every comparison.
+    terms.sort_by_cached_key(|p| product_key(reg, p));
     positive_first(terms);
 }
 
@@ -455,12 +455,8 @@ pub(crate) fn positive_first(terms: &mut Vec<Product>) {
     }
 }
 
-/// Orders products as a teacher writes a sum: lower degree in the parameters first, then by
-/// the course order of their parameters; plain numbers last.
-pub(crate) fn product_order(reg: &Registry, a: &Product, b: &Product) -> Ordering {
-    product_key(reg, a).cmp(&product_key(reg, b))
-}
-
+/// The order of products as a teacher writes a sum: terms with rates first, then lower
+/// degree in the parameters, then the course order of their parameters; plain numbers last.
 type ProductKey = (
     bool,
     bool,
