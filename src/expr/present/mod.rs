@@ -400,20 +400,35 @@ fn clustered(reg: &Rc<Registry>, units: &[Unit], search: &mut search::Search) ->
     let mut out: Vec<(GroupKey, Product)> = Vec::new();
     loop {
         let mut best: Option<(usize, Vec<usize>, Product, GroupKey)> = None;
+        // A gcd already tried gives the same members and the same gain (the first one found
+        // is kept); the cost of a set of members written apart does not depend on the gcd.
+        let mut tried: Vec<Expr> = Vec::new();
+        let mut apart: std::collections::HashMap<Vec<usize>, usize> = Default::default();
         for i in 0..left.len() {
             for j in i + 1..left.len() {
                 let Some(d) = left[i].1.polynomial_gcd(&left[j].1) else {
                     continue;
                 };
+                if tried.contains(&d) {
+                    continue;
+                }
+                tried.push(d.clone());
                 let members: Vec<usize> = (0..left.len())
                     .filter(|&k| left[k].1.exact_div(&d).is_some())
                     .collect();
                 let alone: Vec<&Unit> = members.iter().map(|&k| left[k]).collect();
-                let separate: usize = unit_products(reg, &alone, search)
-                    .iter()
-                    .map(|p| Form::single(p.1.clone()).cost().0)
-                    .sum::<usize>()
-                    + alone.len().saturating_sub(1);
+                let separate = match apart.get(&members) {
+                    Some(&c) => c,
+                    None => {
+                        let c = unit_products(reg, &alone, search)
+                            .iter()
+                            .map(|p| Form::single(p.1.clone()).cost().0)
+                            .sum::<usize>()
+                            + alone.len().saturating_sub(1);
+                        apart.insert(members.clone(), c);
+                        c
+                    }
+                };
                 let inner_units: Vec<Unit> = alone
                     .iter()
                     .map(|u| (u.0.clone(), u.1.exact_div(&d).expect("d divides it")))
