@@ -458,8 +458,13 @@ pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
         jacobian(m, v, &dep).is_ok_and(|j| j.rank(1e-9 * j.amax().max(1e-300)) == rank_needed)
     });
     if !full {
+        let place = match (m.closures.is_empty(), m.rolling.is_empty()) {
+            (false, true) => "closures",
+            (true, false) => "rolling",
+            _ => "closures and rolling",
+        };
         return Err(super::model::spec_err(
-            "closures",
+            place,
             "the closures and rolling conditions do not determine their dependent coordinates: \
              their relations are redundant",
         ));

@@ -228,6 +228,17 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
         _ => "closures and rolling",
     };
     let noun = place.replace("rolling", "rolling conditions");
+    // A dependent coordinate whose rate no relation holds cannot be determined by them.
+    if let Some(col) = (0..ids.len()).find(|&c| jac.iter().all(|row| row[c].is_zero())) {
+        return Err(at(
+            place,
+            format!(
+                "the {noun} do not hold the rate of `{}`: they cannot determine it (name \
+                 the coordinates whose rates they hold)",
+                names[col]
+            ),
+        ));
+    }
     let d = det(&jac, &zero);
     if d.is_zero() {
         return Err(at(

@@ -158,9 +158,16 @@ fn bad_closures_are_refused_by_both_sides_with_their_place() {
         "{e}"
     );
     assert!(f.contains("closures[0].vector"), "{f}");
-    // Redundant relations: the same relation twice (θ's rate only).
+    // Relations that do not hold a dependent rate (φ̇ appears in neither).
     let mut v = crank_slider();
     v["closures"][0]["vector"] = "(R*cos(theta) - x)*x0 + (R*cos(theta) - x)*y0".into();
+    let (e, f) = refused_by_both(&v);
+    assert!(e.contains("do not hold the rate of `phi`"), "{e}");
+    assert!(f.contains("redundant"), "{f}");
+    // Redundant relations: the same relation twice.
+    let mut v = crank_slider();
+    v["closures"][0]["vector"] =
+        "(R*cos(theta) + L*cos(phi) - x)*x0 + (R*cos(theta) + L*cos(phi) - x)*y0".into();
     let (e, f) = refused_by_both(&v);
     assert!(e.contains("redundant"), "{e}");
     assert!(f.contains("redundant"), "{f}");

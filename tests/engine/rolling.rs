@@ -89,6 +89,16 @@ fn bad_rolling_conditions_are_refused_by_both_sides_with_their_place() {
     let mut v = disc.clone();
     v["rolling"][0]["dependent"] = serde_json::json!(["theta", "x"]);
     both(&v, "rolling", "redundant", "independent relations for 2");
+    // A condition that does not hold the dependent rate (the centre's velocity, not the
+    // contact's): θ̇ is not in V(C,2/0) = ẋ x1.
+    let mut v = disc.clone();
+    v["rolling"][0]["velocity"] = "V(C,2/0)".into();
+    both(
+        &v,
+        "rolling",
+        "do not hold the rate of `theta`",
+        "redundant",
+    );
     // A dependent coordinate with a rate of its own.
     let mut v = wheel.clone();
     v["coordinates"][2]["rate"] = "R*dot(theta)".into();
