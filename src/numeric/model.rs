@@ -684,7 +684,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         })
         .collect();
 
-    let model = NumericModel {
+    Ok(NumericModel {
         params,
         aliases,
         vectors,
@@ -703,12 +703,10 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         dynamics: Default::default(),
         closures: Vec::new(),
         rolling: Vec::new(),
-    };
-    Ok(model)
+    })
 }
 
-/// Marks gravity, friction coefficients and stiffnesses, once the PFD is read, to be drawn
-/// positive, like lengths.
+/// Marks gravity, frictions and stiffnesses, once the PFD is read, to be drawn positive.
 pub(super) fn mark_positive(model: &mut NumericModel) {
     let dy = &model.dynamics;
     let mut positive = std::collections::BTreeSet::new();
