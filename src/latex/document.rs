@@ -561,7 +561,10 @@ pub fn answer_key_document(
             // Its rate is the loop law's, written after the paramétrage.
             Some(_) if closed => ", déterminée par la fermeture géométrique".to_string(),
             Some(_) if rolls.is_some() => {
-                format!(", déterminée par {}", rolls.map_or("", |r| r.course_name()))
+                format!(
+                    ", de vitesse déterminée par {}",
+                    rolls.map_or("", |r| r.course_name())
+                )
             }
             Some(q) if !constant && m.reg.coord_info(q).has_imposed_rate() => {
                 let rate = m.reg.dot(q);
