@@ -239,9 +239,12 @@ pub fn theorem_sides(
     let g0 = m.frames.ground();
     let u = Vector::along(th.on.0, th.on.1, m.reg.one());
     let dynamic = match th.kind {
-        TheoremKind::Resultant => th.solids.iter().fold(m.reg.zero(), |acc, &s| {
-            &acc + &cache.at_centre(m, s, g0, true).1.dot(&m.frames, &u)
-        }),
+        TheoremKind::Resultant => Expr::sum(
+            &m.reg,
+            th.solids
+                .iter()
+                .map(|&s| cache.at_centre(m, s, g0, true).1.dot(&m.frames, &u)),
+        ),
         TheoremKind::Moment => {
             torsor::moment_by_transport(m, cache, &th.solids, th.point, g0, true, Some(&u))
                 .1
@@ -285,14 +288,18 @@ pub fn dynamic_quantity(m: &Mechanism, th: &Theorem) -> Quantity {
 /// The residual of a theorem: dynamic side minus the actions.
 pub fn residual(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache) -> Expr {
     let (d, parts) = theorem_sides(m, th, cache);
-    parts.iter().fold(d, |acc, (_, v)| &acc - v)
+    Expr::sum(
+        &m.reg,
+        std::iter::once(d).chain(parts.into_iter().map(|(_, v)| -v)),
+    )
 }
 
 /// Variable indices of the unknowns that occur in `e`.
 pub fn unknowns_in(m: &Mechanism, e: &Expr) -> Vec<VarId> {
+    let occurs = e.occurring();
     unknown_vars(m)
         .into_iter()
-        .filter(|&(_, v)| !e.derivative(v).is_zero())
+        .filter(|&(_, v)| occurs[v.index()])
         .map(|(_, v)| v)
         .collect()
 }
@@ -466,18 +473,32 @@ pub fn solve_with_residuals(
     ))
 }
 
-/// Unknowns must enter linearly (no term with two unknown factors); else the two that multiply.
+/// Unknowns must enter linearly (no term with two unknown factors); else the two that multiply,
+/// the first pair in the unknowns' order (an unknown with itself for a square).
 fn check_linear(m: &Mechanism, r: &Expr) -> Result<(), (String, String)> {
     let vars = unknown_vars(m);
-    for (n1, v1) in &vars {
-        let d = r.derivative(*v1);
-        for (n2, v2) in &vars {
-            if !d.derivative(*v2).is_zero() {
-                return Err((n1.clone(), n2.clone()));
+    // The pairs (i, j) of unknowns, by their rank in `vars`, that some term multiplies.
+    let mut products = std::collections::BTreeSet::new();
+    for (_, e) in r.terms() {
+        let here: Vec<(usize, u8)> = vars
+            .iter()
+            .enumerate()
+            .filter(|(_, (_, v))| e[v.index()] > 0)
+            .map(|(i, (_, v))| (i, e[v.index()]))
+            .collect();
+        for (a, &(i, k)) in here.iter().enumerate() {
+            if k >= 2 {
+                products.insert((i, i));
+            }
+            for &(j, _) in &here[a + 1..] {
+                products.insert((i, j));
             }
         }
     }
-    Ok(())
+    match products.first() {
+        Some(&(i, j)) => Err((vars[i].0.clone(), vars[j].0.clone())),
+        None => Ok(()),
+    }
 }
 
 /// Kinetic energy Ec(S/R0) = Σ ½ (m V(G/R0)² + Ω(S/R0)·I_G(S) Ω(S/R0)).

@@ -71,6 +71,28 @@ impl Vector {
         r
     }
 
+    /// Σ vᵢ, each basis's components added along a balanced tree ([`Expr::sum`]) rather than
+    /// into a running total.
+    pub fn sum(
+        reg: &std::rc::Rc<crate::expr::Registry>,
+        vectors: impl IntoIterator<Item = Vector>,
+    ) -> Vector {
+        let mut by_basis: BTreeMap<FrameId, [Vec<Expr>; 3]> = BTreeMap::new();
+        for v in vectors {
+            for (b, c) in v.parts {
+                let slot = by_basis.entry(b).or_default();
+                for (k, e) in c.into_iter().enumerate() {
+                    slot[k].push(e);
+                }
+            }
+        }
+        let mut r = Vector::zero();
+        for (b, c) in by_basis {
+            r.add_part(b, c.map(|terms| Expr::sum(reg, terms)));
+        }
+        r
+    }
+
     /// u − v.
     pub fn sub(&self, other: &Vector) -> Vector {
         self.add(&other.neg())
@@ -109,15 +131,17 @@ impl Vector {
 
     /// Components in basis `b`.
     pub fn express_in(&self, frames: &Frames, b: FrameId) -> [Expr; 3] {
-        let z = frames.registry().zero();
-        let mut acc = [z.clone(), z.clone(), z];
+        let reg = frames.registry();
+        if let [(fb, c)] = self.parts.iter().collect::<Vec<_>>()[..] {
+            return frames.convert(*fb, b, c);
+        }
+        let mut acc: [Vec<Expr>; 3] = Default::default();
         for (fb, c) in self.parts() {
-            let w = frames.convert(fb, b, c);
-            for k in 0..3 {
-                acc[k] = &acc[k] + &w[k];
+            for (k, w) in frames.convert(fb, b, c).into_iter().enumerate() {
+                acc[k].push(w);
             }
         }
-        acc
+        acc.map(|terms| Expr::sum(reg, terms))
     }
 
     /// The same vector with a single part, in basis `b`.
@@ -127,12 +151,15 @@ impl Vector {
 
     /// Scalar product u · v. Each part of v is moved into the basis of each part of u.
     pub fn dot(&self, frames: &Frames, other: &Vector) -> Expr {
-        let mut acc = frames.registry().zero();
-        for (b, u) in self.parts() {
-            let v = other.express_in(frames, b);
-            acc = acc + &(&u[0] * &v[0]) + &(&u[1] * &v[1]) + &(&u[2] * &v[2]);
-        }
-        acc
+        let moved: Vec<(&[Expr; 3], [Expr; 3])> = self
+            .parts()
+            .map(|(b, u)| (u, other.express_in(frames, b)))
+            .collect();
+        let terms: Vec<(&Expr, &Expr, bool)> = moved
+            .iter()
+            .flat_map(|(u, v)| (0..3).map(move |k| (&u[k], &v[k], false)))
+            .collect();
+        Expr::sum_of_products(frames.registry(), &terms)
     }
 
     /// Vector product u ∧ v, with the result in the bases of u's parts.
@@ -182,9 +209,9 @@ pub fn omega(frames: &Frames, a: FrameId, b: FrameId) -> Vector {
 
 /// u ∧ v for component triples in one basis.
 pub fn cross3(u: &[Expr; 3], v: &[Expr; 3]) -> [Expr; 3] {
-    [
-        &(&u[1] * &v[2]) - &(&u[2] * &v[1]),
-        &(&u[2] * &v[0]) - &(&u[0] * &v[2]),
-        &(&u[0] * &v[1]) - &(&u[1] * &v[0]),
-    ]
+    let reg = u[0].registry();
+    let d = |a: usize, b: usize| {
+        Expr::sum_of_products(reg, &[(&u[a], &v[b], false), (&u[b], &v[a], true)])
+    };
+    [d(1, 2), d(2, 0), d(0, 1)]
 }

@@ -103,7 +103,7 @@ fn theorem_steps(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache, steps: 
         ),
         value: Value::Scalar(dynamic),
     });
-    let total = parts.iter().fold(m.reg.zero(), |acc, (_, v)| &acc + v);
+    let total = Expr::sum(&m.reg, parts.iter().map(|(_, v)| v.clone()));
     steps.push(Step {
         label: format!("actions on {}", th.isolate),
         kind: StepKind::External {

@@ -21,6 +21,7 @@ mod parse;
 pub(crate) mod present;
 pub(crate) mod print;
 mod rates;
+mod reduce;
 mod registry;
 mod time;
 mod vector_text;
@@ -434,77 +435,21 @@ impl Expr {
         multinomial.min(monomials)
     }
 
+    /// Whether each variable occurs, read in one pass over the terms (asking per variable
+    /// reads every term once per variable).
+    pub(crate) fn occurring(&self) -> Vec<bool> {
+        let mut seen = vec![false; self.reg.nvars()];
+        for (_, e) in self.terms() {
+            for (s, &k) in seen.iter_mut().zip(e) {
+                *s |= k > 0;
+            }
+        }
+        seen
+    }
+
     /// Whether the variable `i` occurs.
     pub(crate) fn contains_var(&self, i: VarId) -> bool {
         self.p.degree(i.0) > 0
-    }
-
-    /// Brings a product back to canonical form: sin²q → 1 − cos²q for every angle, and
-    /// p·(1/p) → 1 for every parameter the mechanism divides by. The two rules' leading
-    /// monomials (sin²q, p·p⁻¹) are pairwise coprime, so they form a Gröbner basis and the
-    /// reduced form is unique: equality stays structural.
-    fn reduce(p: Poly, reg: &Registry) -> Poly {
-        let p = Expr::reduce_trig(p, reg);
-        Expr::reduce_inverses(p, reg)
-    }
-
-    /// p^a (1/p)^b → p^(a − min) (1/p)^(b − min) in every term.
-    fn reduce_inverses(p: Poly, reg: &Registry) -> Poly {
-        let pairs: Vec<(usize, usize)> = reg
-            .inverse_pairs()
-            .filter(|&(v, w)| p.degree(v) > 0 && p.degree(w) > 0)
-            .collect();
-        if pairs.is_empty() {
-            return p;
-        }
-        let n = p.nvars();
-        let mut coefficients = Vec::with_capacity(p.nterms());
-        let mut exponents = Vec::with_capacity(p.nterms() * n);
-        for t in 0..p.nterms() {
-            let mut e = p.exponents(t).to_vec();
-            for &(v, w) in &pairs {
-                let k = e[v].min(e[w]);
-                e[v] -= k;
-                e[w] -= k;
-            }
-            coefficients.push(p.coefficients[t].clone());
-            exponents.extend_from_slice(&e);
-        }
-        // Sorts and combines the terms that became alike.
-        Poly::from_coefficient_list(coefficients, exponents, reg.vars.clone(), &Q)
-    }
-
-    /// sin²q → 1 − cos²q for every angle (cos²q → 1 − sin²q for an angle whose sine a loop
-    /// closure divides by).
-    fn reduce_trig(mut p: Poly, reg: &Registry) -> Poly {
-        for c in &reg.coords {
-            let Some((ci, si)) = c.trig else { continue };
-            // A coordinate whose sine a closure divides by has cos² reduced instead.
-            let (ci, si) = if c.cos_reduced { (si, ci) } else { (ci, si) };
-            while p.degree(si) >= 2 {
-                let n = p.nvars();
-                let mut low = p.zero();
-                let mut high = p.zero();
-                for t in 0..p.nterms() {
-                    let e = p.exponents(t);
-                    if e[si] >= 2 {
-                        high.coefficients.push(p.coefficients[t].clone());
-                        high.exponents.extend_from_slice(e);
-                        let k = high.exponents.len() - n + si;
-                        high.exponents[k] -= 2;
-                    } else {
-                        low.coefficients.push(p.coefficients[t].clone());
-                        low.exponents.extend_from_slice(e);
-                    }
-                }
-                // Dividing every term by sin² keeps the lex order of the subsequence.
-                let mut cos2 = vec![0u8; n];
-                cos2[ci] = 2;
-                let minus_cos2 = high.clone().mul_monomial(&Rational::new(-1, 1), &cos2);
-                p = low + high + minus_cos2;
-            }
-        }
-        p
     }
 
     fn with(&self, p: Poly) -> Expr {

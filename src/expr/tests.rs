@@ -382,3 +382,103 @@ fn a_product_or_power_past_the_term_bound_is_refused_quickly() {
         r.parse("L^2").unwrap()
     );
 }
+
+/// The one-pass reduction (sin²q → 1 − cos²q for every angle at once) and the fused sums of
+/// products, against an independent route: the same sums computed in f64 with the standard
+/// library's sin and cos at random points. Also the canonical shape (no sin² left) and the
+/// agreement with the product-by-product route.
+#[test]
+fn fused_products_and_the_one_pass_reduction_match_float_trigonometry() {
+    let r = reg();
+    let (a, b) = (r.coord("a").unwrap(), r.coord("b").unwrap());
+    let parse = |s: &str| r.parse(s).unwrap();
+    // (text, the same in f64 of (a, b, x, m, L, k)).
+    type F = fn(f64, f64, f64, f64, f64, f64) -> f64;
+    let u: [(&str, F); 3] = [
+        ("sin(a)*sin(b) + m*cos(a)", |a, b, _, m, _, _| {
+            a.sin() * b.sin() + m * a.cos()
+        }),
+        ("L*sin(a)*cos(b) - sin(b)*x", |a, b, x, _, l, _| {
+            l * a.sin() * b.cos() - b.sin() * x
+        }),
+        ("sin(a)^3*sin(b) + k", |a, b, _, _, _, k| {
+            a.sin().powi(3) * b.sin() + k
+        }),
+    ];
+    let v: [(&str, F); 3] = [
+        ("sin(a)*sin(b)*x - 2*cos(b)", |a, b, x, _, _, _| {
+            a.sin() * b.sin() * x - 2.0 * b.cos()
+        }),
+        ("3*sin(b) + sin(a)", |a, b, _, _, _, _| {
+            3.0 * b.sin() + a.sin()
+        }),
+        ("m*sin(a)*sin(b)^3", |a, b, _, m, _, _| {
+            m * a.sin() * b.sin().powi(3)
+        }),
+    ];
+    let (ue, ve): (Vec<Expr>, Vec<Expr>) = (
+        u.iter().map(|(t, _)| parse(t)).collect(),
+        v.iter().map(|(t, _)| parse(t)).collect(),
+    );
+    let signs = [false, true, false];
+    let terms: Vec<(&Expr, &Expr, bool)> = (0..3).map(|i| (&ue[i], &ve[i], signs[i])).collect();
+    let fused = Expr::sum_of_products(&r, &terms);
+    let by_products = &(&(&ue[0] * &ve[0]) - &(&ue[1] * &ve[1])) + &(&ue[2] * &ve[2]);
+    assert_eq!(fused, by_products);
+    let (sa, sb) = (
+        r.index_of(VarRole::Sin(a)).unwrap(),
+        r.index_of(VarRole::Sin(b)).unwrap(),
+    );
+    assert!(
+        fused
+            .terms()
+            .all(|(_, e)| e[sa.index()] < 2 && e[sb.index()] < 2)
+    );
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut draw = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % 10_000) as f64 / 10_000.0 * 4.0 - 2.0
+    };
+    for _ in 0..20 {
+        let (qa, qb, x, m, l, k) = (draw(), draw(), draw(), draw(), draw(), draw());
+        let point: Vec<f64> = r
+            .var_ids()
+            .map(|i| match r.role(i) {
+                VarRole::Cos(q) if q == a => qa.cos(),
+                VarRole::Sin(q) if q == a => qa.sin(),
+                VarRole::Cos(_) => qb.cos(),
+                VarRole::Sin(_) => qb.sin(),
+                VarRole::Value(_) => x,
+                VarRole::Parameter(p) => [m, l, k][p.index()],
+                _ => 0.0,
+            })
+            .collect();
+        let want: f64 = (0..3)
+            .map(|i| {
+                let s = if signs[i] { -1.0 } else { 1.0 };
+                s * u[i].1(qa, qb, x, m, l, k) * v[i].1(qa, qb, x, m, l, k)
+            })
+            .sum();
+        let got = fused.eval(&point);
+        assert!(
+            (got - want).abs() < 1e-12 * (1.0 + want.abs()),
+            "{got} against {want}"
+        );
+    }
+}
+
+/// The balanced sum is the running total.
+#[test]
+fn balanced_sum_is_the_running_total() {
+    let r = reg();
+    let parts: Vec<Expr> = (0..11)
+        .map(|i| {
+            r.parse(&format!("{i}*m*sin(a)^2 - cos(b)*x^{} + k", i % 3))
+                .unwrap()
+        })
+        .collect();
+    let running = parts.iter().fold(r.zero(), |acc, p| &acc + p);
+    assert_eq!(Expr::sum(&r, parts), running);
+}

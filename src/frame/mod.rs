@@ -405,8 +405,9 @@ fn rotate(axis: Axis, c: &Expr, s: &Expr, v: &[Expr; 3]) -> [Expr; 3] {
         Axis::Y => (2, 0),
         Axis::Z => (0, 1),
     };
+    let reg = c.registry();
     let mut w = v.clone();
-    w[i] = c * &v[i] - s * &v[j];
-    w[j] = s * &v[i] + c * &v[j];
+    w[i] = Expr::sum_of_products(reg, &[(c, &v[i], false), (s, &v[j], true)]);
+    w[j] = Expr::sum_of_products(reg, &[(s, &v[i], false), (c, &v[j], false)]);
     w
 }

@@ -446,11 +446,12 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
         point: a.clone(),
         motion: mo.clone(),
     });
-    let sum: crate::expr::Expr = r
-        .solids
-        .iter()
-        .map(|&s| crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, &u))
-        .fold(m.reg.zero(), |acc, p| &acc + &p);
+    let sum = crate::expr::Expr::sum(
+        &m.reg,
+        r.solids
+            .iter()
+            .map(|&s| crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, &u)),
+    );
     let members: Vec<String> = r
         .solids
         .iter()

@@ -101,18 +101,24 @@ pub fn inertia_at(m: &Mechanism, s: BodyId, a: PointId) -> Inertia {
 
 /// Rc(S/R) = m V(G, S/R), summed over the solids.
 pub fn kinetic_resultant(m: &Mechanism, solids: &[BodyId], r: FrameId) -> Vector {
-    solids.iter().fold(Vector::zero(), |acc, &s| {
-        let b = m.body(s);
-        acc.add(&velocity(m, b.centre, b.frame, r).scale(&b.mass))
-    })
+    Vector::sum(
+        &m.reg,
+        solids.iter().map(|&s| {
+            let b = m.body(s);
+            velocity(m, b.centre, b.frame, r).scale(&b.mass)
+        }),
+    )
 }
 
 /// Rd(S/R) = m Γ(G, S/R), summed over the solids.
 pub fn dynamic_resultant(m: &Mechanism, solids: &[BodyId], r: FrameId) -> Vector {
-    solids.iter().fold(Vector::zero(), |acc, &s| {
-        let b = m.body(s);
-        acc.add(&acceleration(m, b.centre, b.frame, r).scale(&b.mass))
-    })
+    Vector::sum(
+        &m.reg,
+        solids.iter().map(|&s| {
+            let b = m.body(s);
+            acceleration(m, b.centre, b.frame, r).scale(&b.mass)
+        }),
+    )
 }
 
 /// σ(A, S/R) = I_A(S)·Ω(S/R) + m AG ∧ V(A, S/R) for one solid (with its two special cases:
@@ -133,9 +139,10 @@ pub fn kinetic_moment_solid(m: &Mechanism, s: BodyId, a: PointId, r: FrameId) ->
 
 /// σ(A, S/R), summed over the solids of a set.
 pub fn kinetic_moment(m: &Mechanism, solids: &[BodyId], a: PointId, r: FrameId) -> Vector {
-    solids.iter().fold(Vector::zero(), |acc, &s| {
-        acc.add(&kinetic_moment_solid(m, s, a, r))
-    })
+    Vector::sum(
+        &m.reg,
+        solids.iter().map(|&s| kinetic_moment_solid(m, s, a, r)),
+    )
 }
 
 /// δ(A, S/R) = d/dt|R σ(A, S/R) + V(A/R) ∧ m V(G/R), where V(A/R) is the velocity of the
@@ -155,9 +162,10 @@ pub fn dynamic_moment_solid(m: &Mechanism, s: BodyId, a: PointId, r: FrameId) ->
 
 /// δ(A, S/R), summed over the solids of a set.
 pub fn dynamic_moment(m: &Mechanism, solids: &[BodyId], a: PointId, r: FrameId) -> Vector {
-    solids.iter().fold(Vector::zero(), |acc, &s| {
-        acc.add(&dynamic_moment_solid(m, s, a, r))
-    })
+    Vector::sum(
+        &m.reg,
+        solids.iter().map(|&s| dynamic_moment_solid(m, s, a, r)),
+    )
 }
 
 /// δ(A, S/R) by a second route: δ(G) = d/dt|R σ(G) = d/dt|R (I_G·Ω), then the change of point
@@ -251,18 +259,24 @@ pub fn moment_by_transport(
     dynamic: bool,
     u: Option<&Vector>,
 ) -> (Vector, Option<Expr>) {
-    let mut total = Vector::zero();
-    let mut scalar = m.reg.zero();
+    let mut total = Vec::new();
+    let mut scalars = Vec::new();
     for &s in solids {
         let ag = m.points.vector(a, m.body(s).centre);
         let (mg, res) = cache.at_centre(m, s, r, dynamic);
         match u {
             Some(u) => {
-                scalar =
-                    scalar + mg.dot(&m.frames, u) + res.dot(&m.frames, &u.cross(&m.frames, &ag));
+                scalars.push(mg.dot(&m.frames, u));
+                scalars.push(res.dot(&m.frames, &u.cross(&m.frames, &ag)));
             }
-            None => total = total.add(mg).add(&ag.cross(&m.frames, res)),
+            None => {
+                total.push(mg.clone());
+                total.push(ag.cross(&m.frames, res));
+            }
         }
     }
-    (total, u.map(|_| scalar))
+    (
+        Vector::sum(&m.reg, total),
+        u.map(|_| Expr::sum(&m.reg, scalars)),
+    )
 }
