@@ -264,8 +264,10 @@ fn grouped(e: &Expr, cheap: bool) -> Form {
     let mut search = search::Search::new(reg);
     let mut terms = Vec::new();
     let mut units = Vec::new();
-    for (kin, ms) in groups {
-        let ms = normalize(ms);
+    for (kin, mut ms) in groups {
+        // The canonical terms are distinct and split into (rates, rest) one to one: nothing
+        // to combine, only the order to set.
+        ms.sort_unstable_by(|a, b| a.atoms.cmp(&b.atoms));
         if !cheap {
             // The part without trigonometric functions and the rest, apart: (m1/3 + m2) L1² θ̈1
             // stays whole when the part in cos(θ2 − θ1) θ̈1 joins another group.

@@ -152,8 +152,27 @@ impl<'a> Search<'a> {
             return self.flat(&ms);
         }
         let (g, common) = content(&ms);
-        let inner: Vec<Mono> = ms.iter().map(|m| m.divided(&g, &common)).collect();
-        wrap(g, common, self.flat(&inner))
+        let inner: Vec<Mono> = if common.is_empty() && g.abs().is_one() {
+            // Only the sign comes out: no leaf to divide by (a long coefficient's usual case).
+            ms.into_iter()
+                .map(|mut m| {
+                    if g.is_negative() {
+                        m.coef = -m.coef;
+                    }
+                    m
+                })
+                .collect()
+        } else {
+            ms.iter().map(|m| m.divided(&g, &common)).collect()
+        };
+        let mut f = Form {
+            terms: inner
+                .into_iter()
+                .map(|m| Product::of_atoms(m.coef, m.atoms))
+                .collect(),
+        };
+        self.sort(&mut f);
+        wrap(g, common, f)
     }
 
     fn flat(&self, ms: &[Mono]) -> Form {
@@ -321,6 +340,10 @@ fn has_trig(m: &Mono) -> bool {
 /// (((B2 − C2) cos θ2 + 2 D2 sin θ2) cos θ2 is a Horner scheme, not the course's writing).
 pub(crate) fn content(ms: &[Mono]) -> (Rational, Vec<(Leaf, u8)>) {
     let (g, common) = raw_content(ms);
+    // Only trigonometric leaves may be kept in: with none in common, nothing to decide.
+    if !common.iter().any(|x| x.0.is_trig()) {
+        return (g, common);
+    }
     let keeps_trig = ms.iter().all(|m| has_trig(&m.divided(&g, &common)));
     let common = if keeps_trig {
         common.into_iter().filter(|x| !x.0.is_trig()).collect()
