@@ -28,8 +28,10 @@ pub(crate) const PI_NAME: &str = "pi";
 pub(crate) trait Num: DualNum<f64> + Copy {}
 impl<T: DualNum<f64> + Copy> Num for T {}
 
-/// Longest expression accepted.
-const MAX_INPUT: usize = 20_000;
+/// Longest expression accepted: 16 MiB, the exact side's bound (`expr::MAX_INPUT_LEN`), which
+/// holds every derived result of the planar family up to 30 links and of the spatial chain up
+/// to 9 solids (chain 9's longest, δ(O1,E1/0)·z0, prints in 9.5 MB).
+const MAX_INPUT: usize = 16 << 20;
 /// Deepest nesting of parentheses and signs.
 const MAX_DEPTH: usize = 128;
 /// Largest power exponent, in absolute value.
@@ -62,6 +64,40 @@ pub(crate) enum Node {
     Cos(Box<Node>),
 }
 
+/// The terms ±t₁ ± t₂ … (or the factors t₁ ×/÷ t₂ …, `true` for − or ÷) as a balanced tree,
+/// so that its depth is log₂ of their number and a long result neither evaluates nor drops
+/// through a recursion as deep as its length. Pairs combine as a ∘ b, a ∘⁻¹ b, b ∘⁻¹ a and
+/// (a ∘ b)⁻¹; a leftover inverse at the top is applied last. The value is the left-to-right
+/// one up to the rounding of a reordered sum.
+fn balanced(
+    mut items: Vec<(bool, Node)>,
+    op: fn(Box<Node>, Box<Node>) -> Node,
+    inverse_op: fn(Box<Node>, Box<Node>) -> Node,
+    inverse: fn(Box<Node>) -> Node,
+) -> Node {
+    while items.len() > 1 {
+        let mut next = Vec::with_capacity(items.len().div_ceil(2));
+        let mut it = items.into_iter();
+        while let Some((ia, a)) = it.next() {
+            next.push(match it.next() {
+                None => (ia, a),
+                Some((ib, b)) => {
+                    let (a, b) = (Box::new(a), Box::new(b));
+                    match (ia, ib) {
+                        (false, false) => (false, op(a, b)),
+                        (false, true) => (false, inverse_op(a, b)),
+                        (true, false) => (false, inverse_op(b, a)),
+                        (true, true) => (true, op(a, b)),
+                    }
+                }
+            });
+        }
+        items = next;
+    }
+    let (inv, node) = items.pop().expect("at least one item");
+    if inv { inverse(Box::new(node)) } else { node }
+}
+
 /// What a name resolves to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Name {
@@ -91,7 +127,10 @@ pub(crate) fn parse(
     aliases: &[Node],
 ) -> Result<Node, String> {
     if input.len() > MAX_INPUT {
-        return Err(format!("longer than {MAX_INPUT} characters"));
+        return Err(format!(
+            "{} characters, longer than the {MAX_INPUT} (16 MiB) a typed expression may have",
+            input.len()
+        ));
     }
     if input.trim().is_empty() {
         return Err("empty expression".to_string());
@@ -160,35 +199,38 @@ impl Parser<'_> {
     }
 
     fn expr(&mut self) -> Result<Node, String> {
-        let mut acc = self.term()?;
+        let mut terms = vec![(false, self.term()?)];
         loop {
             match self.peek() {
                 Some(b'+') => {
                     self.pos += 1;
-                    acc = Node::Add(Box::new(acc), Box::new(self.term()?));
+                    terms.push((false, self.term()?));
                 }
                 Some(b'-') => {
                     self.pos += 1;
-                    acc = Node::Sub(Box::new(acc), Box::new(self.term()?));
+                    terms.push((true, self.term()?));
                 }
-                _ => return Ok(acc),
+                _ => return Ok(balanced(terms, Node::Add, Node::Sub, Node::Neg)),
             }
         }
     }
 
     fn term(&mut self) -> Result<Node, String> {
-        let mut acc = self.unary()?;
+        let mut factors = vec![(false, self.unary()?)];
         loop {
             match self.peek() {
                 Some(b'*') => {
                     self.pos += 1;
-                    acc = Node::Mul(Box::new(acc), Box::new(self.unary()?));
+                    factors.push((false, self.unary()?));
                 }
                 Some(b'/') => {
                     self.pos += 1;
-                    acc = Node::Div(Box::new(acc), Box::new(self.unary()?));
+                    factors.push((true, self.unary()?));
                 }
-                _ => return Ok(acc),
+                _ => {
+                    let reciprocal = |n| Node::Div(Box::new(Node::Num(1.0)), n);
+                    return Ok(balanced(factors, Node::Mul, Node::Div, reciprocal));
+                }
             }
         }
     }

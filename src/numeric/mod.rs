@@ -163,7 +163,11 @@ pub enum NumericError {
         message: String,
     },
     /// An expression that fails at these values (division by zero, overflow).
-    #[error("{what}: {message}")]
+    #[error(
+        "{}: {}",
+        crate::excerpt::bounded(.what),
+        crate::excerpt::bounded(.message)
+    )]
     Evaluation {
         /// Where the expression comes from (`position of point G2`).
         what: String,

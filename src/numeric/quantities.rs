@@ -233,7 +233,7 @@ pub(super) fn evaluate_expression(
     let node: Node = names
         .parse(text, Context::Instant)
         .map_err(|e| NumericError::Evaluation {
-            what: format!("expression `{text}`"),
+            what: format!("expression `{}`", crate::excerpt::excerpt(text)),
             message: e,
         })?;
     let vals = values(m, sample)?;
@@ -246,12 +246,12 @@ pub(super) fn evaluate_expression(
         time: vals.time,
     };
     let x = expr::eval_scalar(&node, &env).map_err(|e| NumericError::Evaluation {
-        what: format!("expression `{text}`"),
+        what: format!("expression `{}`", crate::excerpt::excerpt(text)),
         message: e,
     })?;
     if !x.is_finite() {
         return Err(NumericError::Evaluation {
-            what: format!("expression `{text}`"),
+            what: format!("expression `{}`", crate::excerpt::excerpt(text)),
             message: "the value is not finite".into(),
         });
     }
