@@ -13,6 +13,7 @@ mod compile;
 mod eval;
 mod factor;
 mod flat;
+mod fourier;
 mod fraction;
 mod guard;
 mod names;
@@ -28,6 +29,7 @@ mod vector_text;
 
 pub use builder::RegistryBuilder;
 pub use flat::FlatEval;
+pub use fourier::Fourier;
 pub use fraction::Fraction;
 pub use names::{bare_names, divisors_in};
 pub use number_text::evaluate_number;

@@ -13,6 +13,7 @@ mod corpus;
 mod derivation;
 mod eval;
 mod figures;
+mod fourier;
 mod friction;
 mod hypotheses;
 mod kinematics;

@@ -2,6 +2,7 @@
 //! operation count, its exact value, and its plain text (parsable back).
 
 use super::super::{CoordId, Expr, ParamId, Registry, Trig, VarRole};
+use std::collections::{BTreeMap, HashMap};
 use std::rc::Rc;
 use symbolica::domains::rational::Rational;
 
@@ -47,7 +48,7 @@ impl Angle {
         n
     }
 
-    fn text(&self, reg: &Registry) -> String {
+    pub(crate) fn text(&self, reg: &Registry) -> String {
         // The first coefficient's sign is not written: only normalised angles are printed.
         assert!(
             self.0.first().is_some_and(|t| t.1 > 0),
@@ -175,11 +176,33 @@ impl Form {
     /// The exact value: rebuilt from the leaves with the engine's arithmetic (cos and sin of
     /// compound angles by the angle-addition formulas).
     pub fn to_expr(&self, reg: &Rc<Registry>) -> Expr {
+        self.to_expr_with(reg, &mut HashMap::new())
+    }
+
+    /// [`Form::to_expr`], each compound cos or sin expanded once (`leaves`).
+    fn to_expr_with(&self, reg: &Rc<Registry>, leaves: &mut HashMap<Leaf, Expr>) -> Expr {
         // All the products' terms at once: adding them one by one to a growing sum would be
         // quadratic on a chain's long results.
         let mut terms = Vec::new();
+        // The products that are a monomial times one compound cos or sin (a long coefficient
+        // in the linearised form): Σ monomials, multiplied by the leaf once.
+        let mut by_leaf: BTreeMap<&Leaf, Vec<(Rational, Vec<u8>)>> = BTreeMap::new();
         for p in &self.terms {
-            let e = p.to_expr(reg);
+            if let Some((mono, leaf)) = p.monomial_and_leaf(reg) {
+                by_leaf
+                    .entry(leaf)
+                    .or_default()
+                    .push((p.coef.clone(), mono));
+                continue;
+            }
+            let e = p.to_expr(reg, leaves);
+            terms.extend(e.terms().map(|(c, x)| (c.clone(), x.to_vec())));
+        }
+        for (leaf, monos) in by_leaf {
+            let base = leaves
+                .entry(leaf.clone())
+                .or_insert_with(|| leaf_expr(reg, leaf));
+            let e = &Expr::from_terms(reg, monos) * &*base;
             terms.extend(e.terms().map(|(c, x)| (c.clone(), x.to_vec())));
         }
         Expr::from_terms(reg, terms)
@@ -256,7 +279,7 @@ impl Product {
         (ops, leaves)
     }
 
-    fn to_expr(&self, reg: &Rc<Registry>) -> Expr {
+    fn to_expr(&self, reg: &Rc<Registry>, leaves: &mut HashMap<Leaf, Expr>) -> Expr {
         // The plain leaves (parameters, coordinates, rates, cos and sin of one angle) make one
         // monomial, built directly unless it holds a sin² (which the canonical form reduces).
         let mut mono = vec![0u8; reg.nvars()];
@@ -274,12 +297,34 @@ impl Product {
         }
         for (f, k) in rest {
             let base = match f {
-                Factor::Leaf(a) => leaf_expr(reg, a),
-                Factor::Sum(s) => s.to_expr(reg),
+                Factor::Leaf(a) => leaves
+                    .entry(a.clone())
+                    .or_insert_with(|| leaf_expr(reg, a))
+                    .clone(),
+                Factor::Sum(s) => s.to_expr_with(reg, leaves),
             };
             acc = &acc * &base.pow(*k as u32);
         }
         acc
+    }
+
+    /// (exponents of its plain leaves, its one other leaf) when the product is a monomial times
+    /// one cos or sin of a compound angle, with no power of a sine to reduce and no
+    /// reciprocal to cancel.
+    fn monomial_and_leaf(&self, reg: &Registry) -> Option<(Vec<u8>, &Leaf)> {
+        if !reg.reciprocals.is_empty() {
+            return None;
+        }
+        let mut mono = vec![0u8; reg.nvars()];
+        let mut other = None;
+        for (f, k) in &self.factors {
+            match (plain_var(reg, f), f) {
+                (Some((i, is_sin)), _) if !(is_sin && mono[i] + k >= 2) => mono[i] += k,
+                (None, Factor::Leaf(a)) if *k == 1 && other.is_none() => other = Some(a),
+                _ => return None,
+            }
+        }
+        other.map(|a| (mono, a))
     }
 
     /// The factors in reading order: parameters (course order), length coordinates, sums,

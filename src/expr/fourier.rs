@@ -1,0 +1,330 @@
+//! The linearised trigonometric (Fourier) form: a second exact representation of an
+//! expression, Σ C_(a,f) f(a), where each a = Σ kᵢ qᵢ is an integer combination of the time
+//! angles (normalised as the course writes it: the highest coordinate first, with a positive
+//! coefficient), f is cos or sin, and each coefficient C is a canonical [`Expr`] free of the
+//! time angles' cos and sin (parameters, rates, lengths, constant angles).
+//!
+//! The functions cos(k·q), sin(k·q) of distinct normalised k (k ≠ 0 for sin) are linearly
+//! independent over the coefficients, so the form is unique: equality and the zero test stay
+//! structural. Where the canonical form writes cos q1 cos q2 + sin q1 sin q2 (two terms), this
+//! form writes cos(q2 − q1) (one), which is what a planar chain's equations are made of.
+//!
+//! It converts both ways exactly ([`Expr::to_fourier`], [`Fourier::to_expr`]), adds,
+//! multiplies (by the product-to-sum formulas) and differentiates in time on its own, so a test
+//! can hold each operation against the canonical form's. An expression that divides by
+//! cos q or sin q of a time angle (a loop closure's 1/cos φ) has no such form: the product
+//! cos φ · (1/cos φ) would not reduce.
+
+use super::present::Angle;
+use super::*;
+use std::collections::BTreeMap;
+
+/// A harmonic cos a or sin a (a empty: the constant 1, as cos 0).
+type Harmonic = (Angle, Trig);
+
+/// An expression in the linearised trigonometric form (see the module documentation).
+///
+/// ```
+/// use torseur::expr::Registry;
+/// use torseur::spec::wire::CoordinateKind;
+/// let reg = Registry::new(
+///     &["m".into(), "L".into()],
+///     &[("q1".into(), CoordinateKind::Angle), ("q2".into(), CoordinateKind::Angle)],
+/// ).unwrap();
+/// let e = reg.parse("m*L*(cos(q1)*cos(q2) + sin(q1)*sin(q2))*ddot(q2) + sin(q1)^2").unwrap();
+/// let f = e.to_fourier().unwrap();
+/// // m L q̈2 cos(q2 − q1) + 1/2 − 1/2 cos(2 q1): three terms where the canonical form has four.
+/// assert_eq!((e.nterms(), f.nterms()), (4, 3));
+/// assert_eq!(f.to_expr(), e);
+/// assert_eq!(f.to_string(), "1/2 - 1/2*cos(2*q1) + m*L*ddot(q2)*cos(q2 - q1)");
+/// ```
+#[derive(Clone)]
+pub struct Fourier {
+    terms: BTreeMap<Harmonic, Expr>,
+    reg: Rc<Registry>,
+}
+
+/// A trigonometric polynomial with rational coefficients: Σ r_h h.
+type TrigPoly = BTreeMap<Harmonic, Rational>;
+
+/// The time angles of a registry: (coordinate, cos variable, sin variable).
+fn time_angles(reg: &Registry) -> Vec<(CoordId, usize, usize)> {
+    (0..reg.n_coords)
+        .filter_map(|i| reg.coords[i].trig.map(|(c, s)| (CoordId(i), c, s)))
+        .collect()
+}
+
+/// Normalises a harmonic of Σ kᵢ qᵢ: cos(−a) = cos a, sin(−a) = −sin a, sin 0 = 0. Returns
+/// the harmonic and its sign, or None for sin 0.
+fn harmonic(terms: BTreeMap<CoordId, i32>, f: Trig, n_coords: usize) -> Option<(Harmonic, i64)> {
+    let (a, flipped) = Angle::normalized(terms.into_iter().collect(), n_coords);
+    match f {
+        Trig::Sin if a.terms().is_empty() => None,
+        Trig::Sin if flipped => Some(((a, f), -1)),
+        _ => Some(((a, f), 1)),
+    }
+}
+
+/// The product of two harmonics by the product-to-sum formulas: ½ [f(a − b) ± g(a + b)].
+fn harmonic_product(x: &Harmonic, y: &Harmonic, n_coords: usize) -> Vec<(Harmonic, Rational)> {
+    let combine = |sign: i32| {
+        let mut m: BTreeMap<CoordId, i32> = x.0.terms().iter().copied().collect();
+        for &(q, k) in y.0.terms() {
+            *m.entry(q).or_insert(0) += sign * k;
+        }
+        m
+    };
+    let (minus, plus) = (combine(-1), combine(1));
+    // (f of a − b, its sign, f of a + b, its sign)
+    let (f1, s1, f2, s2) = match (x.1, y.1) {
+        (Trig::Cos, Trig::Cos) => (Trig::Cos, 1, Trig::Cos, 1),
+        (Trig::Sin, Trig::Sin) => (Trig::Cos, 1, Trig::Cos, -1),
+        (Trig::Sin, Trig::Cos) => (Trig::Sin, 1, Trig::Sin, 1),
+        (Trig::Cos, Trig::Sin) => (Trig::Sin, -1, Trig::Sin, 1),
+    };
+    let mut out = Vec::with_capacity(2);
+    for (m, f, s) in [(minus, f1, s1), (plus, f2, s2)] {
+        if let Some((h, sign)) = harmonic(m, f, n_coords) {
+            out.push((h, Rational::new(s * sign, 2)));
+        }
+    }
+    out
+}
+
+fn trig_product(a: &TrigPoly, b: &TrigPoly, n_coords: usize) -> TrigPoly {
+    let mut out = TrigPoly::new();
+    for (x, r) in a {
+        for (y, s) in b {
+            for (h, t) in harmonic_product(x, y, n_coords) {
+                let v = out.entry(h).or_insert_with(Rational::zero);
+                *v = &*v + &(&(r * s) * &t);
+            }
+        }
+    }
+    out.retain(|_, v| !v.is_zero());
+    out
+}
+
+fn one_harmonic() -> Harmonic {
+    (Angle(Vec::new()), Trig::Cos)
+}
+
+impl Expr {
+    /// The linearised trigonometric form, or None when the expression divides by cos q or
+    /// sin q of a time angle (see [`Fourier`]).
+    pub fn to_fourier(&self) -> Option<Fourier> {
+        let reg = &self.reg;
+        let angles = time_angles(reg);
+        let occurs = self.occurring();
+        if reg.coords[..reg.n_coords].iter().enumerate().any(|(i, _)| {
+            reg.reciprocal_derivatives(CoordId(i))
+                .iter()
+                .any(|(w, _)| occurs[*w])
+        }) {
+            return None;
+        }
+        let n = reg.n_coords;
+        // The linearisation of each trigonometric monomial, computed once.
+        let mut seen: HashMap<Vec<u8>, TrigPoly> = HashMap::new();
+        let mut by_harmonic: BTreeMap<Harmonic, Vec<(Rational, Vec<u8>)>> = BTreeMap::new();
+        for (c, e) in self.terms() {
+            let powers: Vec<u8> = angles
+                .iter()
+                .flat_map(|&(_, ci, si)| [e[ci], e[si]])
+                .collect();
+            let lin = seen.entry(powers).or_insert_with(|| {
+                let mut p = TrigPoly::from([(one_harmonic(), Rational::one())]);
+                for &(q, ci, si) in &angles {
+                    for (var, f) in [(ci, Trig::Cos), (si, Trig::Sin)] {
+                        let single = TrigPoly::from([((Angle::of(q), f), Rational::one())]);
+                        for _ in 0..e[var] {
+                            p = trig_product(&p, &single, n);
+                        }
+                    }
+                }
+                p
+            });
+            let mut rest = e.to_vec();
+            for &(_, ci, si) in &angles {
+                rest[ci] = 0;
+                rest[si] = 0;
+            }
+            for (h, r) in lin.iter() {
+                by_harmonic
+                    .entry(h.clone())
+                    .or_default()
+                    .push((c * r, rest.clone()));
+            }
+        }
+        let terms = by_harmonic
+            .into_iter()
+            .map(|(h, ts)| (h, Expr::from_terms(reg, ts)))
+            .filter(|(_, c)| !c.is_zero())
+            .collect();
+        Some(Fourier {
+            terms,
+            reg: reg.clone(),
+        })
+    }
+}
+
+impl Fourier {
+    /// The canonical form: Σ C (cos or sin of a), each cos a and sin a expanded by the angle
+    /// addition formulas.
+    pub fn to_expr(&self) -> Expr {
+        let values: Vec<Expr> = self
+            .terms
+            .keys()
+            .map(|(a, f)| {
+                let ks: Vec<(CoordId, i64)> =
+                    a.terms().iter().map(|&(q, k)| (q, k as i64)).collect();
+                let (c, s) = parse::cos_sin(&self.reg, &ks, 0);
+                if *f == Trig::Cos { c } else { s }
+            })
+            .collect();
+        let pairs: Vec<(&Expr, &Expr, bool)> = self
+            .terms
+            .values()
+            .zip(&values)
+            .map(|(c, v)| (c, v, false))
+            .collect();
+        if pairs.is_empty() {
+            return self.reg.zero();
+        }
+        Expr::sum_of_products(&self.reg, &pairs)
+    }
+
+    /// The harmonics and their coefficients, in a fixed order (the constant first).
+    pub fn terms(&self) -> impl Iterator<Item = (&Angle, Trig, &Expr)> {
+        self.terms.iter().map(|((a, f), c)| (a, *f, c))
+    }
+
+    /// Terms: Σ over the harmonics of their coefficient's terms.
+    pub fn nterms(&self) -> usize {
+        self.terms.values().map(Expr::nterms).sum()
+    }
+
+    /// Whether the form is zero.
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    fn from_parts(reg: &Rc<Registry>, parts: BTreeMap<Harmonic, Vec<Expr>>) -> Fourier {
+        let terms = parts
+            .into_iter()
+            .map(|(h, cs)| (h, Expr::sum(reg, cs)))
+            .filter(|(_, c)| !c.is_zero())
+            .collect();
+        Fourier {
+            terms,
+            reg: reg.clone(),
+        }
+    }
+
+    /// The sum.
+    pub fn add(&self, other: &Fourier) -> Fourier {
+        let mut parts: BTreeMap<Harmonic, Vec<Expr>> = BTreeMap::new();
+        for (h, c) in self.terms.iter().chain(&other.terms) {
+            parts.entry(h.clone()).or_default().push(c.clone());
+        }
+        Fourier::from_parts(&self.reg, parts)
+    }
+
+    /// The product, harmonic by harmonic by the product-to-sum formulas.
+    pub fn mul(&self, other: &Fourier) -> Fourier {
+        let n = self.reg.n_coords;
+        let mut parts: BTreeMap<Harmonic, Vec<Expr>> = BTreeMap::new();
+        for (x, cx) in &self.terms {
+            for (y, cy) in &other.terms {
+                let c = cx * cy;
+                for (h, r) in harmonic_product(x, y, n) {
+                    let term = &c * &self.reg.constant(r);
+                    parts.entry(h).or_default().push(term);
+                }
+            }
+        }
+        Fourier::from_parts(&self.reg, parts)
+    }
+
+    /// d/dt: Ċ f(a) + C ȧ f′(a), with ȧ = Σ kᵢ q̇ᵢ, d cos a = −ȧ sin a, d sin a = ȧ cos a.
+    pub fn dt(&self) -> Fourier {
+        let reg = &self.reg;
+        let mut parts: BTreeMap<Harmonic, Vec<Expr>> = BTreeMap::new();
+        for ((a, f), c) in &self.terms {
+            parts.entry((a.clone(), *f)).or_default().push(c.dt());
+            if a.terms().is_empty() {
+                continue;
+            }
+            let rate = Expr::sum(
+                reg,
+                a.terms()
+                    .iter()
+                    .map(|&(q, k)| &reg.rate(q, 1) * &reg.integer(k as i64)),
+            );
+            let (g, sign) = match f {
+                Trig::Cos => (Trig::Sin, -1),
+                Trig::Sin => (Trig::Cos, 1),
+            };
+            let term = &(c * &rate) * &reg.integer(sign);
+            parts.entry((a.clone(), g)).or_default().push(term);
+        }
+        Fourier::from_parts(reg, parts)
+    }
+}
+
+impl fmt::Display for Fourier {
+    /// Σ C·cos(a) in the spec syntax (parses back to the same canonical form), the constant
+    /// first, each coefficient in its canonical text.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.terms.is_empty() {
+            return f.write_str("0");
+        }
+        let mut first = true;
+        for ((a, g), c) in &self.terms {
+            let trig = if a.terms().is_empty() {
+                String::new()
+            } else {
+                let name = if *g == Trig::Cos { "cos" } else { "sin" };
+                format!("{name}({})", a.text(&self.reg))
+            };
+            let coef = print::to_text(c);
+            let body = match (coef.as_str(), trig.is_empty()) {
+                (_, true) => coef.clone(),
+                ("1", false) => trig.clone(),
+                ("-1", false) => format!("-{trig}"),
+                (_, false) if c.nterms() == 1 => format!("{coef}*{trig}"),
+                (_, false) => format!("({coef})*{trig}"),
+            };
+            // A leading minus becomes the separator, unless it is inside a parenthesised sum.
+            let (neg, body) = match body.strip_prefix('-') {
+                Some(b) if c.nterms() == 1 || trig.is_empty() => (true, b),
+                _ => (false, body.as_str()),
+            };
+            let sep = match (first, neg) {
+                (true, true) => "-",
+                (true, false) => "",
+                (false, true) => " - ",
+                (false, false) => " + ",
+            };
+            f.write_str(sep)?;
+            f.write_str(body)?;
+            first = false;
+        }
+        Ok(())
+    }
+}
+
+impl PartialEq for Fourier {
+    /// Structural: the form is unique.
+    fn eq(&self, other: &Fourier) -> bool {
+        self.terms == other.terms
+    }
+}
+
+impl Eq for Fourier {}
+
+impl fmt::Debug for Fourier {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Fourier({self})")
+    }
+}
