@@ -13,6 +13,7 @@ use crate::pfd::{
 use crate::quantity::{Quantity, QuantityKind};
 use crate::torsor;
 use crate::wire::TheoremKind;
+use std::collections::BTreeMap;
 
 /// What the quantities of one run share: each solid's σ(G), δ(G), m V(G) and m Γ(G), and the
 /// PFD, solved once (with each theorem's residual, in the spec's order).
@@ -21,6 +22,9 @@ pub struct Shared {
     /// Per-solid results at the centres of inertia.
     pub centre: torsor::Cache,
     pfd: Option<Result<(Solution, Vec<Expr>), PfdError>>,
+    /// How many of the run's quantities still ask for each equation of motion: the last one
+    /// takes it out of the solution instead of copying it (a chain's equations are long).
+    eom_requests: BTreeMap<String, usize>,
 }
 
 impl Shared {
@@ -30,6 +34,36 @@ impl Shared {
             .get_or_insert_with(|| solve_with_residuals(m, &mut self.centre))
             .as_ref()
             .map_err(Clone::clone)
+    }
+
+    /// Counts, for [`Shared::eom`], the quantities of a run that ask for an equation of motion.
+    pub fn expect(&mut self, qs: &[Quantity]) {
+        for q in qs {
+            if let QuantityKind::Eom(c) = &q.kind {
+                *self.eom_requests.entry(c.clone()).or_insert(0) += 1;
+            }
+        }
+    }
+
+    /// The equation of motion of `c`: moved out of the solution for its last expected request,
+    /// copied otherwise.
+    fn eom(&mut self, m: &Mechanism, c: &str) -> Result<Option<Expr>, PfdError> {
+        let (sol, _) = self
+            .pfd
+            .get_or_insert_with(|| solve_with_residuals(m, &mut self.centre))
+            .as_mut()
+            .map_err(|e| e.clone())?;
+        match self.eom_requests.get_mut(c) {
+            Some(1) => {
+                self.eom_requests.remove(c);
+                Ok(sol.eom.remove(c))
+            }
+            Some(n) => {
+                *n -= 1;
+                Ok(sol.eom.get(c).cloned())
+            }
+            None => Ok(sol.eom.get(c).cloned()),
+        }
     }
 }
 
@@ -194,12 +228,8 @@ pub(super) fn derive(
                     )
                 })?;
             let value = shared
-                .pfd(m)
+                .eom(m, c)
                 .map_err(|e| ResolveError::new(q, e))?
-                .0
-                .eom
-                .get(c)
-                .cloned()
                 .ok_or_else(|| resolve_err(q, format!("no equation of motion for `{c}`")))?;
             if with_steps {
                 theorem_steps(m, th, &mut shared.centre, &mut steps);

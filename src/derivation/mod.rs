@@ -637,6 +637,7 @@ pub fn derive_values_with(
     mut done: impl FnMut(usize, &Quantity),
 ) -> Result<Vec<Derivation>, ResolveError> {
     let mut cache = Shared::default();
+    cache.expect(qs);
     let mut out = Vec::with_capacity(qs.len());
     for (k, q) in qs.iter().enumerate() {
         out.push(derive_value(m, q, &mut cache)?);
