@@ -36,7 +36,8 @@ impl Shared {
             .map_err(Clone::clone)
     }
 
-    /// Counts, for [`Shared::eom`], the quantities of a run that ask for an equation of motion.
+    /// Counts the quantities of a run that ask for each equation of motion, so that the last
+    /// request moves it out of the solution.
     pub fn expect(&mut self, qs: &[Quantity]) {
         for q in qs {
             if let QuantityKind::Eom(c) = &q.kind {
