@@ -248,17 +248,23 @@ fn state_conditions(doc: &mut Doc) {
     }
     let mut said = Vec::new();
     for c in &sol.conditions {
-        let latex = format!("{} \\neq 0", super::expr(c));
+        let latex = super::expr(c);
         said.push(format!("${latex}$"));
         doc.inline.push(super::Inline {
-            what: format!("condition {c} != 0"),
+            what: format!("divisor {c}"),
             latex,
             value: Value::Scalar(c.clone()),
         });
     }
+    // As a teacher says it: what the solution divides by, assumed nonzero.
+    let (assumed, nonzero) = if said.len() == 1 {
+        ("supposé", "non nul")
+    } else {
+        ("supposés", "non nuls")
+    };
     let _ = writeln!(
         doc.o,
-        "Les pivots de la résolution ne sont pas tous des nombres : elle suppose {}.\n",
+        "La résolution divise par {}, {assumed} {nonzero}.\n",
         said.join(" et ")
     );
 }
