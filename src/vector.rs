@@ -132,9 +132,6 @@ impl Vector {
     /// Components in basis `b`.
     pub fn express_in(&self, frames: &Frames, b: FrameId) -> [Expr; 3] {
         let reg = frames.registry();
-        if let [(fb, c)] = self.parts.iter().collect::<Vec<_>>()[..] {
-            return frames.convert(*fb, b, c);
-        }
         let mut acc: [Vec<Expr>; 3] = Default::default();
         for (fb, c) in self.parts() {
             for (k, w) in frames.convert(fb, b, c).into_iter().enumerate() {

@@ -30,10 +30,14 @@ pub struct Shared {
 impl Shared {
     /// The solved PFD and its residuals, solved on first use.
     fn pfd(&mut self, m: &Mechanism) -> Result<&(Solution, Vec<Expr>), PfdError> {
+        self.solved(m).map(|s| &*s)
+    }
+
+    fn solved(&mut self, m: &Mechanism) -> Result<&mut (Solution, Vec<Expr>), PfdError> {
         self.pfd
             .get_or_insert_with(|| solve_with_residuals(m, &mut self.centre))
-            .as_ref()
-            .map_err(Clone::clone)
+            .as_mut()
+            .map_err(|e| e.clone())
     }
 
     /// Counts the quantities of a run that ask for each equation of motion, so that the last
@@ -49,22 +53,18 @@ impl Shared {
     /// The equation of motion of `c`: moved out of the solution for its last expected request,
     /// copied otherwise.
     fn eom(&mut self, m: &Mechanism, c: &str) -> Result<Option<Expr>, PfdError> {
-        let (sol, _) = self
-            .pfd
-            .get_or_insert_with(|| solve_with_residuals(m, &mut self.centre))
-            .as_mut()
-            .map_err(|e| e.clone())?;
-        match self.eom_requests.get_mut(c) {
-            Some(1) => {
-                self.eom_requests.remove(c);
-                Ok(sol.eom.remove(c))
-            }
-            Some(n) => {
-                *n -= 1;
-                Ok(sol.eom.get(c).cloned())
-            }
-            None => Ok(sol.eom.get(c).cloned()),
-        }
+        // The requests still expected, this one included (none when the run did not announce
+        // its quantities).
+        let expected = self.eom_requests.get_mut(c).map(|n| {
+            let before = *n;
+            *n = n.saturating_sub(1);
+            before
+        });
+        let eom = &mut self.solved(m)?.0.eom;
+        Ok(match expected {
+            Some(1) => eom.remove(c),
+            _ => eom.get(c).cloned(),
+        })
     }
 }
 

@@ -115,12 +115,11 @@ impl Expr {
     pub fn to_fourier(&self) -> Option<Fourier> {
         let reg = &self.reg;
         let angles = time_angles(reg);
-        let occurs = self.occurring();
-        if reg.coords[..reg.n_coords].iter().enumerate().any(|(i, _)| {
-            reg.reciprocal_derivatives(CoordId(i))
-                .iter()
-                .any(|(w, _)| occurs[*w])
-        }) {
+        if reg
+            .reciprocals
+            .iter()
+            .any(|&(_, _, _, w)| self.p.degree(w) > 0)
+        {
             return None;
         }
         let n = reg.n_coords;
@@ -274,43 +273,9 @@ impl Fourier {
 
 impl fmt::Display for Fourier {
     /// Σ C·cos(a) in the spec syntax (parses back to the same canonical form), the constant
-    /// first, each coefficient in its canonical text.
+    /// first, by the presentation's printer.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.terms.is_empty() {
-            return f.write_str("0");
-        }
-        let mut first = true;
-        for ((a, g), c) in &self.terms {
-            let trig = if a.terms().is_empty() {
-                String::new()
-            } else {
-                let name = if *g == Trig::Cos { "cos" } else { "sin" };
-                format!("{name}({})", a.text(&self.reg))
-            };
-            let coef = print::to_text(c);
-            let body = match (coef.as_str(), trig.is_empty()) {
-                (_, true) => coef.clone(),
-                ("1", false) => trig.clone(),
-                ("-1", false) => format!("-{trig}"),
-                (_, false) if c.nterms() == 1 => format!("{coef}*{trig}"),
-                (_, false) => format!("({coef})*{trig}"),
-            };
-            // A leading minus becomes the separator, unless it is inside a parenthesised sum.
-            let (neg, body) = match body.strip_prefix('-') {
-                Some(b) if c.nterms() == 1 || trig.is_empty() => (true, b),
-                _ => (false, body.as_str()),
-            };
-            let sep = match (first, neg) {
-                (true, true) => "-",
-                (true, false) => "",
-                (false, true) => " - ",
-                (false, false) => " + ",
-            };
-            f.write_str(sep)?;
-            f.write_str(body)?;
-            first = false;
-        }
-        Ok(())
+        f.write_str(&super::present::fourier_form(self).text(&self.reg))
     }
 }
 

@@ -382,6 +382,11 @@ fn fourier_monos(reg: &Rc<Registry>, ms: &[Mono]) -> Option<Vec<Mono>> {
     if f.nterms() >= e.nterms() {
         return None;
     }
+    Some(harmonic_monos(&f))
+}
+
+/// The monomials of a Fourier form, each harmonic a leaf of its own (m L q̈2 cos(q2 − q1)).
+fn harmonic_monos(f: &super::Fourier) -> Vec<Mono> {
     let mut out = Vec::with_capacity(f.nterms());
     for (a, g, c) in f.terms() {
         let leaf = (!a.terms().is_empty()).then(|| match g {
@@ -396,7 +401,17 @@ fn fourier_monos(reg: &Rc<Registry>, ms: &[Mono]) -> Option<Vec<Mono>> {
             out.push(m);
         }
     }
-    Some(out)
+    out
+}
+
+/// A Fourier form as a flat sum of products, in the order of its harmonics (its text).
+pub(crate) fn fourier_form(f: &super::Fourier) -> Form {
+    Form {
+        terms: harmonic_monos(f)
+            .into_iter()
+            .map(|m| Product::of_atoms(m.coef, m.atoms))
+            .collect(),
+    }
 }
 
 /// A coefficient (monomials of plain leaves) as an expression.
