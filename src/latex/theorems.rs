@@ -256,7 +256,8 @@ fn state_conditions(doc: &mut Doc) {
             value: Value::Scalar(c.clone()),
         });
     }
-    // As a teacher says it: what the solution divides by, assumed nonzero.
+    // As a teacher says it: what solving the whole system divides by (for one unknown or
+    // another, not necessarily the one shown next), assumed nonzero.
     let (assumed, nonzero) = if said.len() == 1 {
         ("supposé", "non nul")
     } else {
@@ -264,7 +265,7 @@ fn state_conditions(doc: &mut Doc) {
     };
     let _ = writeln!(
         doc.o,
-        "La résolution divise par {}, {assumed} {nonzero}.\n",
+        "La résolution du système des équations du PFD divise par {}, {assumed} {nonzero}.\n",
         said.join(" et ")
     );
 }
