@@ -44,6 +44,9 @@ pub struct Fourier {
     reg: Rc<Registry>,
 }
 
+/// Terms of a canonical expression, (coefficient, exponents), in any order.
+type Terms = Vec<(Rational, Vec<u8>)>;
+
 /// A trigonometric polynomial with rational coefficients: Σ r_h h.
 type TrigPoly = BTreeMap<Harmonic, Rational>;
 
@@ -109,6 +112,54 @@ fn one_harmonic() -> Harmonic {
     (Angle(Vec::new()), Trig::Cos)
 }
 
+/// The linearisations of trigonometric monomials, keyed by their powers of the time angles'
+/// cos and sin, for one shape of registry (its time angles and its number of coordinates,
+/// on which alone a linearisation depends). The presentation converts a long result
+/// coefficient by coefficient, and the same monomials recur in each coefficient and in each
+/// result of a derivation: each is linearised once per thread.
+#[derive(Default)]
+struct Linearisations {
+    shape: (Vec<CoordId>, usize),
+    known: HashMap<Vec<u8>, TrigPoly>,
+}
+
+/// Entries past which the table is emptied (a planar chain of 24 links needs about 1,200).
+const LINEARISATIONS_KEPT: usize = 1 << 16;
+
+thread_local! {
+    static LINEARISATIONS: std::cell::RefCell<Linearisations> = Default::default();
+}
+
+impl Linearisations {
+    /// Starts over unless the table is for this shape and not too large.
+    fn prepare(&mut self, angles: &[(CoordId, usize, usize)], n: usize) {
+        let same = self.shape.1 == n
+            && self.shape.0.len() == angles.len()
+            && self.shape.0.iter().zip(angles).all(|(a, b)| *a == b.0);
+        if !same || self.known.len() > LINEARISATIONS_KEPT {
+            self.shape = (angles.iter().map(|a| a.0).collect(), n);
+            self.known.clear();
+        }
+    }
+
+    /// The linearisation of the monomial of these powers (cos q1, sin q1, cos q2, … in the
+    /// order of `angles`), computed on first use.
+    fn of(&mut self, powers: &[u8], angles: &[(CoordId, usize, usize)], n: usize) -> &TrigPoly {
+        self.known.entry(powers.to_vec()).or_insert_with(|| {
+            let mut p = TrigPoly::from([(one_harmonic(), Rational::one())]);
+            for (k, &(q, _, _)) in angles.iter().enumerate() {
+                for (j, f) in [Trig::Cos, Trig::Sin].into_iter().enumerate() {
+                    let single = TrigPoly::from([((Angle::of(q), f), Rational::one())]);
+                    for _ in 0..powers[2 * k + j] {
+                        p = trig_product(&p, &single, n);
+                    }
+                }
+            }
+            p
+        })
+    }
+}
+
 impl Expr {
     /// The linearised trigonometric form, or None when the expression divides by cos q or
     /// sin q of a time angle (see [`Fourier`]).
@@ -122,48 +173,69 @@ impl Expr {
         {
             return None;
         }
+        LINEARISATIONS.with(|known| {
+            let mut known = known.borrow_mut();
+            known.prepare(&angles, reg.n_coords);
+            Some(self.linearised(&angles, &mut known))
+        })
+    }
+
+    /// [`Expr::to_fourier`] of an expression without reciprocals, each monomial linearised
+    /// through `known`.
+    fn linearised(
+        &self,
+        angles: &[(CoordId, usize, usize)],
+        known: &mut Linearisations,
+    ) -> Fourier {
+        let reg = &self.reg;
         let n = reg.n_coords;
-        // The linearisation of each trigonometric monomial, computed once.
-        let mut seen: HashMap<Vec<u8>, TrigPoly> = HashMap::new();
-        let mut by_harmonic: BTreeMap<Harmonic, Vec<(Rational, Vec<u8>)>> = BTreeMap::new();
+        // The harmonics met so far, numbered, and the terms of each one's coefficient.
+        let mut index: HashMap<Harmonic, usize> = HashMap::new();
+        let mut buckets: Vec<(Harmonic, Terms)> = Vec::new();
+        // Each trigonometric monomial met, as (harmonic number, rational factor).
+        let mut seen: HashMap<Vec<u8>, Vec<(usize, Rational)>> = HashMap::new();
+        let mut powers: Vec<u8> = Vec::with_capacity(2 * angles.len());
         for (c, e) in self.terms() {
-            let powers: Vec<u8> = angles
-                .iter()
-                .flat_map(|&(_, ci, si)| [e[ci], e[si]])
-                .collect();
-            let lin = seen.entry(powers).or_insert_with(|| {
-                let mut p = TrigPoly::from([(one_harmonic(), Rational::one())]);
-                for &(q, ci, si) in &angles {
-                    for (var, f) in [(ci, Trig::Cos), (si, Trig::Sin)] {
-                        let single = TrigPoly::from([((Angle::of(q), f), Rational::one())]);
-                        for _ in 0..e[var] {
-                            p = trig_product(&p, &single, n);
-                        }
-                    }
-                }
-                p
-            });
+            powers.clear();
+            powers.extend(angles.iter().flat_map(|&(_, ci, si)| [e[ci], e[si]]));
+            if !seen.contains_key(&powers[..]) {
+                let lin = known
+                    .of(&powers, angles, n)
+                    .iter()
+                    .map(|(h, r)| {
+                        let k = *index.entry(h.clone()).or_insert_with(|| {
+                            buckets.push((h.clone(), Vec::new()));
+                            buckets.len() - 1
+                        });
+                        (k, r.clone())
+                    })
+                    .collect();
+                seen.insert(powers.clone(), lin);
+            }
+            let lin = &seen[&powers[..]];
             let mut rest = e.to_vec();
-            for &(_, ci, si) in &angles {
+            for &(_, ci, si) in angles {
                 rest[ci] = 0;
                 rest[si] = 0;
             }
-            for (h, r) in lin.iter() {
-                by_harmonic
-                    .entry(h.clone())
-                    .or_default()
-                    .push((c * r, rest.clone()));
+            for (j, (k, r)) in lin.iter().enumerate() {
+                let x = if j + 1 == lin.len() {
+                    std::mem::take(&mut rest)
+                } else {
+                    rest.clone()
+                };
+                buckets[*k].1.push((c * r, x));
             }
         }
-        let terms = by_harmonic
+        let terms = buckets
             .into_iter()
             .map(|(h, ts)| (h, Expr::from_terms(reg, ts)))
             .filter(|(_, c)| !c.is_zero())
             .collect();
-        Some(Fourier {
+        Fourier {
             terms,
             reg: reg.clone(),
-        })
+        }
     }
 }
 

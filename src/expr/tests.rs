@@ -482,3 +482,60 @@ fn balanced_sum_is_the_running_total() {
     let running = parts.iter().fold(r.zero(), |acc, p| &acc + p);
     assert_eq!(Expr::sum(&r, parts), running);
 }
+
+/// A form's exact value, where products of a monomial by a sum or by a compound cos are
+/// expanded by adding exponents, and where that would leave a sin² to reduce: each against
+/// the parser's reading of the same text.
+#[test]
+fn a_form_times_a_monomial_reduces_what_adding_exponents_would_not() {
+    let r = reg();
+    let (m, l) = (r.param_id("m").unwrap(), r.param_id("L").unwrap());
+    let (a, b) = (r.coord("a").unwrap(), r.coord("b").unwrap());
+    let leaf = |x: Leaf| (Factor::Leaf(x), 1);
+    let sin_a = Leaf::Sin(Angle::of(a));
+    let cos_ba = Leaf::Cos(Angle::normalized(vec![(b, 1), (a, -1)], 3).0);
+    let product = |coef: i64, factors: Vec<(Factor, u8)>| Product {
+        coef: Rational::from(coef),
+        factors,
+    };
+    // sin a + L cos(b − a)
+    let sum = Form {
+        terms: vec![
+            product(1, vec![leaf(sin_a.clone())]),
+            product(1, vec![leaf(Leaf::Param(l)), leaf(cos_ba.clone())]),
+        ],
+    };
+    let cases = [
+        // m (sin a + L cos(b − a)): exponents add.
+        (
+            vec![leaf(Leaf::Param(m)), (Factor::Sum(sum.clone()), 1)],
+            "m*(sin(a) + L*cos(b - a))",
+        ),
+        // sin a (sin a + L cos(b − a)): sin² a is reduced.
+        (
+            vec![leaf(sin_a.clone()), (Factor::Sum(sum.clone()), 1)],
+            "sin(a)*(sin(a) + L*cos(b - a))",
+        ),
+        // sin a cos(b − a): the compound cos holds sin a sin b.
+        (
+            vec![leaf(sin_a.clone()), leaf(cos_ba.clone())],
+            "sin(a)*cos(b - a)",
+        ),
+        // m² sin a (…)²: a square of a sum, by the engine's product.
+        (
+            vec![
+                (Factor::Leaf(Leaf::Param(m)), 2),
+                leaf(sin_a.clone()),
+                (Factor::Sum(sum.clone()), 2),
+            ],
+            "m^2*sin(a)*(sin(a) + L*cos(b - a))^2",
+        ),
+    ];
+    for (factors, text) in cases {
+        let form = Form {
+            terms: vec![product(-3, factors), product(2, vec![leaf(cos_ba.clone())])],
+        };
+        let expected = r.parse(&format!("-3*{text} + 2*cos(b - a)")).unwrap();
+        assert_eq!(form.to_expr(&r), expected, "{text}");
+    }
+}

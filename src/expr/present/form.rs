@@ -188,22 +188,39 @@ impl Form {
         // in the linearised form): Σ monomials, multiplied by the leaf once.
         let mut by_leaf: BTreeMap<&Leaf, Vec<(Rational, Vec<u8>)>> = BTreeMap::new();
         for p in &self.terms {
-            if let Some((mono, leaf)) = p.monomial_and_leaf(reg) {
-                by_leaf
-                    .entry(leaf)
-                    .or_default()
-                    .push((p.coef.clone(), mono));
-                continue;
+            match p.monomial_and_rest(reg) {
+                Some((mono, Some(Factor::Leaf(leaf)))) => {
+                    by_leaf
+                        .entry(leaf)
+                        .or_default()
+                        .push((p.coef.clone(), mono));
+                }
+                Some((mono, Some(Factor::Sum(s)))) => {
+                    let e = s.to_expr_with(reg, leaves);
+                    if !times_monomial(reg, &p.coef, &mono, &e, &mut terms) {
+                        let m = Expr::from_terms(reg, vec![(p.coef.clone(), mono)]);
+                        terms.extend((&m * &e).terms().map(|(c, x)| (c.clone(), x.to_vec())));
+                    }
+                }
+                Some((mono, None)) => terms.push((p.coef.clone(), mono)),
+                None => {
+                    let e = p.to_expr(reg, leaves);
+                    terms.extend(e.terms().map(|(c, x)| (c.clone(), x.to_vec())));
+                }
             }
-            let e = p.to_expr(reg, leaves);
-            terms.extend(e.terms().map(|(c, x)| (c.clone(), x.to_vec())));
         }
         for (leaf, monos) in by_leaf {
             let base = leaves
                 .entry(leaf.clone())
                 .or_insert_with(|| leaf_expr(reg, leaf));
-            let e = &Expr::from_terms(reg, monos) * &*base;
-            terms.extend(e.terms().map(|(c, x)| (c.clone(), x.to_vec())));
+            if !monos.iter().all(|(_, m)| adds_exponents(reg, m, base)) {
+                let e = &Expr::from_terms(reg, monos) * &*base;
+                terms.extend(e.terms().map(|(c, x)| (c.clone(), x.to_vec())));
+                continue;
+            }
+            for (c, m) in &monos {
+                times_monomial(reg, c, m, base, &mut terms);
+            }
         }
         Expr::from_terms(reg, terms)
     }
@@ -308,23 +325,23 @@ impl Product {
         acc
     }
 
-    /// (exponents of its plain leaves, its one other leaf) when the product is a monomial times
-    /// one cos or sin of a compound angle, with no power of a sine to reduce and no
-    /// reciprocal to cancel.
-    fn monomial_and_leaf(&self, reg: &Registry) -> Option<(Vec<u8>, &Leaf)> {
+    /// (exponents of its plain leaves, its one other factor if any) when the product is a
+    /// monomial, or a monomial times one cos or sin of a compound angle or one sum, with no
+    /// power of a sine to reduce and no reciprocal to cancel among its leaves.
+    fn monomial_and_rest(&self, reg: &Registry) -> Option<(Vec<u8>, Option<&Factor>)> {
         if !reg.reciprocals.is_empty() {
             return None;
         }
         let mut mono = vec![0u8; reg.nvars()];
         let mut other = None;
         for (f, k) in &self.factors {
-            match (plain_var(reg, f), f) {
-                (Some((i, is_sin)), _) if !(is_sin && mono[i] + k >= 2) => mono[i] += k,
-                (None, Factor::Leaf(a)) if *k == 1 && other.is_none() => other = Some(a),
+            match plain_var(reg, f) {
+                Some((i, is_sin)) if !(is_sin && mono[i] + k >= 2) => mono[i] += k,
+                None if *k == 1 && other.is_none() => other = Some(f),
                 _ => return None,
             }
         }
-        other.map(|a| (mono, a))
+        Some((mono, other))
     }
 
     /// The factors in reading order: parameters (course order), length coordinates, sums,
@@ -403,6 +420,42 @@ fn plain_var(reg: &Registry, f: &Factor) -> Option<(usize, bool)> {
         _ => return None,
     };
     reg.index_of(role).map(|i| (i.index(), is_sin))
+}
+
+/// Whether the terms of x^mono · e are those of e with `mono`'s exponents added: no sine of
+/// `mono` is met again in `e` (sin² is reduced by the canonical form), no reciprocal is in
+/// the registry, and no exponent passes 255.
+fn adds_exponents(reg: &Registry, mono: &[u8], e: &Expr) -> bool {
+    reg.reciprocals.is_empty()
+        && !reg
+            .coords
+            .iter()
+            .filter_map(|c| c.trig)
+            .any(|(_, s)| mono[s] > 0 && e.p.degree(s) > 0)
+        && mono
+            .iter()
+            .enumerate()
+            .all(|(i, &k)| k == 0 || usize::from(k) + usize::from(e.p.degree(i)) <= 255)
+}
+
+/// Appends the terms of `coef · x^mono · e` to `terms` when [`adds_exponents`] holds;
+/// otherwise appends nothing and returns false.
+fn times_monomial(
+    reg: &Registry,
+    coef: &Rational,
+    mono: &[u8],
+    e: &Expr,
+    terms: &mut Vec<(Rational, Vec<u8>)>,
+) -> bool {
+    if !adds_exponents(reg, mono, e) {
+        return false;
+    }
+    terms.reserve(e.nterms());
+    for (c, x) in e.terms() {
+        let sum = x.iter().zip(mono).map(|(a, b)| a + b).collect();
+        terms.push((c * coef, sum));
+    }
+    true
 }
 
 /// Reading-order key of a factor.
