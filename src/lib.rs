@@ -26,7 +26,8 @@
 //!
 //! The public surface, in layer order (ARCHITECTURE.md, « Layers », checked by a test):
 //! - [`expr`]: the only module that uses symbolica (the canonical polynomial form, parsing,
-//!   printing, the presentation form); [`wire`]: the spec's JSON data types;
+//!   printing, the presentation form); [`wire`]: the spec's JSON data types; [`resolve`]:
+//!   its frames, points and solids resolved once for both sides;
 //! - mechanics: [`frame`], [`vector`], [`point`], [`inertia`], [`quantity`] (the course's
 //!   notation), [`mechanism`] (the store), [`kinematics`], [`torsor`];
 //! - [`pfd`] (actions, the Fundamental Principle of Dynamics, Lagrange), [`derivation`]
@@ -58,6 +59,7 @@ pub mod output;
 pub mod pfd;
 pub mod point;
 pub mod quantity;
+pub mod resolve;
 pub mod simulate;
 pub mod spec;
 pub mod torsor;

@@ -152,26 +152,6 @@ impl Names<'_> {
     }
 }
 
-/// Orders items of a tree so that each comes after the one it hangs from; `parent(i)` is the
-/// index of the parent among the items, or `None` for a root. Errors name a cycle member.
-fn topo_order(n: usize, parent: &dyn Fn(usize) -> Option<usize>) -> Result<Vec<usize>, usize> {
-    let mut placed = vec![false; n];
-    let mut order = Vec::with_capacity(n);
-    while order.len() < n {
-        let before = order.len();
-        for i in 0..n {
-            if !placed[i] && parent(i).is_none_or(|p| placed[p]) {
-                placed[i] = true;
-                order.push(i);
-            }
-        }
-        if order.len() == before {
-            return Err(placed.iter().position(|p| !p).unwrap_or(0));
-        }
-    }
-    Ok(order)
-}
-
 fn unique<'a>(
     what: &str,
     path: &str,
@@ -247,46 +227,11 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         .filter(|&i| spec.parameters[i].kind == ParameterKind::Angle)
         .collect();
 
-    // Frames: the ground first, then parents before children.
+    // Frames and points: the trees resolved once for both sides (each frame after its
+    // parent, each point after the point it is placed from, every reference found).
+    let trees = crate::resolve::trees(spec).map_err(|e| spec_err(e.path, e.message))?;
     let ground = spec.ground.clone();
-    let mut spec_frame_index = BTreeMap::new();
-    unique(
-        "frame",
-        "frames",
-        spec.frames.iter().map(|f| f.name.as_str()),
-        &mut spec_frame_index,
-    )?;
-    if let Some(i) = spec_frame_index.get(&ground) {
-        return Err(spec_err(
-            format!("frames[{i}].name"),
-            format!("`{ground}` is the ground frame: it has no parent"),
-        ));
-    }
-    let mut parents = Vec::with_capacity(spec.frames.len());
-    for (i, f) in spec.frames.iter().enumerate() {
-        if f.parent == ground {
-            parents.push(None);
-        } else {
-            let p = spec_frame_index.get(&f.parent).ok_or_else(|| {
-                spec_err(
-                    format!("frames[{i}].parent"),
-                    format!("unknown frame `{}`", f.parent),
-                )
-            })?;
-            parents.push(Some(*p));
-        }
-    }
-    let order = topo_order(spec.frames.len(), &|i| parents[i]).map_err(|i| {
-        spec_err(
-            format!("frames[{i}].parent"),
-            format!("frame `{}` is its own ancestor", spec.frames[i].name),
-        )
-    })?;
-    let mut frame_index = BTreeMap::new();
-    frame_index.insert(ground.clone(), 0usize);
-    for (k, i) in order.iter().enumerate() {
-        frame_index.insert(spec.frames[*i].name.clone(), k + 1);
-    }
+    let frame_index = trees.frame_positions();
     // Basis vectors named as the statement writes them.
     let vectors = super::checks::named_vectors(spec, &param_index, &coord_index, &frame_index)
         .map_err(|(path, m)| spec_err(path, m))?;
@@ -355,61 +300,19 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         })
         .collect::<Result<Vec<_>, NumericError>>()?;
 
-    // Points: the ground origin first, then each after the point it is placed from.
-    let ground_origin = spec
-        .ground_origin
-        .clone()
-        .unwrap_or_else(|| "O0".to_string());
-    let mut spec_point_index = BTreeMap::new();
-    unique(
-        "point",
-        "points",
-        spec.points.iter().map(|p| p.name.as_str()),
-        &mut spec_point_index,
-    )?;
-    if let Some(i) = spec_point_index.get(&ground_origin) {
-        return Err(spec_err(
-            format!("points[{i}].name"),
-            format!("`{ground_origin}` is the ground origin: it cannot be placed"),
-        ));
-    }
-    let mut from = Vec::with_capacity(spec.points.len());
-    for (i, p) in spec.points.iter().enumerate() {
-        let f = p.from.as_deref().unwrap_or(&ground_origin);
-        if f == ground_origin {
-            from.push(None);
-        } else {
-            let k = spec_point_index.get(f).ok_or_else(|| {
-                spec_err(format!("points[{i}].from"), format!("unknown point `{f}`"))
-            })?;
-            from.push(Some(*k));
-        }
-    }
-    let porder = topo_order(spec.points.len(), &|i| from[i]).map_err(|i| {
-        spec_err(
-            format!("points[{i}].from"),
-            format!("point `{}` is placed from itself", spec.points[i].name),
-        )
-    })?;
-    let mut point_index = BTreeMap::new();
-    point_index.insert(ground_origin.clone(), 0usize);
-    for (k, i) in porder.iter().enumerate() {
-        point_index.insert(spec.points[*i].name.clone(), k + 1);
-    }
-    let mut points = vec![PointInfo {
-        name: ground_origin.clone(),
-        from: 0,
-        position: Node::Num(0.0),
-    }];
-    for i in &porder {
-        let p = &spec.points[*i];
-        let position = names
-            .parse(&p.position, Context::Position)
-            .map_err(|m| spec_err(format!("points[{i}].position"), m))?;
-        let f = p.from.as_deref().unwrap_or(&ground_origin);
+    // Points, in the trees' order.
+    let point_index = trees.point_positions();
+    let mut points = Vec::with_capacity(trees.points.len());
+    for node in &trees.points {
+        let position = match node.spec {
+            None => Node::Num(0.0),
+            Some(i) => names
+                .parse(&spec.points[i].position, Context::Position)
+                .map_err(|m| spec_err(format!("points[{i}].position"), m))?,
+        };
         points.push(PointInfo {
-            name: p.name.clone(),
-            from: point_index[f],
+            name: node.name.to_string(),
+            from: node.from,
             position,
         });
     }
@@ -421,8 +324,9 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         rotation: None,
         origin: 0,
     }];
-    for i in &order {
-        let f = &spec.frames[*i];
+    for node in &trees.frames[1..] {
+        let i = node.spec.expect("a frame of the spec");
+        let f = &spec.frames[i];
         let rotation = match &f.rotation {
             None => None,
             Some(r) => {
@@ -453,64 +357,32 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
                 Some((axis, sign, angle))
             }
         };
-        let origin = match &f.origin {
-            None => 0,
-            Some(o) => *point_index.get(o).ok_or_else(|| {
-                spec_err(
-                    format!("frames[{i}].origin"),
-                    format!("unknown point `{o}`"),
-                )
-            })?,
-        };
         frames.push(FrameInfo {
             name: f.name.clone(),
-            parent: frame_index[&f.parent],
+            parent: node.parent,
             rotation,
-            origin,
+            origin: node.origin,
         });
     }
 
-    // Solids.
-    let mut solid_index = BTreeMap::new();
-    unique(
-        "solid",
-        "solids",
-        spec.solids.iter().map(|s| s.name.as_str()),
-        &mut solid_index,
-    )?;
+    // Solids: named and referenced in the trees.
+    let solid_index: BTreeMap<String, usize> = trees
+        .solids
+        .iter()
+        .enumerate()
+        .map(|(i, s)| (s.name.to_string(), i))
+        .collect();
     let mut solids = Vec::with_capacity(spec.solids.len());
-    for (i, s) in spec.solids.iter().enumerate() {
+    for ((i, s), node) in spec.solids.iter().enumerate().zip(&trees.solids) {
         let path = format!("solids[{i}]");
-        let frame = *frame_index.get(&s.frame).ok_or_else(|| {
-            spec_err(
-                format!("{path}.frame"),
-                format!("unknown frame `{}`", s.frame),
-            )
-        })?;
+        let frame = node.frame;
         let mass = names
             .parse(&s.mass, Context::Constant)
             .map_err(|m| spec_err(format!("{path}.mass"), m))?;
-        let centre = *point_index.get(&s.centre).ok_or_else(|| {
-            spec_err(
-                format!("{path}.centre"),
-                format!("unknown point `{}`", s.centre),
-            )
-        })?;
-        let inertia = match &s.inertia {
-            None => None,
-            Some(inr) => {
-                let point = *point_index.get(&inr.point).ok_or_else(|| {
-                    spec_err(
-                        format!("{path}.inertia.point"),
-                        format!("unknown point `{}`", inr.point),
-                    )
-                })?;
-                let basis = *frame_index.get(&inr.basis).ok_or_else(|| {
-                    spec_err(
-                        format!("{path}.inertia.basis"),
-                        format!("unknown frame `{}`", inr.basis),
-                    )
-                })?;
+        let centre = node.centre;
+        let inertia = match (&s.inertia, node.inertia) {
+            (None, _) | (_, None) => None,
+            (Some(inr), Some((point, basis))) => {
                 let mut err = None;
                 let matrix: [[Node; 3]; 3] = std::array::from_fn(|r| {
                     std::array::from_fn(|c| {

@@ -194,168 +194,62 @@ fn build_with(
         .build()
         .map_err(|e| super::texts::registry_error(spec, &builder, &aliases, e))?;
 
-    // Frames, in an order where each parent comes first (the spec may list them in any order).
-    name_ok("ground", &spec.ground)?;
+    // Frames, each after its parent (the spec may list them in any order): the trees are
+    // resolved once for both sides; positions are the arena's ids.
+    let trees = crate::resolve::trees(spec).map_err(|e| at(e.path, e.message))?;
     let mut frames = Frames::new(reg.clone(), &spec.ground);
-    let mut frame_names: HashSet<String> = [spec.ground.clone()].into();
-    for (i, f) in spec.frames.iter().enumerate() {
-        name_ok(&format!("frames[{i}].name"), &f.name)?;
-        if !frame_names.insert(f.name.clone()) {
-            return Err(at(
-                format!("frames[{i}].name"),
-                format!("duplicate frame `{}`", f.name),
-            ));
-        }
-    }
-    let mut placed = vec![false; spec.frames.len()];
-    let mut frame_origin_names: Vec<Option<(String, String)>> = vec![None];
-    loop {
-        let mut progress = false;
-        for (i, f) in spec.frames.iter().enumerate() {
-            if placed[i] {
-                continue;
+    for node in &trees.frames[1..] {
+        let i = node.spec.expect("a frame of the spec");
+        let rotation = match &spec.frames[i].rotation {
+            None => None,
+            Some(r) => {
+                let path = format!("frames[{i}].rotation");
+                let (sign, axis_txt) = match r.axis.strip_prefix('-') {
+                    Some(a) => (-1, a),
+                    None => (1, r.axis.as_str()),
+                };
+                let axis = Axis::parse(axis_txt).ok_or_else(|| {
+                    at(
+                        format!("{path}.axis"),
+                        format!("axis `{}` is not x, y, z, -x, -y or -z", r.axis),
+                    )
+                })?;
+                let angle = rotation_angle(&reg, &r.angle, sign)
+                    .map_err(|m| at(format!("{path}.angle"), m))?;
+                Some(Rotation { axis, angle })
             }
-            let Some(parent) = frames.find(&f.parent) else {
-                if !frame_names.contains(&f.parent) {
-                    return Err(at(
-                        format!("frames[{i}].parent"),
-                        format!("unknown frame `{}`", f.parent),
-                    ));
-                }
-                continue;
-            };
-            let rotation = match &f.rotation {
-                None => None,
-                Some(r) => {
-                    let path = format!("frames[{i}].rotation");
-                    let (sign, axis_txt) = match r.axis.strip_prefix('-') {
-                        Some(a) => (-1, a),
-                        None => (1, r.axis.as_str()),
-                    };
-                    let axis = Axis::parse(axis_txt).ok_or_else(|| {
-                        at(
-                            format!("{path}.axis"),
-                            format!("axis `{}` is not x, y, z, -x, -y or -z", r.axis),
-                        )
-                    })?;
-                    let angle = rotation_angle(&reg, &r.angle, sign)
-                        .map_err(|m| at(format!("{path}.angle"), m))?;
-                    Some(Rotation { axis, angle })
-                }
-            };
-            frames.add(&f.name, parent, rotation);
-            frame_origin_names.push(f.origin.clone().map(|o| (o, format!("frames[{i}].origin"))));
-            placed[i] = true;
-            progress = true;
-        }
-        if placed.iter().all(|p| *p) {
-            break;
-        }
-        if !progress {
-            let i = placed.iter().position(|p| !p).unwrap_or(0);
-            return Err(at(
-                format!("frames[{i}].parent"),
-                format!("the frames form a cycle through `{}`", spec.frames[i].name),
-            ));
-        }
+        };
+        frames.add(node.name, FrameId(node.parent), rotation);
     }
     // Basis vectors named as the statement does ((u, v, w), (i, j, k)).
     super::vectors::name_vectors(spec, &mut frames, &names)?;
     let bv = |s: &str| frames.basis_vector(s).map(|(f, a)| (f, a.index()));
 
-    // Points, parents first.
-    let origin_name = spec
-        .ground_origin
-        .clone()
-        .unwrap_or_else(|| "O0".to_string());
-    name_ok("ground_origin", &origin_name)?;
-    let mut points = Points::new(&origin_name);
-    let mut point_names: HashSet<String> = [origin_name.clone()].into();
-    for (i, p) in spec.points.iter().enumerate() {
-        // A point lives in point slots only (`V(A,2/0)`, a centre, a link's point): the point
-        // A and the inertia moment A of a corrigé both keep their names.
-        name_ok(&format!("points[{i}].name"), &p.name)?;
-        if !point_names.insert(p.name.clone()) {
-            return Err(at(
-                format!("points[{i}].name"),
-                format!("duplicate point `{}`", p.name),
-            ));
+    // Points, each after the point it is placed from.
+    let mut points = Points::new(trees.points[0].name);
+    for node in &trees.points[1..] {
+        let i = node.spec.expect("a point of the spec");
+        let path = format!("points[{i}].position");
+        let parts = reg
+            .parse_vector(&spec.points[i].position, &bv)
+            .map_err(|e| expr_err(&path, e))?;
+        let mut v = Vector::zero();
+        for (f, c) in parts {
+            let [x, y, z] = c;
+            v.add_part(
+                f,
+                [bounded(&path, x)?, bounded(&path, y)?, bounded(&path, z)?],
+            );
         }
+        points.add(node.name, PointId(node.from), v);
     }
-    let mut done = vec![false; spec.points.len()];
-    loop {
-        let mut progress = false;
-        for (i, p) in spec.points.iter().enumerate() {
-            if done[i] {
-                continue;
-            }
-            let from = p.from.clone().unwrap_or_else(|| origin_name.clone());
-            let Some(parent) = points.find(&from) else {
-                if !point_names.contains(&from) {
-                    return Err(at(
-                        format!("points[{i}].from"),
-                        format!("unknown point `{from}`"),
-                    ));
-                }
-                continue;
-            };
-            let path = format!("points[{i}].position");
-            let parts = reg
-                .parse_vector(&p.position, &bv)
-                .map_err(|e| expr_err(&path, e))?;
-            let mut v = Vector::zero();
-            for (f, c) in parts {
-                let [x, y, z] = c;
-                v.add_part(
-                    f,
-                    [bounded(&path, x)?, bounded(&path, y)?, bounded(&path, z)?],
-                );
-            }
-            points.add(&p.name, parent, v);
-            done[i] = true;
-            progress = true;
-        }
-        if done.iter().all(|d| *d) {
-            break;
-        }
-        if !progress {
-            let i = done.iter().position(|d| !d).unwrap_or(0);
-            return Err(at(
-                format!("points[{i}].from"),
-                format!("the points form a cycle through `{}`", spec.points[i].name),
-            ));
-        }
-    }
-    let find_point = |path: &str, n: &str| -> Result<PointId, SpecError> {
-        points
-            .find(n)
-            .ok_or_else(|| at(path, format!("unknown point `{n}`")))
-    };
-    let mut frame_origins = Vec::new();
-    for o in &frame_origin_names {
-        frame_origins.push(match o {
-            None => points.origin(),
-            Some((n, path)) => find_point(path, n)?,
-        });
-    }
+    let frame_origins = trees.frames.iter().map(|f| PointId(f.origin)).collect();
 
-    // Solids.
+    // Solids: named and referenced in the trees.
     let mut bodies = Vec::new();
-    for (i, s) in spec.solids.iter().enumerate() {
+    for ((i, s), node) in spec.solids.iter().enumerate().zip(&trees.solids) {
         let path = format!("solids[{i}]");
-        name_ok(&format!("{path}.name"), &s.name)?;
-        if bodies.iter().any(|b: &Body| b.name == s.name) || s.name == spec.ground {
-            return Err(at(
-                format!("{path}.name"),
-                format!("duplicate solid `{}`", s.name),
-            ));
-        }
-        let frame = frames.find(&s.frame).ok_or_else(|| {
-            at(
-                format!("{path}.frame"),
-                format!("unknown frame `{}`", s.frame),
-            )
-        })?;
+        let frame = FrameId(node.frame);
         let mass = reg
             .parse(&s.mass)
             .map_err(|e| expr_err(&format!("{path}.mass"), e))
@@ -366,18 +260,11 @@ fn build_with(
                 "a mass is constant (parameters only)",
             ));
         }
-        let centre = find_point(&format!("{path}.centre"), &s.centre)?;
-        let inertia = match &s.inertia {
-            None => None,
-            Some(spec_i) => {
+        let centre = PointId(node.centre);
+        let inertia = match (&s.inertia, node.inertia) {
+            (Some(spec_i), Some((point, basis))) => {
                 let ip = format!("{path}.inertia");
-                let point = find_point(&format!("{ip}.point"), &spec_i.point)?;
-                let basis = frames.find(&spec_i.basis).ok_or_else(|| {
-                    at(
-                        format!("{ip}.basis"),
-                        format!("unknown frame `{}`", spec_i.basis),
-                    )
-                })?;
+                let (point, basis) = (PointId(point), FrameId(basis));
                 let mut m: Vec<Vec<crate::expr::Expr>> = Vec::new();
                 for (r, row) in spec_i.matrix.iter().enumerate() {
                     let mut out = Vec::new();
@@ -419,6 +306,7 @@ fn build_with(
                     matrix,
                 })
             }
+            _ => None,
         };
         let mut symmetries = Vec::new();
         for (k, sym) in s.symmetries.iter().enumerate() {

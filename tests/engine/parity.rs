@@ -437,3 +437,94 @@ fn both_sides_read_a_driven_rate_alike() {
         }
     }
 }
+
+/// The trees (frames, points, solids) are resolved once for both sides (`torseur::resolve`):
+/// a structural error is reported at the same path in the same words by each, and a tree
+/// given in any order is accepted by both.
+#[test]
+fn both_sides_report_the_trees_errors_alike() {
+    let spec = |frames: Value, points: Value, solids: Value| -> Value {
+        serde_json::json!({
+            "title": "trees",
+            "parameters": [{"name": "m"}, {"name": "L"}],
+            "coordinates": [{"name": "q", "kind": "angle"}],
+            "frames": frames, "points": points, "solids": solids
+        })
+    };
+    let f = |name: &str, parent: &str| serde_json::json!({"name": name, "parent": parent});
+    let p = |name: &str, from: &str| serde_json::json!({"name": name, "from": from, "position": "L*x0"});
+    let solid = |frame: &str, centre: &str| serde_json::json!([{"name": "S", "frame": frame, "mass": "m", "centre": centre}]);
+    // Children before parents: accepted by both.
+    let (exact, float) = verdicts(&spec(
+        serde_json::json!([f("2", "1"), f("1", "0")]),
+        serde_json::json!([p("B", "A"), p("A", "O0")]),
+        solid("2", "B"),
+    ))
+    .unwrap();
+    assert!(exact.is_ok() && float.is_ok(), "{exact:?} {float:?}");
+    let cases = [
+        (
+            spec(
+                serde_json::json!([f("1", "2"), f("2", "1")]),
+                serde_json::json!([]),
+                serde_json::json!([]),
+            ),
+            "frames[0].parent: the frames form a cycle through `1`",
+        ),
+        (
+            spec(
+                serde_json::json!([f("1", "3")]),
+                serde_json::json!([]),
+                serde_json::json!([]),
+            ),
+            "frames[0].parent: unknown frame `3`",
+        ),
+        (
+            spec(
+                serde_json::json!([f("0", "0")]),
+                serde_json::json!([]),
+                serde_json::json!([]),
+            ),
+            "frames[0].name: duplicate frame `0`",
+        ),
+        (
+            spec(
+                serde_json::json!([]),
+                serde_json::json!([p("A", "B"), p("B", "A")]),
+                serde_json::json!([]),
+            ),
+            "points[0].from: the points form a cycle through `A`",
+        ),
+        (
+            spec(
+                serde_json::json!([]),
+                serde_json::json!([p("O0", "O0")]),
+                serde_json::json!([]),
+            ),
+            "points[0].name: duplicate point `O0`",
+        ),
+        (
+            spec(
+                serde_json::json!([f("1", "0")]),
+                serde_json::json!([]),
+                solid("1", "G"),
+            ),
+            "solids[0].centre: unknown point `G`",
+        ),
+        (
+            spec(
+                serde_json::json!([]),
+                serde_json::json!([]),
+                serde_json::json!([{"name": "0", "frame": "0", "mass": "m", "centre": "O0"}]),
+            ),
+            "solids[0].name: duplicate solid `0`",
+        ),
+    ];
+    for (s, expected) in cases {
+        let (exact, float) = verdicts(&s).expect("a spec's shape");
+        for (side, v) in [("exact", exact), ("float", float)] {
+            let e = v.expect_err(expected);
+            assert!(e.contains(expected), "{side}: {e}\n  expected: {expected}");
+        }
+    }
+}

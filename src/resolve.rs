@@ -1,0 +1,307 @@
+//! The spec's trees resolved once, for the exact side ([`crate::spec`]) and the float backend
+//! ([`crate::numeric`]) alike: each frame after its parent and each point after the point it
+//! is placed from, every frame, point and solid named once, every reference to one of them
+//! turned into a position, every error naming its JSON path.
+//!
+//! What the trees hold is only structure. Each side still reads the expressions (rotation
+//! angles, positions, masses, inertia entries) with its own parser and applies the physical
+//! conventions with its own code: a mistake in one cannot hide behind the other.
+//!
+//! ```
+//! let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
+//! let spec = torseur::spec::parse_spec(&text).unwrap();
+//! let trees = torseur::resolve::trees(&spec).unwrap();
+//! // The ground first, then each frame after its parent.
+//! assert_eq!(trees.frames[0].name, "0");
+//! let f2 = trees.frame("2").unwrap();
+//! assert!(trees.frames[f2].parent < f2);
+//! ```
+
+use crate::quantity::check_name;
+use crate::wire::SpecFile;
+use std::collections::{BTreeMap, HashSet};
+
+/// A structural error: the JSON path of the faulty value and what is wrong.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TreeError {
+    /// JSON path (`frames[2].parent`).
+    pub path: String,
+    /// The message.
+    pub message: String,
+}
+
+fn at(path: impl Into<String>, message: impl Into<String>) -> TreeError {
+    TreeError {
+        path: path.into(),
+        message: message.into(),
+    }
+}
+
+/// A frame: the ground (position 0) or one of the spec's.
+#[derive(Debug, Clone)]
+pub struct FrameNode<'a> {
+    /// Its name.
+    pub name: &'a str,
+    /// Its index in `frames` of the spec (None for the ground).
+    pub spec: Option<usize>,
+    /// The position of its parent (0 for the ground itself).
+    pub parent: usize,
+    /// The position of its origin among the points (0, the ground origin, unless given).
+    pub origin: usize,
+}
+
+/// A point: the ground origin (position 0) or one of the spec's.
+#[derive(Debug, Clone)]
+pub struct PointNode<'a> {
+    /// Its name.
+    pub name: &'a str,
+    /// Its index in `points` of the spec (None for the ground origin).
+    pub spec: Option<usize>,
+    /// The position of the point it is placed from (0 for the ground origin itself).
+    pub from: usize,
+}
+
+/// A solid's references, in the order of the spec's `solids`.
+#[derive(Debug, Clone)]
+pub struct SolidNode<'a> {
+    /// Its name.
+    pub name: &'a str,
+    /// The position of its frame.
+    pub frame: usize,
+    /// The position of its centre of mass.
+    pub centre: usize,
+    /// The positions of its inertia operator's point and basis, when it has one.
+    pub inertia: Option<(usize, usize)>,
+}
+
+/// The spec's frames, points and solids, resolved (see the module documentation).
+#[derive(Debug, Clone)]
+pub struct Trees<'a> {
+    /// The ground first, then each frame after its parent.
+    pub frames: Vec<FrameNode<'a>>,
+    /// The ground origin first, then each point after the point it is placed from.
+    pub points: Vec<PointNode<'a>>,
+    /// The solids, in the spec's order.
+    pub solids: Vec<SolidNode<'a>>,
+    frame_by_name: BTreeMap<&'a str, usize>,
+    point_by_name: BTreeMap<&'a str, usize>,
+}
+
+impl<'a> Trees<'a> {
+    /// The position of a frame.
+    pub fn frame(&self, name: &str) -> Option<usize> {
+        self.frame_by_name.get(name).copied()
+    }
+
+    /// The position of a point.
+    pub fn point(&self, name: &str) -> Option<usize> {
+        self.point_by_name.get(name).copied()
+    }
+
+    /// The position of a solid.
+    pub fn solid(&self, name: &str) -> Option<usize> {
+        self.solids.iter().position(|s| s.name == name)
+    }
+
+    /// Frame name → position, for a reader that keeps its own table.
+    pub fn frame_positions(&self) -> BTreeMap<String, usize> {
+        self.frame_by_name
+            .iter()
+            .map(|(n, i)| (n.to_string(), *i))
+            .collect()
+    }
+
+    /// Point name → position, for a reader that keeps its own table.
+    pub fn point_positions(&self) -> BTreeMap<String, usize> {
+        self.point_by_name
+            .iter()
+            .map(|(n, i)| (n.to_string(), *i))
+            .collect()
+    }
+}
+
+/// The name of the ground origin: `O0` unless the spec gives one.
+pub fn ground_origin(spec: &SpecFile) -> &str {
+    spec.ground_origin.as_deref().unwrap_or("O0")
+}
+
+/// Names unique among `taken`, each a valid name, at `{list}[i].name`.
+fn distinct<'a>(
+    what: &str,
+    list: &str,
+    names: impl Iterator<Item = &'a str>,
+    taken: &mut HashSet<&'a str>,
+) -> Result<(), TreeError> {
+    for (i, n) in names.enumerate() {
+        let path = format!("{list}[{i}].name");
+        check_name(n).map_err(|m| at(&path, m))?;
+        if !taken.insert(n) {
+            return Err(at(path, format!("duplicate {what} `{n}`")));
+        }
+    }
+    Ok(())
+}
+
+/// Places the items whose parent is placed, pass after pass in the spec's order (so the
+/// order of the positions is the same for every reader), from `placed` (name → position)
+/// holding the root. `parent(i)` is the item's parent's name and the path naming it.
+fn place<'a>(
+    what: &str,
+    names: &[&'a str],
+    parent: &dyn Fn(usize) -> (&'a str, String),
+    placed: &mut BTreeMap<&'a str, usize>,
+) -> Result<Vec<(usize, usize)>, TreeError> {
+    let known: HashSet<&str> = names
+        .iter()
+        .copied()
+        .chain(placed.keys().copied())
+        .collect();
+    let mut order = Vec::with_capacity(names.len());
+    let mut done = vec![false; names.len()];
+    while order.len() < names.len() {
+        let before = order.len();
+        for (i, name) in names.iter().enumerate() {
+            if done[i] {
+                continue;
+            }
+            let (p, path) = parent(i);
+            match placed.get(p) {
+                Some(&k) => {
+                    placed.insert(name, placed.len());
+                    order.push((i, k));
+                    done[i] = true;
+                }
+                None if !known.contains(p) => {
+                    return Err(at(path, format!("unknown {what} `{p}`")));
+                }
+                None => {}
+            }
+        }
+        if order.len() == before {
+            let i = done.iter().position(|d| !d).unwrap_or(0);
+            return Err(at(
+                parent(i).1,
+                format!("the {what}s form a cycle through `{}`", names[i]),
+            ));
+        }
+    }
+    Ok(order)
+}
+
+/// Resolves the spec's frames, points and solids.
+pub fn trees(spec: &SpecFile) -> Result<Trees<'_>, TreeError> {
+    // Frames.
+    check_name(&spec.ground).map_err(|m| at("ground", m))?;
+    let mut taken = HashSet::from([spec.ground.as_str()]);
+    distinct(
+        "frame",
+        "frames",
+        spec.frames.iter().map(|f| f.name.as_str()),
+        &mut taken,
+    )?;
+    let names: Vec<&str> = spec.frames.iter().map(|f| f.name.as_str()).collect();
+    let mut frame_by_name = BTreeMap::from([(spec.ground.as_str(), 0)]);
+    let parent = |i: usize| {
+        (
+            spec.frames[i].parent.as_str(),
+            format!("frames[{i}].parent"),
+        )
+    };
+    let frame_order = place("frame", &names, &parent, &mut frame_by_name)?;
+
+    // Points.
+    let origin = ground_origin(spec);
+    check_name(origin).map_err(|m| at("ground_origin", m))?;
+    let mut taken = HashSet::from([origin]);
+    distinct(
+        "point",
+        "points",
+        spec.points.iter().map(|p| p.name.as_str()),
+        &mut taken,
+    )?;
+    let names: Vec<&str> = spec.points.iter().map(|p| p.name.as_str()).collect();
+    let mut point_by_name = BTreeMap::from([(origin, 0)]);
+    let from = |i: usize| {
+        (
+            spec.points[i].from.as_deref().unwrap_or(origin),
+            format!("points[{i}].from"),
+        )
+    };
+    let point_order = place("point", &names, &from, &mut point_by_name)?;
+    let points = std::iter::once(PointNode {
+        name: origin,
+        spec: None,
+        from: 0,
+    })
+    .chain(point_order.iter().map(|&(i, from)| PointNode {
+        name: &spec.points[i].name,
+        spec: Some(i),
+        from,
+    }))
+    .collect();
+
+    let point = |path: String, n: &str| {
+        point_by_name
+            .get(n)
+            .copied()
+            .ok_or_else(|| at(path, format!("unknown point `{n}`")))
+    };
+    let frame = |path: String, n: &str| {
+        frame_by_name
+            .get(n)
+            .copied()
+            .ok_or_else(|| at(path, format!("unknown frame `{n}`")))
+    };
+    let mut frames = vec![FrameNode {
+        name: &spec.ground,
+        spec: None,
+        parent: 0,
+        origin: 0,
+    }];
+    for &(i, parent) in &frame_order {
+        let f = &spec.frames[i];
+        let origin = match &f.origin {
+            None => 0,
+            Some(o) => point(format!("frames[{i}].origin"), o)?,
+        };
+        frames.push(FrameNode {
+            name: &f.name,
+            spec: Some(i),
+            parent,
+            origin,
+        });
+    }
+
+    // Solids: named apart from the ground, which is a body too.
+    let mut taken = HashSet::from([spec.ground.as_str()]);
+    distinct(
+        "solid",
+        "solids",
+        spec.solids.iter().map(|s| s.name.as_str()),
+        &mut taken,
+    )?;
+    let mut solids = Vec::with_capacity(spec.solids.len());
+    for (i, s) in spec.solids.iter().enumerate() {
+        let path = format!("solids[{i}]");
+        let inertia = match &s.inertia {
+            None => None,
+            Some(j) => Some((
+                point(format!("{path}.inertia.point"), &j.point)?,
+                frame(format!("{path}.inertia.basis"), &j.basis)?,
+            )),
+        };
+        solids.push(SolidNode {
+            name: &s.name,
+            frame: frame(format!("{path}.frame"), &s.frame)?,
+            centre: point(format!("{path}.centre"), &s.centre)?,
+            inertia,
+        });
+    }
+    Ok(Trees {
+        frames,
+        points,
+        solids,
+        frame_by_name,
+        point_by_name,
+    })
+}
