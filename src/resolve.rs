@@ -1,37 +1,39 @@
-//! The spec's trees resolved once, for the exact side ([`crate::spec`]) and the float backend
-//! ([`crate::numeric`]) alike: each frame after its parent and each point after the point it
-//! is placed from, every frame, point and solid named once, every reference to one of them
-//! turned into a position, every error naming its JSON path.
+//! The spec's names and trees resolved once, for the exact side ([`crate::spec`]) and the
+//! float backend ([`crate::numeric`]) alike: parameters, coordinates and aliases in one
+//! namespace, the names a statement gives basis vectors, each frame after its parent and each
+//! point after the point it is placed from, every frame, point and solid named once, every
+//! reference to one of them turned into a position, every error naming its JSON path.
 //!
-//! What the trees hold is only structure. Each side still reads the expressions (rotation
+//! What is resolved here is only names and structure. Each side still reads the expressions (rotation
 //! angles, positions, masses, inertia entries) with its own parser and applies the physical
 //! conventions with its own code: a mistake in one cannot hide behind the other.
 //!
 //! ```
 //! let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
 //! let spec = torseur::spec::parse_spec(&text).unwrap();
-//! let trees = torseur::resolve::trees(&spec).unwrap();
+//! let trees = torseur::resolve::resolve(&spec).unwrap();
 //! // The ground first, then each frame after its parent.
 //! assert_eq!(trees.frames[0].name, "0");
 //! let f2 = trees.frame("2").unwrap();
 //! assert!(trees.frames[f2].parent < f2);
 //! ```
 
+use crate::expr::{RESERVED, check_identifier};
 use crate::quantity::check_name;
 use crate::wire::SpecFile;
 use std::collections::{BTreeMap, HashSet};
 
 /// A structural error: the JSON path of the faulty value and what is wrong.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct TreeError {
+pub struct Refusal {
     /// JSON path (`frames[2].parent`).
     pub path: String,
     /// The message.
     pub message: String,
 }
 
-fn at(path: impl Into<String>, message: impl Into<String>) -> TreeError {
-    TreeError {
+fn at(path: impl Into<String>, message: impl Into<String>) -> Refusal {
+    Refusal {
         path: path.into(),
         message: message.into(),
     }
@@ -74,9 +76,25 @@ pub struct SolidNode<'a> {
     pub inertia: Option<(usize, usize)>,
 }
 
-/// The spec's frames, points and solids, resolved (see the module documentation).
+/// The names expressions read: parameters, coordinates and aliases (one namespace, each
+/// name to its index in the spec), and the basis vectors a statement names (`u`).
+#[derive(Debug, Clone, Default)]
+pub struct Names<'a> {
+    /// Parameter → index in `parameters`.
+    pub params: BTreeMap<&'a str, usize>,
+    /// Coordinate → index in `coordinates`.
+    pub coords: BTreeMap<&'a str, usize>,
+    /// Alias → index in `aliases`.
+    pub aliases: BTreeMap<&'a str, usize>,
+    /// A named basis vector → (the position of its frame, its axis: 0 for x, 1 for y, 2 for z).
+    pub vectors: BTreeMap<&'a str, (usize, usize)>,
+}
+
+/// The spec's names, frames, points and solids, resolved (see the module documentation).
 #[derive(Debug, Clone)]
-pub struct Trees<'a> {
+pub struct Resolved<'a> {
+    /// The names expressions read.
+    pub names: Names<'a>,
     /// The ground first, then each frame after its parent.
     pub frames: Vec<FrameNode<'a>>,
     /// The ground origin first, then each point after the point it is placed from.
@@ -87,7 +105,7 @@ pub struct Trees<'a> {
     point_by_name: BTreeMap<&'a str, usize>,
 }
 
-impl<'a> Trees<'a> {
+impl<'a> Resolved<'a> {
     /// The position of a frame.
     pub fn frame(&self, name: &str) -> Option<usize> {
         self.frame_by_name.get(name).copied()
@@ -131,7 +149,7 @@ fn distinct<'a>(
     list: &str,
     names: impl Iterator<Item = &'a str>,
     taken: &mut HashSet<&'a str>,
-) -> Result<(), TreeError> {
+) -> Result<(), Refusal> {
     for (i, n) in names.enumerate() {
         let path = format!("{list}[{i}].name");
         check_name(n).map_err(|m| at(&path, m))?;
@@ -150,7 +168,7 @@ fn place<'a>(
     names: &[&'a str],
     parent: &dyn Fn(usize) -> (&'a str, String),
     placed: &mut BTreeMap<&'a str, usize>,
-) -> Result<Vec<(usize, usize)>, TreeError> {
+) -> Result<Vec<(usize, usize)>, Refusal> {
     let known: HashSet<&str> = names
         .iter()
         .copied()
@@ -188,8 +206,138 @@ fn place<'a>(
     Ok(order)
 }
 
-/// Resolves the spec's frames, points and solids.
-pub fn trees(spec: &SpecFile) -> Result<Trees<'_>, TreeError> {
+/// The message refusing a name `n` of a scalar (`what`: parameter, coordinate, alias,
+/// unknown) that is the name of a basis vector (`x0` when frame `0` exists), if it is one: in
+/// a vector expression the name could only be read as the basis vector.
+pub fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
+    let mut c = n.chars();
+    let axis = c.next().filter(|a| matches!(a, 'x' | 'y' | 'z'))?;
+    let frame = c.as_str();
+    let exists = frame == spec.ground || spec.frames.iter().any(|f| f.name == frame);
+    exists.then(|| {
+        format!(
+            "the {what} `{n}` has the name of the basis vector {axis} of frame {frame}: rename it \
+             (a position such as `{n}*{n}` could not tell them apart)"
+        )
+    })
+}
+
+/// A name expressions read, declared at `path`: an identifier, not a word of the syntax, not
+/// a basis vector's name.
+fn readable(spec: &SpecFile, what: &str, path: &str, n: &str) -> Result<(), Refusal> {
+    check_identifier(n).map_err(|m| at(path, m))?;
+    if RESERVED.contains(&n) {
+        return Err(at(
+            path,
+            format!("`{n}` is reserved by the expression syntax"),
+        ));
+    }
+    match basis_vector_clash(spec, what, n) {
+        Some(m) => Err(at(path, m)),
+        None => Ok(()),
+    }
+}
+
+/// Parameters, coordinates and aliases: one namespace.
+fn namespace(spec: &SpecFile) -> Result<Names<'_>, Refusal> {
+    let mut names = Names::default();
+    let mut taken: HashSet<&str> = HashSet::new();
+    for (i, p) in spec.parameters.iter().enumerate() {
+        let path = format!("parameters[{i}].name");
+        readable(spec, "parameter", &path, &p.name)?;
+        if !taken.insert(&p.name) {
+            return Err(at(path, format!("duplicate name `{}`", p.name)));
+        }
+        names.params.insert(&p.name, i);
+    }
+    for (i, c) in spec.coordinates.iter().enumerate() {
+        let path = format!("coordinates[{i}].name");
+        readable(spec, "coordinate", &path, &c.name)?;
+        if !taken.insert(&c.name) {
+            return Err(at(path, format!("duplicate name `{}`", c.name)));
+        }
+        names.coords.insert(&c.name, i);
+    }
+    for (i, a) in spec.aliases.iter().enumerate() {
+        let path = format!("aliases[{i}].name");
+        readable(spec, "alias", &path, &a.name)?;
+        if !taken.insert(&a.name) {
+            return Err(at(
+                path,
+                format!(
+                    "duplicate name `{}`: already a parameter, a coordinate or an alias",
+                    a.name
+                ),
+            ));
+        }
+        names.aliases.insert(&a.name, i);
+    }
+    Ok(names)
+}
+
+/// The basis vectors the spec names (`ground_basis`, a frame's `basis`), each an identifier,
+/// not a word of the syntax, taken by no parameter, coordinate, alias or other basis vector
+/// (`x1` while frame 1 exists).
+fn named_vectors<'a>(
+    spec: &'a SpecFile,
+    names: &Names<'a>,
+    frames: &BTreeMap<&'a str, usize>,
+) -> Result<BTreeMap<&'a str, (usize, usize)>, Refusal> {
+    let declared = std::iter::once(("ground_basis".to_string(), &spec.ground, &spec.ground_basis))
+        .chain(
+            spec.frames
+                .iter()
+                .enumerate()
+                .map(|(i, f)| (format!("frames[{i}].basis"), &f.name, &f.basis)),
+        );
+    let mut vectors = BTreeMap::new();
+    for (path, frame, given) in declared {
+        let Some(given) = given else { continue };
+        for (k, n) in given.iter().enumerate() {
+            let path = format!("{path}[{k}]");
+            check_identifier(n).map_err(|m| at(&path, m))?;
+            if RESERVED.contains(&n.as_str()) {
+                return Err(at(
+                    path,
+                    format!("`{n}` is reserved by the expression syntax"),
+                ));
+            }
+            let taken = names.params.contains_key(n.as_str())
+                || names.coords.contains_key(n.as_str())
+                || names.aliases.contains_key(n.as_str());
+            if taken
+                || vectors
+                    .insert(n.as_str(), (frames[frame.as_str()], k))
+                    .is_some()
+            {
+                return Err(at(
+                    path,
+                    format!(
+                        "`{n}` is already the name of a parameter, a coordinate, an alias or \
+                         another basis vector: rename one of them"
+                    ),
+                ));
+            }
+            let mut c = n.chars();
+            if let Some(axis) = c.next().filter(|a| matches!(a, 'x' | 'y' | 'z'))
+                && frames.contains_key(c.as_str())
+            {
+                return Err(at(
+                    path,
+                    format!(
+                        "`{n}` is already the basis vector {axis} of frame {}",
+                        c.as_str()
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(vectors)
+}
+
+/// Resolves the spec's names, frames, points and solids.
+pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
+    let namespace = namespace(spec)?;
     // Frames.
     check_name(&spec.ground).map_err(|m| at("ground", m))?;
     let mut taken = HashSet::from([spec.ground.as_str()]);
@@ -297,7 +445,12 @@ pub fn trees(spec: &SpecFile) -> Result<Trees<'_>, TreeError> {
             inertia,
         });
     }
-    Ok(Trees {
+    let vectors = named_vectors(spec, &namespace, &frame_by_name)?;
+    Ok(Resolved {
+        names: Names {
+            vectors,
+            ..namespace
+        },
         frames,
         points,
         solids,

@@ -316,51 +316,6 @@ pub(super) fn symmetries_hold(solid: &SolidInfo, nparams: usize) -> Result<(), S
     Ok(())
 }
 
-/// The basis vectors a spec names as its statement does (`ground_basis`, a frame's `basis`):
-/// name → (frame index, axis). Each is an identifier taken by no parameter, coordinate,
-/// alias, reserved word or other basis vector (`x1` while frame 1 exists); else the JSON
-/// path and why.
-pub(super) fn named_vectors(
-    spec: &SpecFile,
-    params: &BTreeMap<String, usize>,
-    coords: &BTreeMap<String, usize>,
-    frames: &BTreeMap<String, usize>,
-) -> Result<BTreeMap<String, (usize, usize)>, (String, String)> {
-    let mut vectors: BTreeMap<String, (usize, usize)> = BTreeMap::new();
-    let given = std::iter::once(("ground_basis".to_string(), &spec.ground, &spec.ground_basis))
-        .chain(
-            spec.frames
-                .iter()
-                .enumerate()
-                .map(|(i, f)| (format!("frames[{i}].basis"), &f.name, &f.basis)),
-        );
-    for (path, frame, names) in given {
-        let Some(names) = names else { continue };
-        let f = frames[frame.as_str()];
-        for (k, n) in names.iter().enumerate() {
-            let path = format!("{path}[{k}]");
-            identifier(n).map_err(|m| (path.clone(), m))?;
-            let mut c = n.chars();
-            let course = c
-                .next()
-                .filter(|a| matches!(a, 'x' | 'y' | 'z'))
-                .is_some_and(|_| frames.contains_key(c.as_str()));
-            if course {
-                return Err((path, format!("`{n}` names a basis vector of another frame")));
-            }
-            if params.contains_key(n)
-                || coords.contains_key(n)
-                || spec.aliases.iter().any(|a| a.name == *n)
-                || ["t", expr::PI_NAME, "sin", "cos", "dot", "ddot", "dddot"].contains(&n.as_str())
-                || vectors.insert(n.clone(), (f, k)).is_some()
-            {
-                return Err((path, format!("`{n}` is already a name of the spec")));
-            }
-        }
-    }
-    Ok(vectors)
-}
-
 /// The degree of `node` in the first derivatives q̇ⱼ of the coordinates `free(j)` allows, or
 /// why it is not a polynomial in them: a q̈, a rate inside sin, cos, or below a division line,
 /// the time, a basis vector or an unknown (what a rate driven by other coordinates may hold:

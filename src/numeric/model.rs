@@ -1,7 +1,7 @@
 //! Building a [`NumericModel`] from a spec: names, frame and point trees, parsed expressions.
 
 use super::checks::{
-    divisors, fixed_in_solid, identifier, linear_angle, rate_degree, symmetric, symmetries_hold,
+    divisors, fixed_in_solid, linear_angle, rate_degree, symmetric, symmetries_hold,
 };
 use super::expr::{self, Kind, Name, Node};
 use super::{
@@ -152,101 +152,30 @@ impl Names<'_> {
     }
 }
 
-fn unique<'a>(
-    what: &str,
-    path: &str,
-    names: impl Iterator<Item = &'a str>,
-    index: &mut BTreeMap<String, usize>,
-) -> Result<(), NumericError> {
-    for (i, n) in names.enumerate() {
-        if crate::quantity::check_name(n).is_err() {
-            return Err(spec_err(
-                format!("{path}[{i}].name"),
-                format!("{what} name `{n}`: only ASCII letters, digits and `_` are allowed"),
-            ));
-        }
-        if index.insert(n.to_string(), i).is_some() {
-            return Err(spec_err(
-                format!("{path}[{i}].name"),
-                format!("{what} `{n}` is defined twice"),
-            ));
-        }
-    }
-    Ok(())
-}
-
 /// Builds the model; every error names the JSON path of the faulty value.
 pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
-    // Parameters and coordinates.
-    let mut param_index = BTreeMap::new();
-    unique(
-        "parameter",
-        "parameters",
-        spec.parameters.iter().map(|p| p.name.as_str()),
-        &mut param_index,
-    )?;
-    let mut coord_index = BTreeMap::new();
-    unique(
-        "coordinate",
-        "coordinates",
-        spec.coordinates.iter().map(|c| c.name.as_str()),
-        &mut coord_index,
-    )?;
-    // A name that expressions read.
-    for (i, p) in spec.parameters.iter().enumerate() {
-        identifier(&p.name).map_err(|m| spec_err(format!("parameters[{i}].name"), m))?;
-    }
-    for (i, c) in spec.coordinates.iter().enumerate() {
-        identifier(&c.name).map_err(|m| spec_err(format!("coordinates[{i}].name"), m))?;
-    }
-    // `pi` is π and `t` the time in every expression, so neither names a parameter or a
-    // coordinate.
-    for (reserved, meaning) in [(expr::PI_NAME, "π"), ("t", "the time")] {
-        for (path, what, i) in [
-            ("parameters", "parameter", param_index.get(reserved)),
-            ("coordinates", "coordinate", coord_index.get(reserved)),
-        ] {
-            if let Some(i) = i {
-                return Err(spec_err(
-                    format!("{path}[{i}].name"),
-                    format!("{what} name `{reserved}`: the name is reserved for {meaning}"),
-                ));
-            }
-        }
-    }
-    for (i, c) in spec.coordinates.iter().enumerate() {
-        if param_index.contains_key(&c.name) {
-            return Err(spec_err(
-                format!("coordinates[{i}].name"),
-                format!("`{}` is both a parameter and a coordinate", c.name),
-            ));
-        }
-    }
+    // Names and trees, resolved once for both sides: parameters, coordinates and aliases in
+    // one namespace, the statement's names of basis vectors, each frame after its parent,
+    // each point after the point it is placed from, every reference found.
+    let trees = crate::resolve::resolve(spec).map_err(|e| spec_err(e.path, e.message))?;
+    let owned = |m: &BTreeMap<&str, usize>| -> BTreeMap<String, usize> {
+        m.iter().map(|(n, i)| (n.to_string(), *i)).collect()
+    };
+    let param_index = owned(&trees.names.params);
+    let coord_index = owned(&trees.names.coords);
+    let vectors: BTreeMap<String, (usize, usize)> = (trees.names.vectors.iter())
+        .map(|(n, v)| (n.to_string(), *v))
+        .collect();
 
     let angle_params: Vec<usize> = (0..spec.parameters.len())
         .filter(|&i| spec.parameters[i].kind == ParameterKind::Angle)
         .collect();
 
-    // Frames and points: the trees resolved once for both sides (each frame after its
-    // parent, each point after the point it is placed from, every reference found).
-    let trees = crate::resolve::trees(spec).map_err(|e| spec_err(e.path, e.message))?;
     let ground = spec.ground.clone();
     let frame_index = trees.frame_positions();
-    // Basis vectors named as the statement writes them.
-    let vectors = super::checks::named_vectors(spec, &param_index, &coord_index, &frame_index)
-        .map_err(|(path, m)| spec_err(path, m))?;
     // Aliases: named expressions of the parameters, each reading those before it.
     let mut aliases: Vec<(String, Node)> = Vec::new();
     for (i, a) in spec.aliases.iter().enumerate() {
-        let path = format!("aliases[{i}].name");
-        identifier(&a.name).map_err(|m| spec_err(&path, m))?;
-        if param_index.contains_key(&a.name)
-            || coord_index.contains_key(&a.name)
-            || aliases.iter().any(|(n, _)| *n == a.name)
-            || [expr::PI_NAME, "t"].contains(&a.name.as_str())
-        {
-            return Err(spec_err(path, format!("duplicate name `{}`", a.name)));
-        }
         let names = Names {
             params: &param_index,
             coords: &coord_index,

@@ -659,7 +659,7 @@ fn pi_in_angles_and_positions() {
     let e = spec_error(r#"{"title": "t", "parameters": [{"name": "L"}, {"name": "pi"}]}"#);
     assert_eq!(
         e.to_string(),
-        "spec, at parameters[1].name: parameter name `pi`: the name is reserved for π"
+        "spec, at parameters[1].name: `pi` is reserved by the expression syntax"
     );
     let e = spec_error(r#"{"title": "t", "coordinates": [{"name": "pi", "kind": "angle"}]}"#);
     assert!(e.to_string().contains("coordinates[0].name"), "{e}");

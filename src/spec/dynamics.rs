@@ -28,7 +28,7 @@ pub(super) fn pfd_names(
     let mut seen: HashSet<String> = HashSet::new();
     let mut add = |path: String, n: String, unknowns: &mut Vec<String>| {
         crate::expr::check_identifier(&n).map_err(|m| at(&path, m))?;
-        if let Some(m) = super::vectors::basis_vector_clash(spec, "unknown", &n) {
+        if let Some(m) = crate::resolve::basis_vector_clash(spec, "unknown", &n) {
             return Err(at(path, m));
         }
         if taken.contains(&n) {

@@ -74,18 +74,15 @@ fn build_with(
     for (path, text) in free_texts(spec) {
         crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
     }
-    // Names: parameters and coordinates share one namespace with the reserved words and
-    // the basis vector names.
-    let mut names: HashSet<String> = HashSet::new();
+    // Names (parameters, coordinates and aliases share one namespace with the reserved words
+    // and the basis vector names) and trees: resolved once for both sides.
+    let resolved = crate::resolve::resolve(spec).map_err(|e| at(e.path, e.message))?;
+    let names: HashSet<String> = (resolved.names.params.keys())
+        .chain(resolved.names.coords.keys())
+        .chain(resolved.names.aliases.keys())
+        .map(|n| n.to_string())
+        .collect();
     for (i, p) in spec.parameters.iter().enumerate() {
-        let path = format!("parameters[{i}].name");
-        crate::expr::check_identifier(&p.name).map_err(|m| at(&path, m))?;
-        if let Some(m) = super::vectors::basis_vector_clash(spec, "parameter", &p.name) {
-            return Err(at(path, m));
-        }
-        if !names.insert(p.name.clone()) {
-            return Err(at(path, format!("duplicate name `{}`", p.name)));
-        }
         if let Some(u) = &p.unit {
             let path = format!("parameters[{i}].unit");
             let d = crate::units::Dimension::parse(u).map_err(|e| at(&path, e.to_string()))?;
@@ -98,32 +95,6 @@ fn build_with(
                     ),
                 ));
             }
-        }
-    }
-    for (i, c) in spec.coordinates.iter().enumerate() {
-        let path = format!("coordinates[{i}].name");
-        crate::expr::check_identifier(&c.name).map_err(|m| at(&path, m))?;
-        if let Some(m) = super::vectors::basis_vector_clash(spec, "coordinate", &c.name) {
-            return Err(at(path, m));
-        }
-        if !names.insert(c.name.clone()) {
-            return Err(at(path, format!("duplicate name `{}`", c.name)));
-        }
-    }
-    for (i, a) in spec.aliases.iter().enumerate() {
-        let path = format!("aliases[{i}].name");
-        crate::expr::check_identifier(&a.name).map_err(|m| at(&path, m))?;
-        if let Some(m) = super::vectors::basis_vector_clash(spec, "alias", &a.name) {
-            return Err(at(path, m));
-        }
-        if !names.insert(a.name.clone()) {
-            return Err(at(
-                path,
-                format!(
-                    "duplicate name `{}`: already a parameter, a coordinate or an alias",
-                    a.name
-                ),
-            ));
         }
     }
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
@@ -194,9 +165,9 @@ fn build_with(
         .build()
         .map_err(|e| super::texts::registry_error(spec, &builder, &aliases, e))?;
 
-    // Frames, each after its parent (the spec may list them in any order): the trees are
-    // resolved once for both sides; positions are the arena's ids.
-    let trees = crate::resolve::trees(spec).map_err(|e| at(e.path, e.message))?;
+    // Frames, each after its parent (the spec may list them in any order); the resolved
+    // positions are the arena's ids.
+    let trees = &resolved;
     let mut frames = Frames::new(reg.clone(), &spec.ground);
     for node in &trees.frames[1..] {
         let i = node.spec.expect("a frame of the spec");
@@ -222,7 +193,7 @@ fn build_with(
         frames.add(node.name, FrameId(node.parent), rotation);
     }
     // Basis vectors named as the statement does ((u, v, w), (i, j, k)).
-    super::vectors::name_vectors(spec, &mut frames, &names)?;
+    super::vectors::name_vectors(spec, &mut frames, &resolved.names.vectors);
     let bv = |s: &str| frames.basis_vector(s).map(|(f, a)| (f, a.index()));
 
     // Points, each after the point it is placed from.

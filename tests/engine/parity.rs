@@ -438,11 +438,12 @@ fn both_sides_read_a_driven_rate_alike() {
     }
 }
 
-/// The trees (frames, points, solids) are resolved once for both sides (`torseur::resolve`):
-/// a structural error is reported at the same path in the same words by each, and a tree
-/// given in any order is accepted by both.
+/// The names and trees (parameters, coordinates, aliases, named basis vectors, frames,
+/// points, solids) are resolved once for both sides (`torseur::resolve`): an error there is
+/// reported at the same path in the same words by each, and a tree given in any order is
+/// accepted by both.
 #[test]
-fn both_sides_report_the_trees_errors_alike() {
+fn both_sides_report_the_names_and_trees_errors_alike() {
     let spec = |frames: Value, points: Value, solids: Value| -> Value {
         serde_json::json!({
             "title": "trees",
@@ -520,7 +521,39 @@ fn both_sides_report_the_trees_errors_alike() {
             "solids[0].name: duplicate solid `0`",
         ),
     ];
-    for (s, expected) in cases {
+    let named = |params: Value, basis: Value| -> Value {
+        serde_json::json!({
+            "title": "names",
+            "parameters": params,
+            "coordinates": [{"name": "q", "kind": "angle"}],
+            "aliases": [{"name": "M", "value": "2*m"}],
+            "ground_basis": basis
+        })
+    };
+    let m = serde_json::json!({"name": "m"});
+    let names = [
+        (
+            named(serde_json::json!([m, {"name": "sin"}]), Value::Null),
+            "parameters[1].name: `sin` is reserved by the expression syntax",
+        ),
+        (
+            named(serde_json::json!([m, {"name": "x0"}]), Value::Null),
+            "parameters[1].name: the parameter `x0` has the name of the basis vector x of frame 0",
+        ),
+        (
+            named(serde_json::json!([m, {"name": "q"}]), Value::Null),
+            "coordinates[0].name: duplicate name `q`",
+        ),
+        (
+            named(serde_json::json!([m]), serde_json::json!(["i", "M", "k"])),
+            "ground_basis[1]: `M` is already the name of a parameter",
+        ),
+        (
+            named(serde_json::json!([m]), serde_json::json!(["i", "j", "y0"])),
+            "ground_basis[2]: `y0` is already the basis vector y of frame 0",
+        ),
+    ];
+    for (s, expected) in cases.into_iter().chain(names) {
         let (exact, float) = verdicts(&s).expect("a spec's shape");
         for (side, v) in [("exact", exact), ("float", float)] {
             let e = v.expect_err(expected);
