@@ -101,6 +101,8 @@ pub struct Resolved<'a> {
     pub points: Vec<PointNode<'a>>,
     /// The solids, in the spec's order.
     pub solids: Vec<SolidNode<'a>>,
+    /// The sets of solids (`sets`): name → the positions of its solids, as listed.
+    pub sets: BTreeMap<&'a str, Vec<usize>>,
     frame_by_name: BTreeMap<&'a str, usize>,
     point_by_name: BTreeMap<&'a str, usize>,
 }
@@ -335,7 +337,41 @@ fn named_vectors<'a>(
     Ok(vectors)
 }
 
-/// Resolves the spec's names, frames, points and solids.
+/// The sets of solids: each named apart from the solids, listing at least one solid, each once.
+fn sets<'a>(
+    spec: &'a SpecFile,
+    solids: &[SolidNode<'a>],
+) -> Result<BTreeMap<&'a str, Vec<usize>>, Refusal> {
+    let mut sets = BTreeMap::new();
+    for (name, members) in &spec.sets {
+        let path = format!("sets.{name}");
+        check_name(name).map_err(|m| at(&path, m))?;
+        if solids.iter().any(|s| s.name == name) {
+            return Err(at(path, format!("`{name}` is already a solid")));
+        }
+        let mut list = Vec::new();
+        for (k, m) in members.iter().enumerate() {
+            let s = solids
+                .iter()
+                .position(|s| s.name == m)
+                .ok_or_else(|| at(format!("{path}[{k}]"), format!("unknown solid `{m}`")))?;
+            if list.contains(&s) {
+                return Err(at(
+                    format!("{path}[{k}]"),
+                    format!("solid `{m}` listed twice"),
+                ));
+            }
+            list.push(s);
+        }
+        if list.is_empty() {
+            return Err(at(path, "a set holds at least one solid"));
+        }
+        sets.insert(name.as_str(), list);
+    }
+    Ok(sets)
+}
+
+/// Resolves the spec's names, frames, points, solids and sets.
 pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let namespace = namespace(spec)?;
     // Frames.
@@ -446,6 +482,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         });
     }
     let vectors = named_vectors(spec, &namespace, &frame_by_name)?;
+    let sets = sets(spec, &solids)?;
     Ok(Resolved {
         names: Names {
             vectors,
@@ -454,6 +491,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         frames,
         points,
         solids,
+        sets,
         frame_by_name,
         point_by_name,
     })

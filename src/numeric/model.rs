@@ -369,40 +369,10 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         });
     }
 
-    // Sets.
-    let mut sets = BTreeMap::new();
-    for (name, members) in &spec.sets {
-        let path = format!("sets.{name}");
-        if crate::quantity::check_name(name).is_err() {
-            return Err(spec_err(
-                path,
-                format!("set name `{name}` is not a valid name"),
-            ));
-        }
-        if solid_index.contains_key(name) {
-            return Err(spec_err(
-                path,
-                format!("`{name}` is both a set and a solid"),
-            ));
-        }
-        if members.is_empty() {
-            return Err(spec_err(path, "a set holds at least one solid"));
-        }
-        let mut list = Vec::new();
-        for (k, m) in members.iter().enumerate() {
-            let s = *solid_index
-                .get(m)
-                .ok_or_else(|| spec_err(format!("{path}[{k}]"), format!("unknown solid `{m}`")))?;
-            if list.contains(&s) {
-                return Err(spec_err(
-                    format!("{path}[{k}]"),
-                    format!("solid `{m}` listed twice"),
-                ));
-            }
-            list.push(s);
-        }
-        sets.insert(name.clone(), list);
-    }
+    // Sets, as resolved.
+    let sets = (trees.sets.iter())
+        .map(|(n, list)| (n.to_string(), list.clone()))
+        .collect();
 
     // Hypotheses.
     let mut hypotheses = BTreeMap::new();

@@ -11,7 +11,7 @@ use crate::point::{PointId, Points};
 use crate::quantity::{Quantity, check_name};
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
-use std::collections::{BTreeMap, HashSet};
+use std::collections::HashSet;
 
 pub(super) fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
     SpecError::Invalid {
@@ -313,32 +313,9 @@ fn build_with(
         });
     }
 
-    let mut sets = BTreeMap::new();
-    for (name, members) in &spec.sets {
-        let path = format!("sets.{name}");
-        name_ok(&path, name)?;
-        if bodies.iter().any(|b| &b.name == name) {
-            return Err(at(path, format!("`{name}` is already a solid")));
-        }
-        let mut ids = Vec::new();
-        for (k, m) in members.iter().enumerate() {
-            let id = bodies
-                .iter()
-                .position(|b| &b.name == m)
-                .ok_or_else(|| at(format!("{path}[{k}]"), format!("unknown solid `{m}`")))?;
-            if ids.contains(&BodyId(id)) {
-                return Err(at(
-                    format!("{path}[{k}]"),
-                    format!("solid `{m}` listed twice"),
-                ));
-            }
-            ids.push(BodyId(id));
-        }
-        if ids.is_empty() {
-            return Err(at(path, "a set holds at least one solid"));
-        }
-        sets.insert(name.clone(), ids);
-    }
+    let sets = (resolved.sets.iter())
+        .map(|(n, ids)| (n.to_string(), ids.iter().map(|&i| BodyId(i)).collect()))
+        .collect();
 
     let mut hypotheses = Vec::new();
     for (i, h) in spec.hypotheses.iter().enumerate() {
