@@ -240,41 +240,39 @@ fn readable(spec: &SpecFile, what: &str, path: &str, n: &str) -> Result<(), Refu
     }
 }
 
+/// Names declared in `{list}[i].name` (`what`: parameter, coordinate, alias), readable and
+/// not `taken` yet (`also` completes the message of a duplicate): name → index.
+fn declare<'a>(
+    spec: &SpecFile,
+    taken: &mut HashSet<&'a str>,
+    (what, list, also): (&str, &str, &str),
+    names: impl Iterator<Item = &'a str>,
+) -> Result<BTreeMap<&'a str, usize>, Refusal> {
+    let mut index = BTreeMap::new();
+    for (i, n) in names.enumerate() {
+        let path = format!("{list}[{i}].name");
+        readable(spec, what, &path, n)?;
+        if !taken.insert(n) {
+            return Err(at(path, format!("duplicate name `{n}`{also}")));
+        }
+        index.insert(n, i);
+    }
+    Ok(index)
+}
+
 /// Parameters, coordinates and aliases: one namespace.
 fn namespace(spec: &SpecFile) -> Result<Names<'_>, Refusal> {
-    let mut names = Names::default();
-    let mut taken: HashSet<&str> = HashSet::new();
-    for (i, p) in spec.parameters.iter().enumerate() {
-        let path = format!("parameters[{i}].name");
-        readable(spec, "parameter", &path, &p.name)?;
-        if !taken.insert(&p.name) {
-            return Err(at(path, format!("duplicate name `{}`", p.name)));
-        }
-        names.params.insert(&p.name, i);
-    }
-    for (i, c) in spec.coordinates.iter().enumerate() {
-        let path = format!("coordinates[{i}].name");
-        readable(spec, "coordinate", &path, &c.name)?;
-        if !taken.insert(&c.name) {
-            return Err(at(path, format!("duplicate name `{}`", c.name)));
-        }
-        names.coords.insert(&c.name, i);
-    }
-    for (i, a) in spec.aliases.iter().enumerate() {
-        let path = format!("aliases[{i}].name");
-        readable(spec, "alias", &path, &a.name)?;
-        if !taken.insert(&a.name) {
-            return Err(at(
-                path,
-                format!(
-                    "duplicate name `{}`: already a parameter, a coordinate or an alias",
-                    a.name
-                ),
-            ));
-        }
-        names.aliases.insert(&a.name, i);
-    }
-    Ok(names)
+    let mut taken = HashSet::new();
+    let params = spec.parameters.iter().map(|p| p.name.as_str());
+    let coords = spec.coordinates.iter().map(|c| c.name.as_str());
+    let aliases = spec.aliases.iter().map(|a| a.name.as_str());
+    let also = ": already a parameter, a coordinate or an alias";
+    Ok(Names {
+        params: declare(spec, &mut taken, ("parameter", "parameters", ""), params)?,
+        coords: declare(spec, &mut taken, ("coordinate", "coordinates", ""), coords)?,
+        aliases: declare(spec, &mut taken, ("alias", "aliases", also), aliases)?,
+        vectors: BTreeMap::new(),
+    })
 }
 
 /// The basis vectors the spec names (`ground_basis`, a frame's `basis`), each an identifier,
