@@ -9,9 +9,11 @@ use crate::inertia::{Inertia, Symmetry};
 use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
 use crate::point::{PointId, Points};
 use crate::quantity::{Quantity, check_name};
+use crate::resolve::Resolved;
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
 use std::collections::HashSet;
+use std::rc::Rc;
 
 pub(super) fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
     SpecError::Invalid {
@@ -82,6 +84,81 @@ fn build_with(
         .chain(resolved.names.aliases.keys())
         .map(|n| n.to_string())
         .collect();
+    units(spec)?;
+    let reg = registry(spec, &names, solved)?;
+
+    let frames = frames(spec, &reg, &resolved)?;
+    let points = points(spec, &reg, &frames, &resolved)?;
+    let frame_origins = resolved.frames.iter().map(|f| PointId(f.origin)).collect();
+
+    let bodies = bodies(spec, &reg, &frames, &resolved)?;
+
+    let sets = (resolved.sets.iter())
+        .map(|(n, ids)| (n.to_string(), ids.iter().map(|&i| BodyId(i)).collect()))
+        .collect();
+
+    let hypotheses = hypotheses(spec, &reg, &bodies)?;
+
+    let default_basis = match &spec.default_basis {
+        None => frames.ground(),
+        Some(b) => frames
+            .find(b)
+            .ok_or_else(|| at("default_basis", format!("unknown frame `{b}`")))?,
+    };
+    let mut quantities = Vec::new();
+    for (i, q) in spec.quantities.iter().enumerate() {
+        quantities
+            .push(Quantity::parse(q).map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?);
+    }
+
+    questions(spec, &hypotheses)?;
+
+    let mut m = Mechanism {
+        title: spec.title.clone(),
+        description: spec.description.clone(),
+        reg,
+        frames,
+        frame_origins,
+        points,
+        bodies,
+        sets,
+        hypotheses,
+        default_basis,
+        quantities,
+        dynamics: Default::default(),
+        spec: written.clone(),
+        loop_law: solved.map(|s| crate::mechanism::LoopLaw {
+            derivatives: s.derivatives.clone(),
+            determinant: s.determinant.clone(),
+            rolling: s.rolling.clone(),
+        }),
+    };
+    m.dynamics = super::dynamics::build(&m, spec)?;
+    // Each requested quantity must refer to known objects.
+    for (i, q) in m.quantities.iter().enumerate() {
+        crate::derivation::resolve(&m, q)
+            .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
+    }
+    for (i, qs) in m.spec.questions.iter().enumerate() {
+        let texts = qs
+            .quantities
+            .iter()
+            .map(|q| (format!("questions[{i}].quantities"), q))
+            .chain(
+                qs.equations
+                    .iter()
+                    .map(|e| (format!("questions[{i}].equations"), &e.quantity)),
+            );
+        for (path, q) in texts {
+            let parsed = Quantity::parse(q).map_err(|e| at(&path, e.to_string()))?;
+            crate::derivation::resolve(&m, &parsed).map_err(|e| at(&path, e.to_string()))?;
+        }
+    }
+    Ok(m)
+}
+
+/// The parameters' units: each a dimension, rad for an angle.
+fn units(spec: &SpecFile) -> Result<(), SpecError> {
     for (i, p) in spec.parameters.iter().enumerate() {
         if let Some(u) = &p.unit {
             let path = format!("parameters[{i}].unit");
@@ -97,6 +174,17 @@ fn build_with(
             }
         }
     }
+    Ok(())
+}
+
+/// The registry of the spec's variables: its parameters, coordinates (with their rates),
+/// the PFD's unknowns, the angles written as themselves, the phases Ω t, the divisors and,
+/// from the loop closures, the reciprocals of cos φ.
+fn registry(
+    spec: &SpecFile,
+    names: &HashSet<String>,
+    solved: Option<&super::closures::Solved>,
+) -> Result<Rc<Registry>, SpecError> {
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
     let angle_params: Vec<String> = spec
         .parameters
@@ -104,7 +192,7 @@ fn build_with(
         .filter(|p| p.kind == ParameterKind::Angle)
         .map(|p| p.name.clone())
         .collect();
-    let (unknowns, mut raw_angles) = super::dynamics::pfd_names(spec, &names)?;
+    let (unknowns, mut raw_angles) = super::dynamics::pfd_names(spec, names)?;
     // An angle coordinate written as itself (a disc's centre at R*theta*x1) gets a variable
     // of its own besides cos and sin.
     for (_, text) in expression_texts(spec) {
@@ -159,17 +247,20 @@ fn build_with(
         .iter()
         .map(|a| (a.name.clone(), a.value.clone()))
         .collect();
-    let reg = builder
+    builder
         .clone()
         .aliases(&aliases)
         .build()
-        .map_err(|e| super::texts::registry_error(spec, &builder, &aliases, e))?;
+        .map_err(|e| super::texts::registry_error(spec, &builder, &aliases, e))
+}
 
+/// The frames, each after its parent (the spec may list them in any order; the resolved
+/// positions are the arena's ids), and the names the statement gives their basis vectors.
+fn frames(spec: &SpecFile, reg: &Rc<Registry>, resolved: &Resolved) -> Result<Frames, SpecError> {
     // Frames, each after its parent (the spec may list them in any order); the resolved
     // positions are the arena's ids.
-    let trees = &resolved;
     let mut frames = Frames::new(reg.clone(), &spec.ground);
-    for node in &trees.frames[1..] {
+    for node in &resolved.frames[1..] {
         let i = node.spec.expect("a frame of the spec");
         let rotation = match &spec.frames[i].rotation {
             None => None,
@@ -185,7 +276,7 @@ fn build_with(
                         format!("axis `{}` is not x, y, z, -x, -y or -z", r.axis),
                     )
                 })?;
-                let angle = rotation_angle(&reg, &r.angle, sign)
+                let angle = rotation_angle(reg, &r.angle, sign)
                     .map_err(|m| at(format!("{path}.angle"), m))?;
                 Some(Rotation { axis, angle })
             }
@@ -194,11 +285,21 @@ fn build_with(
     }
     // Basis vectors named as the statement does ((u, v, w), (i, j, k)).
     super::vectors::name_vectors(spec, &mut frames, &resolved.names.vectors);
+    Ok(frames)
+}
+
+/// The points, each after the point it is placed from.
+fn points(
+    spec: &SpecFile,
+    reg: &Rc<Registry>,
+    frames: &Frames,
+    resolved: &Resolved,
+) -> Result<Points, SpecError> {
     let bv = |s: &str| frames.basis_vector(s).map(|(f, a)| (f, a.index()));
 
     // Points, each after the point it is placed from.
-    let mut points = Points::new(trees.points[0].name);
-    for node in &trees.points[1..] {
+    let mut points = Points::new(resolved.points[0].name);
+    for node in &resolved.points[1..] {
         let i = node.spec.expect("a point of the spec");
         let path = format!("points[{i}].position");
         let parts = reg
@@ -214,11 +315,20 @@ fn build_with(
         }
         points.add(node.name, PointId(node.from), v);
     }
-    let frame_origins = trees.frames.iter().map(|f| PointId(f.origin)).collect();
+    Ok(points)
+}
 
+/// The solids: mass, centre, inertia operator and symmetries, named and referenced as
+/// resolved.
+fn bodies(
+    spec: &SpecFile,
+    reg: &Rc<Registry>,
+    frames: &Frames,
+    resolved: &Resolved,
+) -> Result<Vec<Body>, SpecError> {
     // Solids: named and referenced in the trees.
     let mut bodies = Vec::new();
-    for ((i, s), node) in spec.solids.iter().enumerate().zip(&trees.solids) {
+    for ((i, s), node) in spec.solids.iter().enumerate().zip(&resolved.solids) {
         let path = format!("solids[{i}]");
         let frame = FrameId(node.frame);
         let mass = reg
@@ -233,50 +343,13 @@ fn build_with(
         }
         let centre = PointId(node.centre);
         let inertia = match (&s.inertia, node.inertia) {
-            (Some(spec_i), Some((point, basis))) => {
-                let ip = format!("{path}.inertia");
-                let (point, basis) = (PointId(point), FrameId(basis));
-                let mut m: Vec<Vec<crate::expr::Expr>> = Vec::new();
-                for (r, row) in spec_i.matrix.iter().enumerate() {
-                    let mut out = Vec::new();
-                    for (c, cell) in row.iter().enumerate() {
-                        let e = reg
-                            .parse(cell)
-                            .map_err(|e| expr_err(&format!("{ip}.matrix[{r}][{c}]"), e))
-                            .and_then(|e| bounded(&format!("{ip}.matrix[{r}][{c}]"), e))?;
-                        if !e.is_time_independent() {
-                            return Err(at(
-                                format!("{ip}.matrix[{r}][{c}]"),
-                                "an inertia entry is constant in the solid's basis",
-                            ));
-                        }
-                        out.push(e);
-                    }
-                    m.push(out);
-                }
-                for r in 0..3 {
-                    for c in r + 1..3 {
-                        if m[r][c] != m[c][r] {
-                            return Err(at(
-                                format!("{ip}.matrix[{c}][{r}]"),
-                                format!(
-                                    "the inertia matrix is not symmetric: entry [{r}][{c}] is \
-                                     `{}` but entry [{c}][{r}] is `{}`",
-                                    m[r][c], m[c][r]
-                                ),
-                            ));
-                        }
-                    }
-                }
-                invariant_in_solid(&frames, frame, basis, &m)
-                    .map_err(|msg| at(format!("{ip}.basis"), msg))?;
-                let matrix = std::array::from_fn(|r| std::array::from_fn(|c| m[r][c].clone()));
-                Some(Inertia {
-                    point,
-                    basis,
-                    matrix,
-                })
-            }
+            (Some(given), Some((point, basis))) => Some(inertia(
+                reg,
+                frames,
+                (frame, PointId(point), FrameId(basis)),
+                given,
+                &format!("{path}.inertia"),
+            )?),
             _ => None,
         };
         let mut symmetries = Vec::new();
@@ -313,10 +386,66 @@ fn build_with(
         });
     }
 
-    let sets = (resolved.sets.iter())
-        .map(|(n, ids)| (n.to_string(), ids.iter().map(|&i| BodyId(i)).collect()))
-        .collect();
+    Ok(bodies)
+}
 
+/// A solid's inertia operator at `point` in `basis` (`frame` the solid's): constant
+/// entries, a symmetric matrix, a basis in which the operator does not turn.
+fn inertia(
+    reg: &Rc<Registry>,
+    frames: &Frames,
+    (frame, point, basis): (FrameId, PointId, FrameId),
+    given: &crate::wire::InertiaSpec,
+    ip: &str,
+) -> Result<Inertia, SpecError> {
+    let mut m: Vec<Vec<crate::expr::Expr>> = Vec::new();
+    for (r, row) in given.matrix.iter().enumerate() {
+        let mut out = Vec::new();
+        for (c, cell) in row.iter().enumerate() {
+            let e = reg
+                .parse(cell)
+                .map_err(|e| expr_err(&format!("{ip}.matrix[{r}][{c}]"), e))
+                .and_then(|e| bounded(&format!("{ip}.matrix[{r}][{c}]"), e))?;
+            if !e.is_time_independent() {
+                return Err(at(
+                    format!("{ip}.matrix[{r}][{c}]"),
+                    "an inertia entry is constant in the solid's basis",
+                ));
+            }
+            out.push(e);
+        }
+        m.push(out);
+    }
+    for r in 0..3 {
+        for c in r + 1..3 {
+            if m[r][c] != m[c][r] {
+                return Err(at(
+                    format!("{ip}.matrix[{c}][{r}]"),
+                    format!(
+                        "the inertia matrix is not symmetric: entry [{r}][{c}] is \
+                             `{}` but entry [{c}][{r}] is `{}`",
+                        m[r][c], m[c][r]
+                    ),
+                ));
+            }
+        }
+    }
+    invariant_in_solid(frames, frame, basis, &m).map_err(|msg| at(format!("{ip}.basis"), msg))?;
+    let matrix = std::array::from_fn(|r| std::array::from_fn(|c| m[r][c].clone()));
+    Ok(Inertia {
+        point,
+        basis,
+        matrix,
+    })
+}
+
+/// The hypotheses: each as substitutions (constant rates, the symmetries of the solids it
+/// names, motions, small parameters) and the effects the answer key states.
+fn hypotheses(
+    spec: &SpecFile,
+    reg: &Rc<Registry>,
+    bodies: &[Body],
+) -> Result<Vec<Hypothesis>, SpecError> {
     let mut hypotheses = Vec::new();
     for (i, h) in spec.hypotheses.iter().enumerate() {
         let path = format!("hypotheses[{i}]");
@@ -357,59 +486,11 @@ fn build_with(
                 .iter()
                 .find(|b| &b.name == sname)
                 .ok_or_else(|| at(&sp, format!("unknown solid `{sname}`")))?;
-            let Some(ine) = &b.inertia else { continue };
-            for sym in &b.symmetries {
-                for (r, c) in sym.zero_entries() {
-                    let e = &ine.matrix[r][c];
-                    if e.is_zero() {
-                        continue;
-                    }
-                    let v = e.single_variable().or_else(|| (-e).single_variable()).ok_or_else(|| {
-                        at(
-                            &sp,
-                            format!(
-                                "the symmetries of solid {sname} make entry [{r}][{c}] zero, but \
-                                 it is `{e}`, which is not a single parameter"
-                            ),
-                        )
-                    })?;
-                    if !subs.iter().any(|(x, _)| *x == v) {
-                        subs.push((v, reg.zero()));
-                        effects.push(format!("{} = 0", e.to_string().trim_start_matches('-')));
-                    }
-                }
-                if let Some((a, bb)) = sym.equal_moments() {
-                    // Through the substitutions already made: two axes of revolution (a
-                    // sphere-like solid) chain B = A then C = B into C = A.
-                    let resolve = |e: &crate::expr::Expr| {
-                        subs.iter()
-                            .fold(e.clone(), |acc, (x, val)| acc.substitute(*x, val))
-                    };
-                    let (ea, eb) = (resolve(&ine.matrix[a][a]), resolve(&ine.matrix[bb][bb]));
-                    let (ea, eb) = (&ea, &eb);
-                    if ea != eb {
-                        let v = eb.single_variable().ok_or_else(|| {
-                            at(
-                                &sp,
-                                format!(
-                                    "the axis of revolution of solid {sname} makes entries \
-                                     [{a}][{a}] and [{bb}][{bb}] equal, but `{eb}` is not a \
-                                     single parameter"
-                                ),
-                            )
-                        })?;
-                        for (_, val) in subs.iter_mut() {
-                            *val = val.substitute(v, ea);
-                        }
-                        subs.push((v, ea.clone()));
-                        effects.push(format!("{eb} = {ea}"));
-                    }
-                }
-            }
+            symmetric_solid(reg, b, &sp, &mut subs, &mut effects)?;
         }
-        super::hypotheses::motions(&reg, h, &path, &mut subs, &mut effects)?;
-        let first_order = super::hypotheses::small_parameters(&reg, h, &path)?;
-        let subs = super::hypotheses::with_inverses(&reg, subs, &first_order, &path)?;
+        super::hypotheses::motions(reg, h, &path, &mut subs, &mut effects)?;
+        let first_order = super::hypotheses::small_parameters(reg, h, &path)?;
+        let subs = super::hypotheses::with_inverses(reg, subs, &first_order, &path)?;
         hypotheses.push(Hypothesis {
             name: h.name.clone(),
             text: h.text.clone(),
@@ -419,18 +500,79 @@ fn build_with(
         });
     }
 
-    let default_basis = match &spec.default_basis {
-        None => frames.ground(),
-        Some(b) => frames
-            .find(b)
-            .ok_or_else(|| at("default_basis", format!("unknown frame `{b}`")))?,
-    };
-    let mut quantities = Vec::new();
-    for (i, q) in spec.quantities.iter().enumerate() {
-        quantities
-            .push(Quantity::parse(q).map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?);
-    }
+    Ok(hypotheses)
+}
 
+/// The substitutions a solid's symmetries make (`sp`: the hypothesis' path to it): entries
+/// of its inertia matrix zero, moments equal about an axis of revolution.
+fn symmetric_solid(
+    reg: &Rc<Registry>,
+    b: &Body,
+    sp: &str,
+    subs: &mut Vec<(crate::expr::VarId, crate::expr::Expr)>,
+    effects: &mut Vec<String>,
+) -> Result<(), SpecError> {
+    let sname = &b.name;
+    let Some(ine) = &b.inertia else {
+        return Ok(());
+    };
+    for sym in &b.symmetries {
+        for (r, c) in sym.zero_entries() {
+            let e = &ine.matrix[r][c];
+            if e.is_zero() {
+                continue;
+            }
+            let v = e
+                .single_variable()
+                .or_else(|| (-e).single_variable())
+                .ok_or_else(|| {
+                    at(
+                        sp,
+                        format!(
+                            "the symmetries of solid {sname} make entry [{r}][{c}] zero, but \
+                         it is `{e}`, which is not a single parameter"
+                        ),
+                    )
+                })?;
+            if !subs.iter().any(|(x, _)| *x == v) {
+                subs.push((v, reg.zero()));
+                effects.push(format!("{} = 0", e.to_string().trim_start_matches('-')));
+            }
+        }
+        if let Some((a, bb)) = sym.equal_moments() {
+            // Through the substitutions already made: two axes of revolution (a
+            // sphere-like solid) chain B = A then C = B into C = A.
+            let resolve = |e: &crate::expr::Expr| {
+                subs.iter()
+                    .fold(e.clone(), |acc, (x, val)| acc.substitute(*x, val))
+            };
+            let (ea, eb) = (resolve(&ine.matrix[a][a]), resolve(&ine.matrix[bb][bb]));
+            let (ea, eb) = (&ea, &eb);
+            if ea != eb {
+                let v = eb.single_variable().ok_or_else(|| {
+                    at(
+                        sp,
+                        format!(
+                            "the axis of revolution of solid {sname} makes entries \
+                             [{a}][{a}] and [{bb}][{bb}] equal, but `{eb}` is not a \
+                             single parameter"
+                        ),
+                    )
+                })?;
+                for (_, val) in subs.iter_mut() {
+                    *val = val.substitute(v, ea);
+                }
+                subs.push((v, ea.clone()));
+                effects.push(format!("{eb} = {ea}"));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The questions: their hypotheses known, their quantities and equations readable (their
+/// text is escaped when printed; the quantities are resolved once the mechanism is built).
+fn questions(spec: &SpecFile, hypotheses: &[Hypothesis]) -> Result<(), SpecError> {
     // Questions: names and quantities must resolve (their text is escaped when printed).
     for (i, qs) in spec.questions.iter().enumerate() {
         let path = format!("questions[{i}]");
@@ -460,54 +602,13 @@ fn build_with(
         }
     }
 
-    let mut m = Mechanism {
-        title: spec.title.clone(),
-        description: spec.description.clone(),
-        reg,
-        frames,
-        frame_origins,
-        points,
-        bodies,
-        sets,
-        hypotheses,
-        default_basis,
-        quantities,
-        dynamics: Default::default(),
-        spec: written.clone(),
-        loop_law: solved.map(|s| crate::mechanism::LoopLaw {
-            derivatives: s.derivatives.clone(),
-            determinant: s.determinant.clone(),
-            rolling: s.rolling.clone(),
-        }),
-    };
-    m.dynamics = super::dynamics::build(&m, spec)?;
-    // Each requested quantity must refer to known objects.
-    for (i, q) in m.quantities.iter().enumerate() {
-        crate::derivation::resolve(&m, q)
-            .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
-    }
-    for (i, qs) in m.spec.questions.iter().enumerate() {
-        let texts = qs
-            .quantities
-            .iter()
-            .map(|q| (format!("questions[{i}].quantities"), q))
-            .chain(
-                qs.equations
-                    .iter()
-                    .map(|e| (format!("questions[{i}].equations"), &e.quantity)),
-            );
-        for (path, q) in texts {
-            let parsed = Quantity::parse(q).map_err(|e| at(&path, e.to_string()))?;
-            crate::derivation::resolve(&m, &parsed).map_err(|e| at(&path, e.to_string()))?;
-        }
-    }
-    Ok(m)
+    Ok(())
 }
 
 /// The angle of a rotation, `±q + c` (one time coordinate, with coefficient ±1, plus
 /// constants: multiples of π/2 and angle parameters), turned the other way when the axis is
 /// negative (`sign` −1).
-fn rotation_angle(reg: &std::rc::Rc<Registry>, text: &str, sign: i32) -> Result<Angle, String> {
+fn rotation_angle(reg: &Rc<Registry>, text: &str, sign: i32) -> Result<Angle, String> {
     let a = reg.parse_angle(text).map_err(|e| match e {
         ExprError::UnknownName { name, .. } => format!(
             "unknown name `{name}` in the angle `{text}` (declare it as an angle coordinate, or \
