@@ -8,6 +8,7 @@ use super::{
     CoordInfo, FrameInfo, Hypothesis, InertiaInfo, NumericError, NumericModel, ParamInfo,
     PointInfo, SolidInfo, Symmetry,
 };
+use crate::resolve::Resolved;
 use crate::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
 use std::collections::BTreeMap;
 
@@ -171,23 +172,8 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         .filter(|&i| spec.parameters[i].kind == ParameterKind::Angle)
         .collect();
 
-    let ground = spec.ground.clone();
     let frame_index = trees.frame_positions();
-    // Aliases: named expressions of the parameters, each reading those before it.
-    let mut aliases: Vec<(String, Node)> = Vec::new();
-    for (i, a) in spec.aliases.iter().enumerate() {
-        let names = Names {
-            params: &param_index,
-            coords: &coord_index,
-            frames: &frame_index,
-            aliases: &aliases,
-            vectors: &vectors,
-        };
-        let v = names
-            .parse(&a.value, Context::Constant)
-            .map_err(|m| spec_err(format!("aliases[{i}].value"), m))?;
-        aliases.push((a.name.clone(), v));
-    }
+    let aliases = aliases(spec, &param_index, &coord_index, &frame_index, &vectors)?;
     let names = Names {
         params: &param_index,
         coords: &coord_index,
@@ -196,8 +182,79 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         vectors: &vectors,
     };
 
-    let coords = spec
-        .coordinates
+    let coords = coordinates(spec, &names)?;
+
+    let point_index = trees.point_positions();
+    let points = points(spec, &names, &trees)?;
+    let frames = frames(spec, &names, &trees, &angle_params)?;
+
+    // Solids: named and referenced in the trees.
+    let solid_index: BTreeMap<String, usize> = trees
+        .solids
+        .iter()
+        .enumerate()
+        .map(|(i, s)| (s.name.to_string(), i))
+        .collect();
+    let solids = solids(spec, &names, &trees, &frames)?;
+
+    // Sets, as resolved.
+    let sets = (trees.sets.iter())
+        .map(|(n, list)| (n.to_string(), list.clone()))
+        .collect();
+
+    let hypotheses = hypotheses(spec, &names, &solids, &coords, &solid_index)?;
+    let params = parameters(spec, &solids);
+
+    Ok(NumericModel {
+        params,
+        aliases,
+        vectors,
+        uses_time: false,
+        coords,
+        frames,
+        points,
+        solids,
+        sets,
+        hypotheses,
+        param_index,
+        coord_index,
+        frame_index,
+        point_index,
+        solid_index,
+        dynamics: Default::default(),
+        closures: Vec::new(),
+        rolling: Vec::new(),
+    })
+}
+
+/// The aliases: named expressions of the parameters, each reading those before it.
+fn aliases(
+    spec: &SpecFile,
+    param_index: &BTreeMap<String, usize>,
+    coord_index: &BTreeMap<String, usize>,
+    frame_index: &BTreeMap<String, usize>,
+    vectors: &BTreeMap<String, (usize, usize)>,
+) -> Result<Vec<(String, Node)>, NumericError> {
+    let mut aliases: Vec<(String, Node)> = Vec::new();
+    for (i, a) in spec.aliases.iter().enumerate() {
+        let names = Names {
+            params: param_index,
+            coords: coord_index,
+            frames: frame_index,
+            aliases: &aliases,
+            vectors,
+        };
+        let v = names
+            .parse(&a.value, Context::Constant)
+            .map_err(|m| spec_err(format!("aliases[{i}].value"), m))?;
+        aliases.push((a.name.clone(), v));
+    }
+    Ok(aliases)
+}
+
+/// The coordinates, each with its imposed rate or the relation that drives it.
+fn coordinates(spec: &SpecFile, names: &Names) -> Result<Vec<CoordInfo>, NumericError> {
+    spec.coordinates
         .iter()
         .enumerate()
         .map(|(i, c)| {
@@ -227,10 +284,15 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
                 driven,
             })
         })
-        .collect::<Result<Vec<_>, NumericError>>()?;
+        .collect::<Result<Vec<_>, NumericError>>()
+}
 
-    // Points, in the trees' order.
-    let point_index = trees.point_positions();
+/// The points, in the resolved order, each placed from its parent.
+fn points(
+    spec: &SpecFile,
+    names: &Names,
+    trees: &Resolved,
+) -> Result<Vec<PointInfo>, NumericError> {
     let mut points = Vec::with_capacity(trees.points.len());
     for node in &trees.points {
         let position = match node.spec {
@@ -246,9 +308,19 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         });
     }
 
-    // Frames, now that points are known (origins).
+    Ok(points)
+}
+
+/// The frames, in the resolved order: each turned from its parent about one of its axes by
+/// an angle of its own reading.
+fn frames(
+    spec: &SpecFile,
+    names: &Names,
+    trees: &Resolved,
+    angle_params: &[usize],
+) -> Result<Vec<FrameInfo>, NumericError> {
     let mut frames = vec![FrameInfo {
-        name: ground.clone(),
+        name: spec.ground.clone(),
         parent: 0,
         rotation: None,
         origin: 0,
@@ -294,13 +366,16 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         });
     }
 
-    // Solids: named and referenced in the trees.
-    let solid_index: BTreeMap<String, usize> = trees
-        .solids
-        .iter()
-        .enumerate()
-        .map(|(i, s)| (s.name.to_string(), i))
-        .collect();
+    Ok(frames)
+}
+
+/// The solids: mass, centre, inertia matrix (symmetric, fixed in the solid) and symmetries.
+fn solids(
+    spec: &SpecFile,
+    names: &Names,
+    trees: &Resolved,
+    frames: &[FrameInfo],
+) -> Result<Vec<SolidInfo>, NumericError> {
     let mut solids = Vec::with_capacity(spec.solids.len());
     for ((i, s), node) in spec.solids.iter().enumerate().zip(&trees.solids) {
         let path = format!("solids[{i}]");
@@ -331,7 +406,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
                 }
                 symmetric(&matrix, spec.parameters.len())
                     .map_err(|m| spec_err(format!("{path}.inertia.matrix"), m))?;
-                fixed_in_solid(&frames, basis, frame, &matrix, spec)
+                fixed_in_solid(frames, basis, frame, &matrix, spec)
                     .map_err(|m| spec_err(format!("{path}.inertia.basis"), m))?;
                 Some(InertiaInfo {
                     point,
@@ -369,12 +444,18 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         });
     }
 
-    // Sets, as resolved.
-    let sets = (trees.sets.iter())
-        .map(|(n, list)| (n.to_string(), list.clone()))
-        .collect();
+    Ok(solids)
+}
 
-    // Hypotheses.
+/// The hypotheses: the solids whose symmetries they use, the rates they hold constant, the
+/// motions and relations they impose.
+fn hypotheses(
+    spec: &SpecFile,
+    names: &Names,
+    solids: &[SolidInfo],
+    coords: &[CoordInfo],
+    solid_index: &BTreeMap<String, usize>,
+) -> Result<BTreeMap<String, Hypothesis>, NumericError> {
     let mut hypotheses = BTreeMap::new();
     for (i, h) in spec.hypotheses.iter().enumerate() {
         let path = format!("hypotheses[{i}]");
@@ -389,7 +470,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         }
         let mut constant_rates = Vec::new();
         for (k, q) in h.constant_rates.iter().enumerate() {
-            let i = *coord_index.get(q).ok_or_else(|| {
+            let i = *names.coords.get(q).ok_or_else(|| {
                 spec_err(
                     format!("{path}.constant_rates[{k}]"),
                     format!("unknown coordinate `{q}`"),
@@ -404,13 +485,12 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
             }
             constant_rates.push(i);
         }
-        let (motions, relations) =
-            held_motions(spec, &names, &coord_index, &param_index, h, &path)?;
+        let (motions, relations) = held_motions(spec, names, names.coords, names.params, h, &path)?;
         // Small parameters: results kept to first order, which no sample realises; only
         // their names are checked here (`check` does not compare such a hypothesis).
         for (k, p) in h.small_parameters.iter().enumerate() {
             let field = format!("{path}.small_parameters[{k}]");
-            if !param_index.contains_key(p) {
+            if !names.params.contains_key(p) {
                 return Err(spec_err(&field, format!("unknown parameter `{p}`")));
             }
             if h.small_parameters[..k].contains(p) {
@@ -436,13 +516,16 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         }
     }
 
-    // Parameters: which ones are drawn positive (lengths, masses).
+    Ok(hypotheses)
+}
+
+/// The parameters, those drawn positive marked (lengths, masses).
+fn parameters(spec: &SpecFile, solids: &[SolidInfo]) -> Vec<ParamInfo> {
     let mut in_masses = std::collections::BTreeSet::new();
-    for s in &solids {
+    for s in solids {
         expr::params_in(&s.mass, &mut in_masses);
     }
-    let params = spec
-        .parameters
+    spec.parameters
         .iter()
         .enumerate()
         .map(|(i, p)| {
@@ -453,28 +536,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
                     || matches!(unit, "m" | "mm" | "cm" | "km" | "kg" | "g"),
             }
         })
-        .collect();
-
-    Ok(NumericModel {
-        params,
-        aliases,
-        vectors,
-        uses_time: false,
-        coords,
-        frames,
-        points,
-        solids,
-        sets,
-        hypotheses,
-        param_index,
-        coord_index,
-        frame_index,
-        point_index,
-        solid_index,
-        dynamics: Default::default(),
-        closures: Vec::new(),
-        rolling: Vec::new(),
-    })
+        .collect()
 }
 
 /// Marks gravity, frictions and stiffnesses, once the PFD is read, to be drawn positive.
