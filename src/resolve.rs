@@ -90,6 +90,17 @@ pub struct Names<'a> {
     pub vectors: BTreeMap<&'a str, (usize, usize)>,
 }
 
+/// A hypothesis' references, in the order of the spec's `hypotheses`.
+#[derive(Debug, Clone)]
+pub struct HypothesisNode<'a> {
+    /// Its name.
+    pub name: &'a str,
+    /// The coordinates whose rates it holds constant (indices in `coordinates`).
+    pub constant_rates: Vec<usize>,
+    /// The solids whose symmetries it uses (positions among the solids).
+    pub symmetric_solids: Vec<usize>,
+}
+
 /// The spec's names, frames, points and solids, resolved (see the module documentation).
 #[derive(Debug, Clone)]
 pub struct Resolved<'a> {
@@ -103,6 +114,8 @@ pub struct Resolved<'a> {
     pub solids: Vec<SolidNode<'a>>,
     /// The sets of solids (`sets`): name → the positions of its solids, as listed.
     pub sets: BTreeMap<&'a str, Vec<usize>>,
+    /// The hypotheses' references.
+    pub hypotheses: Vec<HypothesisNode<'a>>,
     frame_by_name: BTreeMap<&'a str, usize>,
     point_by_name: BTreeMap<&'a str, usize>,
 }
@@ -369,7 +382,53 @@ fn sets<'a>(
     Ok(sets)
 }
 
-/// Resolves the spec's names, frames, points, solids and sets.
+/// The hypotheses: each named once, its constant rates coordinates, its symmetric solids
+/// solids.
+fn hypotheses<'a>(
+    spec: &'a SpecFile,
+    names: &Names<'a>,
+    solids: &[SolidNode<'a>],
+) -> Result<Vec<HypothesisNode<'a>>, Refusal> {
+    let mut out: Vec<HypothesisNode> = Vec::with_capacity(spec.hypotheses.len());
+    for (i, h) in spec.hypotheses.iter().enumerate() {
+        let path = format!("hypotheses[{i}]");
+        check_name(&h.name).map_err(|m| at(format!("{path}.name"), m))?;
+        if out.iter().any(|o| o.name == h.name) {
+            return Err(at(
+                format!("{path}.name"),
+                format!("the hypothesis `{}` is defined twice", h.name),
+            ));
+        }
+        let constant_rates = (h.constant_rates.iter().enumerate())
+            .map(|(k, c)| {
+                names.coords.get(c.as_str()).copied().ok_or_else(|| {
+                    at(
+                        format!("{path}.constant_rates[{k}]"),
+                        format!("unknown coordinate `{c}`"),
+                    )
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        let symmetric_solids = (h.symmetric_solids.iter().enumerate())
+            .map(|(k, n)| {
+                solids.iter().position(|s| s.name == n).ok_or_else(|| {
+                    at(
+                        format!("{path}.symmetric_solids[{k}]"),
+                        format!("unknown solid `{n}`"),
+                    )
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        out.push(HypothesisNode {
+            name: &h.name,
+            constant_rates,
+            symmetric_solids,
+        });
+    }
+    Ok(out)
+}
+
+/// Resolves the spec's names, frames, points, solids, sets and hypotheses.
 pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let namespace = namespace(spec)?;
     // Frames.
@@ -481,6 +540,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     }
     let vectors = named_vectors(spec, &namespace, &frame_by_name)?;
     let sets = sets(spec, &solids)?;
+    let hypotheses = hypotheses(spec, &namespace, &solids)?;
     Ok(Resolved {
         names: Names {
             vectors,
@@ -490,6 +550,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         points,
         solids,
         sets,
+        hypotheses,
         frame_by_name,
         point_by_name,
     })

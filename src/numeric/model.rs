@@ -202,7 +202,7 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         .map(|(n, list)| (n.to_string(), list.clone()))
         .collect();
 
-    let hypotheses = hypotheses(spec, &names, &solids, &coords, &solid_index)?;
+    let hypotheses = hypotheses(spec, &names, &solids, &coords, &trees)?;
     let params = parameters(spec, &solids);
 
     Ok(NumericModel {
@@ -454,28 +454,24 @@ fn hypotheses(
     names: &Names,
     solids: &[SolidInfo],
     coords: &[CoordInfo],
-    solid_index: &BTreeMap<String, usize>,
+    trees: &Resolved,
 ) -> Result<BTreeMap<String, Hypothesis>, NumericError> {
     let mut hypotheses = BTreeMap::new();
-    for (i, h) in spec.hypotheses.iter().enumerate() {
+    for ((i, h), node) in spec.hypotheses.iter().enumerate().zip(&trees.hypotheses) {
         let path = format!("hypotheses[{i}]");
         let mut symmetric_solids = Vec::new();
-        for (k, s) in h.symmetric_solids.iter().enumerate() {
+        for (k, &si) in node.symmetric_solids.iter().enumerate() {
             let sp = format!("{path}.symmetric_solids[{k}]");
-            let si = *solid_index
-                .get(s)
-                .ok_or_else(|| spec_err(&sp, format!("unknown solid `{s}`")))?;
             symmetric_solids.push(si);
             symmetries_hold(&solids[si], spec.parameters.len()).map_err(|m| spec_err(&sp, m))?;
         }
         let mut constant_rates = Vec::new();
-        for (k, q) in h.constant_rates.iter().enumerate() {
-            let i = *names.coords.get(q).ok_or_else(|| {
-                spec_err(
-                    format!("{path}.constant_rates[{k}]"),
-                    format!("unknown coordinate `{q}`"),
-                )
-            })?;
+        for (k, (q, &i)) in h
+            .constant_rates
+            .iter()
+            .zip(&node.constant_rates)
+            .enumerate()
+        {
             // Its q̈ follows the others' rates: hold those constant instead.
             if coords[i].driven {
                 return Err(spec_err(
@@ -497,25 +493,16 @@ fn hypotheses(
                 return Err(spec_err(&field, format!("`{p}` is small twice")));
             }
         }
-        if hypotheses
-            .insert(
-                h.name.clone(),
-                Hypothesis {
-                    symmetric_solids,
-                    constant_rates,
-                    motions,
-                    relations,
-                },
-            )
-            .is_some()
-        {
-            return Err(spec_err(
-                format!("{path}.name"),
-                format!("hypothesis `{}` is defined twice", h.name),
-            ));
-        }
+        hypotheses.insert(
+            h.name.clone(),
+            Hypothesis {
+                symmetric_solids,
+                constant_rates,
+                motions,
+                relations,
+            },
+        );
     }
-
     Ok(hypotheses)
 }
 

@@ -97,7 +97,7 @@ fn build_with(
         .map(|(n, ids)| (n.to_string(), ids.iter().map(|&i| BodyId(i)).collect()))
         .collect();
 
-    let hypotheses = hypotheses(spec, &reg, &bodies)?;
+    let hypotheses = hypotheses(spec, &reg, &bodies, &resolved)?;
 
     let default_basis = match &spec.default_basis {
         None => frames.ground(),
@@ -445,26 +445,15 @@ fn hypotheses(
     spec: &SpecFile,
     reg: &Rc<Registry>,
     bodies: &[Body],
+    resolved: &Resolved,
 ) -> Result<Vec<Hypothesis>, SpecError> {
     let mut hypotheses = Vec::new();
-    for (i, h) in spec.hypotheses.iter().enumerate() {
+    for ((i, h), node) in spec.hypotheses.iter().enumerate().zip(&resolved.hypotheses) {
         let path = format!("hypotheses[{i}]");
-        name_ok(&format!("{path}.name"), &h.name)?;
-        if spec.hypotheses[..i].iter().any(|o| o.name == h.name) {
-            return Err(at(
-                format!("{path}.name"),
-                format!("the hypothesis `{}` is defined twice", h.name),
-            ));
-        }
         let mut subs = Vec::new();
         let mut effects = Vec::new();
         for (k, c) in h.constant_rates.iter().enumerate() {
-            let q = reg.coord(c).ok_or_else(|| {
-                at(
-                    format!("{path}.constant_rates[{k}]"),
-                    format!("unknown coordinate `{c}`"),
-                )
-            })?;
+            let q = reg.coord(c).expect("a coordinate, as resolved");
             if reg.coord_info(q).is_driven() {
                 return Err(at(
                     format!("{path}.constant_rates[{k}]"),
@@ -480,13 +469,9 @@ fn hypotheses(
                 effects.push(format!("ddot({c}) = 0"));
             }
         }
-        for (k, sname) in h.symmetric_solids.iter().enumerate() {
+        for (k, &b) in node.symmetric_solids.iter().enumerate() {
             let sp = format!("{path}.symmetric_solids[{k}]");
-            let b = bodies
-                .iter()
-                .find(|b| &b.name == sname)
-                .ok_or_else(|| at(&sp, format!("unknown solid `{sname}`")))?;
-            symmetric_solid(reg, b, &sp, &mut subs, &mut effects)?;
+            symmetric_solid(reg, &bodies[b], &sp, &mut subs, &mut effects)?;
         }
         super::hypotheses::motions(reg, h, &path, &mut subs, &mut effects)?;
         let first_order = super::hypotheses::small_parameters(reg, h, &path)?;

@@ -439,7 +439,7 @@ fn both_sides_read_a_driven_rate_alike() {
 }
 
 /// The names and trees (parameters, coordinates, aliases, named basis vectors, frames,
-/// points, solids) are resolved once for both sides (`torseur::resolve`): an error there is
+/// points, solids, the hypotheses' references) are resolved once for both sides (`torseur::resolve`): an error there is
 /// reported at the same path in the same words by each, and a tree given in any order is
 /// accepted by both.
 #[test]
@@ -553,7 +553,31 @@ fn both_sides_report_the_names_and_trees_errors_alike() {
             "ground_basis[2]: `y0` is already the basis vector y of frame 0",
         ),
     ];
-    for (s, expected) in cases.into_iter().chain(names) {
+    let held = |hypotheses: Value| -> Value {
+        serde_json::json!({
+            "title": "hypotheses",
+            "parameters": [{"name": "m"}],
+            "coordinates": [{"name": "q", "kind": "angle"}],
+            "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "q"}}],
+            "solids": [{"name": "S", "frame": "1", "mass": "m", "centre": "O0"}],
+            "hypotheses": hypotheses
+        })
+    };
+    let hypotheses = [
+        (
+            held(serde_json::json!([{"name": "H", "constant_rates": ["q"]}, {"name": "H"}])),
+            "hypotheses[1].name: the hypothesis `H` is defined twice",
+        ),
+        (
+            held(serde_json::json!([{"name": "H", "constant_rates": ["p"]}])),
+            "hypotheses[0].constant_rates[0]: unknown coordinate `p`",
+        ),
+        (
+            held(serde_json::json!([{"name": "H", "symmetric_solids": ["T"]}])),
+            "hypotheses[0].symmetric_solids[0]: unknown solid `T`",
+        ),
+    ];
+    for (s, expected) in cases.into_iter().chain(names).chain(hypotheses) {
         let (exact, float) = verdicts(&s).expect("a spec's shape");
         for (side, v) in [("exact", exact), ("float", float)] {
             let e = v.expect_err(expected);
