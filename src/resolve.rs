@@ -90,6 +90,26 @@ pub struct Names<'a> {
     pub vectors: BTreeMap<&'a str, (usize, usize)>,
 }
 
+/// One side of a link: the ground or a solid.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// The ground frame.
+    Ground,
+    /// A solid (its position among the solids).
+    Solid(usize),
+}
+
+/// A link's references, in the order of the spec's `links`.
+#[derive(Debug, Clone)]
+pub struct LinkNode<'a> {
+    /// Its name.
+    pub name: &'a str,
+    /// The solid (or the ground) exerting the action, then the solid receiving it.
+    pub between: [Side; 2],
+    /// The position of its point.
+    pub point: usize,
+}
+
 /// A hypothesis' references, in the order of the spec's `hypotheses`.
 #[derive(Debug, Clone)]
 pub struct HypothesisNode<'a> {
@@ -116,6 +136,8 @@ pub struct Resolved<'a> {
     pub sets: BTreeMap<&'a str, Vec<usize>>,
     /// The hypotheses' references.
     pub hypotheses: Vec<HypothesisNode<'a>>,
+    /// The links' references.
+    pub links: Vec<LinkNode<'a>>,
     frame_by_name: BTreeMap<&'a str, usize>,
     point_by_name: BTreeMap<&'a str, usize>,
 }
@@ -428,7 +450,98 @@ fn hypotheses<'a>(
     Ok(out)
 }
 
-/// Resolves the spec's names, frames, points, solids, sets and hypotheses.
+/// A side of a link or an action: a solid, or the ground (which acts without being a
+/// solid); another frame, a set or an unknown name is refused at `path`.
+fn side(
+    spec: &SpecFile,
+    path: &str,
+    n: &str,
+    solids: &[SolidNode],
+    frames: &BTreeMap<&str, usize>,
+    sets: &BTreeMap<&str, Vec<usize>>,
+) -> Result<Side, Refusal> {
+    if let Some(s) = solids.iter().position(|s| s.name == n) {
+        return Ok(Side::Solid(s));
+    }
+    if n == spec.ground {
+        return Ok(Side::Ground);
+    }
+    let why = if frames.contains_key(n) {
+        format!(
+            "`{n}` is a frame, not a solid: only the ground `{}` acts without one",
+            spec.ground
+        )
+    } else if sets.contains_key(n) {
+        format!("`{n}` is a set: a link joins two solids")
+    } else {
+        format!("`{n}` is neither a solid nor the ground `{}`", spec.ground)
+    };
+    Err(at(path, why))
+}
+
+/// The links: each named once, between two different solids (or the ground and a solid,
+/// which receives the action), at a point.
+fn links<'a>(
+    spec: &'a SpecFile,
+    solids: &[SolidNode<'a>],
+    frames: &BTreeMap<&'a str, usize>,
+    points: &BTreeMap<&'a str, usize>,
+    sets: &BTreeMap<&'a str, Vec<usize>>,
+) -> Result<Vec<LinkNode<'a>>, Refusal> {
+    let mut taken = HashSet::new();
+    distinct(
+        "link",
+        "links",
+        spec.links.iter().map(|l| l.name.as_str()),
+        &mut taken,
+    )?;
+    let mut out = Vec::with_capacity(spec.links.len());
+    for (i, l) in spec.links.iter().enumerate() {
+        let path = format!("links[{i}]");
+        let from = side(
+            spec,
+            &format!("{path}.between[0]"),
+            &l.between[0],
+            solids,
+            frames,
+            sets,
+        )?;
+        let on = side(
+            spec,
+            &format!("{path}.between[1]"),
+            &l.between[1],
+            solids,
+            frames,
+            sets,
+        )?;
+        if on == Side::Ground {
+            return Err(at(
+                format!("{path}.between[1]"),
+                "the second solid of a link receives its action: it cannot be the ground",
+            ));
+        }
+        if from == on {
+            return Err(at(
+                format!("{path}.between"),
+                "a link joins two different solids",
+            ));
+        }
+        let point = points.get(l.point.as_str()).copied().ok_or_else(|| {
+            at(
+                format!("{path}.point"),
+                format!("unknown point `{}`", l.point),
+            )
+        })?;
+        out.push(LinkNode {
+            name: &l.name,
+            between: [from, on],
+            point,
+        });
+    }
+    Ok(out)
+}
+
+/// Resolves the spec's names, frames, points, solids, sets, hypotheses and links.
 pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let namespace = namespace(spec)?;
     // Frames.
@@ -541,6 +654,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let vectors = named_vectors(spec, &namespace, &frame_by_name)?;
     let sets = sets(spec, &solids)?;
     let hypotheses = hypotheses(spec, &namespace, &solids)?;
+    let links = links(spec, &solids, &frame_by_name, &point_by_name, &sets)?;
     Ok(Resolved {
         names: Names {
             vectors,
@@ -551,6 +665,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         solids,
         sets,
         hypotheses,
+        links,
         frame_by_name,
         point_by_name,
     })

@@ -345,11 +345,16 @@ impl NumericModel {
     pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         let signed = with_signs(spec)?;
         let spec = &signed;
-        let mut model = model::build(spec)?;
+        // Names and trees, resolved once for both sides (`crate::resolve`).
+        let trees = crate::resolve::resolve(spec).map_err(|e| NumericError::Spec {
+            path: e.path,
+            message: e.message,
+        })?;
+        let mut model = model::build(spec, &trees)?;
         model.closures = closure::build(spec, &model)?;
         model.rolling = closure::build_rolling(spec, &model)?;
         closure::check_shape(&model)?;
-        model.dynamics = dynamics::build(spec, &model)?;
+        model.dynamics = dynamics::build(spec, &model, &trees)?;
         model::mark_positive(&mut model);
         model.uses_time = model.writes_time();
         Ok(model)

@@ -153,12 +153,11 @@ impl Names<'_> {
     }
 }
 
-/// Builds the model; every error names the JSON path of the faulty value.
-pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
-    // Names and trees, resolved once for both sides: parameters, coordinates and aliases in
-    // one namespace, the statement's names of basis vectors, each frame after its parent,
-    // each point after the point it is placed from, every reference found.
-    let trees = crate::resolve::resolve(spec).map_err(|e| spec_err(e.path, e.message))?;
+/// Builds the model from the spec and its names and trees, resolved once for both sides
+/// (parameters, coordinates and aliases in one namespace, the statement's names of basis
+/// vectors, each frame after its parent, each point after the point it is placed from, every
+/// reference found); every error names the JSON path of the faulty value.
+pub(super) fn build(spec: &SpecFile, trees: &Resolved) -> Result<NumericModel, NumericError> {
     let owned = |m: &BTreeMap<&str, usize>| -> BTreeMap<String, usize> {
         m.iter().map(|(n, i)| (n.to_string(), *i)).collect()
     };
@@ -185,8 +184,8 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
     let coords = coordinates(spec, &names)?;
 
     let point_index = trees.point_positions();
-    let points = points(spec, &names, &trees)?;
-    let frames = frames(spec, &names, &trees, &angle_params)?;
+    let points = points(spec, &names, trees)?;
+    let frames = frames(spec, &names, trees, &angle_params)?;
 
     // Solids: named and referenced in the trees.
     let solid_index: BTreeMap<String, usize> = trees
@@ -195,14 +194,14 @@ pub(super) fn build(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         .enumerate()
         .map(|(i, s)| (s.name.to_string(), i))
         .collect();
-    let solids = solids(spec, &names, &trees, &frames)?;
+    let solids = solids(spec, &names, trees, &frames)?;
 
     // Sets, as resolved.
     let sets = (trees.sets.iter())
         .map(|(n, list)| (n.to_string(), list.clone()))
         .collect();
 
-    let hypotheses = hypotheses(spec, &names, &solids, &coords, &trees)?;
+    let hypotheses = hypotheses(spec, &names, &solids, &coords, trees)?;
     let params = parameters(spec, &solids);
 
     Ok(NumericModel {

@@ -743,7 +743,7 @@ fn spec_errors_of_the_pfd_sections() {
     v["links"][0]["between"] = json!(["0", "E"]);
     assert_eq!(
         spec_error(&v),
-        "spec, at links[0].between[1]: unknown solid or frame `E`"
+        "spec, at links[0].between[1]: `E` is neither a solid nor the ground `0`"
     );
     let mut v = r.clone();
     v["pfd"][0]["isolate"] = json!("0");
@@ -770,7 +770,7 @@ fn spec_errors_of_the_pfd_sections() {
     v["links"] = json!([r["links"][0].clone(), r["links"][0].clone()]);
     assert_eq!(
         spec_error(&v),
-        "spec, at links[1].name: link `01` is defined twice"
+        "spec, at links[1].name: duplicate link `01`"
     );
 }
 

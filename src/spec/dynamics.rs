@@ -8,6 +8,8 @@ use crate::frame::{Axis, FrameId};
 use crate::kinematics::{omega, velocity};
 use crate::mechanism::{BodyId, Mechanism};
 use crate::pfd::{Action, Dynamics, Source, SpringPart, Theorem, link_unknowns, transmitted};
+use crate::point::PointId;
+use crate::resolve::{Resolved, Side};
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, LinkKind, SpecFile, TheoremKind};
 use std::collections::HashSet;
@@ -232,7 +234,11 @@ fn closes_loop(graph: &[(usize, usize, usize)], a: usize, b: usize) -> Option<Ve
 }
 
 /// Builds the actions and theorems of the spec on the validated mechanism.
-pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecError> {
+pub(super) fn build(
+    m: &Mechanism,
+    spec: &SpecFile,
+    resolved: &Resolved,
+) -> Result<Dynamics, SpecError> {
     let reg = &m.reg;
     let mut d = Dynamics::default();
     if let Some(g) = &spec.gravity {
@@ -253,24 +259,17 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
     let mut unknown_iter = reg.unknowns().iter();
     // The graph of links so far: (node, node, link index), the ground being node 0.
     let mut graph: Vec<(usize, usize, usize)> = Vec::new();
-    for (i, l) in spec.links.iter().enumerate() {
+    for ((i, l), link) in spec.links.iter().enumerate().zip(&resolved.links) {
         let path = format!("links[{i}]");
-        let from = side(m, &format!("{path}.between[0]"), &l.between[0])?;
-        let on = match side(m, &format!("{path}.between[1]"), &l.between[1])? {
-            Source::Body(b) => b,
-            Source::Outside => {
-                return Err(at(
-                    format!("{path}.between[1]"),
-                    "the second solid of a link receives its action: it cannot be the ground",
-                ));
-            }
+        // Named, between two different solids (or the ground and a solid), as resolved.
+        let source = |s: Side| match s {
+            Side::Ground => Source::Outside,
+            Side::Solid(b) => Source::Body(BodyId(b)),
         };
-        if from == Source::Body(on) {
-            return Err(at(
-                format!("{path}.between"),
-                "a link joins two different solids",
-            ));
-        }
+        let from = source(link.between[0]);
+        let Source::Body(on) = source(link.between[1]) else {
+            unreachable!("the ground never receives a link's action, as resolved")
+        };
         let node = |s: &Source| match s {
             Source::Outside => 0,
             Source::Body(b) => b.0 + 1,
@@ -294,7 +293,7 @@ pub(super) fn build(m: &Mechanism, spec: &SpecFile) -> Result<Dynamics, SpecErro
             ));
         }
         graph.push((na, nb, i));
-        let point = point(m, format!("{path}.point"), &l.point)?;
+        let point = PointId(link.point);
         let (basis, axis) = match &l.axis {
             Some(a) => basis_vector(m, &format!("{path}.axis"), a)?,
             None => (m.frames.ground(), Axis::Z),

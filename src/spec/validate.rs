@@ -133,7 +133,7 @@ fn build_with(
             rolling: s.rolling.clone(),
         }),
     };
-    m.dynamics = super::dynamics::build(&m, spec)?;
+    m.dynamics = super::dynamics::build(&m, spec, &resolved)?;
     // Each requested quantity must refer to known objects.
     for (i, q) in m.quantities.iter().enumerate() {
         crate::derivation::resolve(&m, q)

@@ -439,7 +439,7 @@ fn both_sides_read_a_driven_rate_alike() {
 }
 
 /// The names and trees (parameters, coordinates, aliases, named basis vectors, frames,
-/// points, solids, the hypotheses' references) are resolved once for both sides (`torseur::resolve`): an error there is
+/// points, solids, the hypotheses' and links' references) are resolved once for both sides (`torseur::resolve`): an error there is
 /// reported at the same path in the same words by each, and a tree given in any order is
 /// accepted by both.
 #[test]
@@ -577,7 +577,59 @@ fn both_sides_report_the_names_and_trees_errors_alike() {
             "hypotheses[0].symmetric_solids[0]: unknown solid `T`",
         ),
     ];
-    for (s, expected) in cases.into_iter().chain(names).chain(hypotheses) {
+    let linked = |between: [&str; 2], point: &str, twice: bool| -> Value {
+        let link = serde_json::json!({"name": "01", "kind": "pivot", "between": between,
+            "point": point, "axis": "z0"});
+        let links = if twice {
+            vec![link.clone(), link]
+        } else {
+            vec![link]
+        };
+        serde_json::json!({
+            "title": "links",
+            "parameters": [{"name": "m"}],
+            "coordinates": [{"name": "q", "kind": "angle"}],
+            "frames": [{"name": "1", "parent": "0", "rotation": {"axis": "z", "angle": "q"}},
+                       {"name": "2", "parent": "1"}],
+            "solids": [{"name": "S", "frame": "1", "mass": "m", "centre": "O0"}],
+            "sets": {"E": ["S"]},
+            "links": links
+        })
+    };
+    let links = [
+        (
+            linked(["0", "S"], "O0", true),
+            "links[1].name: duplicate link `01`",
+        ),
+        (
+            linked(["2", "S"], "O0", false),
+            "links[0].between[0]: `2` is a frame, not a solid",
+        ),
+        (
+            linked(["E", "S"], "O0", false),
+            "links[0].between[0]: `E` is a set: a link joins two solids",
+        ),
+        (
+            linked(["S", "0"], "O0", false),
+            "links[0].between[1]: the second solid of a link receives its action",
+        ),
+        (
+            linked(["S", "S"], "O0", false),
+            "links[0].between: a link joins two different solids",
+        ),
+        (
+            linked(["0", "S"], "P", false),
+            "links[0].point: unknown point `P`",
+        ),
+    ];
+    let (exact, float) = verdicts(&linked(["0", "S"], "O0", false)).unwrap();
+    assert!(exact.is_ok() && float.is_ok(), "{exact:?} {float:?}");
+    for (s, expected) in cases
+        .into_iter()
+        .chain(names)
+        .chain(hypotheses)
+        .chain(links)
+    {
         let (exact, float) = verdicts(&s).expect("a spec's shape");
         for (side, v) in [("exact", exact), ("float", float)] {
             let e = v.expect_err(expected);

@@ -24,6 +24,7 @@ use super::expr::{self, Env, Node};
 use super::kin::{self, State, Values};
 use super::model::{Context, spec_err};
 use super::{NumericError, NumericModel, cloud};
+use crate::resolve::{Resolved, Side};
 use crate::wire::{LinkKind, SpecFile, TheoremKind};
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use std::collections::{BTreeMap, BTreeSet};
@@ -186,7 +187,11 @@ fn kind_name(kind: LinkKind) -> &'static str {
 
 /// Resolves the spec's `gravity`, `links`, `actions` and `pfd` against a model whose other
 /// parts are built. Errors name the JSON path.
-pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, NumericError> {
+pub(super) fn build(
+    spec: &SpecFile,
+    m: &NumericModel,
+    trees: &Resolved,
+) -> Result<Dynamics, NumericError> {
     let names = m.names();
     let mut d = Dynamics::default();
 
@@ -278,35 +283,14 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
 
     // Links.
     let letters = ['X', 'Y', 'Z', 'L', 'M', 'N'];
-    let mut link_names = BTreeSet::new();
     let mut joined: Vec<(Body, Body)> = Vec::new();
-    for (i, l) in spec.links.iter().enumerate() {
+    for ((i, l), link) in spec.links.iter().enumerate().zip(&trees.links) {
         let path = format!("links[{i}]");
-        if crate::quantity::check_name(&l.name).is_err() {
-            return Err(spec_err(
-                format!("{path}.name"),
-                format!(
-                    "link name `{}`: only ASCII letters, digits and `_` are allowed",
-                    l.name
-                ),
-            ));
-        }
-        if !link_names.insert(l.name.clone()) {
-            return Err(spec_err(
-                format!("{path}.name"),
-                format!("link `{}` is defined twice", l.name),
-            ));
-        }
-        let between = [
-            body(&l.between[0], format!("{path}.between[0]"))?,
-            body(&l.between[1], format!("{path}.between[1]"))?,
-        ];
-        if between[0] == between[1] {
-            return Err(spec_err(
-                format!("{path}.between"),
-                "a link joins two different solids",
-            ));
-        }
+        // Named, between two different solids (or the ground and a solid), as resolved.
+        let between = link.between.map(|s| match s {
+            Side::Ground => Body::Frame(0),
+            Side::Solid(k) => Body::Solid(k),
+        });
         // A closed kinematic loop needs its closure; links in parallel between the same two
         // solids (two bearings) are one connection.
         let parallel = joined
@@ -322,7 +306,7 @@ pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Dynamics, Numer
             ));
         }
         joined.push((between[0], between[1]));
-        let p = point(&l.point, format!("{path}.point"))?;
+        let p = link.point;
         let axis = l
             .axis
             .as_deref()
