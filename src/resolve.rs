@@ -110,6 +110,19 @@ pub struct LinkNode<'a> {
     pub point: usize,
 }
 
+/// A given action's references, in the order of the spec's `actions`.
+#[derive(Debug, Clone)]
+pub struct ActionNode<'a> {
+    /// Its name.
+    pub name: &'a str,
+    /// The solid (or the ground) exerting it.
+    pub from: Side,
+    /// The solid receiving it (its position among the solids).
+    pub on: usize,
+    /// The position of its point.
+    pub point: usize,
+}
+
 /// A hypothesis' references, in the order of the spec's `hypotheses`.
 #[derive(Debug, Clone)]
 pub struct HypothesisNode<'a> {
@@ -138,6 +151,8 @@ pub struct Resolved<'a> {
     pub hypotheses: Vec<HypothesisNode<'a>>,
     /// The links' references.
     pub links: Vec<LinkNode<'a>>,
+    /// The given actions' references.
+    pub actions: Vec<ActionNode<'a>>,
     frame_by_name: BTreeMap<&'a str, usize>,
     point_by_name: BTreeMap<&'a str, usize>,
 }
@@ -472,7 +487,7 @@ fn side(
             spec.ground
         )
     } else if sets.contains_key(n) {
-        format!("`{n}` is a set: a link joins two solids")
+        format!("`{n}` is a set: a link or an action joins two solids")
     } else {
         format!("`{n}` is neither a solid nor the ground `{}`", spec.ground)
     };
@@ -541,7 +556,49 @@ fn links<'a>(
     Ok(out)
 }
 
-/// Resolves the spec's names, frames, points, solids, sets, hypotheses and links.
+/// The given actions: each named by an identifier, exerted by a solid (or the ground) on
+/// another solid, at a point.
+fn actions<'a>(
+    spec: &'a SpecFile,
+    solids: &[SolidNode<'a>],
+    frames: &BTreeMap<&'a str, usize>,
+    points: &BTreeMap<&'a str, usize>,
+    sets: &BTreeMap<&'a str, Vec<usize>>,
+) -> Result<Vec<ActionNode<'a>>, Refusal> {
+    let mut out = Vec::with_capacity(spec.actions.len());
+    for (i, a) in spec.actions.iter().enumerate() {
+        let path = format!("actions[{i}]");
+        check_identifier(&a.name).map_err(|m| at(format!("{path}.name"), m))?;
+        let from = side(spec, &format!("{path}.from"), &a.from, solids, frames, sets)?;
+        let on = match side(spec, &format!("{path}.on"), &a.on, solids, frames, sets)? {
+            Side::Solid(s) => s,
+            Side::Ground => {
+                return Err(at(format!("{path}.on"), "an action is received by a solid"));
+            }
+        };
+        if from == Side::Solid(on) {
+            return Err(at(
+                format!("{path}.on"),
+                "an action is exerted by one solid on another",
+            ));
+        }
+        let point = points.get(a.point.as_str()).copied().ok_or_else(|| {
+            at(
+                format!("{path}.point"),
+                format!("unknown point `{}`", a.point),
+            )
+        })?;
+        out.push(ActionNode {
+            name: &a.name,
+            from,
+            on,
+            point,
+        });
+    }
+    Ok(out)
+}
+
+/// Resolves the spec's names, frames, points, solids, sets, hypotheses, links and actions.
 pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let namespace = namespace(spec)?;
     // Frames.
@@ -655,6 +712,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let sets = sets(spec, &solids)?;
     let hypotheses = hypotheses(spec, &namespace, &solids)?;
     let links = links(spec, &solids, &frame_by_name, &point_by_name, &sets)?;
+    let actions = actions(spec, &solids, &frame_by_name, &point_by_name, &sets)?;
     Ok(Resolved {
         names: Names {
             vectors,
@@ -666,6 +724,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         sets,
         hypotheses,
         links,
+        actions,
         frame_by_name,
         point_by_name,
     })

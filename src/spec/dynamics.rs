@@ -167,23 +167,6 @@ fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecErro
     Ok(e)
 }
 
-/// A solid, or the ground (or a frame of no solid) as `Outside`; `on` must be a solid.
-fn side(m: &Mechanism, path: &str, n: &str) -> Result<Source, SpecError> {
-    if let Some(b) = m.find_body(n) {
-        return Ok(Source::Body(b));
-    }
-    if m.frames.find(n) == Some(m.frames.ground()) {
-        return Ok(Source::Outside);
-    }
-    Err(at(
-        path,
-        format!(
-            "`{n}` is neither a solid nor the ground `{}`",
-            m.frame_name(m.frames.ground())
-        ),
-    ))
-}
-
 fn frame_of_side(m: &Mechanism, s: &Source) -> FrameId {
     match s {
         Source::Body(b) => m.body(*b).frame,
@@ -441,23 +424,15 @@ pub(super) fn build(
             spring,
         });
     }
-    for (i, a) in spec.actions.iter().enumerate() {
+    for ((i, a), action) in spec.actions.iter().enumerate().zip(&resolved.actions) {
         let path = format!("actions[{i}]");
-        crate::expr::check_identifier(&a.name).map_err(|e| at(format!("{path}.name"), e))?;
-        let from = side(m, &format!("{path}.from"), &a.from)?;
-        let on: BodyId = match side(m, &format!("{path}.on"), &a.on)? {
-            Source::Body(b) => b,
-            Source::Outside => {
-                return Err(at(format!("{path}.on"), "an action is received by a solid"));
-            }
+        // Named, exerted by a solid (or the ground) on another solid, as resolved.
+        let from = match action.from {
+            Side::Ground => Source::Outside,
+            Side::Solid(b) => Source::Body(BodyId(b)),
         };
-        if from == Source::Body(on) {
-            return Err(at(
-                format!("{path}.on"),
-                "an action is exerted by one solid on another",
-            ));
-        }
-        let point = point(m, format!("{path}.point"), &a.point)?;
+        let on = BodyId(action.on);
+        let point = PointId(action.point);
         let (resultant, b1) = match &a.resultant {
             Some(t) => vector(m, &format!("{path}.resultant"), t)?,
             None => (Vector::zero(), m.frames.ground()),

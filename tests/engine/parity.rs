@@ -439,7 +439,7 @@ fn both_sides_read_a_driven_rate_alike() {
 }
 
 /// The names and trees (parameters, coordinates, aliases, named basis vectors, frames,
-/// points, solids, the hypotheses' and links' references) are resolved once for both sides (`torseur::resolve`): an error there is
+/// points, solids, the references of the hypotheses, links and actions) are resolved once for both sides (`torseur::resolve`): an error there is
 /// reported at the same path in the same words by each, and a tree given in any order is
 /// accepted by both.
 #[test]
@@ -607,7 +607,7 @@ fn both_sides_report_the_names_and_trees_errors_alike() {
         ),
         (
             linked(["E", "S"], "O0", false),
-            "links[0].between[0]: `E` is a set: a link joins two solids",
+            "links[0].between[0]: `E` is a set: a link or an action joins two solids",
         ),
         (
             linked(["S", "0"], "O0", false),
@@ -622,6 +622,32 @@ fn both_sides_report_the_names_and_trees_errors_alike() {
             "links[0].point: unknown point `P`",
         ),
     ];
+    let acting = |name: &str, from: &str, on: &str, point: &str| -> Value {
+        let mut v = linked(["0", "S"], "O0", false);
+        v["actions"] = serde_json::json!([{"name": name, "from": from, "on": on,
+            "point": point, "moment": "C*z0", "unknowns": ["C"]}]);
+        v
+    };
+    let actions = [
+        (
+            acting("moteur", "S", "0", "O0"),
+            "actions[0].on: an action is received by a solid",
+        ),
+        (
+            acting("moteur", "S", "S", "O0"),
+            "actions[0].on: an action is exerted by one solid on another",
+        ),
+        (
+            acting("moteur", "0", "S", "P"),
+            "actions[0].point: unknown point `P`",
+        ),
+        (
+            acting("2moteur", "0", "S", "O0"),
+            "actions[0].name: `2moteur` is not a valid name",
+        ),
+    ];
+    let (exact, float) = verdicts(&acting("moteur", "0", "S", "O0")).unwrap();
+    assert!(exact.is_ok() && float.is_ok(), "{exact:?} {float:?}");
     let (exact, float) = verdicts(&linked(["0", "S"], "O0", false)).unwrap();
     assert!(exact.is_ok() && float.is_ok(), "{exact:?} {float:?}");
     for (s, expected) in cases
@@ -629,6 +655,7 @@ fn both_sides_report_the_names_and_trees_errors_alike() {
         .chain(names)
         .chain(hypotheses)
         .chain(links)
+        .chain(actions)
     {
         let (exact, float) = verdicts(&s).expect("a spec's shape");
         for (side, v) in [("exact", exact), ("float", float)] {

@@ -195,28 +195,6 @@ pub(super) fn build(
     let names = m.names();
     let mut d = Dynamics::default();
 
-    let body = |name: &str, path: String| -> Result<Body, NumericError> {
-        if let Some(s) = m.solid_index.get(name) {
-            return Ok(Body::Solid(*s));
-        }
-        // Only the ground acts without being a solid: another frame carries no body.
-        if let Some(f) = m.frame_index.get(name).filter(|f| **f == 0) {
-            return Ok(Body::Frame(*f));
-        }
-        if m.frame_index.contains_key(name) {
-            return Err(spec_err(
-                path,
-                format!("`{name}` is a frame, not a solid: only the ground acts without one"),
-            ));
-        }
-        if m.sets.contains_key(name) {
-            return Err(spec_err(
-                path,
-                format!("`{name}` is a set: an action is exerted by and on a solid"),
-            ));
-        }
-        Err(spec_err(path, format!("unknown solid or frame `{name}`")))
-    };
     let point = |name: &str, path: String| -> Result<usize, NumericError> {
         m.point_index
             .get(name)
@@ -454,18 +432,15 @@ pub(super) fn build(
     }
 
     // Given actions.
-    for (i, a) in spec.actions.iter().enumerate() {
+    for ((i, a), action) in spec.actions.iter().enumerate().zip(&trees.actions) {
         let path = format!("actions[{i}]");
-        let from = body(&a.from, format!("{path}.from"))?;
-        let on = body(&a.on, format!("{path}.on"))?;
-        if from == on {
-            return Err(spec_err(
-                format!("{path}.on"),
-                "an action is exerted by one solid on another",
-            ));
-        }
-        identifier(&a.name).map_err(|e| spec_err(format!("{path}.name"), e))?;
-        let p = point(&a.point, format!("{path}.point"))?;
+        // Named, exerted by a solid (or the ground) on another solid, as resolved.
+        let from = match action.from {
+            Side::Ground => Body::Frame(0),
+            Side::Solid(k) => Body::Solid(k),
+        };
+        let on = Body::Solid(action.on);
+        let p = action.point;
         let mut local = BTreeMap::new();
         for (k, u) in a.unknowns.iter().enumerate() {
             free_name(u).map_err(|e| spec_err(format!("{path}.unknowns[{k}]"), e))?;
