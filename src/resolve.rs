@@ -465,44 +465,47 @@ fn hypotheses<'a>(
     Ok(out)
 }
 
-/// A side of a link or an action: a solid, or the ground (which acts without being a
-/// solid); another frame, a set or an unknown name is refused at `path`.
-fn side(
-    spec: &SpecFile,
-    path: &str,
-    n: &str,
-    solids: &[SolidNode],
-    frames: &BTreeMap<&str, usize>,
-    sets: &BTreeMap<&str, Vec<usize>>,
-) -> Result<Side, Refusal> {
-    if let Some(s) = solids.iter().position(|s| s.name == n) {
-        return Ok(Side::Solid(s));
+/// What a link or an action may name: the solids, the ground, and the points (the frames
+/// and sets only to say why they may not stand for a solid).
+struct Known<'s, 'a> {
+    spec: &'a SpecFile,
+    solids: &'s [SolidNode<'a>],
+    frames: &'s BTreeMap<&'a str, usize>,
+    points: &'s BTreeMap<&'a str, usize>,
+    sets: &'s BTreeMap<&'a str, Vec<usize>>,
+}
+
+impl Known<'_, '_> {
+    /// A side of a link or an action: a solid, or the ground (which acts without being a
+    /// solid); another frame, a set or an unknown name is refused at `path`.
+    fn side(&self, path: String, n: &str) -> Result<Side, Refusal> {
+        if let Some(s) = self.solids.iter().position(|s| s.name == n) {
+            return Ok(Side::Solid(s));
+        }
+        let ground = &self.spec.ground;
+        if n == ground {
+            return Ok(Side::Ground);
+        }
+        let why = if self.frames.contains_key(n) {
+            format!("`{n}` is a frame, not a solid: only the ground `{ground}` acts without one")
+        } else if self.sets.contains_key(n) {
+            format!("`{n}` is a set: a link or an action joins two solids")
+        } else {
+            format!("`{n}` is neither a solid nor the ground `{ground}`")
+        };
+        Err(at(path, why))
     }
-    if n == spec.ground {
-        return Ok(Side::Ground);
+
+    /// The position of the point `n`, refused at `path` if there is none.
+    fn point(&self, path: String, n: &str) -> Result<usize, Refusal> {
+        (self.points.get(n).copied()).ok_or_else(|| at(path, format!("unknown point `{n}`")))
     }
-    let why = if frames.contains_key(n) {
-        format!(
-            "`{n}` is a frame, not a solid: only the ground `{}` acts without one",
-            spec.ground
-        )
-    } else if sets.contains_key(n) {
-        format!("`{n}` is a set: a link or an action joins two solids")
-    } else {
-        format!("`{n}` is neither a solid nor the ground `{}`", spec.ground)
-    };
-    Err(at(path, why))
 }
 
 /// The links: each named once, between two different solids (or the ground and a solid,
 /// which receives the action), at a point.
-fn links<'a>(
-    spec: &'a SpecFile,
-    solids: &[SolidNode<'a>],
-    frames: &BTreeMap<&'a str, usize>,
-    points: &BTreeMap<&'a str, usize>,
-    sets: &BTreeMap<&'a str, Vec<usize>>,
-) -> Result<Vec<LinkNode<'a>>, Refusal> {
+fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refusal> {
+    let spec = known.spec;
     let mut taken = HashSet::new();
     distinct(
         "link",
@@ -513,22 +516,8 @@ fn links<'a>(
     let mut out = Vec::with_capacity(spec.links.len());
     for (i, l) in spec.links.iter().enumerate() {
         let path = format!("links[{i}]");
-        let from = side(
-            spec,
-            &format!("{path}.between[0]"),
-            &l.between[0],
-            solids,
-            frames,
-            sets,
-        )?;
-        let on = side(
-            spec,
-            &format!("{path}.between[1]"),
-            &l.between[1],
-            solids,
-            frames,
-            sets,
-        )?;
+        let from = known.side(format!("{path}.between[0]"), &l.between[0])?;
+        let on = known.side(format!("{path}.between[1]"), &l.between[1])?;
         if on == Side::Ground {
             return Err(at(
                 format!("{path}.between[1]"),
@@ -541,16 +530,10 @@ fn links<'a>(
                 "a link joins two different solids",
             ));
         }
-        let point = points.get(l.point.as_str()).copied().ok_or_else(|| {
-            at(
-                format!("{path}.point"),
-                format!("unknown point `{}`", l.point),
-            )
-        })?;
         out.push(LinkNode {
             name: &l.name,
             between: [from, on],
-            point,
+            point: known.point(format!("{path}.point"), &l.point)?,
         });
     }
     Ok(out)
@@ -558,23 +541,15 @@ fn links<'a>(
 
 /// The given actions: each named by an identifier, exerted by a solid (or the ground) on
 /// another solid, at a point.
-fn actions<'a>(
-    spec: &'a SpecFile,
-    solids: &[SolidNode<'a>],
-    frames: &BTreeMap<&'a str, usize>,
-    points: &BTreeMap<&'a str, usize>,
-    sets: &BTreeMap<&'a str, Vec<usize>>,
-) -> Result<Vec<ActionNode<'a>>, Refusal> {
+fn actions<'a>(known: &Known<'_, 'a>) -> Result<Vec<ActionNode<'a>>, Refusal> {
+    let spec = known.spec;
     let mut out = Vec::with_capacity(spec.actions.len());
     for (i, a) in spec.actions.iter().enumerate() {
         let path = format!("actions[{i}]");
         check_identifier(&a.name).map_err(|m| at(format!("{path}.name"), m))?;
-        let from = side(spec, &format!("{path}.from"), &a.from, solids, frames, sets)?;
-        let on = match side(spec, &format!("{path}.on"), &a.on, solids, frames, sets)? {
-            Side::Solid(s) => s,
-            Side::Ground => {
-                return Err(at(format!("{path}.on"), "an action is received by a solid"));
-            }
+        let from = known.side(format!("{path}.from"), &a.from)?;
+        let Side::Solid(on) = known.side(format!("{path}.on"), &a.on)? else {
+            return Err(at(format!("{path}.on"), "an action is received by a solid"));
         };
         if from == Side::Solid(on) {
             return Err(at(
@@ -582,17 +557,11 @@ fn actions<'a>(
                 "an action is exerted by one solid on another",
             ));
         }
-        let point = points.get(a.point.as_str()).copied().ok_or_else(|| {
-            at(
-                format!("{path}.point"),
-                format!("unknown point `{}`", a.point),
-            )
-        })?;
         out.push(ActionNode {
             name: &a.name,
             from,
             on,
-            point,
+            point: known.point(format!("{path}.point"), &a.point)?,
         });
     }
     Ok(out)
@@ -711,8 +680,14 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let vectors = named_vectors(spec, &namespace, &frame_by_name)?;
     let sets = sets(spec, &solids)?;
     let hypotheses = hypotheses(spec, &namespace, &solids)?;
-    let links = links(spec, &solids, &frame_by_name, &point_by_name, &sets)?;
-    let actions = actions(spec, &solids, &frame_by_name, &point_by_name, &sets)?;
+    let known = Known {
+        spec,
+        solids: &solids,
+        frames: &frame_by_name,
+        points: &point_by_name,
+        sets: &sets,
+    };
+    let (links, actions) = (links(&known)?, actions(&known)?);
     Ok(Resolved {
         names: Names {
             vectors,
