@@ -498,7 +498,7 @@ impl Known<'_, '_> {
 
     /// The position of the point `n`, refused at `path` if there is none.
     fn point(&self, path: String, n: &str) -> Result<usize, Refusal> {
-        (self.points.get(n).copied()).ok_or_else(|| at(path, format!("unknown point `{n}`")))
+        find(self.points, "point", path, n)
     }
 }
 
@@ -570,113 +570,10 @@ fn actions<'a>(known: &Known<'_, 'a>) -> Result<Vec<ActionNode<'a>>, Refusal> {
 /// Resolves the spec's names, frames, points, solids, sets, hypotheses, links and actions.
 pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let namespace = namespace(spec)?;
-    // Frames.
-    check_name(&spec.ground).map_err(|m| at("ground", m))?;
-    let mut taken = HashSet::from([spec.ground.as_str()]);
-    distinct(
-        "frame",
-        "frames",
-        spec.frames.iter().map(|f| f.name.as_str()),
-        &mut taken,
-    )?;
-    let names: Vec<&str> = spec.frames.iter().map(|f| f.name.as_str()).collect();
-    let mut frame_by_name = BTreeMap::from([(spec.ground.as_str(), 0)]);
-    let parent = |i: usize| {
-        (
-            spec.frames[i].parent.as_str(),
-            format!("frames[{i}].parent"),
-        )
-    };
-    let frame_order = place("frame", &names, &parent, &mut frame_by_name)?;
-
-    // Points.
-    let origin = ground_origin(spec);
-    check_name(origin).map_err(|m| at("ground_origin", m))?;
-    let mut taken = HashSet::from([origin]);
-    distinct(
-        "point",
-        "points",
-        spec.points.iter().map(|p| p.name.as_str()),
-        &mut taken,
-    )?;
-    let names: Vec<&str> = spec.points.iter().map(|p| p.name.as_str()).collect();
-    let mut point_by_name = BTreeMap::from([(origin, 0)]);
-    let from = |i: usize| {
-        (
-            spec.points[i].from.as_deref().unwrap_or(origin),
-            format!("points[{i}].from"),
-        )
-    };
-    let point_order = place("point", &names, &from, &mut point_by_name)?;
-    let points = std::iter::once(PointNode {
-        name: origin,
-        spec: None,
-        from: 0,
-    })
-    .chain(point_order.iter().map(|&(i, from)| PointNode {
-        name: &spec.points[i].name,
-        spec: Some(i),
-        from,
-    }))
-    .collect();
-
-    let point = |path: String, n: &str| {
-        point_by_name
-            .get(n)
-            .copied()
-            .ok_or_else(|| at(path, format!("unknown point `{n}`")))
-    };
-    let frame = |path: String, n: &str| {
-        frame_by_name
-            .get(n)
-            .copied()
-            .ok_or_else(|| at(path, format!("unknown frame `{n}`")))
-    };
-    let mut frames = vec![FrameNode {
-        name: &spec.ground,
-        spec: None,
-        parent: 0,
-        origin: 0,
-    }];
-    for &(i, parent) in &frame_order {
-        let f = &spec.frames[i];
-        let origin = match &f.origin {
-            None => 0,
-            Some(o) => point(format!("frames[{i}].origin"), o)?,
-        };
-        frames.push(FrameNode {
-            name: &f.name,
-            spec: Some(i),
-            parent,
-            origin,
-        });
-    }
-
-    // Solids: named apart from the ground, which is a body too.
-    let mut taken = HashSet::from([spec.ground.as_str()]);
-    distinct(
-        "solid",
-        "solids",
-        spec.solids.iter().map(|s| s.name.as_str()),
-        &mut taken,
-    )?;
-    let mut solids = Vec::with_capacity(spec.solids.len());
-    for (i, s) in spec.solids.iter().enumerate() {
-        let path = format!("solids[{i}]");
-        let inertia = match &s.inertia {
-            None => None,
-            Some(j) => Some((
-                point(format!("{path}.inertia.point"), &j.point)?,
-                frame(format!("{path}.inertia.basis"), &j.basis)?,
-            )),
-        };
-        solids.push(SolidNode {
-            name: &s.name,
-            frame: frame(format!("{path}.frame"), &s.frame)?,
-            centre: point(format!("{path}.centre"), &s.centre)?,
-            inertia,
-        });
-    }
+    let (frame_order, frame_by_name) = frame_tree(spec)?;
+    let (points, point_by_name) = point_tree(spec)?;
+    let frames = frames(spec, &frame_order, &point_by_name)?;
+    let solids = solids(spec, &frame_by_name, &point_by_name)?;
     let vectors = named_vectors(spec, &namespace, &frame_by_name)?;
     let sets = sets(spec, &solids)?;
     let hypotheses = hypotheses(spec, &namespace, &solids)?;
@@ -703,4 +600,124 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         frame_by_name,
         point_by_name,
     })
+}
+
+/// The position of `n` in `index`, or an « unknown `what` » refusal at `path`.
+fn find(
+    index: &BTreeMap<&str, usize>,
+    what: &str,
+    path: String,
+    n: &str,
+) -> Result<usize, Refusal> {
+    (index.get(n).copied()).ok_or_else(|| at(path, format!("unknown {what} `{n}`")))
+}
+
+/// The frames' order (each after its parent: (index in the spec, position of the parent))
+/// and their positions by name, the ground at 0.
+type Tree<'a> = (Vec<(usize, usize)>, BTreeMap<&'a str, usize>);
+
+/// The frames' tree: the ground and the frames named once, each after its parent.
+fn frame_tree(spec: &SpecFile) -> Result<Tree<'_>, Refusal> {
+    check_name(&spec.ground).map_err(|m| at("ground", m))?;
+    let mut taken = HashSet::from([spec.ground.as_str()]);
+    let names: Vec<&str> = spec.frames.iter().map(|f| f.name.as_str()).collect();
+    distinct("frame", "frames", names.iter().copied(), &mut taken)?;
+    let mut by_name = BTreeMap::from([(spec.ground.as_str(), 0)]);
+    let parent = |i: usize| {
+        let f = &spec.frames[i];
+        (f.parent.as_str(), format!("frames[{i}].parent"))
+    };
+    let order = place("frame", &names, &parent, &mut by_name)?;
+    Ok((order, by_name))
+}
+
+/// The points, the ground origin first, each named once and after the point it is placed
+/// from, and their positions by name.
+fn point_tree(spec: &SpecFile) -> Result<(Vec<PointNode<'_>>, BTreeMap<&str, usize>), Refusal> {
+    let origin = ground_origin(spec);
+    check_name(origin).map_err(|m| at("ground_origin", m))?;
+    let mut taken = HashSet::from([origin]);
+    let names: Vec<&str> = spec.points.iter().map(|p| p.name.as_str()).collect();
+    distinct("point", "points", names.iter().copied(), &mut taken)?;
+    let mut by_name = BTreeMap::from([(origin, 0)]);
+    let from = |i: usize| {
+        let p = &spec.points[i];
+        (
+            p.from.as_deref().unwrap_or(origin),
+            format!("points[{i}].from"),
+        )
+    };
+    let order = place("point", &names, &from, &mut by_name)?;
+    let root = PointNode {
+        name: origin,
+        spec: None,
+        from: 0,
+    };
+    let points = std::iter::once(root)
+        .chain(order.iter().map(|&(i, from)| PointNode {
+            name: &spec.points[i].name,
+            spec: Some(i),
+            from,
+        }))
+        .collect();
+    Ok((points, by_name))
+}
+
+/// The frames in the tree's order, each with its origin.
+fn frames<'a>(
+    spec: &'a SpecFile,
+    order: &[(usize, usize)],
+    points: &BTreeMap<&str, usize>,
+) -> Result<Vec<FrameNode<'a>>, Refusal> {
+    let ground = FrameNode {
+        name: &spec.ground,
+        spec: None,
+        parent: 0,
+        origin: 0,
+    };
+    let mut frames = vec![ground];
+    for &(i, parent) in order {
+        let f = &spec.frames[i];
+        let origin = match &f.origin {
+            None => 0,
+            Some(o) => find(points, "point", format!("frames[{i}].origin"), o)?,
+        };
+        frames.push(FrameNode {
+            name: &f.name,
+            spec: Some(i),
+            parent,
+            origin,
+        });
+    }
+    Ok(frames)
+}
+
+/// The solids: named once and apart from the ground (a body too), their frame, centre and
+/// inertia operator's point and basis found.
+fn solids<'a>(
+    spec: &'a SpecFile,
+    frames: &BTreeMap<&str, usize>,
+    points: &BTreeMap<&str, usize>,
+) -> Result<Vec<SolidNode<'a>>, Refusal> {
+    let mut taken = HashSet::from([spec.ground.as_str()]);
+    let names = spec.solids.iter().map(|s| s.name.as_str());
+    distinct("solid", "solids", names, &mut taken)?;
+    let mut solids = Vec::with_capacity(spec.solids.len());
+    for (i, s) in spec.solids.iter().enumerate() {
+        let path = format!("solids[{i}]");
+        let inertia = match &s.inertia {
+            None => None,
+            Some(j) => Some((
+                find(points, "point", format!("{path}.inertia.point"), &j.point)?,
+                find(frames, "frame", format!("{path}.inertia.basis"), &j.basis)?,
+            )),
+        };
+        solids.push(SolidNode {
+            name: &s.name,
+            frame: find(frames, "frame", format!("{path}.frame"), &s.frame)?,
+            centre: find(points, "point", format!("{path}.centre"), &s.centre)?,
+            inertia,
+        });
+    }
+    Ok(solids)
 }
