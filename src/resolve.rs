@@ -20,7 +20,7 @@
 
 use crate::expr::{RESERVED, check_identifier};
 use crate::quantity::check_name;
-use crate::wire::SpecFile;
+use crate::wire::{SpecFile, TheoremKind};
 use std::collections::{BTreeMap, HashSet};
 
 /// A structural error: the JSON path of the faulty value and what is wrong.
@@ -123,6 +123,19 @@ pub struct ActionNode<'a> {
     pub point: usize,
 }
 
+/// A theorem's references, in the order of the spec's `pfd`.
+#[derive(Debug, Clone)]
+pub struct TheoremNode {
+    /// The solids isolated (positions among the solids): one solid, or a set's.
+    pub isolate: Vec<usize>,
+    /// The position of its point (None for a resultant theorem written at none).
+    pub point: Option<usize>,
+    /// The basis vector it is projected on: (the position of its frame, its axis 0, 1 or 2).
+    pub on: (usize, usize),
+    /// The coordinate whose equation of motion it is (index in `coordinates`).
+    pub eom: Option<usize>,
+}
+
 /// A hypothesis' references, in the order of the spec's `hypotheses`.
 #[derive(Debug, Clone)]
 pub struct HypothesisNode<'a> {
@@ -153,6 +166,8 @@ pub struct Resolved<'a> {
     pub links: Vec<LinkNode<'a>>,
     /// The given actions' references.
     pub actions: Vec<ActionNode<'a>>,
+    /// The theorems' references (`pfd`).
+    pub theorems: Vec<TheoremNode>,
     frame_by_name: BTreeMap<&'a str, usize>,
     point_by_name: BTreeMap<&'a str, usize>,
 }
@@ -473,6 +488,8 @@ struct Known<'s, 'a> {
     frames: &'s BTreeMap<&'a str, usize>,
     points: &'s BTreeMap<&'a str, usize>,
     sets: &'s BTreeMap<&'a str, Vec<usize>>,
+    vectors: &'s BTreeMap<&'a str, (usize, usize)>,
+    coords: &'s BTreeMap<&'a str, usize>,
 }
 
 impl Known<'_, '_> {
@@ -494,6 +511,18 @@ impl Known<'_, '_> {
             format!("`{n}` is neither a solid nor the ground `{ground}`")
         };
         Err(at(path, why))
+    }
+
+    /// A basis vector: a name the statement gives one (`u`), or x, y or z followed by a
+    /// frame's name: (the position of its frame, its axis).
+    fn basis_vector(&self, s: &str) -> Option<(usize, usize)> {
+        if let Some(&v) = self.vectors.get(s) {
+            return Some(v);
+        }
+        let mut c = s.chars();
+        let first = c.next()?;
+        let axis = ['x', 'y', 'z'].iter().position(|&a| a == first)?;
+        Some((*self.frames.get(c.as_str())?, axis))
     }
 
     /// The position of the point `n`, refused at `path` if there is none.
@@ -567,7 +596,60 @@ fn actions<'a>(known: &Known<'_, 'a>) -> Result<Vec<ActionNode<'a>>, Refusal> {
     Ok(out)
 }
 
-/// Resolves the spec's names, frames, points, solids, sets, hypotheses, links and actions.
+/// The theorems of the `pfd` section: each isolates a solid or a set (never the ground), is
+/// written at a point (a moment theorem must name one), projected on a basis vector, and is
+/// the equation of motion of at most one coordinate, which no other theorem is.
+fn theorems(known: &Known) -> Result<Vec<TheoremNode>, Refusal> {
+    let spec = known.spec;
+    let mut out: Vec<TheoremNode> = Vec::with_capacity(spec.pfd.len());
+    for (i, t) in spec.pfd.iter().enumerate() {
+        let path = format!("pfd[{i}]");
+        let isolate = match known.solids.iter().position(|s| s.name == t.isolate) {
+            Some(s) => vec![s],
+            None if t.isolate == spec.ground => {
+                let why = format!("`{}` is the ground: it is never isolated", t.isolate);
+                return Err(at(format!("{path}.isolate"), why));
+            }
+            None => (known.sets.get(t.isolate.as_str()).cloned()).ok_or_else(|| {
+                let why = format!("unknown solid or set `{}`", t.isolate);
+                at(format!("{path}.isolate"), why)
+            })?,
+        };
+        let point = match (&t.point, t.theorem) {
+            (Some(p), _) => Some(known.point(format!("{path}.point"), p)?),
+            (None, TheoremKind::Resultant) => None,
+            (None, TheoremKind::Moment) => {
+                let why = "the moment theorem is written at a point";
+                return Err(at(format!("{path}.point"), why));
+            }
+        };
+        let on = known.basis_vector(&t.on).ok_or_else(|| {
+            let why = format!("`{}` is not a basis vector such as z0", t.on);
+            at(format!("{path}.on"), why)
+        })?;
+        let eom = match &t.eom {
+            None => None,
+            Some(q) => {
+                let c = find(known.coords, "coordinate", format!("{path}.eom"), q)?;
+                if let Some(j) = out.iter().position(|o| o.eom == Some(c)) {
+                    let why = format!("pfd[{j}] is already the equation of motion of `{q}`");
+                    return Err(at(format!("{path}.eom"), why));
+                }
+                Some(c)
+            }
+        };
+        out.push(TheoremNode {
+            isolate,
+            point,
+            on,
+            eom,
+        });
+    }
+    Ok(out)
+}
+
+/// Resolves the spec's names, frames, points, solids, sets, hypotheses, links, actions and
+/// theorems.
 pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let namespace = namespace(spec)?;
     let (frame_order, frame_by_name) = frame_tree(spec)?;
@@ -583,8 +665,11 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         frames: &frame_by_name,
         points: &point_by_name,
         sets: &sets,
+        vectors: &vectors,
+        coords: &namespace.coords,
     };
     let (links, actions) = (links(&known)?, actions(&known)?);
+    let theorems = theorems(&known)?;
     Ok(Resolved {
         names: Names {
             vectors,
@@ -597,6 +682,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         hypotheses,
         links,
         actions,
+        theorems,
         frame_by_name,
         point_by_name,
     })

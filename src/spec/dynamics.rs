@@ -11,7 +11,7 @@ use crate::pfd::{Action, Dynamics, Source, SpringPart, Theorem, link_unknowns, t
 use crate::point::PointId;
 use crate::resolve::{Resolved, Side};
 use crate::vector::Vector;
-use crate::wire::{CoordinateKind, LinkKind, SpecFile, TheoremKind};
+use crate::wire::{CoordinateKind, LinkKind, SpecFile};
 use std::collections::HashSet;
 use std::rc::Rc;
 
@@ -137,11 +137,6 @@ fn basis_vector(m: &Mechanism, path: &str, s: &str) -> Result<(FrameId, Axis), S
             format!("`{s}` is not a basis vector (x, y or z followed by a frame name)"),
         )
     })
-}
-
-fn point(m: &Mechanism, path: String, name: &str) -> Result<crate::point::PointId, SpecError> {
-    m.point(name)
-        .ok_or_else(|| at(path, format!("unknown point `{name}`")))
 }
 
 fn vector(m: &Mechanism, path: &str, text: &str) -> Result<(Vector, FrameId), SpecError> {
@@ -457,40 +452,12 @@ pub(super) fn build(
             spring: None,
         });
     }
-    for (i, t) in spec.pfd.iter().enumerate() {
-        let path = format!("pfd[{i}]");
-        let solids = m.solids_of(&t.isolate).ok_or_else(|| {
-            at(
-                format!("{path}.isolate"),
-                format!("unknown solid or set `{}`", t.isolate),
-            )
-        })?;
-        let point = match (t.theorem, &t.point) {
-            (_, Some(p)) => point(m, format!("{path}.point"), p)?,
-            (TheoremKind::Moment, None) => {
-                return Err(at(
-                    format!("{path}.point"),
-                    "the moment theorem is written at a point",
-                ));
-            }
-            (TheoremKind::Resultant, None) => m.points.origin(),
-        };
-        let on = basis_vector(m, &format!("{path}.on"), &t.on)?;
-        let eom =
-            match &t.eom {
-                None => None,
-                Some(c) => Some(reg.coord(c).ok_or_else(|| {
-                    at(format!("{path}.eom"), format!("unknown coordinate `{c}`"))
-                })?),
-            };
-        if let Some(q) = eom
-            && d.theorems.iter().any(|x: &Theorem| x.eom == Some(q))
-        {
-            return Err(at(
-                format!("{path}.eom"),
-                "two equations of motion for the same coordinate",
-            ));
-        }
+    // What each theorem isolates, its point, its vector and its coordinate, as resolved.
+    for (t, node) in spec.pfd.iter().zip(&resolved.theorems) {
+        let solids = node.isolate.iter().map(|&b| BodyId(b)).collect();
+        let point = node.point.map_or(m.points.origin(), PointId);
+        let on = (FrameId(node.on.0), [Axis::X, Axis::Y, Axis::Z][node.on.1]);
+        let eom = (t.eom.as_ref()).map(|c| reg.coord(c).expect("a coordinate, as resolved"));
         d.theorems.push(Theorem {
             isolate: t.isolate.clone(),
             solids,

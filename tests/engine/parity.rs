@@ -439,7 +439,7 @@ fn both_sides_read_a_driven_rate_alike() {
 }
 
 /// The names and trees (parameters, coordinates, aliases, named basis vectors, frames,
-/// points, solids, the references of the hypotheses, links and actions) are resolved once for both sides (`torseur::resolve`): an error there is
+/// points, solids, the references of the hypotheses, links, actions and theorems) are resolved once for both sides (`torseur::resolve`): an error there is
 /// reported at the same path in the same words by each, and a tree given in any order is
 /// accepted by both.
 #[test]
@@ -646,6 +646,46 @@ fn both_sides_report_the_names_and_trees_errors_alike() {
             "actions[0].name: `2moteur` is not a valid name",
         ),
     ];
+    let theorem = |t: Value| -> Value {
+        let mut v = linked(["0", "S"], "O0", false);
+        v["pfd"] = t;
+        v
+    };
+    let moment = |isolate: &str, on: &str, eom: &str| {
+        serde_json::json!({"isolate": isolate, "theorem": "moment", "point": "O0", "on": on,
+            "eom": eom})
+    };
+    let theorems = [
+        (
+            theorem(serde_json::json!([moment("0", "z0", "q")])),
+            "pfd[0].isolate: `0` is the ground: it is never isolated",
+        ),
+        (
+            theorem(serde_json::json!([moment("T", "z0", "q")])),
+            "pfd[0].isolate: unknown solid or set `T`",
+        ),
+        (
+            theorem(serde_json::json!([{"isolate": "S", "theorem": "moment", "on": "z0"}])),
+            "pfd[0].point: the moment theorem is written at a point",
+        ),
+        (
+            theorem(serde_json::json!([moment("S", "w0", "q")])),
+            "pfd[0].on: `w0` is not a basis vector such as z0",
+        ),
+        (
+            theorem(serde_json::json!([moment("S", "z0", "p")])),
+            "pfd[0].eom: unknown coordinate `p`",
+        ),
+        (
+            theorem(serde_json::json!([
+                moment("S", "z0", "q"),
+                moment("E", "z1", "q")
+            ])),
+            "pfd[1].eom: pfd[0] is already the equation of motion of `q`",
+        ),
+    ];
+    let (exact, float) = verdicts(&theorem(serde_json::json!([moment("E", "z1", "q")]))).unwrap();
+    assert!(exact.is_ok() && float.is_ok(), "{exact:?} {float:?}");
     let (exact, float) = verdicts(&acting("moteur", "0", "S", "O0")).unwrap();
     assert!(exact.is_ok() && float.is_ok(), "{exact:?} {float:?}");
     let (exact, float) = verdicts(&linked(["0", "S"], "O0", false)).unwrap();
@@ -656,6 +696,7 @@ fn both_sides_report_the_names_and_trees_errors_alike() {
         .chain(hypotheses)
         .chain(links)
         .chain(actions)
+        .chain(theorems)
     {
         let (exact, float) = verdicts(&s).expect("a spec's shape");
         for (side, v) in [("exact", exact), ("float", float)] {

@@ -195,12 +195,6 @@ pub(super) fn build(
     let names = m.names();
     let mut d = Dynamics::default();
 
-    let point = |name: &str, path: String| -> Result<usize, NumericError> {
-        m.point_index
-            .get(name)
-            .copied()
-            .ok_or_else(|| spec_err(path, format!("unknown point `{name}`")))
-    };
     let vector = |name: &str, path: String| -> Result<(usize, usize), NumericError> {
         names
             .basis_vector(name.trim())
@@ -489,53 +483,13 @@ pub(super) fn build(
         });
     }
 
-    // The declared equations.
-    let mut eoms = BTreeMap::new();
-    for (i, t) in spec.pfd.iter().enumerate() {
-        let path = format!("pfd[{i}]");
-        if t.isolate == spec.ground {
-            return Err(spec_err(
-                format!("{path}.isolate"),
-                format!("`{}` is the ground: it is never isolated", t.isolate),
-            ));
-        }
-        let solids = if let Some(s) = m.solid_index.get(&t.isolate) {
-            vec![*s]
-        } else if let Some(list) = m.sets.get(&t.isolate) {
-            list.clone()
-        } else {
-            return Err(spec_err(
-                format!("{path}.isolate"),
-                format!("unknown solid or set `{}`", t.isolate),
-            ));
-        };
+    // The declared equations: what each isolates, its point, its vector and its coordinate,
+    // as resolved.
+    for (t, node) in spec.pfd.iter().zip(&trees.theorems) {
+        let solids = node.isolate.clone();
         let moment = t.theorem == TheoremKind::Moment;
-        let point = match (&t.point, moment) {
-            (Some(p), _) => point(p, format!("{path}.point"))?,
-            (None, false) => 0,
-            (None, true) => {
-                return Err(spec_err(
-                    format!("{path}.point"),
-                    "the moment theorem is applied at a point",
-                ));
-            }
-        };
-        let on = vector(&t.on, format!("{path}.on"))?;
-        let eom = match &t.eom {
-            None => None,
-            Some(q) => {
-                let c = *m.coord_index.get(q).ok_or_else(|| {
-                    spec_err(format!("{path}.eom"), format!("unknown coordinate `{q}`"))
-                })?;
-                if let Some(j) = eoms.insert(c, i) {
-                    return Err(spec_err(
-                        format!("{path}.eom"),
-                        format!("pfd[{j}] is already the equation of motion of `{q}`"),
-                    ));
-                }
-                Some(c)
-            }
-        };
+        let point = node.point.unwrap_or(0);
+        let (on, eom) = (node.on, node.eom);
         d.theorems.push(TheoremInfo {
             solids,
             moment,
