@@ -227,15 +227,8 @@ impl Expr {
                 buckets[*k].1.push((c * r, x));
             }
         }
-        let terms = buckets
-            .into_iter()
-            .map(|(h, ts)| (h, Expr::from_terms(reg, ts)))
-            .filter(|(_, c)| !c.is_zero())
-            .collect();
-        Fourier {
-            terms,
-            reg: reg.clone(),
-        }
+        let coefficients = (buckets.into_iter()).map(|(h, ts)| (h, Expr::from_terms(reg, ts)));
+        Fourier::of_coefficients(reg, coefficients)
     }
 }
 
@@ -280,16 +273,21 @@ impl Fourier {
         self.terms.is_empty()
     }
 
-    fn from_parts(reg: &Rc<Registry>, parts: BTreeMap<Harmonic, Vec<Expr>>) -> Fourier {
-        let terms = parts
-            .into_iter()
-            .map(|(h, cs)| (h, Expr::sum(reg, cs)))
-            .filter(|(_, c)| !c.is_zero())
-            .collect();
+    /// The form of these harmonics' coefficients, the zero ones left out.
+    fn of_coefficients(
+        reg: &Rc<Registry>,
+        coefficients: impl Iterator<Item = (Harmonic, Expr)>,
+    ) -> Fourier {
         Fourier {
-            terms,
+            terms: coefficients.filter(|(_, c)| !c.is_zero()).collect(),
             reg: reg.clone(),
         }
+    }
+
+    /// The form whose coefficient of each harmonic is the sum of its parts.
+    fn from_parts(reg: &Rc<Registry>, parts: BTreeMap<Harmonic, Vec<Expr>>) -> Fourier {
+        let sums = (parts.into_iter()).map(|(h, cs)| (h, Expr::sum(reg, cs)));
+        Fourier::of_coefficients(reg, sums)
     }
 
     /// The sum.

@@ -105,6 +105,13 @@ pub struct HypothesisNode<'a> {
     pub symmetric_solids: Vec<usize>,
 }
 
+impl Names<'_> {
+    /// Whether `n` is a parameter, a coordinate or an alias.
+    pub fn contains(&self, n: &str) -> bool {
+        self.params.contains_key(n) || self.coords.contains_key(n) || self.aliases.contains_key(n)
+    }
+}
+
 /// The spec's names, frames, points and solids, resolved (see the module documentation).
 #[derive(Debug, Clone)]
 pub struct Resolved<'a> {
@@ -136,16 +143,6 @@ impl<'a> Resolved<'a> {
         self.frame_by_name.get(name).copied()
     }
 
-    /// The position of a point.
-    pub fn point(&self, name: &str) -> Option<usize> {
-        self.point_by_name.get(name).copied()
-    }
-
-    /// The position of a solid.
-    pub fn solid(&self, name: &str) -> Option<usize> {
-        self.solids.iter().position(|s| s.name == name)
-    }
-
     /// Frame name → position, for a reader that keeps its own table.
     pub fn frame_positions(&self) -> BTreeMap<String, usize> {
         self.frame_by_name
@@ -164,7 +161,7 @@ impl<'a> Resolved<'a> {
 }
 
 /// The name of the ground origin: `O0` unless the spec gives one.
-pub fn ground_origin(spec: &SpecFile) -> &str {
+fn ground_origin(spec: &SpecFile) -> &str {
     spec.ground_origin.as_deref().unwrap_or("O0")
 }
 

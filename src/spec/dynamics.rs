@@ -24,7 +24,7 @@ fn axis_letter(s: &str) -> Option<Axis> {
 /// and the angles that enter as themselves (torsion springs).
 pub(super) fn pfd_names(
     spec: &SpecFile,
-    taken: &HashSet<String>,
+    taken: &crate::resolve::Names,
 ) -> Result<(Vec<String>, Vec<String>), SpecError> {
     let mut unknowns: Vec<String> = Vec::new();
     let mut seen: HashSet<String> = HashSet::new();

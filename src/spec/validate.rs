@@ -9,10 +9,9 @@ use crate::inertia::{Inertia, Symmetry};
 use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
 use crate::point::{PointId, Points};
 use crate::quantity::{Quantity, check_name};
-use crate::resolve::Resolved;
+use crate::resolve::{Names, Resolved};
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
-use std::collections::HashSet;
 use std::rc::Rc;
 
 pub(super) fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
@@ -79,13 +78,8 @@ fn build_with(
     // Names (parameters, coordinates and aliases share one namespace with the reserved words
     // and the basis vector names) and trees: resolved once for both sides.
     let resolved = crate::resolve::resolve(spec).map_err(|e| at(e.path, e.message))?;
-    let names: HashSet<String> = (resolved.names.params.keys())
-        .chain(resolved.names.coords.keys())
-        .chain(resolved.names.aliases.keys())
-        .map(|n| n.to_string())
-        .collect();
     units(spec)?;
-    let reg = registry(spec, &names, solved)?;
+    let reg = registry(spec, &resolved.names, solved)?;
 
     let frames = frames(spec, &reg, &resolved)?;
     let points = points(spec, &reg, &frames, &resolved)?;
@@ -182,7 +176,7 @@ fn units(spec: &SpecFile) -> Result<(), SpecError> {
 /// from the loop closures, the reciprocals of cos φ.
 fn registry(
     spec: &SpecFile,
-    names: &HashSet<String>,
+    names: &Names,
     solved: Option<&super::closures::Solved>,
 ) -> Result<Rc<Registry>, SpecError> {
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
@@ -284,7 +278,7 @@ fn frames(spec: &SpecFile, reg: &Rc<Registry>, resolved: &Resolved) -> Result<Fr
         frames.add(node.name, FrameId(node.parent), rotation);
     }
     // Basis vectors named as the statement does ((u, v, w), (i, j, k)).
-    super::vectors::name_vectors(spec, &mut frames, &resolved.names.vectors);
+    super::vectors::name_vectors(spec, &mut frames);
     Ok(frames)
 }
 

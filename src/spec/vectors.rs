@@ -3,20 +3,14 @@
 
 use crate::frame::Frames;
 use crate::wire::SpecFile;
-use std::collections::BTreeMap;
 
 /// Gives the frames the names their spec declares for their basis vectors (`ground_basis`,
-/// a frame's `basis`), as resolved and checked by [`crate::resolve`].
-pub(super) fn name_vectors(
-    spec: &SpecFile,
-    frames: &mut Frames,
-    vectors: &BTreeMap<&str, (usize, usize)>,
-) {
+/// a frame's `basis`), as checked by [`crate::resolve`].
+pub(super) fn name_vectors(spec: &SpecFile, frames: &mut Frames) {
     let declared = std::iter::once((&spec.ground, &spec.ground_basis))
         .chain(spec.frames.iter().map(|f| (&f.name, &f.basis)));
     for (frame, given) in declared {
         let Some(given) = given else { continue };
-        debug_assert!(given.iter().all(|n| vectors.contains_key(n.as_str())));
         let f = frames.find(frame).expect("placed");
         frames.name_vectors(f, given.clone());
     }

@@ -3,64 +3,43 @@
 
 use super::Node;
 
+/// Calls `f` on every leaf of `node` (numbers, names, basis vectors, the time).
+fn leaves(node: &Node, f: &mut impl FnMut(&Node)) {
+    match node {
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => leaves(a, f),
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            leaves(a, f);
+            leaves(b, f)
+        }
+        leaf => f(leaf),
+    }
+}
+
 /// Every parameter index `node` uses.
 pub(crate) fn params_in(node: &Node, out: &mut std::collections::BTreeSet<usize>) {
-    match node {
-        Node::Param(i) => {
+    leaves(node, &mut |n| {
+        if let Node::Param(i) = n {
             out.insert(*i);
         }
-        Node::Num(_)
-        | Node::Coord(_)
-        | Node::Rate(..)
-        | Node::Basis(..)
-        | Node::Unknown(_)
-        | Node::Time => {}
-        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => params_in(a, out),
-        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
-            params_in(a, out);
-            params_in(b, out)
-        }
-    }
+    });
 }
 
 /// Every unknown index `node` uses.
 pub(crate) fn unknowns_in(node: &Node, out: &mut std::collections::BTreeSet<usize>) {
-    match node {
-        Node::Unknown(i) => {
+    leaves(node, &mut |n| {
+        if let Node::Unknown(i) = n {
             out.insert(*i);
         }
-        Node::Num(_)
-        | Node::Param(_)
-        | Node::Coord(_)
-        | Node::Rate(..)
-        | Node::Basis(..)
-        | Node::Time => {}
-        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => unknowns_in(a, out),
-        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
-            unknowns_in(a, out);
-            unknowns_in(b, out)
-        }
-    }
+    });
 }
 
 /// Every frame index whose basis vectors `node` uses.
 pub(crate) fn frames_in(node: &Node, out: &mut std::collections::BTreeSet<usize>) {
-    match node {
-        Node::Basis(f, _) => {
+    leaves(node, &mut |n| {
+        if let Node::Basis(f, _) = n {
             out.insert(*f);
         }
-        Node::Num(_)
-        | Node::Param(_)
-        | Node::Coord(_)
-        | Node::Rate(..)
-        | Node::Unknown(_)
-        | Node::Time => {}
-        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => frames_in(a, out),
-        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
-            frames_in(a, out);
-            frames_in(b, out)
-        }
-    }
+    });
 }
 
 /// Whether `node` depends on time (a coordinate or a rate).
