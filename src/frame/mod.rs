@@ -33,6 +33,14 @@ pub enum Axis {
 }
 
 impl Axis {
+    /// The three axes, each at its component index.
+    ///
+    /// ```
+    /// use torseur::frame::Axis;
+    /// assert!(Axis::ALL.iter().enumerate().all(|(k, a)| a.index() == k));
+    /// ```
+    pub const ALL: [Axis; 3] = [Axis::X, Axis::Y, Axis::Z];
+
     /// Component index 0, 1, 2.
     pub fn index(self) -> usize {
         match self {

@@ -124,27 +124,19 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
     let _ = writeln!(doc.o, "\\noindent\\textbf{{{title}}} ");
     let zero = m.reg.zero();
     for (r, law) in m.spec.rolling.iter().zip(laws) {
-        let Ok(q) = crate::quantity::Quantity::parse(&r.velocity) else {
-            continue;
+        let crate::quantity::QuantityKind::Velocity { point, .. } = &law.velocity.kind else {
+            unreachable!("a rolling condition is a velocity, as resolved")
         };
-        let crate::quantity::QuantityKind::Velocity { point, motion } = &q.kind else {
-            continue;
-        };
-        let (Some(p), Some(i), Some(j)) = (
-            m.point(point),
-            m.frame_of(&motion.moving),
-            m.frame_of(&motion.reference),
-        ) else {
-            continue;
-        };
-        let v = super::quantity(&q.kind);
+        let v = super::quantity(&law.velocity.kind);
         let ground = m.frames.ground();
-        let velocity = crate::kinematics::velocity(m, p, i, j);
+        let [i, j] = law.motion;
+        let velocity = crate::kinematics::velocity(m, law.point, i, j);
+        let written = &r.velocity;
         let mut stated = Vec::new();
-        if r.on.is_empty() {
+        if law.on.is_empty() {
             let latex = format!("{v} = \\vec{{0}}");
             doc.inline.push(Inline {
-                what: format!("rolling condition {}", r.velocity),
+                what: format!("rolling condition {written}"),
                 latex: latex.clone(),
                 value: Value::Vector {
                     basis: ground,
@@ -153,11 +145,11 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
             });
             stated.push(format!("${latex}$"));
         } else {
-            for (f, a) in r.on.iter().filter_map(|u| m.frames.basis_vector(u)) {
+            for &(f, a) in &law.on {
                 let u = super::basis_vector(a.letter(), m.frame_name(f));
                 let latex = format!("{v} \\cdot {u} = 0");
                 doc.inline.push(Inline {
-                    what: format!("rolling condition {} on {u}", r.velocity),
+                    what: format!("rolling condition {written} on {u}"),
                     latex: latex.clone(),
                     value: Value::Scalar(velocity.express_in(&m.frames, f)[a.index()].clone()),
                 });

@@ -124,11 +124,20 @@ pub struct LoopLaw {
     pub rolling: Vec<RollingLaw>,
 }
 
-/// A rolling condition V(I,2/0) = 0⃗ as the answer key writes it: the basis it was projected
-/// on (None when the spec names the directions, `on`) and each scalar relation in LaTeX lines,
-/// the dependent rates as symbols (each reads 0 in the mechanism).
+/// A rolling condition V(I,2/0) = 0⃗ as the answer key writes it: the velocity, its point and
+/// frames, the directions it is zero along, the basis it was projected on (None when the spec
+/// names the directions, `on`) and each scalar relation in LaTeX lines, the dependent rates as
+/// symbols (each reads 0 in the mechanism).
 #[derive(Debug, Clone)]
 pub struct RollingLaw {
+    /// The velocity that is zero, as the course writes it.
+    pub velocity: Quantity,
+    /// The contact point.
+    pub point: PointId,
+    /// The moving frame and the reference frame.
+    pub motion: [FrameId; 2],
+    /// The basis vectors it is zero along (empty: all of it).
+    pub on: Vec<(FrameId, crate::frame::Axis)>,
     /// The frame whose basis the velocity was projected on, by name.
     pub basis: Option<String>,
     /// The scalar relations, linear in the rates, in LaTeX lines.

@@ -33,22 +33,6 @@ fn same(a: &Node, b: &Node, nparams: usize) -> Result<bool, String> {
     Ok(true)
 }
 
-/// A name that expressions read: a letter, then letters, digits or `_`, at most 32
-/// characters.
-pub(super) fn identifier(name: &str) -> Result<(), String> {
-    let mut chars = name.chars();
-    if !chars.next().is_some_and(|c| c.is_ascii_alphabetic())
-        || !chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
-        || name.len() > 32
-    {
-        return Err(format!(
-            "`{name}` is not a valid name for an expression: a letter, then letters, digits or \
-             `_` (at most 32 characters)"
-        ));
-    }
-    Ok(())
-}
-
 /// An inertia operator is symmetric: entries [r][c] and [c][r] agree at two draws of the
 /// parameters (integers 2, 3, 5, … and then their squares: two polynomials that differ give
 /// different values there unless by coincidence at both).

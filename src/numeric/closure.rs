@@ -8,6 +8,7 @@ use super::NumericModel;
 use super::expr::{self, Env, Node};
 use super::kin::{State, Values, state};
 use super::model::Context;
+use crate::resolve::Resolved;
 use crate::wire::SpecFile;
 use nalgebra::{DMatrix, DVector, Vector3};
 
@@ -35,138 +36,37 @@ const NEWTON_STEPS: usize = 60;
 /// Largest residual of a closed loop, relative to its lengths.
 const CLOSED_TOL: f64 = 1e-12;
 
-/// Reads the spec's closures with the float backend's own parser.
-pub(super) fn build(spec: &SpecFile, m: &NumericModel) -> Result<Vec<Closure>, NumericError> {
+/// Reads the spec's closures with the float backend's own parser, on their resolved
+/// references.
+pub(super) fn build(
+    spec: &SpecFile,
+    m: &NumericModel,
+    trees: &Resolved,
+) -> Result<Vec<Closure>, NumericError> {
     let names = m.names();
-    let mut out: Vec<Closure> = Vec::new();
-    let dependent_names: Vec<&String> = spec.closures.iter().flat_map(|c| &c.dependent).collect();
-    for (i, c) in spec.coordinates.iter().enumerate() {
-        let constrained = !spec.closures.is_empty() || !spec.rolling.is_empty();
-        let rolled = spec.rolling.iter().any(|r| r.dependent.contains(&c.name));
-        if constrained && c.rate.is_some() && !dependent_names.contains(&&c.name) && !rolled {
-            return Err(super::model::spec_err(
-                format!("coordinates[{i}].rate"),
-                "a mechanism with a loop closure or a rolling condition takes free rates only \
-                 for now",
-            ));
-        }
-    }
-    for (i, c) in spec.closures.iter().enumerate() {
+    let mut out = Vec::with_capacity(spec.closures.len());
+    for (i, (c, node)) in spec.closures.iter().zip(&trees.closures).enumerate() {
         let vector = names
             .parse(&c.vector, Context::Position)
             .map_err(|e| super::model::spec_err(format!("closures[{i}].vector"), e))?;
-        let mut taken: Vec<usize> = out.iter().flat_map(|o| o.dependent.clone()).collect();
-        let dependent = dependents(
-            m,
-            &c.dependent,
-            &format!("closures[{i}]"),
-            "closure",
-            &mut taken,
-        )?;
+        let dependent = node.dependent.clone();
         out.push(Closure { vector, dependent });
     }
     Ok(out)
 }
 
-/// The coordinates a closure or rolling condition at `at` determines, each known, without a
-/// rate of its own, and not already `taken` (which it joins).
-fn dependents(
-    m: &NumericModel,
-    names: &[String],
-    at: &str,
-    what: &str,
-    taken: &mut Vec<usize>,
-) -> Result<Vec<usize>, NumericError> {
-    let mut out = Vec::new();
-    for (j, d) in names.iter().enumerate() {
-        let path = format!("{at}.dependent[{j}]");
-        let err = |msg: String| super::model::spec_err(&path, msg);
-        let &k = m
-            .coord_index
-            .get(d)
-            .ok_or_else(|| err(format!("unknown coordinate `{d}`")))?;
-        if m.coords[k].rate.is_some() {
-            return Err(err(format!(
-                "`{d}` has a rate of its own: the {what} determines it"
-            )));
-        }
-        if taken.contains(&k) {
-            return Err(err(format!("`{d}` is determined twice")));
-        }
-        taken.push(k);
-        out.push(k);
-    }
-    Ok(out)
-}
-
-/// Reads the spec's rolling conditions, after the closures.
-pub(super) fn build_rolling(
-    spec: &SpecFile,
-    m: &NumericModel,
-) -> Result<Vec<Rolling>, NumericError> {
-    let mut taken: Vec<usize> = m
-        .closures
-        .iter()
-        .flat_map(|c| c.dependent.clone())
-        .collect();
-    let mut out = Vec::new();
-    for (i, r) in spec.rolling.iter().enumerate() {
-        let path = format!("rolling[{i}].velocity");
-        let err = |msg: String| super::model::spec_err(&path, msg);
-        let q = crate::quantity::Quantity::parse(&r.velocity).map_err(|e| err(e.to_string()))?;
-        let crate::quantity::QuantityKind::Velocity { point, motion } = &q.kind else {
-            return Err(err(format!("`{}` is not a velocity V(I,2/0)", r.velocity)));
-        };
-        let point = *m
-            .point_index
-            .get(point)
-            .ok_or_else(|| err(format!("unknown point `{point}`")))?;
-        let frame = |n: &str| {
-            m.solid_index
-                .get(n)
-                .map(|&s| m.solids[s].frame)
-                .or_else(|| m.frame_index.get(n).copied())
-                .ok_or_else(|| err(format!("unknown solid or frame `{n}`")))
-        };
-        let (moving, reference) = (frame(&motion.moving)?, frame(&motion.reference)?);
-        let mut on = Vec::new();
-        for (k, u) in r.on.iter().enumerate() {
-            let Some(v) = m.names().basis_vector(u) else {
-                return Err(super::model::spec_err(
-                    format!("rolling[{i}].on[{k}]"),
-                    format!("unknown basis vector `{u}`"),
-                ));
-            };
-            on.push(v);
-        }
-        if !on.is_empty() && on.len() != r.dependent.len() {
-            return Err(super::model::spec_err(
-                format!("rolling[{i}].on"),
-                "as many directions as dependent coordinates",
-            ));
-        }
-        if r.dependent.is_empty() {
-            return Err(super::model::spec_err(
-                format!("rolling[{i}].dependent"),
-                "name the coordinates the rolling condition determines",
-            ));
-        }
-        let dependent = dependents(
-            m,
-            &r.dependent,
-            &format!("rolling[{i}]"),
-            "rolling condition",
-            &mut taken,
-        )?;
-        out.push(Rolling {
-            point,
-            moving,
-            reference,
-            on,
-            dependent,
-        });
-    }
-    Ok(out)
+/// The spec's rolling conditions, as resolved: the point, the two frames, the directions and
+/// the coordinates whose rates each determines.
+pub(super) fn build_rolling(trees: &Resolved) -> Vec<Rolling> {
+    (trees.rolling.iter())
+        .map(|r| Rolling {
+            point: r.point,
+            moving: r.motion[0],
+            reference: r.motion[1],
+            on: r.on.clone(),
+            dependent: r.dependent.clone(),
+        })
+        .collect()
 }
 
 /// V(P ∈ f/0) and its time derivative in ground components, from the frame's motion:

@@ -292,33 +292,6 @@ pub struct NumericModel {
     rolling: Vec<closure::Rolling>,
 }
 
-/// The spec with a parameter ε (the sign of the relative rate, set by each sample) for each
-/// link with dry friction, by the spec's naming convention.
-fn with_signs(spec: &SpecFile) -> Result<SpecFile, NumericError> {
-    let mut out = spec.clone();
-    for (i, l) in spec.links.iter().enumerate() {
-        let Some(name) = l.sign_parameter() else {
-            continue;
-        };
-        if spec.parameters.iter().any(|p| p.name == name)
-            || spec.coordinates.iter().any(|c| c.name == name)
-            || spec.aliases.iter().any(|a| a.name == name)
-        {
-            return Err(model::spec_err(
-                format!("links[{i}].coulomb"),
-                format!("`{name}` names the sign of this link's rate: rename the other `{name}`"),
-            ));
-        }
-        out.parameters.push(crate::wire::ParameterSpec {
-            name,
-            description: None,
-            unit: Some("1".into()),
-            kind: Default::default(),
-        });
-    }
-    Ok(out)
-}
-
 impl NumericModel {
     /// The names the spec's expressions read, resolved to this model's indices.
     fn names(&self) -> model::Names<'_> {
@@ -343,16 +316,18 @@ impl NumericModel {
     /// assert_eq!(e.to_string(), "spec, at frames[0].parent: unknown frame `7`");
     /// ```
     pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
-        let signed = with_signs(spec)?;
-        let spec = &signed;
-        // Names and trees, resolved once for both sides (`crate::resolve`).
-        let trees = crate::resolve::resolve(spec).map_err(|e| NumericError::Spec {
+        let refused = |e: crate::resolve::Refusal| NumericError::Spec {
             path: e.path,
             message: e.message,
-        })?;
+        };
+        // The signs of dry friction (parameters the samples set), then the names, trees and
+        // references, resolved once for both sides (`crate::resolve`).
+        let signed = crate::resolve::with_signs(spec).map_err(refused)?;
+        let spec = signed.as_ref();
+        let trees = crate::resolve::resolve(spec).map_err(refused)?;
         let mut model = model::build(spec, &trees)?;
-        model.closures = closure::build(spec, &model)?;
-        model.rolling = closure::build_rolling(spec, &model)?;
+        model.closures = closure::build(spec, &model, &trees)?;
+        model.rolling = closure::build_rolling(&trees);
         closure::check_shape(&model)?;
         model.dynamics = dynamics::build(spec, &model, &trees)?;
         model::mark_positive(&mut model);

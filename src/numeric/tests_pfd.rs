@@ -709,7 +709,7 @@ fn spec_errors_of_the_pfd_sections() {
             {"name": "k"}, {"name": "q0"}, {"name": "C_m"}]),
     ));
     assert!(
-        e.starts_with("spec, at actions[0].unknowns[0]: `C_m` is a parameter"),
+        e.starts_with("spec, at actions[0].unknowns[0]: the unknown `C_m` is already a parameter"),
         "{e}"
     );
     for (moment, why) in [
@@ -729,7 +729,7 @@ fn spec_errors_of_the_pfd_sections() {
     }
     let mut v = r.clone();
     v["links"][0].as_object_mut().expect("link").remove("axis");
-    assert!(spec_error(&v).starts_with("spec, at links[0].axis: a pivot link needs its axis"));
+    assert!(spec_error(&v).starts_with("spec, at links[0].axis: a liaison pivot needs its axis"));
     let mut v = r.clone();
     v["links"][0]["kind"] = json!("ball");
     assert!(spec_error(&v).starts_with("spec, at links[0].friction: "));

@@ -21,10 +21,12 @@
 use crate::expr::{RESERVED, check_identifier};
 use crate::quantity::check_name;
 use crate::wire::SpecFile;
-pub use pfd::{ActionNode, LinkNode, Side, TheoremNode};
+pub use constraints::{ClosureNode, RollingNode};
+pub use pfd::{ActionNode, LinkNode, Side, TheoremNode, unknowns, with_signs};
 use pfd::{Known, actions, links, theorems};
 use std::collections::{BTreeMap, HashSet};
 
+mod constraints;
 mod pfd;
 
 /// A structural error: the JSON path of the faulty value and what is wrong.
@@ -133,6 +135,10 @@ pub struct Resolved<'a> {
     pub actions: Vec<ActionNode<'a>>,
     /// The theorems' references (`pfd`).
     pub theorems: Vec<TheoremNode>,
+    /// The loop closures' references.
+    pub closures: Vec<ClosureNode>,
+    /// The rolling conditions' references.
+    pub rolling: Vec<RollingNode>,
     frame_by_name: BTreeMap<&'a str, usize>,
     point_by_name: BTreeMap<&'a str, usize>,
 }
@@ -435,8 +441,8 @@ fn hypotheses<'a>(
     Ok(out)
 }
 
-/// Resolves the spec's names, frames, points, solids, sets, hypotheses, links, actions and
-/// theorems.
+/// Resolves the spec's names, frames, points, solids, sets, hypotheses, links, actions,
+/// theorems, loop closures and rolling conditions.
 pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     let namespace = namespace(spec)?;
     let (frame_order, frame_by_name) = frame_tree(spec)?;
@@ -457,6 +463,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     };
     let (links, actions) = (links(&known)?, actions(&known)?);
     let theorems = theorems(&known)?;
+    let (closures, rolling) = constraints::constraints(&known)?;
     Ok(Resolved {
         names: Names {
             vectors,
@@ -470,6 +477,8 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         links,
         actions,
         theorems,
+        closures,
+        rolling,
         frame_by_name,
         point_by_name,
     })

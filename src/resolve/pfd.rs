@@ -1,10 +1,12 @@
-//! The references of the PFD's sections, resolved once for both sides: the links' and the
-//! given actions' sides and points, the theorems' isolated solids, points, vectors and
-//! coordinates.
+//! The references of the PFD's sections, resolved once for both sides: the links' sides,
+//! points, axes, directions and springs' coordinates, the tree they form, the given actions'
+//! sides and points, the unknowns' names, the theorems' isolated solids, points, vectors and
+//! coordinates, and the parameters standing for dry friction's signs.
 
-use super::{Refusal, SolidNode, at, distinct, find};
+use super::{Refusal, Resolved, SolidNode, at, distinct, find, readable};
 use crate::expr::check_identifier;
-use crate::wire::{SpecFile, TheoremKind};
+use crate::wire::{LinkKind, LinkSpec, ParameterSpec, SpecFile, TheoremKind};
+use std::borrow::Cow;
 use std::collections::{BTreeMap, HashSet};
 
 /// One side of a link: the ground or a solid.
@@ -25,6 +27,13 @@ pub struct LinkNode<'a> {
     pub between: [Side; 2],
     /// The position of its point.
     pub point: usize,
+    /// The basis vector of its axis (or normal): (the position of its frame, its axis 0, 1
+    /// or 2); the ground's z for a ball or a fixed link, which need none.
+    pub axis: (usize, usize),
+    /// A line contact's direction: another axis of its normal's basis.
+    pub direction: Option<usize>,
+    /// The coordinate its spring measures (index in `coordinates`).
+    pub spring: Option<usize>,
 }
 
 /// A given action's references, in the order of the spec's `actions`.
@@ -88,7 +97,7 @@ impl Known<'_, '_> {
 
     /// A basis vector: a name the statement gives one (`u`), or x, y or z followed by a
     /// frame's name: (the position of its frame, its axis).
-    fn basis_vector(&self, s: &str) -> Option<(usize, usize)> {
+    pub(super) fn basis_vector(&self, s: &str) -> Option<(usize, usize)> {
         if let Some(&v) = self.vectors.get(s) {
             return Some(v);
         }
@@ -99,13 +108,15 @@ impl Known<'_, '_> {
     }
 
     /// The position of the point `n`, refused at `path` if there is none.
-    fn point(&self, path: String, n: &str) -> Result<usize, Refusal> {
+    pub(super) fn point(&self, path: String, n: &str) -> Result<usize, Refusal> {
         find(self.points, "point", path, n)
     }
 }
 
 /// The links: each named once, between two different solids (or the ground and a solid,
-/// which receives the action), at a point.
+/// which receives the action), at a point, with the axis its kind needs, a line contact's
+/// direction, friction and springs only on a pivot or a slider; without loop closures, the
+/// links form a tree.
 pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refusal> {
     let spec = known.spec;
     let mut taken = HashSet::new();
@@ -115,7 +126,7 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
         spec.links.iter().map(|l| l.name.as_str()),
         &mut taken,
     )?;
-    let mut out = Vec::with_capacity(spec.links.len());
+    let mut out: Vec<LinkNode> = Vec::with_capacity(spec.links.len());
     for (i, l) in spec.links.iter().enumerate() {
         let path = format!("links[{i}]");
         let from = known.side(format!("{path}.between[0]"), &l.between[0])?;
@@ -132,13 +143,240 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
                 "a link joins two different solids",
             ));
         }
+        // A loop closed by a closure (a crank–slider's slide) is a loop of the mechanism.
+        if let Some(chain) = closes_loop(&out, [from, on]).filter(|_| spec.closures.is_empty()) {
+            let names: Vec<&str> = chain.iter().map(|&k| out[k].name).collect();
+            return Err(at(
+                format!("{path}.between"),
+                format!(
+                    "the link {} closes a kinematic loop: {} and {} are already connected by the \
+                     links {}. Closed kinematic loops are not supported yet (they need \
+                     constraint equations between the coordinates); keep the links of a tree, \
+                     from the ground to every solid",
+                    l.name,
+                    l.between[0],
+                    l.between[1],
+                    names.join(", ")
+                ),
+            ));
+        }
+        let (axis, direction) = axis(known, &path, l)?;
+        let turns_or_slides = matches!(l.kind, LinkKind::Pivot | LinkKind::Slider);
+        let extras = [
+            ("friction", l.friction.is_some(), "viscous friction is"),
+            ("coulomb", l.coulomb.is_some(), "dry friction is"),
+            ("spring", l.spring.is_some(), "a spring is"),
+        ];
+        if let Some((field, _, what)) = extras.iter().find(|e| e.1 && !turns_or_slides) {
+            let why = format!("{what} declared on a pivot or a slider");
+            return Err(at(format!("{path}.{field}"), why));
+        }
+        let spring = (l.spring.as_ref())
+            .map(|s| {
+                let path = format!("{path}.spring.coordinate");
+                find(known.coords, "coordinate", path, &s.coordinate)
+            })
+            .transpose()?;
         out.push(LinkNode {
             name: &l.name,
             between: [from, on],
             point: known.point(format!("{path}.point"), &l.point)?,
+            axis,
+            direction,
+            spring,
         });
     }
     Ok(out)
+}
+
+/// A link's axis (or normal), which every kind but a ball and a fixed link needs, and a line
+/// contact's direction, another basis vector of its normal's basis.
+fn axis(
+    known: &Known,
+    path: &str,
+    l: &LinkSpec,
+) -> Result<((usize, usize), Option<usize>), Refusal> {
+    let vector = |field: &str, text: &str| {
+        let why = || format!("`{text}` is not a basis vector such as z0");
+        (known.basis_vector(text)).ok_or_else(|| at(format!("{path}.{field}"), why()))
+    };
+    let axis = match &l.axis {
+        Some(a) => vector("axis", a)?,
+        None if matches!(l.kind, LinkKind::Ball | LinkKind::Fixed) => (0, 2),
+        None => {
+            let why = format!(
+                "a {} needs its axis (or normal), a basis vector such as z0",
+                l.kind.course_name()
+            );
+            return Err(at(format!("{path}.axis"), why));
+        }
+    };
+    let path = format!("{path}.direction");
+    let direction = match (&l.direction, l.kind) {
+        (None, LinkKind::Line) => {
+            let why = "a line contact needs the direction of its line, another basis vector of \
+                       its normal's basis";
+            return Err(at(path, why));
+        }
+        (None, _) => None,
+        (Some(_), kind) if kind != LinkKind::Line => {
+            return Err(at(path, "only a line contact (`line`) has a direction"));
+        }
+        (Some(d), _) => match vector("direction", d)? {
+            (f, k) if f == axis.0 && k != axis.1 => Some(k),
+            _ => {
+                let why = "the line's direction is another basis vector of its normal's basis";
+                return Err(at(path, why));
+            }
+        },
+    };
+    Ok((axis, direction))
+}
+
+/// The links (positions among `links`) of a path between the two sides of a new link, when
+/// it would close a loop. Links in parallel between the same two solids (two bearings of one
+/// shaft) make one connection, not a loop.
+fn closes_loop(links: &[LinkNode], [a, b]: [Side; 2]) -> Option<Vec<usize>> {
+    if links
+        .iter()
+        .any(|l| l.between == [a, b] || l.between == [b, a])
+    {
+        return None;
+    }
+    // Breadth-first from a: each side reached, with (where it was reached from, the link).
+    let mut reached: Vec<(Side, Option<(usize, usize)>)> = vec![(a, None)];
+    let mut k = 0;
+    while k < reached.len() {
+        let n = reached[k].0;
+        for (j, l) in links.iter().enumerate() {
+            let other = match l.between {
+                [x, y] if x == n => y,
+                [x, y] if y == n => x,
+                _ => continue,
+            };
+            if reached.iter().any(|r| r.0 == other) {
+                continue;
+            }
+            reached.push((other, Some((k, j))));
+            if other == b {
+                let mut chain = Vec::new();
+                let mut cur = reached.len() - 1;
+                while let Some((prev, j)) = reached[cur].1 {
+                    chain.push(j);
+                    cur = prev;
+                }
+                chain.reverse();
+                return Some(chain);
+            }
+        }
+        k += 1;
+    }
+    None
+}
+
+/// The names of the PFD's unknowns, in order: each link's components, X, Y, Z, L, M, N
+/// followed by its name where it transmits them (X01; X_A for a link named by a letter, its
+/// centre A), then each given action's unknowns. Which components a link transmits is the
+/// reader's own convention, `transmitted(kind, axis, direction)` (axes 0, 1, 2; components
+/// 0..3 the resultant's, 3..6 the moment's); the names are checked here: each an identifier,
+/// not a word of the syntax, a basis vector, a parameter, a coordinate or an alias, and
+/// declared once.
+///
+/// ```
+/// let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
+/// let spec = torseur::spec::parse_spec(&text).unwrap();
+/// let r = torseur::resolve::resolve(&spec).unwrap();
+/// // A reader for which every link transmits only its resultant's component along x.
+/// let x_only = |_, _, _| [true, false, false, false, false, false];
+/// let unknowns = torseur::resolve::unknowns(&spec, &r, &x_only).unwrap();
+/// assert_eq!(unknowns[0], "X01");
+/// ```
+pub fn unknowns(
+    spec: &SpecFile,
+    r: &Resolved,
+    transmitted: &dyn Fn(LinkKind, usize, Option<usize>) -> [bool; 6],
+) -> Result<Vec<String>, Refusal> {
+    let mut out: Vec<String> = Vec::new();
+    let mut add = |path: String, n: String| -> Result<(), Refusal> {
+        readable(spec, "unknown", &path, &n)?;
+        let why = if r.names.vectors.contains_key(n.as_str()) {
+            format!("the unknown `{n}` is the name of a basis vector")
+        } else if r.names.params.contains_key(n.as_str()) {
+            format!("the unknown `{n}` is already a parameter: an unknown is solved for, not given")
+        } else if r.names.contains(&n) {
+            format!("the unknown `{n}` is already a coordinate or an alias")
+        } else if out.contains(&n) {
+            format!("the unknown `{n}` is declared twice")
+        } else {
+            out.push(n);
+            return Ok(());
+        };
+        Err(at(path, why))
+    };
+    for ((i, l), node) in spec.links.iter().enumerate().zip(&r.links) {
+        let t = transmitted(l.kind, node.axis.1, node.direction);
+        // A link named by its centre (`A`) gives X_A, as the course writes it; `01` gives X01.
+        let sep = if l.name.starts_with(|c: char| c.is_ascii_alphabetic()) {
+            "_"
+        } else {
+            ""
+        };
+        for (letter, _) in ["X", "Y", "Z", "L", "M", "N"].iter().zip(t).filter(|c| c.1) {
+            add(
+                format!("links[{i}].name"),
+                format!("{letter}{sep}{}", l.name),
+            )?;
+        }
+    }
+    for (i, a) in spec.actions.iter().enumerate() {
+        for (k, n) in a.unknowns.iter().enumerate() {
+            add(format!("actions[{i}].unknowns[{k}]"), n.clone())?;
+        }
+    }
+    Ok(out)
+}
+
+/// The spec with a parameter ε of value ±1, the sign of the relative rate, for each link with
+/// dry friction, named by [`LinkSpec::sign_parameter`] (`epsilon01`); refused where the spec
+/// already uses that name.
+///
+/// ```
+/// let text = std::fs::read_to_string("derivations/bloc_frottement_sec.json").unwrap();
+/// let spec = torseur::spec::parse_spec(&text).unwrap();
+/// let signed = torseur::resolve::with_signs(&spec).unwrap();
+/// assert_eq!(signed.parameters.len(), spec.parameters.len() + 1);
+/// ```
+pub fn with_signs(spec: &SpecFile) -> Result<Cow<'_, SpecFile>, Refusal> {
+    if spec.links.iter().all(|l| l.coulomb.is_none()) {
+        return Ok(Cow::Borrowed(spec));
+    }
+    let mut out = spec.clone();
+    for (i, l) in spec.links.iter().enumerate() {
+        let Some(name) = l.sign_parameter() else {
+            continue;
+        };
+        let taken = (spec.parameters.iter().map(|p| &p.name))
+            .chain(spec.coordinates.iter().map(|c| &c.name))
+            .chain(spec.aliases.iter().map(|a| &a.name))
+            .any(|n| *n == name);
+        if taken {
+            let why = format!(
+                "`{name}` is the sign of this link's relative rate under dry friction: give the \
+                 parameter of that name another name"
+            );
+            return Err(at(format!("links[{i}].coulomb"), why));
+        }
+        out.parameters.push(ParameterSpec {
+            name,
+            description: Some(format!(
+                "signe de la vitesse relative de la liaison {} ($\\pm 1$)",
+                l.name
+            )),
+            unit: Some("1".into()),
+            kind: Default::default(),
+        });
+    }
+    Ok(Cow::Owned(out))
 }
 
 /// The given actions: each named by an identifier, exerted by a solid (or the ground) on

@@ -11,9 +11,10 @@
 use super::SpecError;
 use super::validate::{at, expr_err};
 use crate::expr::{CoordId, Expr, VarRole};
-use crate::frame::FrameId;
+use crate::frame::{Axis, FrameId};
 use crate::mechanism::{Mechanism, RollingLaw};
-use crate::quantity::{Quantity, QuantityKind};
+use crate::point::PointId;
+use crate::resolve::{Resolved, RollingNode};
 use crate::vector::Vector;
 use crate::wire::RollingSpec;
 use crate::wire::SpecFile;
@@ -87,60 +88,17 @@ fn det(m: &[Vec<Expr>], zero: &Expr) -> Expr {
     }
 }
 
-/// Solves the closures of a spec, if it has any.
-pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
+/// Solves the closures of a spec, if it has any, on their resolved references (the
+/// coordinates they determine, the rolling conditions' points, frames and directions).
+pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solved>, SpecError> {
     if spec.closures.is_empty() && spec.rolling.is_empty() {
         return Ok(None);
     }
-    let mut dependent: Vec<(String, usize)> = Vec::new();
-    let lists = spec
-        .closures
-        .iter()
-        .enumerate()
-        .map(|(i, c)| (format!("closures[{i}]"), &c.dependent, "closure"))
-        .chain(
-            spec.rolling
-                .iter()
-                .enumerate()
-                .map(|(i, r)| (format!("rolling[{i}]"), &r.dependent, "rolling condition")),
-        );
-    for (at_path, list, what) in lists {
-        if list.is_empty() {
-            return Err(at(
-                format!("{at_path}.dependent"),
-                format!("name the coordinates the {what} determines"),
-            ));
-        }
-        for (j, d) in list.iter().enumerate() {
-            let path = format!("{at_path}.dependent[{j}]");
-            let Some(k) = spec.coordinates.iter().position(|q| &q.name == d) else {
-                return Err(at(path, format!("unknown coordinate `{d}`")));
-            };
-            if spec.coordinates[k].rate.is_some() {
-                return Err(at(
-                    path,
-                    format!(
-                        "`{d}` has a rate of its own (coordinates[{k}].rate): the {what} \
-                         determines it"
-                    ),
-                ));
-            }
-            if dependent.iter().any(|x| &x.0 == d) {
-                return Err(at(path, format!("`{d}` is determined twice")));
-            }
-            dependent.push((d.clone(), k));
-        }
-    }
-    // The loop's derivative is solved for the dependent rates in terms of free rates.
-    for (i, c) in spec.coordinates.iter().enumerate() {
-        if c.rate.is_some() && !dependent.iter().any(|d| d.1 == i) {
-            return Err(at(
-                format!("coordinates[{i}].rate"),
-                "a mechanism with a loop closure or a rolling condition takes free rates only \
-                 for now (drive the crank by a torque rather than impose its rate)",
-            ));
-        }
-    }
+    let dependent: Vec<(String, usize)> = (resolved.closures.iter().map(|c| &c.dependent))
+        .chain(resolved.rolling.iter().map(|r| &r.dependent))
+        .flatten()
+        .map(|&k| (spec.coordinates[k].name.clone(), k))
+        .collect();
     let m = super::validate::build(&geometry(spec))?;
     let reg = m.reg.clone();
     let zero = reg.zero();
@@ -207,8 +165,8 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
         linear.push(d);
     }
     let mut rolling = Vec::new();
-    for (i, r) in spec.rolling.iter().enumerate() {
-        let (law, rs) = rolling_rows(spec, &m, i, r)?;
+    for (i, (r, node)) in spec.rolling.iter().zip(&resolved.rolling).enumerate() {
+        let (law, rs) = rolling_rows(&m, i, r, node)?;
         rolling.push(law);
         linear.extend(rs);
     }
@@ -322,43 +280,15 @@ pub(super) fn solve(spec: &SpecFile) -> Result<Option<Solved>, SpecError> {
     }))
 }
 
-/// The resolved frame of a motion's name in the geometry-only mechanism: a solid's frame, or
-/// a frame by name.
-fn motion_frame(spec: &SpecFile, m: &Mechanism, name: &str) -> Option<FrameId> {
-    let frame = spec
-        .solids
-        .iter()
-        .find(|s| s.name == name)
-        .map_or(name, |s| s.frame.as_str());
-    m.frames.find(frame)
-}
-
 /// A rolling condition's scalar relations (linear in the rates) and how the key writes them.
 fn rolling_rows(
-    spec: &SpecFile,
     m: &Mechanism,
     i: usize,
     r: &RollingSpec,
+    node: &RollingNode,
 ) -> Result<(RollingLaw, Vec<Expr>), SpecError> {
     let path = format!("rolling[{i}].velocity");
-    let q = Quantity::parse(&r.velocity).map_err(|e| at(&path, e.to_string()))?;
-    let QuantityKind::Velocity { point, motion } = &q.kind else {
-        return Err(at(
-            &path,
-            format!(
-                "`{}` is not a velocity: write the velocity that is zero at the contact, \
-                 V(I,2/0)",
-                crate::excerpt::excerpt(&r.velocity)
-            ),
-        ));
-    };
-    let p = m
-        .point(point)
-        .ok_or_else(|| at(&path, format!("unknown point `{point}`")))?;
-    let frame = |n: &str| {
-        motion_frame(spec, m, n).ok_or_else(|| at(&path, format!("unknown solid or frame `{n}`")))
-    };
-    let (fi, fj) = (frame(&motion.moving)?, frame(&motion.reference)?);
+    let (p, [fi, fj]) = (PointId(node.point), node.motion.map(FrameId));
     let v = crate::kinematics::velocity(m, p, fi, fj);
     let n = r.dependent.len();
     let ground = m.frames.ground();
@@ -401,31 +331,15 @@ fn rolling_rows(
         })?
     } else {
         let mut rows = Vec::new();
-        for (k, u) in r.on.iter().enumerate() {
-            let upath = format!("rolling[{i}].on[{k}]");
-            let (f, a) = m
-                .frames
-                .basis_vector(u)
-                .ok_or_else(|| at(&upath, format!("unknown basis vector `{u}`")))?;
-            let e = v.express_in(&m.frames, f)[a.index()].clone();
+        for (k, (u, &(f, a))) in r.on.iter().zip(&node.on).enumerate() {
+            let e = v.express_in(&m.frames, FrameId(f))[a].clone();
             if e.is_zero() {
                 return Err(at(
-                    upath,
+                    format!("rolling[{i}].on[{k}]"),
                     format!("{} has no component on {u} whatever the rates", r.velocity),
                 ));
             }
             rows.push(e);
-        }
-        if rows.len() != n {
-            return Err(at(
-                format!("rolling[{i}].on"),
-                format!(
-                    "{} directions for {n} dependent coordinate{}: as many as the coordinates \
-                     it determines",
-                    rows.len(),
-                    if n == 1 { "" } else { "s" }
-                ),
-            ));
         }
         (None, rows)
     };
@@ -433,5 +347,15 @@ fn rolling_rows(
         .iter()
         .map(|e| crate::latex::expr_lines(e, crate::latex::LINE - 4))
         .collect();
-    Ok((RollingLaw { basis, rows: lines }, rows))
+    let law = RollingLaw {
+        velocity: node.velocity.clone(),
+        point: p,
+        motion: [fi, fj],
+        on: (node.on.iter())
+            .map(|&(f, a)| (FrameId(f), Axis::ALL[a]))
+            .collect(),
+        basis,
+        rows: lines,
+    };
+    Ok((law, rows))
 }

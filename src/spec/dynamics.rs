@@ -1,142 +1,37 @@
-//! Validation of the PFD sections of a spec (`gravity`, `links`, `actions`, `pfd`) into
-//! [`Dynamics`], every error naming the JSON path.
+//! Validation of a spec's PFD sections (`gravity`, `links`, `actions`, `pfd`, `small`) into
+//! [`Dynamics`], on the references the shared resolution found, every error naming the JSON
+//! path.
 
 use super::SpecError;
 use super::validate::{at, expr_err};
 use crate::expr::{Expr, Registry};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::{omega, velocity};
-use crate::mechanism::{BodyId, Mechanism};
-use crate::pfd::{Action, Dynamics, Source, SpringPart, Theorem, link_unknowns, transmitted};
+use crate::mechanism::{BodyId, DryFriction, Mechanism};
+use crate::pfd::{Action, Dynamics, Small, Source, SpringPart, Theorem, transmitted};
 use crate::point::PointId;
-use crate::resolve::{Resolved, Side};
+use crate::resolve::{LinkNode, Resolved, Side};
 use crate::vector::Vector;
-use crate::wire::{CoordinateKind, LinkKind, SpecFile};
-use std::collections::HashSet;
+use crate::wire::{CoordinateKind, LinkKind, LinkSpec, SpecFile};
 use std::rc::Rc;
 
-/// The axis letter of a basis vector text (`z0` → z), before frames exist.
-fn axis_letter(s: &str) -> Option<Axis> {
-    Axis::parse(&s.chars().next()?.to_string())
-}
-
-/// Names the PFD adds to the registry: the unknowns (links' components, then the actions'),
-/// and the angles that enter as themselves (torsion springs).
-pub(super) fn pfd_names(
-    spec: &SpecFile,
-    taken: &crate::resolve::Names,
-) -> Result<(Vec<String>, Vec<String>), SpecError> {
-    let mut unknowns: Vec<String> = Vec::new();
-    let mut seen: HashSet<String> = HashSet::new();
-    let mut add = |path: String, n: String, unknowns: &mut Vec<String>| {
-        crate::expr::check_identifier(&n).map_err(|m| at(&path, m))?;
-        if let Some(m) = crate::resolve::basis_vector_clash(spec, "unknown", &n) {
-            return Err(at(path, m));
-        }
-        if taken.contains(&n) {
-            return Err(at(
-                path,
-                format!("the unknown `{n}` is already a parameter or coordinate"),
-            ));
-        }
-        if !seen.insert(n.clone()) {
-            return Err(at(path, format!("the unknown `{n}` is declared twice")));
-        }
-        unknowns.push(n);
-        Ok(())
+/// The angle coordinates that enter as themselves: a small angle's (sin q ≈ q) and a torsion
+/// spring's (½ k (q − q0)²).
+pub(super) fn raw_angles(spec: &SpecFile) -> Vec<String> {
+    let angle = |n: &String| {
+        (spec.coordinates.iter()).any(|c| &c.name == n && c.kind == CoordinateKind::Angle)
     };
-    for (i, l) in spec.links.iter().enumerate() {
-        let path = format!("links[{i}]");
-        let axis = match (&l.axis, l.kind) {
-            (Some(a), _) => axis_letter(a).ok_or_else(|| {
-                at(
-                    format!("{path}.axis"),
-                    format!("`{a}` is not a basis vector such as z0"),
-                )
-            })?,
-            (None, LinkKind::Ball | LinkKind::Fixed) => Axis::Z,
-            (None, _) => {
-                return Err(at(
-                    format!("{path}.axis"),
-                    format!("a {} needs its axis (or normal)", l.kind.course_name()),
-                ));
-            }
-        };
-        let direction = match (&l.direction, l.kind) {
-            (Some(d), LinkKind::Line) => {
-                let d = axis_letter(d).ok_or_else(|| {
-                    at(
-                        format!("{path}.direction"),
-                        format!("`{d}` is not a basis vector"),
-                    )
-                })?;
-                if d == axis {
-                    return Err(at(
-                        format!("{path}.direction"),
-                        "the line's direction must differ from the normal",
-                    ));
-                }
-                Some(d)
-            }
-            (Some(_), _) => {
-                return Err(at(
-                    format!("{path}.direction"),
-                    "only a line contact (`line`) has a direction",
-                ));
-            }
-            (None, LinkKind::Line) => {
-                return Err(at(
-                    format!("{path}.direction"),
-                    "a line contact needs the direction of its line",
-                ));
-            }
-            (None, _) => None,
-        };
-        for n in link_unknowns(&l.name, transmitted(l.kind, axis, direction)) {
-            add(format!("{path}.name"), n, &mut unknowns)?;
+    let springs = spec
+        .links
+        .iter()
+        .filter_map(|l| Some(&l.spring.as_ref()?.coordinate));
+    let mut raw: Vec<String> = Vec::new();
+    for n in spec.small.iter().map(|s| &s.coordinate).chain(springs) {
+        if angle(n) && !raw.contains(n) {
+            raw.push(n.clone());
         }
     }
-    for (i, a) in spec.actions.iter().enumerate() {
-        for (k, n) in a.unknowns.iter().enumerate() {
-            add(
-                format!("actions[{i}].unknowns[{k}]"),
-                n.clone(),
-                &mut unknowns,
-            )?;
-        }
-    }
-    let mut raw = Vec::new();
-    for s in &spec.small {
-        if spec
-            .coordinates
-            .iter()
-            .any(|c| c.name == s.coordinate && c.kind == CoordinateKind::Angle)
-            && !raw.contains(&s.coordinate)
-        {
-            raw.push(s.coordinate.clone());
-        }
-    }
-    for l in &spec.links {
-        if let Some(s) = &l.spring
-            && spec
-                .coordinates
-                .iter()
-                .any(|c| c.name == s.coordinate && c.kind == CoordinateKind::Angle)
-            && !raw.contains(&s.coordinate)
-        {
-            raw.push(s.coordinate.clone());
-        }
-    }
-    Ok((unknowns, raw))
-}
-
-fn basis_vector(m: &Mechanism, path: &str, s: &str) -> Result<(FrameId, Axis), SpecError> {
-    m.frames.basis_vector(s).ok_or_else(|| {
-        at(
-            path,
-            format!("`{s}` is not a basis vector (x, y or z followed by a frame name)"),
-        )
-    })
+    raw
 }
 
 fn vector(m: &Mechanism, path: &str, text: &str) -> Result<(Vector, FrameId), SpecError> {
@@ -169,46 +64,12 @@ fn frame_of_side(m: &Mechanism, s: &Source) -> FrameId {
     }
 }
 
-/// The links (indices) of a path from `a` to `b` in the graph of links, when a new link
-/// between them would close a loop. Links in parallel between the same two solids (two
-/// bearings of one shaft) make one connection, not a loop.
-fn closes_loop(graph: &[(usize, usize, usize)], a: usize, b: usize) -> Option<Vec<usize>> {
-    if graph
-        .iter()
-        .any(|&(x, y, _)| (x, y) == (a, b) || (x, y) == (b, a))
-    {
-        return None;
+/// The side of a link or an action, as resolved.
+fn source(s: Side) -> Source {
+    match s {
+        Side::Ground => Source::Outside,
+        Side::Solid(b) => Source::Body(BodyId(b)),
     }
-    // Breadth-first search from a, remembering the link that reached each node.
-    let mut reached: std::collections::BTreeMap<usize, Option<(usize, usize)>> = [(a, None)].into();
-    let mut queue = std::collections::VecDeque::from([a]);
-    while let Some(n) = queue.pop_front() {
-        for &(x, y, k) in graph {
-            let other = if x == n {
-                y
-            } else if y == n {
-                x
-            } else {
-                continue;
-            };
-            if reached.contains_key(&other) {
-                continue;
-            }
-            reached.insert(other, Some((n, k)));
-            if other == b {
-                let mut chain = Vec::new();
-                let mut cur = b;
-                while let Some(Some((prev, k))) = reached.get(&cur) {
-                    chain.push(*k);
-                    cur = *prev;
-                }
-                chain.reverse();
-                return Some(chain);
-            }
-            queue.push_back(other);
-        }
-    }
-    None
 }
 
 /// Builds the actions and theorems of the spec on the validated mechanism.
@@ -217,256 +78,252 @@ pub(super) fn build(
     spec: &SpecFile,
     resolved: &Resolved,
 ) -> Result<Dynamics, SpecError> {
-    let reg = &m.reg;
-    let mut d = Dynamics::default();
-    if let Some(g) = &spec.gravity {
-        let (v, _) = vector(m, "gravity", g)?;
-        for (f, c) in v.parts() {
-            if f != m.frames.ground() || c.iter().any(|e| !e.is_time_independent()) {
-                return Err(at(
-                    "gravity",
-                    format!(
-                        "gravity is a constant vector of the ground's basis ({}0, …)",
-                        'z'
-                    ),
-                ));
-            }
-        }
-        d.gravity = Some(v);
-    }
-    let mut unknown_iter = reg.unknowns().iter();
-    // The graph of links so far: (node, node, link index), the ground being node 0.
-    let mut graph: Vec<(usize, usize, usize)> = Vec::new();
-    for ((i, l), link) in spec.links.iter().enumerate().zip(&resolved.links) {
+    let mut d = Dynamics {
+        gravity: gravity(m, spec)?,
+        ..Default::default()
+    };
+    // The unknowns, named in the order of the links' transmitted components.
+    let mut unknowns = m.reg.unknowns().iter();
+    for (i, node) in resolved.links.iter().enumerate() {
         let path = format!("links[{i}]");
-        // Named, between two different solids (or the ground and a solid), as resolved.
-        let source = |s: Side| match s {
-            Side::Ground => Source::Outside,
-            Side::Solid(b) => Source::Body(BodyId(b)),
-        };
-        let from = source(link.between[0]);
-        let Source::Body(on) = source(link.between[1]) else {
-            unreachable!("the ground never receives a link's action, as resolved")
-        };
-        let node = |s: &Source| match s {
-            Source::Outside => 0,
-            Source::Body(b) => b.0 + 1,
-        };
-        let (na, nb) = (node(&from), node(&Source::Body(on)));
-        // A loop closed by a closure (a crank–slider's slide) is a loop of the mechanism.
-        if let Some(chain) = closes_loop(&graph, na, nb).filter(|_| spec.closures.is_empty()) {
-            let names: Vec<&str> = chain.iter().map(|&k| spec.links[k].name.as_str()).collect();
-            return Err(at(
-                format!("{path}.between"),
-                format!(
-                    "the link {} closes a kinematic loop: {} and {} are already connected by the \
-                     links {}. Closed kinematic loops are not supported yet (they need \
-                     constraint equations between the coordinates); keep the links of a tree, \
-                     from the ground to every solid",
-                    l.name,
-                    l.between[0],
-                    l.between[1],
-                    names.join(", ")
-                ),
-            ));
-        }
-        graph.push((na, nb, i));
-        let point = PointId(link.point);
-        let (basis, axis) = match &l.axis {
-            Some(a) => basis_vector(m, &format!("{path}.axis"), a)?,
-            None => (m.frames.ground(), Axis::Z),
-        };
-        let direction = l.direction.as_ref().and_then(|s| axis_letter(s));
-        let t = transmitted(l.kind, axis, direction);
-        let mut comps: [Expr; 6] = std::array::from_fn(|_| reg.zero());
-        for (k, on_k) in t.iter().enumerate() {
-            if *on_k {
-                let n = unknown_iter.next().expect("unknowns declared in order");
-                comps[k] = reg.param(n).expect("unknown registered");
-            }
-        }
-        let [x, y, z, ll, mm, nn] = comps;
-        let mut resultant = Vector::new(basis, [x, y, z]);
-        let mut moment = Vector::new(basis, [ll, mm, nn]);
-        let u = Vector::along(basis, axis, reg.one());
-        let (fa, fb) = (frame_of_side(m, &from), m.body(on).frame);
-        let mut description = format!("{} ", l.kind.course_name());
-        description.push_str(&match (l.kind, &l.axis) {
-            (LinkKind::Ball, _) | (_, None) => format!("de centre {}", l.point),
-            (LinkKind::Plane | LinkKind::Point | LinkKind::Line, Some(a)) => {
-                format!("de normale ({}, {a})", l.point)
-            }
-            (_, Some(a)) => format!("d'axe ({}, {a})", l.point),
-        });
-        if let Some(f) = &l.friction {
-            let fpath = format!("{path}.friction");
-            let f = constant(reg, &fpath, f)?;
-            match l.kind {
-                LinkKind::Pivot => {
-                    let rate = omega(m, fb, fa).dot(&m.frames, &u);
-                    moment = moment.sub(&u.scale(&(&f * &rate)));
-                }
-                LinkKind::Slider => {
-                    let rate = velocity(m, point, fb, fa).dot(&m.frames, &u);
-                    resultant = resultant.sub(&u.scale(&(&f * &rate)));
-                }
-                _ => {
-                    return Err(at(
-                        fpath,
-                        "viscous friction is declared on a pivot or a slider",
-                    ));
-                }
-            }
-            description.push_str(", avec frottement visqueux");
-        }
-        if let (Some(c), Some(sign)) = (&l.coulomb, l.sign_parameter()) {
-            let cpath = format!("{path}.coulomb");
-            let c = constant(reg, &cpath, c)?;
-            if let Some(n) = reg.unknowns().iter().find(|n| {
-                reg.param(n)
-                    .and_then(|u| u.single_variable())
-                    .is_some_and(|v| c.contains_var(v))
-            }) {
-                return Err(at(
-                    cpath,
-                    format!(
-                        "the magnitude holds the unknown `{n}`: dry friction takes a magnitude \
-                         of the parameters (write the normal force the statement knows, \
-                         f*m*g*cos(alpha))"
-                    ),
-                ));
-            }
-            let eps = reg.parse(&sign).map_err(|e| expr_err(&cpath, e))?;
-            let push = u.scale(&(&c * &eps));
-            let rate = match l.kind {
-                LinkKind::Pivot => {
-                    moment = moment.sub(&push);
-                    omega(m, fb, fa).dot(&m.frames, &u)
-                }
-                LinkKind::Slider => {
-                    resultant = resultant.sub(&push);
-                    velocity(m, point, fb, fa).dot(&m.frames, &u)
-                }
-                _ => {
-                    return Err(at(cpath, "dry friction is declared on a pivot or a slider"));
-                }
-            };
-            if rate.is_zero() {
-                return Err(at(
-                    cpath,
-                    "the link's relative rate along its axis is zero whatever the motion: \
-                     nothing slides",
-                ));
-            }
-            d.dry.push(crate::mechanism::DryFriction {
-                sign,
-                rate,
-                magnitude: c,
-            });
-            description.push_str(", avec frottement sec");
-        }
-        let mut spring = None;
-        if let Some(s) = &l.spring {
-            let spath = format!("{path}.spring");
-            let q = reg.coord(&s.coordinate).ok_or_else(|| {
-                at(
-                    format!("{spath}.coordinate"),
-                    format!("unknown coordinate `{}`", s.coordinate),
-                )
-            })?;
-            let k = constant(reg, &format!("{spath}.stiffness"), &s.stiffness)?;
-            let q0 = match &s.free {
-                Some(t) => constant(reg, &format!("{spath}.free"), t)?,
-                None => reg.zero(),
-            };
-            let value = reg.value(q).ok_or_else(|| {
-                at(
-                    format!("{spath}.coordinate"),
-                    "the coordinate has no value variable",
-                )
-            })?;
-            let stretch = &value - &q0;
-            let force = u.scale(&(&k * &stretch)).neg();
-            let potential = &(&reg.rational(1, 2) * &k) * &(&stretch * &stretch);
-            let (sr, sm) = match l.kind {
-                LinkKind::Pivot => (Vector::zero(), force),
-                LinkKind::Slider => (force, Vector::zero()),
-                _ => {
-                    return Err(at(spath, "a spring is declared on a pivot or a slider"));
-                }
-            };
-            resultant = resultant.add(&sr);
-            moment = moment.add(&sm);
-            spring = Some(SpringPart {
-                potential,
-                resultant: sr,
-                moment: sm,
-            });
-            description.push_str(", avec ressort");
-        }
-        d.actions.push(Action {
-            from_label: l.between[0].clone(),
-            on_label: l.between[1].clone(),
-            exerted_by: l.between[0].clone(),
-            from,
-            on,
-            point,
-            resultant,
-            moment,
-            basis,
-            description,
-            label: l.label(),
-            spring,
-        });
+        let action = link(m, (&spec.links[i], &path), node, &mut unknowns, &mut d.dry)?;
+        d.actions.push(action);
     }
-    for ((i, a), action) in spec.actions.iter().enumerate().zip(&resolved.actions) {
-        let path = format!("actions[{i}]");
-        // Named, exerted by a solid (or the ground) on another solid, as resolved.
-        let from = match action.from {
-            Side::Ground => Source::Outside,
-            Side::Solid(b) => Source::Body(BodyId(b)),
-        };
-        let on = BodyId(action.on);
-        let point = PointId(action.point);
-        let (resultant, b1) = match &a.resultant {
-            Some(t) => vector(m, &format!("{path}.resultant"), t)?,
-            None => (Vector::zero(), m.frames.ground()),
-        };
-        let (moment, b2) = match &a.moment {
-            Some(t) => vector(m, &format!("{path}.moment"), t)?,
-            None => (Vector::zero(), b1),
-        };
-        let basis = if a.resultant.is_some() { b1 } else { b2 };
-        d.actions.push(Action {
-            from_label: a.name.clone(),
-            on_label: a.on.clone(),
-            exerted_by: a.from.clone(),
-            from,
-            on,
-            point,
-            resultant,
-            moment,
-            basis,
-            description: format!("action {} de {} sur {}", a.name, a.from, a.on),
-            label: a.label(),
-            spring: None,
-        });
+    for (i, node) in resolved.actions.iter().enumerate() {
+        d.actions.push(action(m, spec, i, node)?);
     }
     // What each theorem isolates, its point, its vector and its coordinate, as resolved.
     for (t, node) in spec.pfd.iter().zip(&resolved.theorems) {
-        let solids = node.isolate.iter().map(|&b| BodyId(b)).collect();
-        let point = node.point.map_or(m.points.origin(), PointId);
-        let on = (FrameId(node.on.0), [Axis::X, Axis::Y, Axis::Z][node.on.1]);
-        let eom = (t.eom.as_ref()).map(|c| reg.coord(c).expect("a coordinate, as resolved"));
+        let eom = (t.eom.as_ref()).map(|c| m.reg.coord(c).expect("a coordinate, as resolved"));
         d.theorems.push(Theorem {
             isolate: t.isolate.clone(),
-            solids,
+            solids: node.isolate.iter().map(|&b| BodyId(b)).collect(),
             kind: t.theorem,
-            point,
-            on,
+            point: node.point.map_or(m.points.origin(), PointId),
+            on: (FrameId(node.on.0), Axis::ALL[node.on.1]),
             eom,
         });
     }
+    d.small = small(m, spec)?;
+    Ok(d)
+}
+
+/// Gravity: a constant vector of the ground's basis.
+fn gravity(m: &Mechanism, spec: &SpecFile) -> Result<Option<Vector>, SpecError> {
+    let Some(g) = &spec.gravity else {
+        return Ok(None);
+    };
+    let (v, _) = vector(m, "gravity", g)?;
+    for (f, c) in v.parts() {
+        if f != m.frames.ground() || c.iter().any(|e| !e.is_time_independent()) {
+            let why = "gravity is a constant vector of the ground's basis (z0, …)";
+            return Err(at("gravity", why));
+        }
+    }
+    Ok(Some(v))
+}
+
+/// A link's action on its second solid: one unknown per component it transmits, in the basis
+/// of its axis, and what its viscous friction, dry friction and spring add along the axis
+/// (a torque for a pivot, a force for a slider: the resolution allows them on no other kind).
+fn link<'u>(
+    m: &Mechanism,
+    (l, path): (&LinkSpec, &str),
+    node: &LinkNode,
+    unknowns: &mut impl Iterator<Item = &'u String>,
+    dry: &mut Vec<DryFriction>,
+) -> Result<Action, SpecError> {
+    let reg = &m.reg;
+    let from = source(node.between[0]);
+    let Source::Body(on) = source(node.between[1]) else {
+        unreachable!("the ground never receives a link's action, as resolved")
+    };
+    let (point, basis) = (PointId(node.point), FrameId(node.axis.0));
+    let axis = Axis::ALL[node.axis.1];
+    let t = transmitted(l.kind, axis, node.direction.map(|d| Axis::ALL[d]));
+    let mut comps: [Expr; 6] = std::array::from_fn(|_| reg.zero());
+    for (k, _) in t.iter().enumerate().filter(|c| *c.1) {
+        let n = unknowns.next().expect("unknowns declared in order");
+        comps[k] = reg.param(n).expect("unknown registered");
+    }
+    let [x, y, z, ll, mm, nn] = comps;
+    let (mut resultant, mut moment) = (
+        Vector::new(basis, [x, y, z]),
+        Vector::new(basis, [ll, mm, nn]),
+    );
+    let u = Vector::along(basis, axis, reg.one());
+    // The relative rate along the axis: Ω(b/a)·u for a pivot, V(P ∈ b/a)·u for a slider.
+    let pivot = l.kind == LinkKind::Pivot;
+    let (fa, fb) = (frame_of_side(m, &from), m.body(on).frame);
+    let rate = || match pivot {
+        true => omega(m, fb, fa).dot(&m.frames, &u),
+        false => velocity(m, point, fb, fa).dot(&m.frames, &u),
+    };
+    let mut along = |v: Vector| match pivot {
+        true => moment = moment.add(&v),
+        false => resultant = resultant.add(&v),
+    };
+    let mut description = description(l);
+    if let Some(f) = &l.friction {
+        let f = constant(reg, &format!("{path}.friction"), f)?;
+        along(u.scale(&(&f * &rate())).neg());
+        description.push_str(", avec frottement visqueux");
+    }
+    if let Some(c) = &l.coulomb {
+        let (push, friction) = coulomb(reg, (l, path), c, rate())?;
+        along(u.scale(&push).neg());
+        dry.push(friction);
+        description.push_str(", avec frottement sec");
+    }
+    let spring = match (&l.spring, node.spring) {
+        (Some(s), Some(_)) => {
+            let (force, potential) = spring(reg, s, &format!("{path}.spring"))?;
+            let force = u.scale(&force).neg();
+            along(force.clone());
+            description.push_str(", avec ressort");
+            let (resultant, moment) = match pivot {
+                true => (Vector::zero(), force),
+                false => (force, Vector::zero()),
+            };
+            Some(SpringPart {
+                potential,
+                resultant,
+                moment,
+            })
+        }
+        _ => None,
+    };
+    Ok(Action {
+        from_label: l.between[0].clone(),
+        on_label: l.between[1].clone(),
+        exerted_by: l.between[0].clone(),
+        from,
+        on,
+        point,
+        resultant,
+        moment,
+        basis,
+        description,
+        label: l.label(),
+        spring,
+    })
+}
+
+/// How the course describes a link: « liaison pivot d'axe (O1, z0) », « de normale », « de
+/// centre ».
+fn description(l: &LinkSpec) -> String {
+    let place = match (l.kind, &l.axis) {
+        (LinkKind::Ball, _) | (_, None) => format!("de centre {}", l.point),
+        (LinkKind::Plane | LinkKind::Point | LinkKind::Line, Some(a)) => {
+            format!("de normale ({}, {a})", l.point)
+        }
+        (_, Some(a)) => format!("d'axe ({}, {a})", l.point),
+    };
+    format!("{} {place}", l.kind.course_name())
+}
+
+/// Dry friction of magnitude C (the parameters' only, never an unknown) on a link whose
+/// relative rate along its axis is `rate`, not zero whatever the motion: C ε, what the link
+/// adds against the axis, and the friction the samples set ε's sign from.
+fn coulomb(
+    reg: &Rc<Registry>,
+    (l, path): (&LinkSpec, &str),
+    text: &str,
+    rate: Expr,
+) -> Result<(Expr, DryFriction), SpecError> {
+    let path = format!("{path}.coulomb");
+    let err = |why: String| at(&path, why);
+    let c = constant(reg, &path, text)?;
+    let holds = |n: &&String| {
+        reg.param(n)
+            .and_then(|u| u.single_variable())
+            .is_some_and(|v| c.contains_var(v))
+    };
+    if let Some(n) = reg.unknowns().iter().find(holds) {
+        return Err(err(format!(
+            "the magnitude holds the unknown `{n}`: dry friction takes a magnitude of the \
+             parameters (write the normal force the statement knows, f*m*g*cos(alpha))"
+        )));
+    }
+    let sign = l.sign_parameter().expect("a link with dry friction");
+    let eps = reg.parse(&sign).map_err(|e| err(e.to_string()))?;
+    if rate.is_zero() {
+        return Err(err(
+            "the link's relative rate along its axis is zero whatever the motion: nothing slides"
+                .into(),
+        ));
+    }
+    let push = &c * &eps;
+    Ok((
+        push,
+        DryFriction {
+            sign,
+            rate,
+            magnitude: c,
+        },
+    ))
+}
+
+/// A spring of stiffness k and free value q0 on the coordinate q: k (q − q0), what it adds
+/// against the axis, and its potential energy ½ k (q − q0)².
+fn spring(
+    reg: &Rc<Registry>,
+    s: &crate::wire::SpringSpec,
+    path: &str,
+) -> Result<(Expr, Expr), SpecError> {
+    let q = reg.coord(&s.coordinate).expect("a coordinate, as resolved");
+    let k = constant(reg, &format!("{path}.stiffness"), &s.stiffness)?;
+    let q0 = match &s.free {
+        Some(t) => constant(reg, &format!("{path}.free"), t)?,
+        None => reg.zero(),
+    };
+    let value = reg.value(q).ok_or_else(|| {
+        at(
+            format!("{path}.coordinate"),
+            "the coordinate has no value variable",
+        )
+    })?;
+    let stretch = &value - &q0;
+    let potential = &(&reg.rational(1, 2) * &k) * &(&stretch * &stretch);
+    Ok((&k * &stretch, potential))
+}
+
+/// A given action {T(from→on)} at its point, from its resultant and moment expressions.
+fn action(
+    m: &Mechanism,
+    spec: &SpecFile,
+    i: usize,
+    node: &crate::resolve::ActionNode,
+) -> Result<Action, SpecError> {
+    let (a, path) = (&spec.actions[i], format!("actions[{i}]"));
+    let (resultant, b1) = match &a.resultant {
+        Some(t) => vector(m, &format!("{path}.resultant"), t)?,
+        None => (Vector::zero(), m.frames.ground()),
+    };
+    let (moment, b2) = match &a.moment {
+        Some(t) => vector(m, &format!("{path}.moment"), t)?,
+        None => (Vector::zero(), b1),
+    };
+    Ok(Action {
+        from_label: a.name.clone(),
+        on_label: a.on.clone(),
+        exerted_by: a.from.clone(),
+        from: source(node.from),
+        on: BodyId(node.on),
+        point: PointId(node.point),
+        resultant,
+        moment,
+        basis: if a.resultant.is_some() { b1 } else { b2 },
+        description: format!("action {} de {} sur {}", a.name, a.from, a.on),
+        label: a.label(),
+        spring: None,
+    })
+}
+
+/// The coordinates declared small, for `lin(…)`: each once, an angle around 0.
+fn small(m: &Mechanism, spec: &SpecFile) -> Result<Vec<Small>, SpecError> {
+    let reg = &m.reg;
+    let mut out: Vec<Small> = Vec::new();
     for (i, s) in spec.small.iter().enumerate() {
         let path = format!("small[{i}]");
         // lin(…) sets cos q to 1 and sin q to 0 coordinate by coordinate: it would neither
@@ -479,12 +336,10 @@ pub(super) fn build(
             ));
         }
         let q = reg.coord(&s.coordinate).ok_or_else(|| {
-            at(
-                format!("{path}.coordinate"),
-                format!("unknown coordinate `{}`", s.coordinate),
-            )
+            let why = format!("unknown coordinate `{}`", s.coordinate);
+            at(format!("{path}.coordinate"), why)
         })?;
-        if d.small.iter().any(|x| x.coord == q) {
+        if out.iter().any(|x| x.coord == q) {
             return Err(at(format!("{path}.coordinate"), "declared small twice"));
         }
         let around = match &s.around {
@@ -497,47 +352,7 @@ pub(super) fn build(
                 "a small angle moves around 0: write the angle from the equilibrium position",
             ));
         }
-        d.small.push(crate::pfd::Small { coord: q, around });
+        out.push(Small { coord: q, around });
     }
-    Ok(d)
-}
-
-/// The spec with a parameter ε (value ±1, the sign of the relative rate) for each link with
-/// dry friction, named by [`crate::wire::LinkSpec::sign_parameter`].
-pub(super) fn with_signs(spec: &SpecFile) -> Result<std::borrow::Cow<'_, SpecFile>, SpecError> {
-    if spec.links.iter().all(|l| l.coulomb.is_none()) {
-        return Ok(std::borrow::Cow::Borrowed(spec));
-    }
-    let mut out = spec.clone();
-    for (i, l) in spec.links.iter().enumerate() {
-        let Some(name) = l.sign_parameter() else {
-            continue;
-        };
-        let taken = spec
-            .parameters
-            .iter()
-            .map(|p| &p.name)
-            .chain(spec.coordinates.iter().map(|c| &c.name))
-            .chain(spec.aliases.iter().map(|a| &a.name))
-            .any(|n| *n == name);
-        if taken {
-            return Err(at(
-                format!("links[{i}].coulomb"),
-                format!(
-                    "`{name}` is the sign of this link's relative rate under dry friction: \
-                     give the parameter of that name another name"
-                ),
-            ));
-        }
-        out.parameters.push(crate::wire::ParameterSpec {
-            name,
-            description: Some(format!(
-                "signe de la vitesse relative de la liaison {} ($\\pm 1$)",
-                l.name
-            )),
-            unit: Some("1".into()),
-            kind: Default::default(),
-        });
-    }
-    Ok(std::borrow::Cow::Owned(out))
+    Ok(out)
 }

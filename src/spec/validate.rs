@@ -9,7 +9,7 @@ use crate::inertia::{Inertia, Symmetry};
 use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
 use crate::point::{PointId, Points};
 use crate::quantity::{Quantity, check_name};
-use crate::resolve::{Names, Resolved};
+use crate::resolve::Resolved;
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
 use std::rc::Rc;
@@ -24,6 +24,11 @@ pub(super) fn at(path: impl Into<String>, message: impl Into<String>) -> SpecErr
 
 pub(super) fn expr_err(path: &str, e: ExprError) -> SpecError {
     at(path, e.to_string())
+}
+
+/// A refusal of the shared resolution, as the exact side reports it.
+pub(super) fn refused(e: crate::resolve::Refusal) -> SpecError {
+    at(e.path, e.message)
 }
 
 /// Bounds the degree of a spec expression (see [`crate::expr::MAX_SPEC_DEGREE`]).
@@ -49,49 +54,49 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     // Dry friction's signs are parameters of their own; loop closures and rolling conditions
     // give the dependent coordinates their rates (driven by the free ones), read on the
     // geometry alone; the mechanism keeps the spec as written.
-    let signed = super::dynamics::with_signs(spec)?;
+    let signed = crate::resolve::with_signs(spec).map_err(refused)?;
     let written = spec;
     let spec = signed.as_ref();
-    match super::closures::solve(spec)? {
-        None => build_with(spec, written, None),
+    // Names, trees and references: resolved once for both sides.
+    let resolved = crate::resolve::resolve(spec).map_err(refused)?;
+    match super::closures::solve(spec, &resolved)? {
+        None => build_with(spec, written, &resolved, None),
         Some(solved) => {
             let mut with_rates = spec.clone();
             for (k, rate) in &solved.rates {
                 with_rates.coordinates[*k].rate = Some(rate.clone());
             }
-            build_with(&with_rates, written, Some(&solved))
+            build_with(&with_rates, written, &resolved, Some(&solved))
         }
     }
 }
 
-/// [`build`] from a spec whose dependent coordinates have their rates; `written` is the spec
-/// as the user wrote it, kept in the mechanism.
+/// [`build`] from a spec whose dependent coordinates have their rates, resolved; `written` is
+/// the spec as the user wrote it, kept in the mechanism.
 fn build_with(
     spec: &SpecFile,
     written: &SpecFile,
+    resolved: &Resolved,
     solved: Option<&super::closures::Solved>,
 ) -> Result<Mechanism, SpecError> {
     // Free texts first: a formula the answer key could not print safely refuses the spec.
     for (path, text) in free_texts(spec) {
         crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
     }
-    // Names (parameters, coordinates and aliases share one namespace with the reserved words
-    // and the basis vector names) and trees: resolved once for both sides.
-    let resolved = crate::resolve::resolve(spec).map_err(|e| at(e.path, e.message))?;
     units(spec)?;
-    let reg = registry(spec, &resolved.names, solved)?;
+    let reg = registry(spec, resolved, solved)?;
 
-    let frames = frames(spec, &reg, &resolved)?;
-    let points = points(spec, &reg, &frames, &resolved)?;
+    let frames = frames(spec, &reg, resolved)?;
+    let points = points(spec, &reg, &frames, resolved)?;
     let frame_origins = resolved.frames.iter().map(|f| PointId(f.origin)).collect();
 
-    let bodies = bodies(spec, &reg, &frames, &resolved)?;
+    let bodies = bodies(spec, &reg, &frames, resolved)?;
 
     let sets = (resolved.sets.iter())
         .map(|(n, ids)| (n.to_string(), ids.iter().map(|&i| BodyId(i)).collect()))
         .collect();
 
-    let hypotheses = hypotheses(spec, &reg, &bodies, &resolved)?;
+    let hypotheses = hypotheses(spec, &reg, &bodies, resolved)?;
 
     let default_basis = match &spec.default_basis {
         None => frames.ground(),
@@ -127,7 +132,7 @@ fn build_with(
             rolling: s.rolling.clone(),
         }),
     };
-    m.dynamics = super::dynamics::build(&m, spec, &resolved)?;
+    m.dynamics = super::dynamics::build(&m, spec, resolved)?;
     // Each requested quantity must refer to known objects.
     for (i, q) in m.quantities.iter().enumerate() {
         crate::derivation::resolve(&m, q)
@@ -176,7 +181,7 @@ fn units(spec: &SpecFile) -> Result<(), SpecError> {
 /// from the loop closures, the reciprocals of cos φ.
 fn registry(
     spec: &SpecFile,
-    names: &Names,
+    resolved: &Resolved,
     solved: Option<&super::closures::Solved>,
 ) -> Result<Rc<Registry>, SpecError> {
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
@@ -186,7 +191,14 @@ fn registry(
         .filter(|p| p.kind == ParameterKind::Angle)
         .map(|p| p.name.clone())
         .collect();
-    let (unknowns, mut raw_angles) = super::dynamics::pfd_names(spec, names)?;
+    // The PFD's unknowns, named and checked by the resolution from this side's own reading
+    // of which components each link transmits.
+    let transmitted = |kind, a: usize, d: Option<usize>| {
+        let axis = |k: usize| [Axis::X, Axis::Y, Axis::Z][k];
+        crate::pfd::transmitted(kind, axis(a), d.map(axis))
+    };
+    let unknowns = crate::resolve::unknowns(spec, resolved, &transmitted).map_err(refused)?;
+    let mut raw_angles = super::dynamics::raw_angles(spec);
     // An angle coordinate written as itself (a disc's centre at R*theta*x1) gets a variable
     // of its own besides cos and sin.
     for (_, text) in expression_texts(spec) {

@@ -22,6 +22,7 @@ mod layers;
 mod library;
 mod links;
 mod parity;
+mod parity_sections;
 mod pfd;
 mod power;
 mod printed;

@@ -28,7 +28,7 @@ const EXACT_ONLY: &[&str] = &[
 
 /// The verdicts of both sides on `spec` (`None` if it is not a spec's shape at all: both
 /// sides share that parse).
-fn verdicts(spec: &Value) -> Option<(Result<(), String>, Result<(), String>)> {
+pub(crate) fn verdicts(spec: &Value) -> Option<(Result<(), String>, Result<(), String>)> {
     let text = spec.to_string();
     let file = torseur::spec::parse_spec(&text).ok()?;
     let exact = torseur::spec::build(&file)

@@ -19,13 +19,12 @@
 //! them; an `eom` equation's residual, with those values substituted, is the equation of
 //! motion's value at the sample (q̈ is the sample's).
 
-use super::checks::identifier;
 use super::expr::{self, Env, Node};
 use super::kin::{self, State, Values};
 use super::model::{Context, spec_err};
 use super::{NumericError, NumericModel, cloud};
-use crate::resolve::{Resolved, Side};
-use crate::wire::{LinkKind, SpecFile, TheoremKind};
+use crate::resolve::{ActionNode, LinkNode, Resolved, Side};
+use crate::wire::{ActionSpec, LinkKind, LinkSpec, SpecFile, TheoremKind};
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -69,8 +68,8 @@ pub(super) struct LinkInfo {
     point: usize,
     /// Frame whose basis holds the components.
     basis: usize,
-    /// Axis (or normal) letter 0..3 in `basis`, when the kind has one.
-    axis: Option<usize>,
+    /// Axis (or normal) 0..3 in `basis` (z of the ground for a ball or a fixed link).
+    axis: usize,
     /// Transmitted components (0..3 resultant, 3..6 moment) and their unknowns' indices.
     components: Vec<(usize, usize)>,
     /// Viscous friction coefficient f.
@@ -171,355 +170,179 @@ fn transmitted(kind: LinkKind, a: usize, d: usize) -> [bool; 6] {
     t
 }
 
-fn kind_name(kind: LinkKind) -> &'static str {
-    match kind {
-        LinkKind::Fixed => "fixed",
-        LinkKind::Pivot => "pivot",
-        LinkKind::Slider => "slider",
-        LinkKind::PivotSlider => "pivot_slider",
-        LinkKind::Ball => "ball",
-        LinkKind::Plane => "plane",
-        LinkKind::Annular => "annular",
-        LinkKind::Line => "line",
-        LinkKind::Point => "point",
-    }
-}
-
 /// Resolves the spec's `gravity`, `links`, `actions` and `pfd` against a model whose other
-/// parts are built. Errors name the JSON path.
+/// parts are built, on the references the shared resolution found. Errors name the JSON path.
 pub(super) fn build(
     spec: &SpecFile,
     m: &NumericModel,
     trees: &Resolved,
 ) -> Result<Dynamics, NumericError> {
-    let names = m.names();
-    let mut d = Dynamics::default();
-
-    let vector = |name: &str, path: String| -> Result<(usize, usize), NumericError> {
-        names
-            .basis_vector(name.trim())
-            .ok_or_else(|| spec_err(path, format!("`{name}` is not a basis vector such as z0")))
+    let mut d = Dynamics {
+        gravity: gravity(spec, m)?,
+        ..Default::default()
     };
-    let constant = |text: &str, path: String| -> Result<Node, NumericError> {
-        names
-            .parse(text, Context::Constant)
-            .map_err(|e| spec_err(path, e))
-    };
-    // A name may become an unknown only if it means nothing else in expressions.
-    let free_name = |name: &str| -> Result<(), String> {
-        identifier(name)?;
-        if name == expr::PI_NAME {
-            return Err(format!("`{name}` is π"));
-        }
-        if m.param_index.contains_key(name) {
-            return Err(format!(
-                "`{name}` is a parameter: an unknown is solved for, not given"
-            ));
-        }
-        if m.coord_index.contains_key(name) {
-            return Err(format!("`{name}` is a time coordinate"));
-        }
-        if names.basis_vector(name).is_some() {
-            return Err(format!("`{name}` is a basis vector"));
-        }
-        Ok(())
-    };
-
-    // Gravity: a vector constant in the ground frame.
-    if let Some(g) = &spec.gravity {
-        let node = names
-            .parse(g, Context::ConstantVector)
-            .map_err(|e| spec_err("gravity", e))?;
-        let mut used = BTreeSet::new();
-        expr::frames_in(&node, &mut used);
-        for f in used {
-            let mut k = f;
-            while k != 0 {
-                if let Some((_, _, angle)) = &m.frames[k].rotation
-                    && expr::depends_on_time(angle)
-                {
-                    return Err(spec_err(
-                        "gravity",
-                        format!(
-                            "gravity is constant in the ground frame: the basis of frame {} \
-                             turns with time",
-                            m.frames[f].name
-                        ),
-                    ));
-                }
-                k = m.frames[k].parent;
-            }
-        }
-        d.gravity = Some(node);
+    // The unknowns: named and checked by the resolution, from this backend's own reading of
+    // which components each link transmits.
+    let own = |kind, a, dir: Option<usize>| transmitted(kind, a, dir.unwrap_or(0));
+    d.unknowns =
+        crate::resolve::unknowns(spec, trees, &own).map_err(|e| spec_err(e.path, e.message))?;
+    d.unknown_index = (d.unknowns.iter().enumerate())
+        .map(|(k, n)| (n.clone(), k))
+        .collect();
+    let mut next = 0;
+    for (i, (l, node)) in spec.links.iter().zip(&trees.links).enumerate() {
+        let (path, t) = (
+            format!("links[{i}]"),
+            transmitted(l.kind, node.axis.1, node.direction.unwrap_or(0)),
+        );
+        let components: Vec<(usize, usize)> = (0..6).filter(|&k| t[k]).zip(next..).collect();
+        next += components.len();
+        d.links.push(link(m, (l, &path), node, components)?);
     }
-
-    // Links.
-    let letters = ['X', 'Y', 'Z', 'L', 'M', 'N'];
-    let mut joined: Vec<(Body, Body)> = Vec::new();
-    for ((i, l), link) in spec.links.iter().enumerate().zip(&trees.links) {
-        let path = format!("links[{i}]");
-        // Named, between two different solids (or the ground and a solid), as resolved.
-        let between = link.between.map(|s| match s {
-            Side::Ground => Body::Frame(0),
-            Side::Solid(k) => Body::Solid(k),
-        });
-        // A closed kinematic loop needs its closure; links in parallel between the same two
-        // solids (two bearings) are one connection.
-        let parallel = joined
-            .iter()
-            .any(|&(a, b)| [a, b] == between || [b, a] == between);
-        if spec.closures.is_empty() && !parallel && connected(&joined, between[0], between[1]) {
-            return Err(spec_err(
-                format!("{path}.between"),
-                format!(
-                    "the link {} closes a kinematic loop: declare its closure (`closures`)",
-                    l.name
-                ),
-            ));
-        }
-        joined.push((between[0], between[1]));
-        let p = link.point;
-        let axis = l
-            .axis
-            .as_deref()
-            .map(|a| vector(a, format!("{path}.axis")))
-            .transpose()?;
-        let kind = l.kind;
-        if axis.is_none() && !matches!(kind, LinkKind::Fixed | LinkKind::Ball) {
-            return Err(spec_err(
-                format!("{path}.axis"),
-                format!(
-                    "a {} link needs its axis (or normal), a basis vector such as z0",
-                    kind_name(kind)
-                ),
-            ));
-        }
-        let basis = axis.map_or(0, |a| a.0);
-        let a = axis.map_or(0, |a| a.1);
-        let mut dir = 0;
-        match (&l.direction, kind) {
-            (Some(text), LinkKind::Line) => {
-                let (f, k) = vector(text, format!("{path}.direction"))?;
-                if f != basis || k == a {
-                    return Err(spec_err(
-                        format!("{path}.direction"),
-                        format!(
-                            "the line direction is another basis vector of the normal's basis \
-                             B{}",
-                            m.frames[basis].name
-                        ),
-                    ));
-                }
-                dir = k;
-            }
-            (None, LinkKind::Line) => {
-                return Err(spec_err(
-                    format!("{path}.direction"),
-                    "a line link needs its line direction, a basis vector of its normal's basis",
-                ));
-            }
-            (Some(_), _) => {
-                return Err(spec_err(
-                    format!("{path}.direction"),
-                    "only a line link has a direction",
-                ));
-            }
-            (None, _) => {}
-        }
-        let turns_or_slides = matches!(kind, LinkKind::Pivot | LinkKind::Slider);
-        let friction = match &l.friction {
-            None => None,
-            Some(_) if !turns_or_slides => {
-                return Err(spec_err(
-                    format!("{path}.friction"),
-                    "viscous friction is given for a pivot or a slider",
-                ));
-            }
-            Some(f) => Some(constant(f, format!("{path}.friction"))?),
-        };
-        let coulomb = match (&l.coulomb, l.sign_parameter()) {
-            (Some(_), _) if !turns_or_slides => {
-                return Err(spec_err(
-                    format!("{path}.coulomb"),
-                    "dry friction is given for a pivot or a slider",
-                ));
-            }
-            (Some(c), Some(sign)) => {
-                let eps = *m.param_index.get(&sign).ok_or_else(|| {
-                    spec_err(format!("{path}.coulomb"), format!("no parameter `{sign}`"))
-                })?;
-                Some((constant(c, format!("{path}.coulomb"))?, eps))
-            }
-            _ => None,
-        };
-        let spring = match &l.spring {
-            None => None,
-            Some(_) if !turns_or_slides => {
-                return Err(spec_err(
-                    format!("{path}.spring"),
-                    "a spring is given for a pivot or a slider",
-                ));
-            }
-            Some(s) => {
-                let coord = *m.coord_index.get(&s.coordinate).ok_or_else(|| {
-                    spec_err(
-                        format!("{path}.spring.coordinate"),
-                        format!("unknown coordinate `{}`", s.coordinate),
-                    )
-                })?;
-                Some(SpringInfo {
-                    coord,
-                    stiffness: constant(&s.stiffness, format!("{path}.spring.stiffness"))?,
-                    free: s
-                        .free
-                        .as_deref()
-                        .map(|q0| constant(q0, format!("{path}.spring.free")))
-                        .transpose()?,
-                })
-            }
-        };
-        let mut components = Vec::new();
-        for (k, t) in transmitted(kind, a, dir).into_iter().enumerate() {
-            if !t {
-                continue;
-            }
-            // X01 for the link 01, X_A for the link named after its centre A.
-            let sep = if l
-                .name
-                .chars()
-                .next()
-                .is_some_and(|c| c.is_ascii_alphabetic())
-            {
-                "_"
-            } else {
-                ""
-            };
-            let name = format!("{}{sep}{}", letters[k], l.name);
-            free_name(&name).map_err(|e| {
-                spec_err(
-                    format!("{path}.name"),
-                    format!("the link's unknown {name}: {e}"),
-                )
-            })?;
-            if d.unknown_index.contains_key(&name) {
-                return Err(spec_err(
-                    format!("{path}.name"),
-                    format!("the link's unknown {name} is already an unknown of another link"),
-                ));
-            }
-            d.unknown_index.insert(name.clone(), d.unknowns.len());
-            components.push((k, d.unknowns.len()));
-            d.unknowns.push(name);
-        }
-        d.links.push(LinkInfo {
-            kind,
-            between,
-            names: l.between.clone(),
-            point: p,
-            basis,
-            axis: axis.map(|x| x.1),
-            components,
-            friction,
-            coulomb,
-            spring,
-        });
-    }
-
-    // Given actions.
-    for ((i, a), action) in spec.actions.iter().enumerate().zip(&trees.actions) {
+    for (i, (a, node)) in spec.actions.iter().zip(&trees.actions).enumerate() {
         let path = format!("actions[{i}]");
-        // Named, exerted by a solid (or the ground) on another solid, as resolved.
-        let from = match action.from {
-            Side::Ground => Body::Frame(0),
-            Side::Solid(k) => Body::Solid(k),
-        };
-        let on = Body::Solid(action.on);
-        let p = action.point;
-        let mut local = BTreeMap::new();
-        for (k, u) in a.unknowns.iter().enumerate() {
-            free_name(u).map_err(|e| spec_err(format!("{path}.unknowns[{k}]"), e))?;
-            // One name, one unknown: an action's unknown named like a link's component (X01)
-            // or like another action's would silently merge two different forces.
-            if d.unknown_index.contains_key(u) {
-                return Err(spec_err(
-                    format!("{path}.unknowns[{k}]"),
-                    format!("the unknown `{u}` is declared twice"),
-                ));
-            }
-            d.unknown_index.insert(u.clone(), d.unknowns.len());
-            d.unknowns.push(u.clone());
-            let idx = d.unknowns.len() - 1;
-            local.insert(u.clone(), idx);
-        }
-        let parse = |text: &Option<String>, field: &str| -> Result<Option<Node>, NumericError> {
-            let Some(text) = text else { return Ok(None) };
-            let at = format!("{path}.{field}");
-            let node = names
-                .parse_with(text, Context::Action, &local)
-                .map_err(|e| spec_err(at.clone(), e))?;
-            match expr::unknown_degree(&node) {
-                Ok(deg) if deg <= 1 => Ok(Some(node)),
-                Ok(_) => Err(spec_err(
-                    at,
-                    "the unknowns enter linearly: a term holds at most one unknown, once",
-                )),
-                Err(e) => Err(spec_err(at, format!("the unknowns enter linearly: {e}"))),
-            }
-        };
-        let resultant = parse(&a.resultant, "resultant")?;
-        let moment = parse(&a.moment, "moment")?;
-        let mut used = BTreeSet::new();
-        for n in resultant.iter().chain(&moment) {
-            expr::unknowns_in(n, &mut used);
-        }
-        d.actions.push(ActionInfo {
-            names: [a.name.clone(), a.on.clone(), a.from.clone()],
-            from,
-            on,
-            point: p,
-            resultant,
-            moment,
-            unknowns: used.into_iter().collect(),
-        });
+        d.actions
+            .push(given(m, (a, &path), node, &d.unknown_index)?);
     }
-
     // The declared equations: what each isolates, its point, its vector and its coordinate,
     // as resolved.
     for (t, node) in spec.pfd.iter().zip(&trees.theorems) {
-        let solids = node.isolate.clone();
-        let moment = t.theorem == TheoremKind::Moment;
-        let point = node.point.unwrap_or(0);
-        let (on, eom) = (node.on, node.eom);
         d.theorems.push(TheoremInfo {
-            solids,
-            moment,
-            point,
-            on,
-            eom,
+            solids: node.isolate.clone(),
+            moment: t.theorem == TheoremKind::Moment,
+            point: node.point.unwrap_or(0),
+            on: node.on,
+            eom: node.eom,
         });
     }
     Ok(d)
 }
 
-/// Whether `a` and `b` are already connected through the links `joined` (breadth-first).
-fn connected(joined: &[(Body, Body)], a: Body, b: Body) -> bool {
-    let mut reached = vec![a];
-    let mut k = 0;
-    while k < reached.len() {
-        let n = reached[k];
-        for &(x, y) in joined {
-            let other = if x == n {
-                y
-            } else if y == n {
-                x
-            } else {
-                continue;
-            };
-            if !reached.contains(&other) {
-                reached.push(other);
+/// Gravity: a vector constant in the ground frame, written on bases that do not turn with
+/// time.
+fn gravity(spec: &SpecFile, m: &NumericModel) -> Result<Option<Node>, NumericError> {
+    let Some(g) = &spec.gravity else {
+        return Ok(None);
+    };
+    let node = (m.names().parse(g, Context::ConstantVector)).map_err(|e| spec_err("gravity", e))?;
+    let mut used = BTreeSet::new();
+    expr::frames_in(&node, &mut used);
+    for f in used {
+        let mut k = f;
+        while k != 0 {
+            if let Some((_, _, angle)) = &m.frames[k].rotation
+                && expr::depends_on_time(angle)
+            {
+                let why = format!(
+                    "gravity is constant in the ground frame: the basis of frame {} turns with \
+                     time",
+                    m.frames[f].name
+                );
+                return Err(spec_err("gravity", why));
             }
+            k = m.frames[k].parent;
         }
-        k += 1;
     }
-    reached.contains(&b)
+    Ok(Some(node))
+}
+
+/// A link: its sides, point and axis as resolved, its transmitted `components` (with their
+/// unknowns' indices), its viscous friction, dry friction and spring read with this backend's
+/// parser.
+fn link(
+    m: &NumericModel,
+    (l, path): (&LinkSpec, &str),
+    node: &LinkNode,
+    components: Vec<(usize, usize)>,
+) -> Result<LinkInfo, NumericError> {
+    let names = m.names();
+    let constant = |text: &str, field: &str| {
+        (names.parse(text, Context::Constant)).map_err(|e| spec_err(format!("{path}.{field}"), e))
+    };
+    let friction = l
+        .friction
+        .as_deref()
+        .map(|f| constant(f, "friction"))
+        .transpose()?;
+    let coulomb = match (&l.coulomb, l.sign_parameter()) {
+        (Some(c), Some(sign)) => {
+            let eps = *m.param_index.get(&sign).ok_or_else(|| {
+                spec_err(format!("{path}.coulomb"), format!("no parameter `{sign}`"))
+            })?;
+            Some((constant(c, "coulomb")?, eps))
+        }
+        _ => None,
+    };
+    let spring = match (&l.spring, node.spring) {
+        (Some(s), Some(coord)) => Some(SpringInfo {
+            coord,
+            stiffness: constant(&s.stiffness, "spring.stiffness")?,
+            free: (s.free.as_deref())
+                .map(|q0| constant(q0, "spring.free"))
+                .transpose()?,
+        }),
+        _ => None,
+    };
+    let side = |s: Side| match s {
+        Side::Ground => Body::Frame(0),
+        Side::Solid(k) => Body::Solid(k),
+    };
+    Ok(LinkInfo {
+        kind: l.kind,
+        between: node.between.map(side),
+        names: l.between.clone(),
+        point: node.point,
+        basis: node.axis.0,
+        axis: node.axis.1,
+        components,
+        friction,
+        coulomb,
+        spring,
+    })
+}
+
+/// A given action: its sides and point as resolved, its expressions read with this backend's
+/// parser, its own unknowns entering linearly.
+fn given(
+    m: &NumericModel,
+    (a, path): (&ActionSpec, &str),
+    node: &ActionNode,
+    unknowns: &BTreeMap<String, usize>,
+) -> Result<ActionInfo, NumericError> {
+    let local: BTreeMap<String, usize> = (a.unknowns.iter())
+        .map(|u| (u.clone(), unknowns[u]))
+        .collect();
+    let parse = |text: &Option<String>, field: &str| -> Result<Option<Node>, NumericError> {
+        let Some(text) = text else { return Ok(None) };
+        let at = format!("{path}.{field}");
+        let node = (m.names().parse_with(text, Context::Action, &local))
+            .map_err(|e| spec_err(at.clone(), e))?;
+        match expr::unknown_degree(&node) {
+            Ok(deg) if deg <= 1 => Ok(Some(node)),
+            Ok(_) => Err(spec_err(
+                at,
+                "the unknowns enter linearly: a term holds at most one unknown, once",
+            )),
+            Err(e) => Err(spec_err(at, format!("the unknowns enter linearly: {e}"))),
+        }
+    };
+    let resultant = parse(&a.resultant, "resultant")?;
+    let moment = parse(&a.moment, "moment")?;
+    let mut used = BTreeSet::new();
+    for n in resultant.iter().chain(&moment) {
+        expr::unknowns_in(n, &mut used);
+    }
+    let from = match node.from {
+        Side::Ground => Body::Frame(0),
+        Side::Solid(k) => Body::Solid(k),
+    };
+    Ok(ActionInfo {
+        names: [a.name.clone(), a.on.clone(), a.from.clone()],
+        from,
+        on: Body::Solid(node.on),
+        point: node.point,
+        resultant,
+        moment,
+        unknowns: used.into_iter().collect(),
+    })
 }

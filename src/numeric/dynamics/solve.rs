@@ -107,7 +107,7 @@ pub(in crate::numeric) fn set_signs(
     for l in &m.dynamics.links {
         let Some((_, eps)) = &l.coulomb else { continue };
         let [fa, fb] = l.between.map(|b| body_frame(m, b));
-        let u = st.rot0(l.basis).column(l.axis.unwrap_or(0)).into_owned();
+        let u = st.rot0(l.basis).column(l.axis).into_owned();
         let rate = if l.kind == LinkKind::Slider {
             kin::point_motion(&st, l.point, fb, fa)[0].dot(&u)
         } else {
@@ -159,7 +159,7 @@ fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, Numer
             }
         }
         let [fa, fb] = l.between.map(|b| body_frame(m, b));
-        let u = rb.column(l.axis.unwrap_or(0)).into_owned();
+        let u = rb.column(l.axis).into_owned();
         let slider = l.kind == LinkKind::Slider;
         if let Some(f) = &l.friction {
             let f = constant(f, vals, || format!("friction of links[{i}]"))?;
