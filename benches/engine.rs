@@ -22,7 +22,7 @@ fn regulator(c: &mut Criterion) {
     c.bench_function("derive all regulator quantities + presentation", |b| {
         b.iter(|| {
             let ds: Vec<_> = m
-                .quantities
+                .quantities()
                 .iter()
                 .map(|q| derive(&m, q).unwrap())
                 .collect();
@@ -34,8 +34,8 @@ fn regulator(c: &mut Criterion) {
     let q = Quantity::parse("delta(O2,2/0) in B2").unwrap();
     let v = derive(&m, &q).unwrap().value;
     let exprs = v.exprs();
-    let mut compiled = m.reg.compile(&exprs).unwrap();
-    let model = NumericModel::new(&m.spec).unwrap();
+    let mut compiled = m.reg().compile(&exprs).unwrap();
+    let model = NumericModel::new(m.spec()).unwrap();
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
     let sample = model.sample(&mut rng).unwrap();
     let values = Values {

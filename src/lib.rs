@@ -14,9 +14,9 @@
 //!
 //! // Under H1 (the planes of symmetry zero E2 and F2; D2 stays), compare with the hand-written
 //! // result: the test is exact, modulo sin² + cos² = 1, sin 2θ = 2 sin θ cos θ, any order.
-//! let q1 = m.hypotheses.iter().find(|h| h.name == "H1").unwrap();
+//! let q1 = m.hypotheses().iter().find(|h| h.name == "H1").unwrap();
 //! let Value::Scalar(delta) = d.value.under(q1) else { unreachable!() };
-//! let by_hand = m.reg.parse(
+//! let by_hand = m.reg().parse(
 //!     "(A2 + m2*L2^2)*ddot(theta2) \
 //!      + (m2*L1*L2*sin(theta2) + 1/2*(C2 - B2 + m2*L2^2)*sin(2*theta2) + D2*cos(2*theta2))*dot(theta1)^2",
 //! )?;
@@ -27,9 +27,10 @@
 //! The public surface, in layer order (ARCHITECTURE.md, « Layers », checked by a test):
 //! - [`expr`]: the only module that uses symbolica (the canonical polynomial form, parsing,
 //!   printing, the presentation form); [`wire`]: the spec's JSON data types; [`resolve`]:
-//!   its frames, points and solids resolved once for both sides;
+//!   its names, trees and every section's references resolved once for both sides;
 //! - mechanics: [`frame`], [`vector`], [`point`], [`inertia`], [`quantity`] (the course's
-//!   notation), [`mechanism`] (the store), [`kinematics`], [`torsor`];
+//!   notation), [`mechanism`] (the store, read through its accessors), [`kinematics`],
+//!   [`torsor`];
 //! - [`pfd`] (actions, the Fundamental Principle of Dynamics, Lagrange), [`derivation`]
 //!   (steps with their theorems), [`units`] (dimensions and homogeneity);
 //! - [`numeric`] (the independent float backend), [`simulate`], [`latex`] (the answer key),

@@ -536,9 +536,9 @@ pub fn action_power(m: &Mechanism, a: &Action, reference: crate::frame::FrameId)
 /// use torseur::pfd::power;
 /// let m = torseur::spec::load("derivations/pendule_inverse_ressort.json").unwrap();
 /// let one = m.solids_of("1").unwrap();
-/// let p = power(&m, "pes", &one, "1", m.frames.ground()).unwrap();
+/// let p = power(&m, "pes", &one, "1", m.frames().ground()).unwrap();
 /// // The weight's power is the opposite of d/dt of its potential: m g l sin θ θ̇.
-/// assert_eq!(p, m.reg.parse("m*g*l*sin(theta)*dot(theta)").unwrap());
+/// assert_eq!(p, m.reg().parse("m*g*l*sin(theta)*dot(theta)").unwrap());
 /// ```
 pub fn power(
     m: &Mechanism,
@@ -573,7 +573,7 @@ pub fn internal_actions<'m>(m: &'m Mechanism, set: &[BodyId]) -> Vec<&'m Action>
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// let e = m.solids_of("E").unwrap();
 /// // The viscous friction f of the pivot 1–2: −f θ̇2².
-/// assert_eq!(internal_power(&m, &e), m.reg.parse("-f*dot(theta2)^2").unwrap());
+/// assert_eq!(internal_power(&m, &e), m.reg().parse("-f*dot(theta2)^2").unwrap());
 /// ```
 pub fn internal_power(m: &Mechanism, set: &[BodyId]) -> Expr {
     let mut acc = m.reg.zero();
@@ -590,9 +590,9 @@ pub fn internal_power(m: &Mechanism, set: &[BodyId]) -> Expr {
 ///
 /// ```
 /// let m = torseur::spec::load("derivations/treuil.json").unwrap();
-/// let q = m.reg.coord("theta").unwrap();
+/// let q = m.reg().coord("theta").unwrap();
 /// // The drum and the load raised by R θ: J + m R².
-/// assert_eq!(torseur::pfd::equivalent_inertia(&m, q).unwrap(), m.reg.parse("J + m*R^2").unwrap());
+/// assert_eq!(torseur::pfd::equivalent_inertia(&m, q).unwrap(), m.reg().parse("J + m*R^2").unwrap());
 /// ```
 pub fn equivalent_inertia(m: &Mechanism, q: CoordId) -> Result<Expr, String> {
     let all: Vec<BodyId> = (0..m.bodies.len()).map(BodyId).collect();

@@ -209,7 +209,7 @@ impl LinkSpec {
     ///
     /// ```
     /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-    /// assert_eq!(m.spec.links[0].label(), "la liaison pivot entre 0 et 1");
+    /// assert_eq!(m.spec().links[0].label(), "la liaison pivot entre 0 et 1");
     /// ```
     pub fn label(&self) -> String {
         if let Some(l) = &self.label {
@@ -286,8 +286,8 @@ impl ActionSpec {
     ///
     /// ```
     /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-    /// assert_eq!(m.spec.actions[0].label(), "le moteur");
-    /// let mut a = m.spec.actions[0].clone();
+    /// assert_eq!(m.spec().actions[0].label(), "le moteur");
+    /// let mut a = m.spec().actions[0].clone();
     /// a.label = None;
     /// assert_eq!(a.label(), "l'action moteur");
     /// ```
@@ -366,7 +366,7 @@ impl ScenarioSpec {
     ///
     /// ```
     /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-    /// assert_eq!(m.spec.scenarios[0].label(), "sans frottement");
+    /// assert_eq!(m.spec().scenarios[0].label(), "sans frottement");
     /// ```
     pub fn label(&self) -> String {
         self.label
@@ -610,7 +610,7 @@ impl RollingSpec {
     ///
     /// ```
     /// let m = torseur::spec::load("derivations/roue_sur_plan.json").unwrap();
-    /// assert_eq!(m.spec.rolling[0].course_name(), "le roulement sans glissement");
+    /// assert_eq!(m.spec().rolling[0].course_name(), "le roulement sans glissement");
     /// ```
     pub fn course_name(&self) -> &'static str {
         if self.on.is_empty() {

@@ -266,7 +266,7 @@ fn load(spec: &Path) -> Result<Mechanism, Failure> {
 
 fn quantities(m: &Mechanism, given: &[String]) -> Result<Vec<Quantity>, Failure> {
     if given.is_empty() {
-        return Ok(m.quantities.clone());
+        return Ok(m.quantities().to_vec());
     }
     given
         .iter()
@@ -431,8 +431,7 @@ fn run_derive(a: DeriveArgs, emit: &mut Emit) -> Result<(), Failure> {
         values_only(&m, &qs)?
     };
     if let Some(path) = latex {
-        let mut mq = m.clone();
-        mq.quantities = qs.clone();
+        let mq = m.asking(qs.clone());
         let key = torseur::latex::answer_key_document(&mq, torseur::latex::VectorStyle::Sum)
             .map_err(bad_input)?;
         let figures = render_figures(&key)?;
@@ -631,7 +630,7 @@ fn run_simulate(a: SimulateArgs, emit: &mut Emit) -> Result<(), Failure> {
         .filter(|id| !id.starts_with("int("))
         .collect();
     let fig = torseur::simulate::figure(
-        &format!("{} ({})", m.title, run.label),
+        &format!("{} ({})", m.title(), run.label),
         &[(run.label.as_str(), &run)],
         &ids,
         true,

@@ -260,7 +260,7 @@ fn vec_value(m: &Mechanism, v: &Vector, b: FrameId) -> Value {
 /// use torseur::{derivation::derive, quantity::Quantity, spec};
 /// let m = spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// let d = derive(&m, &Quantity::parse("Omega(2/0) in B1").unwrap()).unwrap();
-/// let reg = &m.reg;
+/// let reg = &m.reg();
 /// let expected = [reg.parse("dot(theta2)").unwrap(), reg.zero(), reg.parse("dot(theta1)").unwrap()];
 /// match d.value { torseur::derivation::Value::Vector { components, .. } => assert_eq!(components, expected), _ => unreachable!() }
 /// ```
@@ -621,8 +621,8 @@ fn moment_steps(
 /// ```
 /// use torseur::{derivation::{derive, derive_values}, spec};
 /// let m = spec::load("derivations/regulateur_centrifuge.json").unwrap();
-/// let fast = derive_values(&m, &m.quantities).unwrap();
-/// for (q, d) in m.quantities.iter().zip(&fast) {
+/// let fast = derive_values(&m, &m.quantities()).unwrap();
+/// for (q, d) in m.quantities().iter().zip(&fast) {
 ///     assert_eq!(d.value.exprs(), derive(&m, q).unwrap().value.exprs());
 /// }
 /// ```

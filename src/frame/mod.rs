@@ -100,8 +100,8 @@ impl Angle {
     ///              {"name": "2", "parent": "1", "rotation": {"axis": "-x", "angle": "q1 + alpha"}}]}"#
     /// ).unwrap();
     /// let text = |f: &str| {
-    ///     let r = m.frames.get(m.frames.find(f).unwrap()).rotation.clone().unwrap();
-    ///     r.angle.to_text(&m.reg)
+    ///     let r = m.frames().get(m.frames().find(f).unwrap()).rotation.clone().unwrap();
+    ///     r.angle.to_text(&m.reg())
     /// };
     /// assert_eq!(text("1"), "pi/2 - q1");
     /// assert_eq!(text("2"), "-q1 - alpha");
@@ -247,9 +247,9 @@ impl Frames {
     ///
     /// ```
     /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-    /// let (f, axis) = m.frames.basis_vector("y2").unwrap();
+    /// let (f, axis) = m.frames().basis_vector("y2").unwrap();
     /// assert_eq!((m.frame_name(f), axis.letter()), ("2", 'y'));
-    /// assert!(m.frames.basis_vector("y9").is_none());
+    /// assert!(m.frames().basis_vector("y9").is_none());
     /// ```
     pub fn basis_vector(&self, s: &str) -> Option<(FrameId, Axis)> {
         for (i, f) in self.frames.iter().enumerate() {

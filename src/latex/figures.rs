@@ -380,7 +380,7 @@ fn spec_vector(s: &str) -> String {
 /// ```
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// assert_eq!(
-///     torseur::latex::link_text(&m.spec.links[1]),
+///     torseur::latex::link_text(&m.spec().links[1]),
 ///     "pivot d'axe $(O_{2}, \\vec{x}_{1})$, avec frottement visqueux"
 /// );
 /// ```

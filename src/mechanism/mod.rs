@@ -76,37 +76,39 @@ impl Hypothesis {
     }
 }
 
-/// A validated problem: everything the derivations need, behind typed ids.
+/// A validated problem: everything the derivations need, behind typed ids. Only the spec's
+/// validation builds one ([`crate::spec::build`]); others read it through its accessors, so a
+/// mechanism always holds what its spec says.
 #[derive(Debug, Clone)]
 pub struct Mechanism {
     /// Title.
-    pub title: String,
+    pub(crate) title: String,
     /// Statement.
-    pub description: Option<String>,
+    pub(crate) description: Option<String>,
     /// Parameters and coordinates.
-    pub reg: Rc<Registry>,
+    pub(crate) reg: Rc<Registry>,
     /// Frames (the ground is the root).
-    pub frames: Frames,
+    pub(crate) frames: Frames,
     /// Origin point of each frame, indexed by frame.
-    pub frame_origins: Vec<PointId>,
+    pub(crate) frame_origins: Vec<PointId>,
     /// Points (the ground origin is the root).
-    pub points: Points,
+    pub(crate) points: Points,
     /// Solids.
-    pub bodies: Vec<Body>,
+    pub(crate) bodies: Vec<Body>,
     /// Named sets of solids.
-    pub sets: BTreeMap<String, Vec<BodyId>>,
+    pub(crate) sets: BTreeMap<String, Vec<BodyId>>,
     /// Hypotheses.
-    pub hypotheses: Vec<Hypothesis>,
+    pub(crate) hypotheses: Vec<Hypothesis>,
     /// Basis for results that do not name one.
-    pub default_basis: FrameId,
+    pub(crate) default_basis: FrameId,
     /// Requested quantities.
-    pub quantities: Vec<Quantity>,
+    pub(crate) quantities: Vec<Quantity>,
     /// Actions, links and the declared equations of the PFD.
-    pub dynamics: Dynamics,
+    pub(crate) dynamics: Dynamics,
     /// The spec it was built from (the float backend works from it).
-    pub spec: SpecFile,
+    pub(crate) spec: SpecFile,
     /// How the loop closures were solved, for the answer key (None without closures).
-    pub loop_law: Option<LoopLaw>,
+    pub(crate) loop_law: Option<LoopLaw>,
 }
 
 /// The loop law (« loi entrée–sortie ») as the closures gave it: each scalar relation's time
@@ -145,6 +147,85 @@ pub struct RollingLaw {
 }
 
 impl Mechanism {
+    /// The problem's title.
+    pub fn title(&self) -> &str {
+        &self.title
+    }
+
+    /// The statement, if the spec gives one.
+    pub fn description(&self) -> Option<&str> {
+        self.description.as_deref()
+    }
+
+    /// The variables: parameters, coordinates, the PFD's unknowns.
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+    /// assert!(m.reg().coord("theta2").is_some());
+    /// ```
+    pub fn reg(&self) -> &Rc<Registry> {
+        &self.reg
+    }
+
+    /// The frames, the ground at the root.
+    pub fn frames(&self) -> &Frames {
+        &self.frames
+    }
+
+    /// The points, the ground origin at the root.
+    pub fn points(&self) -> &Points {
+        &self.points
+    }
+
+    /// The solids, in the spec's order.
+    pub fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+
+    /// The named sets of solids.
+    pub fn sets(&self) -> &BTreeMap<String, Vec<BodyId>> {
+        &self.sets
+    }
+
+    /// The hypotheses, in the spec's order.
+    pub fn hypotheses(&self) -> &[Hypothesis] {
+        &self.hypotheses
+    }
+
+    /// The basis of results that do not name one.
+    pub fn default_basis(&self) -> FrameId {
+        self.default_basis
+    }
+
+    /// The quantities the spec asks for.
+    pub fn quantities(&self) -> &[Quantity] {
+        &self.quantities
+    }
+
+    /// The actions, links and declared equations of the PFD.
+    pub fn dynamics(&self) -> &Dynamics {
+        &self.dynamics
+    }
+
+    /// The spec as written.
+    pub fn spec(&self) -> &SpecFile {
+        &self.spec
+    }
+
+    /// How the loop closures were solved (None without closures).
+    pub fn loop_law(&self) -> Option<&LoopLaw> {
+        self.loop_law.as_ref()
+    }
+
+    /// The same problem asking for the quantities `qs` instead of the spec's, each of which
+    /// the caller has resolved against it ([`crate::derivation::resolve`]).
+    pub fn asking(&self, qs: Vec<Quantity>) -> Mechanism {
+        Mechanism {
+            quantities: qs,
+            ..self.clone()
+        }
+    }
+
     /// The vector of each loop closure of the spec (`closures`: OA + AB + BO, zero along
     /// the motion), read with the mechanism's bases; a closure the spec validated always
     /// reads.

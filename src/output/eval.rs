@@ -234,7 +234,7 @@ pub fn numeric_point(m: &Mechanism, values: &Values) -> Result<Vec<f64>, ValuesE
 /// ```
 /// use torseur::output::{Values, numeric_point_for};
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-/// let omega = m.reg.parse("dot(theta1)*L1").unwrap();
+/// let omega = m.reg().parse("dot(theta1)*L1").unwrap();
 /// let v = Values::parse(r#"{"parameters": {"L1": 2}, "coordinates": {"theta1": [0, 3, 0]}}"#)
 ///     .unwrap();
 /// let point = numeric_point_for(&m, &v, &[&omega]).unwrap();

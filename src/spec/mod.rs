@@ -94,7 +94,7 @@ pub fn json_schema() -> serde_json::Value {
 ///
 /// ```
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-/// assert_eq!(m.bodies.len(), 2);
+/// assert_eq!(m.bodies().len(), 2);
 /// ```
 pub fn load(path: impl AsRef<Path>) -> Result<Mechanism, SpecError> {
     let p = path.as_ref();

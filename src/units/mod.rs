@@ -25,12 +25,12 @@
 //! let m = torseur::spec::load("derivations/regulateur_centrifuge.json")?;
 //! let dims = Dimensions::of(&m);
 //! // m2 L2² θ̈2 is a moment.
-//! let e = m.reg.parse("m2*L2^2*ddot(theta2) + A2*ddot(theta2)")?;
+//! let e = m.reg().parse("m2*L2^2*ddot(theta2) + A2*ddot(theta2)")?;
 //! let d = dimension(&e, &dims)?.unwrap();
 //! assert_eq!(d, Dimension::MOMENT);
 //! assert_eq!(d.si_text(UnitStyle::Mechanics), "N·m");
 //! // A mass plus a length is refused, naming both terms.
-//! let wrong = m.reg.parse("m2 + L2")?;
+//! let wrong = m.reg().parse("m2 + L2")?;
 //! let err = dimension(&wrong, &dims).unwrap_err();
 //! assert!(err.to_string().contains("`m2`") && err.to_string().contains("`L2`"), "{err}");
 //! # Ok::<(), Box<dyn std::error::Error>>(())
@@ -94,8 +94,8 @@ pub struct Inhomogeneous {
 /// let d = Dimensions::of(&m);
 /// assert_eq!(d.scalar("F"), Some(Dimension::FORCE));
 /// assert_eq!(d.scalar("X12"), Some(Dimension::FORCE));
-/// assert_eq!(d.coordinate(m.reg.coord("x").unwrap()), Dimension::LENGTH);
-/// assert_eq!(d.coordinate(m.reg.coord("theta").unwrap()), Dimension::NONE);
+/// assert_eq!(d.coordinate(m.reg().coord("x").unwrap()), Dimension::LENGTH);
+/// assert_eq!(d.coordinate(m.reg().coord("theta").unwrap()), Dimension::NONE);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone)]
@@ -302,9 +302,9 @@ fn scan(e: &Expr, dims: &Dimensions) -> Result<Option<(Dimension, usize)>, Inhom
 /// let m = torseur::spec::load("derivations/systeme_masse_ressort.json")?;
 /// let d = Dimensions::of(&m);
 /// // k in N/m, c in N s/m, x a length: k (x - l0) + c ẋ is a force.
-/// let e = m.reg.parse("k*(x - l0) + c*dot(x) + m*ddot(x)")?;
+/// let e = m.reg().parse("k*(x - l0) + c*dot(x) + m*ddot(x)")?;
 /// assert_eq!(dimension(&e, &d)?, Some(Dimension::FORCE));
-/// assert_eq!(dimension(&m.reg.zero(), &d)?, None);
+/// assert_eq!(dimension(&m.reg().zero(), &d)?, None);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn dimension(e: &Expr, dims: &Dimensions) -> Result<Option<Dimension>, Inhomogeneous> {

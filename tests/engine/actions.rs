@@ -85,7 +85,7 @@ fn mutual_actions_are_opposite_in_every_library_spec() {
     let mut seen = 0;
     for path in specs_in(&["derivations"]) {
         let m = torseur::spec::load(&path).unwrap();
-        for l in &m.spec.links {
+        for l in &m.spec().links {
             let [a, b] = [&l.between[0], &l.between[1]];
             let solid = |n: &str| m.find_body(n).is_some();
             if !solid(a) || !solid(b) {

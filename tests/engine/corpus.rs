@@ -65,7 +65,7 @@ fn mismatch(m: &Mechanism, p: &Pair) -> Option<String> {
     };
     let h = match &p.hypothesis {
         None => None,
-        Some(name) => match m.hypotheses.iter().find(|h| &h.name == name) {
+        Some(name) => match m.hypotheses().iter().find(|h| &h.name == name) {
             Some(h) => Some(h),
             None => return Some(format!("the spec has no hypothesis `{name}`")),
         },
@@ -79,7 +79,7 @@ fn mismatch(m: &Mechanism, p: &Pair) -> Option<String> {
         None => derived,
     };
     let derived = derived.exprs()[0].clone();
-    let given = match m.reg.parse(&p.textbook) {
+    let given = match m.reg().parse(&p.textbook) {
         Ok(e) => e,
         Err(e) => return Some(format!("the textbook form does not parse: {e}")),
     };
@@ -107,7 +107,7 @@ fn presented(m: &Mechanism, p: &Pair) -> String {
         .value;
     let d = match &p.hypothesis {
         Some(name) => d.under(
-            m.hypotheses
+            m.hypotheses()
                 .iter()
                 .find(|h| &h.name == name)
                 .expect("declared"),

@@ -29,8 +29,8 @@ fn derive_equals_derive_values_on_every_quantity_of_every_spec_under_every_hypot
     for path in specs_in(&["derivations", "tests/specs"]) {
         let m = torseur::spec::load(&path).unwrap();
         // The requested quantities, then those the questions derive or write in an equation.
-        let mut ids: Vec<String> = m.quantities.iter().map(|q| q.to_string()).collect();
-        for q in &m.spec.questions {
+        let mut ids: Vec<String> = m.quantities().iter().map(|q| q.to_string()).collect();
+        for q in &m.spec().questions {
             ids.extend(q.quantities.iter().cloned());
             ids.extend(q.equations.iter().map(|e| e.quantity.clone()));
         }
@@ -41,7 +41,7 @@ fn derive_equals_derive_values_on_every_quantity_of_every_spec_under_every_hypot
         for (q, f) in qs.iter().zip(&fast) {
             let course = derive(&m, q).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
             let cases = std::iter::once((None, course.value.clone(), f.value.clone())).chain(
-                m.hypotheses
+                m.hypotheses()
                     .iter()
                     .map(|h| (Some(&h.name), course.value.under(h), f.value.under(h))),
             );

@@ -20,7 +20,7 @@ fn a_dynamic_moment_is_evaluated_without_g_and_f() {
     let Value::Vector { components, .. } = &d.value else {
         panic!("a vector");
     };
-    let model = NumericModel::new(&m.spec).unwrap();
+    let model = NumericModel::new(m.spec()).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     for _ in 0..5 {
         let s = model.sample(&mut rng).unwrap();

@@ -80,16 +80,16 @@ fn figures_of_every_spec_compile() {
         let figures = torseur::latex::rotation_figures(m);
         let graph = torseur::latex::link_graph(m);
         let turned = m
-            .frames
+            .frames()
             .ids()
-            .filter(|&f| m.frames.get(f).rotation.is_some())
+            .filter(|&f| m.frames().get(f).rotation.is_some())
             .count();
         assert_eq!(
             figures.matches("\\begin{tikzpicture}").count(),
             turned,
             "{stem}"
         );
-        assert_eq!(graph.is_empty(), m.spec.links.is_empty(), "{stem}");
+        assert_eq!(graph.is_empty(), m.spec().links.is_empty(), "{stem}");
         doc.push_str(&format!(
             "\\section*{{{stem}}}\n{figures}\n{graph}\n\\clearpage\n"
         ));

@@ -42,7 +42,7 @@ fn the_fourier_form_agrees_with_the_canonical_form_on_every_quantity() {
     for path in &specs {
         let name = path.file_name().unwrap().to_string_lossy().to_string();
         let m = torseur::spec::load(path).unwrap();
-        let model = NumericModel::new(&m.spec).unwrap();
+        let model = NumericModel::new(m.spec()).unwrap();
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
         let s = model.sample(&mut rng).unwrap();
         let values = Values {
@@ -54,19 +54,19 @@ fn the_fourier_form_agrees_with_the_canonical_form_on_every_quantity() {
         let point = numeric_point(&m, &values).unwrap();
         // A time coordinate's drawn value, or Ω t for a phase.
         let angle_of = |i: usize| {
-            let c = &m.reg.coordinates()[i];
+            let c = &m.reg().coordinates()[i];
             match c.phase() {
                 Some(w) => s.parameters[w] * s.time,
                 None => s.coordinates[&c.name][0],
             }
         };
-        let derived = derive_values(&m, &m.quantities).unwrap();
+        let derived = derive_values(&m, m.quantities()).unwrap();
         let exprs: Vec<&Expr> = derived.iter().flat_map(|d| d.value.exprs()).collect();
         for (i, &e) in exprs.iter().enumerate() {
             let Some(f) = e.to_fourier() else {
                 // Only a loop closure's 1/cos φ has no such form.
                 assert!(
-                    !m.spec.closures.is_empty() || !m.spec.rolling.is_empty(),
+                    !m.spec().closures.is_empty() || !m.spec().rolling.is_empty(),
                     "{name}: {e}"
                 );
                 refused += 1;
@@ -127,7 +127,7 @@ fn a_planar_chain_is_smaller_in_the_fourier_form() {
     ))
     .unwrap();
     let (mut canonical, mut fourier) = (0, 0);
-    for d in derive_values(&m, &m.quantities).unwrap() {
+    for d in derive_values(&m, m.quantities()).unwrap() {
         for e in d.value.exprs() {
             canonical += e.nterms();
             fourier += e.to_fourier().unwrap().nterms();
@@ -138,7 +138,7 @@ fn a_planar_chain_is_smaller_in_the_fourier_form() {
         "{fourier} against {canonical}"
     );
     let f = m
-        .reg
+        .reg()
         .parse("cos(q2)*cos(q1) + sin(q2)*sin(q1)")
         .unwrap()
         .to_fourier()

@@ -46,8 +46,8 @@ fn dry_friction_in_a_pivot_opposes_the_relative_rate_as_the_float_backend_finds(
     let eom =
         |m: &torseur::mechanism::Mechanism| torseur::pfd::solve(m).unwrap().eom["theta2"].clone();
     let with = eom(&m);
-    let without = m.reg.parse(&eom(&plain).to_string()).unwrap();
-    let friction = m.reg.parse("C*epsilon12").unwrap();
+    let without = m.reg().parse(&eom(&plain).to_string()).unwrap();
+    let friction = m.reg().parse("C*epsilon12").unwrap();
     // eom is the dynamic side minus the actions: the friction's moment −C ε12 on bar 2
     // (ε12 the sign of θ̇2 − θ̇1) adds +C ε12.
     assert_eq!(with, &without + &friction, "{with}");

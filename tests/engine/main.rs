@@ -68,18 +68,18 @@ pub fn specs_in(dirs: &[&str]) -> Vec<std::path::PathBuf> {
 
 /// Parses an expression of the spec syntax in the mechanism.
 pub fn ex(m: &Mechanism, s: &str) -> Expr {
-    m.reg.parse(s).unwrap_or_else(|e| panic!("{s}: {e}"))
+    m.reg().parse(s).unwrap_or_else(|e| panic!("{s}: {e}"))
 }
 
 /// Frame by name.
 pub fn frame(m: &Mechanism, n: &str) -> FrameId {
-    m.frames.find(n).unwrap()
+    m.frames().find(n).unwrap()
 }
 
 /// Asserts two vectors are exactly equal (compared in basis `b`).
 pub fn assert_vec_eq(m: &Mechanism, a: &Vector, b: &Vector, what: &str) {
-    let f = m.frames.ground();
-    let (x, y) = (a.express_in(&m.frames, f), b.express_in(&m.frames, f));
+    let f = m.frames().ground();
+    let (x, y) = (a.express_in(m.frames(), f), b.express_in(m.frames(), f));
     for k in 0..3 {
         assert_eq!(
             x[k], y[k],
@@ -91,7 +91,7 @@ pub fn assert_vec_eq(m: &Mechanism, a: &Vector, b: &Vector, what: &str) {
 
 /// Asserts a vector has the given components (strings) in basis `b`.
 pub fn assert_components(m: &Mechanism, v: &Vector, b: &str, expected: [&str; 3], what: &str) {
-    let c = v.express_in(&m.frames, frame(m, b));
+    let c = v.express_in(m.frames(), frame(m, b));
     for k in 0..3 {
         let e = ex(m, expected[k]);
         assert_eq!(

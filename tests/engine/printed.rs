@@ -409,13 +409,13 @@ impl Ctx<'_> {
     fn new(m: &Mechanism) -> Ctx<'_> {
         let mut names = HashMap::new();
         let ids = m
-            .reg
+            .reg()
             .parameters()
             .iter()
-            .chain(m.reg.unknowns())
+            .chain(m.reg().unknowns())
             .cloned()
-            .chain(m.spec.aliases.iter().map(|a| a.name.clone()))
-            .chain(m.reg.coordinates().iter().map(|c| match c.phase() {
+            .chain(m.spec().aliases.iter().map(|a| a.name.clone()))
+            .chain(m.reg().coordinates().iter().map(|c| match c.phase() {
                 // A phase is printed Ω t: the time is then a name of its own.
                 Some(_) => "t".to_string(),
                 None => c.name.clone(),
@@ -429,7 +429,7 @@ impl Ctx<'_> {
             }
         }
         let mut vectors = HashMap::new();
-        let spec = &m.spec;
+        let spec = &m.spec();
         let given = std::iter::once((&spec.ground, &spec.ground_basis))
             .chain(spec.frames.iter().map(|f| (&f.name, &f.basis)));
         for (frame, names) in given {
@@ -461,7 +461,7 @@ impl Ctx<'_> {
         }
         let e = self
             .m
-            .reg
+            .reg()
             .parse(&text)
             .map_err(|e| format!("{text}: {e}"))?;
         Ok((e, r.seen))
@@ -483,7 +483,7 @@ impl Ctx<'_> {
             return Err(format!("not a scalar: {text}"));
         }
         self.m
-            .reg
+            .reg()
             .parse_fraction_with(&text, &|_| None)
             .map_err(|e| format!("{text}: {e}"))
     }
@@ -526,7 +526,7 @@ impl Ctx<'_> {
             let g = f.clone();
             let pick = move |ax: char, fr: &str| if ax == a && fr == g { "1" } else { "0" };
             let (c, _) = self.read(t, &pick)?;
-            let frame = self.m.frames.find(&f).ok_or(format!("no frame {f}"))?;
+            let frame = self.m.frames().find(&f).ok_or(format!("no frame {f}"))?;
             let axis = match a {
                 'x' => torseur::frame::Axis::X,
                 'y' => torseur::frame::Axis::Y,
@@ -535,7 +535,7 @@ impl Ctx<'_> {
             v = v.add(&torseur::vector::Vector::along(frame, axis, c));
             done.push((a, f));
         }
-        Ok(v.express_in(&self.m.frames, self.m.frames.ground()))
+        Ok(v.express_in(self.m.frames(), self.m.frames().ground()))
     }
 }
 
@@ -881,7 +881,7 @@ fn every_printed_formula_is_the_engines_value() {
                         .value
                 });
                 let want = match &d.hypothesis {
-                    Some(h) => v.under(m.hypotheses.iter().find(|x| &x.name == h).unwrap()),
+                    Some(h) => v.under(m.hypotheses().iter().find(|x| &x.name == h).unwrap()),
                     None => v.clone(),
                 };
                 // An equation a = b shows the quantity a − b (up to its sign: either side may
@@ -924,7 +924,7 @@ proptest::proptest! {
     fn the_latex_of_random_expressions_reads_back(e in super::properties::expression()) {
         let m = super::regulator();
         let ctx = Ctx::new(&m);
-        let exact = m.reg.parse(&e).unwrap();
+        let exact = m.reg().parse(&e).unwrap();
         let latex = format!("x &= {}", torseur::latex::expr(&exact));
         let v = Value::Scalar(exact);
         proptest::prop_assert!(prove(&ctx, &latex, &v).is_ok(), "{}: {:?}", latex, prove(&ctx, &latex, &v));
@@ -937,7 +937,7 @@ proptest::proptest! {
 fn the_reader_catches_a_wrong_sign() {
     let m = super::regulator();
     let ctx = Ctx::new(&m);
-    let e = m.reg.parse("-(A2 + L2^2*m2)*ddot(theta2) + g").unwrap();
+    let e = m.reg().parse("-(A2 + L2^2*m2)*ddot(theta2) + g").unwrap();
     let v = Value::Scalar(e);
     assert!(
         prove(
@@ -963,11 +963,11 @@ fn the_reader_catches_a_wrong_sign() {
         )
         .is_err()
     );
-    let f2 = m.frames.find("2").unwrap();
-    let z = m.reg.zero();
+    let f2 = m.frames().find("2").unwrap();
+    let z = m.reg().zero();
     let vec = Value::Vector {
         basis: f2,
-        components: [m.reg.parse("L1 + L2").unwrap(), z.clone(), z],
+        components: [m.reg().parse("L1 + L2").unwrap(), z.clone(), z],
     };
     assert!(prove(&ctx, "v &= \\left(L_{1} + L_{2}\\right)\\vec{x}_{2}", &vec).is_ok());
     assert!(prove(&ctx, "v &= L_{1} + L_{2}\\,\\vec{x}_{2}", &vec).is_err());
@@ -1016,11 +1016,11 @@ fn every_derived_text_and_json_string_is_the_engines_value() {
     let mut n = 0;
     for path in spec_paths() {
         let m = torseur::spec::load(&path).unwrap();
-        let ds = torseur::derivation::derive_values(&m, &m.quantities).unwrap();
+        let ds = torseur::derivation::derive_values(&m, m.quantities()).unwrap();
         let j = torseur::output::derive_json(&m, &ds);
         for (d, jq) in ds.iter().zip(j["quantities"].as_array().unwrap()) {
             let mut cases = vec![(d.value.clone(), &jq["value"])];
-            for h in &m.hypotheses {
+            for h in m.hypotheses() {
                 cases.push((d.value.under(h), &jq["hypotheses"][&h.name]));
             }
             for (v, jv) in cases {
@@ -1029,7 +1029,7 @@ fn every_derived_text_and_json_string_is_the_engines_value() {
                     // cross-multiplication.
                     if let Value::Quotient(q) = &v {
                         let g = jv[form].as_str().unwrap();
-                        let (n1, d1) = m.reg.parse_fraction_with(g, &|_| None).unwrap();
+                        let (n1, d1) = m.reg().parse_fraction_with(g, &|_| None).unwrap();
                         assert!(
                             &n1 * &q.den == &q.num * &d1 && !d1.is_one(),
                             "{}: {} ({form}) printed {g}, engine {}/{}",
@@ -1045,7 +1045,7 @@ fn every_derived_text_and_json_string_is_the_engines_value() {
                     let want = v.exprs();
                     assert_eq!(got.len(), want.len(), "{}: {}", path.display(), d.quantity);
                     for (g, w) in got.iter().zip(want) {
-                        let e = m.reg.parse(g).unwrap_or_else(|e| panic!("{g}: {e}"));
+                        let e = m.reg().parse(g).unwrap_or_else(|e| panic!("{g}: {e}"));
                         assert!(
                             &e == w,
                             "{}: {} ({form}) printed {g}, engine {w}",

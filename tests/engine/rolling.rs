@@ -11,8 +11,8 @@ fn spec(path: &str) -> serde_json::Value {
 }
 
 fn rate_is(m: &torseur::mechanism::Mechanism, q: &str, hand: &str) {
-    let id = m.reg.coord(q).unwrap();
-    assert_eq!(m.reg.dot(id), m.reg.parse(hand).unwrap(), "dot({q})");
+    let id = m.reg().coord(q).unwrap();
+    assert_eq!(m.reg().dot(id), m.reg().parse(hand).unwrap(), "dot({q})");
 }
 
 #[test]
@@ -22,8 +22,8 @@ fn rolling_conditions_give_the_rates_derived_by_hand() {
     let m = torseur::spec::load("derivations/disque_plan_incline.json").unwrap();
     rate_is(&m, "theta", "-dot(x)/R");
     assert!(
-        m.reg
-            .coord_info(m.reg.coord("theta").unwrap())
+        m.reg()
+            .coord_info(m.reg().coord("theta").unwrap())
             .is_holonomic()
     );
     // Wheel on the plane: V(I,2/0) = ẋ x0 + ẏ y0 − R θ̇ x1, on B0: ẋ = R θ̇ cos ψ,
@@ -31,13 +31,21 @@ fn rolling_conditions_give_the_rates_derived_by_hand() {
     let m = torseur::spec::load("derivations/roue_sur_plan.json").unwrap();
     rate_is(&m, "x", "R*dot(theta)*cos(psi)");
     rate_is(&m, "y", "R*dot(theta)*sin(psi)");
-    assert!(!m.reg.coord_info(m.reg.coord("y").unwrap()).is_holonomic());
+    assert!(
+        !m.reg()
+            .coord_info(m.reg().coord("y").unwrap())
+            .is_holonomic()
+    );
     // The skate (a blade: no sliding across y1 only): V(C,1/0)·y1 = −ẋ sin ψ + ẏ cos ψ = 0,
     // so ẏ = ẋ sin ψ / cos ψ and V(C,1/0) = (ẋ / cos ψ) x1 = u x1. Then Γ(C) = u̇ x1 + u ψ̇ y1,
     // u̇ = ẍ / cos ψ + ẋ ψ̇ sin ψ / cos² ψ; the ice's lateral force is Y = m u ψ̇.
     let m = torseur::spec::load("tests/specs/patin.json").unwrap();
     rate_is(&m, "y", "dot(x)*sin(psi)/cos(psi)");
-    assert!(!m.reg.coord_info(m.reg.coord("y").unwrap()).is_holonomic());
+    assert!(
+        !m.reg()
+            .coord_info(m.reg().coord("y").unwrap())
+            .is_holonomic()
+    );
     torseur::assert_equivalent!(m, "V(C,1/0) in B1", "dot(x)/cos(psi)*x1");
     torseur::assert_equivalent!(
         m,
@@ -203,19 +211,19 @@ fn the_pfd_equations_are_lagranges_with_multipliers() {
             .collect();
         v.as_object_mut().unwrap().remove("rolling");
         let unconstrained = torseur::spec::from_str(&v.to_string()).unwrap();
-        let ureg = &unconstrained.reg;
+        let ureg = &unconstrained.reg();
         // Each E_k read into the constrained mechanism, where the dependent rates (and their
         // derivatives) are the condition's.
         let e = |k: &str| {
             let r = torseur::pfd::lagrange(&unconstrained, ureg.coord(k).unwrap());
-            m.reg.parse(&r.to_string()).unwrap()
+            m.reg().parse(&r.to_string()).unwrap()
         };
         let sol = torseur::pfd::solve(&m).unwrap();
         for f in free_coords {
-            let qf = m.reg.coord(f).unwrap();
+            let qf = m.reg().coord(f).unwrap();
             let mut combination = e(f);
             for d in &dependent {
-                let c = m.reg.dot(m.reg.coord(d).unwrap()).partial_rate(qf, 1);
+                let c = m.reg().dot(m.reg().coord(d).unwrap()).partial_rate(qf, 1);
                 combination = &combination + &(&c * &e(d));
             }
             let eom = &sol.eom[*f];

@@ -19,7 +19,7 @@ fn work_of_the_motor_equals_the_change_of_energy_without_friction() {
     // the integrator's tolerance (rtol 1e-10).
     let m = regulator();
     let sc = m
-        .spec
+        .spec()
         .scenarios
         .iter()
         .find(|s| s.name == "sans_frottement")
@@ -65,7 +65,7 @@ fn with_friction_the_flyweight_settles_at_its_relative_equilibrium() {
     let m = regulator();
     let run = simulate(&m, "avec_frottement").unwrap();
     let sc = m
-        .spec
+        .spec()
         .scenarios
         .iter()
         .find(|s| s.name == "avec_frottement")

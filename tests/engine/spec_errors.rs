@@ -456,7 +456,7 @@ fn five_thousand_nested_parentheses_get_a_short_message_naming_the_path() {
     // The same through the expression parser alone, and the quantity notation.
     let m = super::regulator();
     let long = nested();
-    assert!(m.reg.parse(&long).unwrap_err().to_string().len() < 200);
+    assert!(m.reg().parse(&long).unwrap_err().to_string().len() < 200);
     let q = format!("delta({},2/0)", "O".repeat(10_000));
     let e = torseur::quantity::Quantity::parse(&q).unwrap_err();
     assert!(e.to_string().len() < 200, "{e}");

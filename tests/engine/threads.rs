@@ -11,7 +11,7 @@ const SPEC: &str = concat!(
 fn load_on_new_thread() -> Result<usize, String> {
     std::thread::spawn(|| {
         torseur::spec::load(SPEC)
-            .map(|m| m.bodies.len())
+            .map(|m| m.bodies().len())
             .map_err(|e| e.to_string())
     })
     .join()
@@ -31,7 +31,7 @@ fn a_second_thread_gets_a_clear_error_while_the_first_is_alive() {
         let m = torseur::spec::load(SPEC).unwrap();
         loaded_tx.send(()).unwrap();
         tried_rx.recv().unwrap();
-        torseur::derive(&m, &m.quantities[0]).is_ok()
+        torseur::derive(&m, &m.quantities()[0]).is_ok()
     });
     loaded_rx.recv().unwrap();
     let b = load_on_new_thread();

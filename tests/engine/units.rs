@@ -240,7 +240,7 @@ fn dimension_of_hand_written_expressions() {
         Some(d(1, 1, -2))
     );
     assert_eq!(
-        dimension(&s.reg.rate(s.reg.coord("x").unwrap(), 3), &sd).unwrap(),
+        dimension(&s.reg().rate(s.reg().coord("x").unwrap(), 3), &sd).unwrap(),
         Some(d(0, 1, -3))
     );
     // sin β of the constant angle β (a coordinate with rate 0): a pure number.
@@ -366,7 +366,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
             // A force for the resultant theorem that gives it, a moment for the moment
             // theorem (the disc on the incline takes x's equation from the moment at I).
             let c = &q[4..q.find(')').unwrap()];
-            let moment = m.spec.pfd.iter().any(|t| {
+            let moment = m.spec().pfd.iter().any(|t| {
                 t.eom.as_deref() == Some(c) && t.theorem == torseur::spec::wire::TheoremKind::Moment
             });
             one(if moment { d(1, 2, -2) } else { d(1, 1, -2) })
@@ -419,21 +419,21 @@ fn every_quantity_of_every_spec_has_its_dimension_under_every_hypothesis() {
         let m = load(name);
         let dims = Dimensions::of(&m);
         // Every variable has a known dimension: nothing below is skipped.
-        for i in m.reg.var_ids() {
+        for i in m.reg().var_ids() {
             assert!(
                 dims.variable(i).is_some(),
                 "{name}: variable {} ({:?}) has no dimension",
                 i.index(),
-                m.reg.role(i)
+                m.reg().role(i)
             );
         }
-        let values = derive_values(&m, &m.quantities).unwrap();
-        for (q, dv) in m.quantities.iter().zip(&values) {
+        let values = derive_values(&m, m.quantities()).unwrap();
+        for (q, dv) in m.quantities().iter().zip(&values) {
             let (main, moment) = by_hand(&m, &q.to_string());
             let forms: Vec<(String, Value)> =
                 std::iter::once(("general".to_string(), dv.value.clone()))
                     .chain(
-                        m.hypotheses
+                        m.hypotheses()
                             .iter()
                             .map(|h| (format!("under {}", h.name), dv.value.under(h))),
                     )
@@ -472,7 +472,7 @@ fn every_quantity_of_every_spec_has_its_dimension_under_every_hypothesis() {
         assert!(r.dimension_failures().is_empty(), "{name}: {r}");
         assert_eq!(
             r.dimensions.len(),
-            m.quantities.len() * (1 + m.hypotheses.len()),
+            m.quantities().len() * (1 + m.hypotheses().len()),
             "{name}: every quantity, lin(...) included, under every hypothesis"
         );
     }
