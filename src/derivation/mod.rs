@@ -254,6 +254,15 @@ fn vec_value(m: &Mechanism, v: &Vector, b: FrameId) -> Value {
     }
 }
 
+/// What a quantity's derivation finds: a vector, projected or written in the requested basis
+/// at the end, or a value already in its final form.
+// One per derivation, moved once: its size does not matter.
+#[allow(clippy::large_enum_variant)]
+enum Found {
+    Vector(Vector),
+    Value(Value),
+}
+
 /// Derives a quantity: its value written in the requested basis, and the steps that led to it.
 ///
 /// ```
@@ -282,24 +291,15 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
     let b = r.basis;
     let mut steps = Vec::new();
     let reference = r.reference.unwrap_or(m.frames.ground());
-    let vector: Option<Vector>;
-    let mut value: Option<Value> = None;
     use QuantityKind::*;
-    match &q.kind {
+    let found = match &q.kind {
         KineticEnergy(_) | Unknown(_) | Eom(_) => {
             return dynamics::derive(m, q, &mut Shared::default(), true);
         }
-        Omega(_) => {
-            vector = Some(omega(m, r.moving_frame.unwrap_or(reference), reference));
-        }
-        Power { action, .. } => {
-            let p = actions::power(m, q, action, &r, reference, &mut steps)?;
-            return Ok(Derivation {
-                quantity: q.clone(),
-                steps,
-                value: Value::Scalar(p),
-            });
-        }
+        Omega(_) => Found::Vector(omega(m, r.moving_frame.unwrap_or(reference), reference)),
+        Power { action, .. } => Found::Value(Value::Scalar(actions::power(
+            m, q, action, &r, reference, &mut steps,
+        )?)),
         EquivalentInertia(c) => {
             let coord = m
                 .reg
@@ -307,48 +307,34 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
                 .ok_or_else(|| ResolveError::unknown(q, "coordinate", c))?;
             let j =
                 crate::pfd::equivalent_inertia(m, coord).map_err(|e| ResolveError::new(q, e))?;
-            return Ok(Derivation {
-                quantity: q.clone(),
-                steps,
-                value: Value::Scalar(j),
-            });
+            Found::Value(Value::Scalar(j))
         }
-        InternalPower(_) => {
-            let p = actions::internal_power(m, &r, &mut steps);
-            return Ok(Derivation {
-                quantity: q.clone(),
-                steps,
-                value: Value::Scalar(p),
-            });
-        }
+        InternalPower(_) => Found::Value(Value::Scalar(actions::internal_power(m, &r, &mut steps))),
         ActionResultant(action) | ActionMoment { action, .. } | ActionTorsor { action, .. } => {
             let t = actions::total(m, q, action, &r, &mut steps)?;
             match &q.kind {
-                ActionResultant(_) => vector = Some(t.resultant),
-                ActionMoment { .. } => vector = Some(t.moment),
-                _ => {
-                    vector = None;
-                    value = Some(torsor_value(m, &t, b));
-                }
+                ActionResultant(_) => Found::Vector(t.resultant),
+                ActionMoment { .. } => Found::Vector(t.moment),
+                _ => Found::Value(torsor_value(m, &t, b)),
             }
         }
         Velocity { .. } => {
             let p = r.point.unwrap_or(m.points.origin());
-            vector = Some(velocity(
+            Found::Vector(velocity(
                 m,
                 p,
                 r.moving_frame.unwrap_or(reference),
                 reference,
-            ));
+            ))
         }
         Acceleration { .. } => {
             let p = r.point.unwrap_or(m.points.origin());
-            vector = Some(acceleration(
+            Found::Vector(acceleration(
                 m,
                 p,
                 r.moving_frame.unwrap_or(reference),
                 reference,
-            ));
+            ))
         }
         Inertia { .. } => {
             let s = r.solids[0];
@@ -365,131 +351,135 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
                 });
             }
             let ia = torsor::inertia_at(m, s, a).in_basis(&m.frames, b);
-            vector = None;
-            value = Some(Value::Matrix(ia));
+            Found::Value(Value::Matrix(ia))
         }
-        KineticResultant(_) => {
-            vector = Some(torsor::kinetic_resultant(m, &r.solids, reference));
-        }
-        DynamicResultant(_) => {
-            vector = Some(torsor::dynamic_resultant(m, &r.solids, reference));
-        }
+        KineticResultant(_) => Found::Vector(torsor::kinetic_resultant(m, &r.solids, reference)),
+        DynamicResultant(_) => Found::Vector(torsor::dynamic_resultant(m, &r.solids, reference)),
         KineticMoment { .. } | DynamicMoment { .. } => {
             let a = r.point.unwrap_or(m.points.origin());
             let dynamic = matches!(q.kind, DynamicMoment { .. });
             let total = moment_steps(m, &r.solids, a, reference, b, dynamic, &mut steps);
-            vector = Some(total);
+            Found::Vector(total)
         }
         KinematicTorsor { .. } => {
             let a = r.point.unwrap_or(m.points.origin());
             let t = torsor::kinematic_torsor(m, r.moving_frame.unwrap_or(reference), reference, a);
-            vector = None;
-            value = Some(torsor_value(m, &t, b));
+            Found::Value(torsor_value(m, &t, b))
         }
         KineticTorsor { .. } | DynamicTorsor { .. } => {
             let a = r.point.unwrap_or(m.points.origin());
             let dynamic = matches!(q.kind, DynamicTorsor { .. });
-            let rn = m.frame_name(reference).to_string();
-            let set = r.solids.len() > 1;
-            let mut res_total = Vector::zero();
-            let mut mom_total = Vector::zero();
-            for &s in &r.solids {
-                let body = m.body(s);
-                let mo = Motion {
-                    moving: body.name.clone(),
-                    reference: rn.clone(),
-                };
-                // Each solid of a set is taken where its torsor is simplest (the course's
-                // method): at A if A is its frame origin or its centre, else at its frame
-                // origin when that point is fixed in the reference frame; then moved to A.
-                let origin = m.origin(body.frame);
-                let p = if !set || a == origin || a == body.centre {
-                    a
-                } else if point_velocity(m, origin, reference).is_zero(&m.frames) {
-                    origin
-                } else {
-                    a
-                };
-                let res = if dynamic {
-                    acceleration(m, body.centre, body.frame, reference).scale(&body.mass)
-                } else {
-                    velocity(m, body.centre, body.frame, reference).scale(&body.mass)
-                };
-                steps.push(Step {
-                    kind: StepKind::Quantity(if dynamic {
-                        QuantityKind::DynamicResultant(mo.clone())
-                    } else {
-                        QuantityKind::KineticResultant(mo.clone())
-                    }),
-                    label: format!("{}({mo})", if dynamic { "Rd" } else { "Rc" }),
-                    theorem: if dynamic {
-                        "Rd = m Γ(G, S/R0)".into()
-                    } else {
-                        "Rc = m V(G, S/R0)".into()
-                    },
-                    value: vec_value(m, &res, b),
-                });
-                let mom = moment_steps(m, &[s], p, reference, b, dynamic, &mut steps);
-                let t = Torsor {
-                    point: p,
-                    resultant: res,
-                    moment: mom,
-                };
-                let t = if p == a {
-                    t
-                } else {
-                    let moved = t.at(m, a);
-                    let (pn, an) = (m.point_name(p).to_string(), m.point_name(a).to_string());
-                    let kind = if dynamic {
-                        QuantityKind::DynamicTorsor {
-                            motion: mo.clone(),
-                            point: an.clone(),
-                        }
-                    } else {
-                        QuantityKind::KineticTorsor {
-                            motion: mo.clone(),
-                            point: an.clone(),
-                        }
-                    };
-                    steps.push(Step {
-                        label: kind.to_string(),
-                        kind: StepKind::Quantity(kind),
-                        theorem: format!("changement de point : M({an}) = M({pn}) + {an}{pn} ∧ R"),
-                        value: torsor_value(m, &moved, b),
-                    });
-                    moved
-                };
-                res_total = res_total.add(&t.resultant);
-                mom_total = mom_total.add(&t.moment);
-            }
-            vector = None;
-            value = Some(torsor_value(
-                m,
-                &Torsor {
-                    point: a,
-                    resultant: res_total,
-                    moment: mom_total,
-                },
-                b,
-            ));
+            let t = solids_torsor(m, &r.solids, a, reference, b, dynamic, &mut steps);
+            Found::Value(torsor_value(m, &t, b))
         }
-    }
-    let value = match (value, vector) {
-        (Some(v), _) => v,
-        (None, Some(v)) => match r.projection {
+    };
+    // A vector is projected where the quantity asks (Ω(2/0).x1), else written in its basis.
+    let value = match found {
+        Found::Value(v) => v,
+        Found::Vector(v) => match r.projection {
             Some((f, axis)) => {
                 let u = Vector::along(f, axis, m.reg.one());
                 Value::Scalar(v.dot(&m.frames, &u))
             }
             None => vec_value(m, &v, b),
         },
-        (None, None) => unreachable!("every quantity yields a value or a vector"),
     };
     Ok(Derivation {
         quantity: q.clone(),
         steps,
         value,
     })
+}
+
+/// The kinetic (or, `dynamic`, the dynamic) torsor at `a` of the solids `solids` in their
+/// motion relative to `reference`, each solid's resultant and moment recorded as a step.
+fn solids_torsor(
+    m: &Mechanism,
+    solids: &[BodyId],
+    a: PointId,
+    reference: FrameId,
+    b: FrameId,
+    dynamic: bool,
+    steps: &mut Vec<Step>,
+) -> Torsor {
+    let rn = m.frame_name(reference).to_string();
+    let set = solids.len() > 1;
+    let mut res_total = Vector::zero();
+    let mut mom_total = Vector::zero();
+    for &s in solids {
+        let body = m.body(s);
+        let mo = Motion {
+            moving: body.name.clone(),
+            reference: rn.clone(),
+        };
+        // Each solid of a set is taken where its torsor is simplest (the course's
+        // method): at A if A is its frame origin or its centre, else at its frame
+        // origin when that point is fixed in the reference frame; then moved to A.
+        let origin = m.origin(body.frame);
+        let p = if !set || a == origin || a == body.centre {
+            a
+        } else if point_velocity(m, origin, reference).is_zero(&m.frames) {
+            origin
+        } else {
+            a
+        };
+        let res = if dynamic {
+            acceleration(m, body.centre, body.frame, reference).scale(&body.mass)
+        } else {
+            velocity(m, body.centre, body.frame, reference).scale(&body.mass)
+        };
+        steps.push(Step {
+            kind: StepKind::Quantity(if dynamic {
+                QuantityKind::DynamicResultant(mo.clone())
+            } else {
+                QuantityKind::KineticResultant(mo.clone())
+            }),
+            label: format!("{}({mo})", if dynamic { "Rd" } else { "Rc" }),
+            theorem: if dynamic {
+                "Rd = m Γ(G, S/R0)".into()
+            } else {
+                "Rc = m V(G, S/R0)".into()
+            },
+            value: vec_value(m, &res, b),
+        });
+        let mom = moment_steps(m, &[s], p, reference, b, dynamic, steps);
+        let t = Torsor {
+            point: p,
+            resultant: res,
+            moment: mom,
+        };
+        let t = if p == a {
+            t
+        } else {
+            let moved = t.at(m, a);
+            let (pn, an) = (m.point_name(p).to_string(), m.point_name(a).to_string());
+            let kind = if dynamic {
+                QuantityKind::DynamicTorsor {
+                    motion: mo.clone(),
+                    point: an.clone(),
+                }
+            } else {
+                QuantityKind::KineticTorsor {
+                    motion: mo.clone(),
+                    point: an.clone(),
+                }
+            };
+            steps.push(Step {
+                label: kind.to_string(),
+                kind: StepKind::Quantity(kind),
+                theorem: format!("changement de point : M({an}) = M({pn}) + {an}{pn} ∧ R"),
+                value: torsor_value(m, &moved, b),
+            });
+            moved
+        };
+        res_total = res_total.add(&t.resultant);
+        mom_total = mom_total.add(&t.moment);
+    }
+    Torsor {
+        point: a,
+        resultant: res_total,
+        moment: mom_total,
+    }
 }
 
 fn torsor_value(m: &Mechanism, t: &Torsor, b: FrameId) -> Value {
