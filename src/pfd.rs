@@ -725,24 +725,6 @@ pub fn transmitted(k: LinkKind, a: Axis, d: Option<Axis>) -> [bool; 6] {
     t
 }
 
-/// Names of the unknowns of a link: X, Y, Z, L, M, N followed by its name, where transmitted
-/// (X01; X_A for a link named by a letter, its centre A).
-pub fn link_unknowns(name: &str, t: [bool; 6]) -> Vec<String> {
-    ["X", "Y", "Z", "L", "M", "N"]
-        .iter()
-        .zip(t)
-        .filter(|(_, on)| *on)
-        // A link named by its centre (`A`) gives X_A, as the course writes it; `01` gives X01.
-        .map(|(l, _)| {
-            if name.starts_with(|c: char| c.is_ascii_alphabetic()) {
-                format!("{l}_{name}")
-            } else {
-                format!("{l}{name}")
-            }
-        })
-        .collect()
-}
-
 /// The small-motion linearisation of `e` around the equilibrium of the `small` coordinates
 /// (their rates and accelerations small too): f(x0) + Σ ∂f/∂xᵢ(x0)·(xᵢ − xᵢ0), exactly, with
 /// sin q ≈ q and cos q ≈ 1 for a small angle. The other coordinates keep their full form.

@@ -124,9 +124,6 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
     let _ = writeln!(doc.o, "\\noindent\\textbf{{{title}}} ");
     let zero = m.reg.zero();
     for (r, law) in m.spec.rolling.iter().zip(laws) {
-        let crate::quantity::QuantityKind::Velocity { point, .. } = &law.velocity.kind else {
-            unreachable!("a rolling condition is a velocity, as resolved")
-        };
         let v = super::quantity(&law.velocity.kind);
         let ground = m.frames.ground();
         let [i, j] = law.motion;
@@ -166,7 +163,7 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
         let _ = writeln!(
             doc.o,
             "{what} en ${}$, {}{projected}, donne :",
-            super::point(point),
+            super::point(m.point_name(law.point)),
             stated.join(" et ")
         );
         for row in &law.rows {

@@ -77,8 +77,8 @@ impl Hypothesis {
 }
 
 /// A validated problem: everything the derivations need, behind typed ids. Only the spec's
-/// validation builds one ([`crate::spec::build`]); others read it through its accessors, so a
-/// mechanism always holds what its spec says.
+/// validation builds one ([`crate::spec::build`]); callers outside the crate read it through
+/// its accessors and cannot change what was validated.
 #[derive(Debug, Clone)]
 pub struct Mechanism {
     /// Title.
@@ -217,8 +217,9 @@ impl Mechanism {
         self.loop_law.as_ref()
     }
 
-    /// The same problem asking for the quantities `qs` instead of the spec's, each of which
-    /// the caller has resolved against it ([`crate::derivation::resolve`]).
+    /// The same problem asking for the quantities `qs` instead of the spec's. They are not
+    /// checked here: derive each (or resolve it, [`crate::derivation::resolve`]) to know it
+    /// names this mechanism's objects.
     pub fn asking(&self, qs: Vec<Quantity>) -> Mechanism {
         Mechanism {
             quantities: qs,

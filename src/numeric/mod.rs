@@ -325,11 +325,15 @@ impl NumericModel {
         let signed = crate::resolve::with_signs(spec).map_err(refused)?;
         let spec = signed.as_ref();
         let trees = crate::resolve::resolve(spec).map_err(refused)?;
+        // The PFD's unknowns, named by the resolution from this backend's own reading of which
+        // components each link transmits.
+        let unknowns =
+            crate::resolve::unknowns(spec, &trees, &dynamics::transmitted).map_err(refused)?;
         let mut model = model::build(spec, &trees)?;
         model.closures = closure::build(spec, &model, &trees)?;
         model.rolling = closure::build_rolling(&trees);
         closure::check_shape(&model)?;
-        model.dynamics = dynamics::build(spec, &model, &trees)?;
+        model.dynamics = dynamics::build(spec, &model, &trees, unknowns)?;
         model::mark_positive(&mut model);
         model.uses_time = model.writes_time();
         Ok(model)

@@ -113,8 +113,9 @@ fn rolling(known: &Known, i: usize, taken: &mut Vec<usize>) -> Result<RollingNod
     })
 }
 
-/// The closures and the rolling conditions, and the coordinates' rates: with either, only the
-/// coordinates they determine go without a given rate.
+/// The closures and the rolling conditions, and the coordinates' rates: with either, no
+/// coordinate has a given rate (the ones they determine get theirs from them, the others are
+/// free).
 pub(super) fn constraints(known: &Known) -> Result<(Vec<ClosureNode>, Vec<RollingNode>), Refusal> {
     let spec = known.spec;
     let mut taken = Vec::new();
@@ -129,8 +130,7 @@ pub(super) fn constraints(known: &Known) -> Result<(Vec<ClosureNode>, Vec<Rollin
         .collect::<Result<Vec<_>, _>>()?;
     // The loop's derivative is solved for the dependent rates in terms of free rates.
     if !taken.is_empty()
-        && let Some(i) = (0..spec.coordinates.len())
-            .find(|i| spec.coordinates[*i].rate.is_some() && !taken.contains(i))
+        && let Some(i) = spec.coordinates.iter().position(|c| c.rate.is_some())
     {
         return Err(at(
             format!("coordinates[{i}].rate"),

@@ -4,9 +4,12 @@
 //! point after the point it is placed from, every frame, point and solid named once, every
 //! reference to one of them turned into a position, every error naming its JSON path.
 //!
-//! What is resolved here is only names and structure. Each side still reads the expressions (rotation
-//! angles, positions, masses, inertia entries) with its own parser and applies the physical
-//! conventions with its own code: a mistake in one cannot hide behind the other.
+//! What is resolved here is names, structure and the spec's own conventions: the links' axes
+//! (the ground's z for a ball or a fixed link, which need none), which kinds take friction and
+//! springs, the unknowns' names (X01, X_A), the dry friction signs' parameters. Each side still
+//! reads the expressions (rotation angles, positions, masses, inertia entries) with its own
+//! parser and applies the physical conventions (which components a link transmits, rotation
+//! sense, inertia signs) with its own code: a mistake in one cannot hide behind the other.
 //!
 //! ```
 //! let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
@@ -22,7 +25,7 @@ use crate::expr::{RESERVED, check_identifier};
 use crate::quantity::check_name;
 use crate::wire::SpecFile;
 pub use constraints::{ClosureNode, RollingNode};
-pub use pfd::{ActionNode, LinkNode, Side, TheoremNode, unknowns, with_signs};
+pub use pfd::{ActionNode, LinkNode, Side, TheoremNode, Unknowns, unknowns, with_signs};
 use pfd::{Known, actions, links, theorems};
 use std::collections::{BTreeMap, HashSet};
 

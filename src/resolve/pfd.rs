@@ -23,8 +23,10 @@ pub enum Side {
 pub struct LinkNode<'a> {
     /// Its name.
     pub name: &'a str,
-    /// The solid (or the ground) exerting the action, then the solid receiving it.
-    pub between: [Side; 2],
+    /// The solid (or the ground) exerting the action.
+    pub from: Side,
+    /// The solid receiving it (its position among the solids).
+    pub on: usize,
     /// The position of its point.
     pub point: usize,
     /// The basis vector of its axis (or normal): (the position of its frame, its axis 0, 1
@@ -34,6 +36,13 @@ pub struct LinkNode<'a> {
     pub direction: Option<usize>,
     /// The coordinate its spring measures (index in `coordinates`).
     pub spring: Option<usize>,
+}
+
+impl LinkNode<'_> {
+    /// The solid (or the ground) exerting the action, then the solid receiving it.
+    pub fn sides(&self) -> [Side; 2] {
+        [self.from, Side::Solid(self.on)]
+    }
 }
 
 /// A given action's references, in the order of the spec's `actions`.
@@ -130,21 +139,21 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
     for (i, l) in spec.links.iter().enumerate() {
         let path = format!("links[{i}]");
         let from = known.side(format!("{path}.between[0]"), &l.between[0])?;
-        let on = known.side(format!("{path}.between[1]"), &l.between[1])?;
-        if on == Side::Ground {
+        let Side::Solid(on) = known.side(format!("{path}.between[1]"), &l.between[1])? else {
             return Err(at(
                 format!("{path}.between[1]"),
                 "the second solid of a link receives its action: it cannot be the ground",
             ));
-        }
-        if from == on {
+        };
+        if from == Side::Solid(on) {
             return Err(at(
                 format!("{path}.between"),
                 "a link joins two different solids",
             ));
         }
         // A loop closed by a closure (a crank–slider's slide) is a loop of the mechanism.
-        if let Some(chain) = closes_loop(&out, [from, on]).filter(|_| spec.closures.is_empty()) {
+        let sides = [from, Side::Solid(on)];
+        if let Some(chain) = closes_loop(&out, sides).filter(|_| spec.closures.is_empty()) {
             let names: Vec<&str> = chain.iter().map(|&k| out[k].name).collect();
             return Err(at(
                 format!("{path}.between"),
@@ -179,7 +188,8 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
             .transpose()?;
         out.push(LinkNode {
             name: &l.name,
-            between: [from, on],
+            from,
+            on,
             point: known.point(format!("{path}.point"), &l.point)?,
             axis,
             direction,
@@ -239,7 +249,7 @@ fn axis(
 fn closes_loop(links: &[LinkNode], [a, b]: [Side; 2]) -> Option<Vec<usize>> {
     if links
         .iter()
-        .any(|l| l.between == [a, b] || l.between == [b, a])
+        .any(|l| l.sides() == [a, b] || l.sides() == [b, a])
     {
         return None;
     }
@@ -249,7 +259,7 @@ fn closes_loop(links: &[LinkNode], [a, b]: [Side; 2]) -> Option<Vec<usize>> {
     while k < reached.len() {
         let n = reached[k].0;
         for (j, l) in links.iter().enumerate() {
-            let other = match l.between {
+            let other = match l.sides() {
                 [x, y] if x == n => y,
                 [x, y] if y == n => x,
                 _ => continue,
@@ -274,13 +284,25 @@ fn closes_loop(links: &[LinkNode], [a, b]: [Side; 2]) -> Option<Vec<usize>> {
     None
 }
 
-/// The names of the PFD's unknowns, in order: each link's components, X, Y, Z, L, M, N
-/// followed by its name where it transmits them (X01; X_A for a link named by a letter, its
-/// centre A), then each given action's unknowns. Which components a link transmits is the
-/// reader's own convention, `transmitted(kind, axis, direction)` (axes 0, 1, 2; components
-/// 0..3 the resultant's, 3..6 the moment's); the names are checked here: each an identifier,
-/// not a word of the syntax, a basis vector, a parameter, a coordinate or an alias, and
-/// declared once.
+/// The PFD's unknowns: their names in order, each link's transmitted components, then each
+/// given action's unknowns.
+#[derive(Debug, Clone, Default)]
+pub struct Unknowns {
+    /// The names: X, Y, Z, L, M, N followed by a link's name where it transmits them (X01;
+    /// X_A for a link named by a letter, its centre A), link after link, then each given
+    /// action's unknowns.
+    pub names: Vec<String>,
+    /// For each link, its transmitted components (0..3 the resultant's, 3..6 the moment's, in
+    /// the basis of its axis), each with the position of its unknown in `names`.
+    pub links: Vec<Vec<(usize, usize)>>,
+    /// For each given action, the positions of its unknowns in `names`.
+    pub actions: Vec<Vec<usize>>,
+}
+
+/// The PFD's unknowns, named and checked here: each an identifier, not a word of the syntax,
+/// not a basis vector, a parameter, a coordinate or an alias, and declared once. Which
+/// components a link transmits is the reader's own convention, `transmitted(kind, axis,
+/// direction)` (axes 0, 1, 2), which each side applies with its own code.
 ///
 /// ```
 /// let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
@@ -289,15 +311,16 @@ fn closes_loop(links: &[LinkNode], [a, b]: [Side; 2]) -> Option<Vec<usize>> {
 /// // A reader for which every link transmits only its resultant's component along x.
 /// let x_only = |_, _, _| [true, false, false, false, false, false];
 /// let unknowns = torseur::resolve::unknowns(&spec, &r, &x_only).unwrap();
-/// assert_eq!(unknowns[0], "X01");
+/// assert_eq!(unknowns.names[0], "X01");
+/// assert_eq!(unknowns.links[0], [(0, 0)]);
 /// ```
 pub fn unknowns(
     spec: &SpecFile,
     r: &Resolved,
     transmitted: &dyn Fn(LinkKind, usize, Option<usize>) -> [bool; 6],
-) -> Result<Vec<String>, Refusal> {
-    let mut out: Vec<String> = Vec::new();
-    let mut add = |path: String, n: String| -> Result<(), Refusal> {
+) -> Result<Unknowns, Refusal> {
+    let mut out = Unknowns::default();
+    let add = |path: String, n: String, names: &mut Vec<String>| -> Result<usize, Refusal> {
         readable(spec, "unknown", &path, &n)?;
         let why = if r.names.vectors.contains_key(n.as_str()) {
             format!("the unknown `{n}` is the name of a basis vector")
@@ -305,11 +328,11 @@ pub fn unknowns(
             format!("the unknown `{n}` is already a parameter: an unknown is solved for, not given")
         } else if r.names.contains(&n) {
             format!("the unknown `{n}` is already a coordinate or an alias")
-        } else if out.contains(&n) {
+        } else if names.contains(&n) {
             format!("the unknown `{n}` is declared twice")
         } else {
-            out.push(n);
-            return Ok(());
+            names.push(n);
+            return Ok(names.len() - 1);
         };
         Err(at(path, why))
     };
@@ -321,17 +344,22 @@ pub fn unknowns(
         } else {
             ""
         };
-        for (letter, _) in ["X", "Y", "Z", "L", "M", "N"].iter().zip(t).filter(|c| c.1) {
-            add(
-                format!("links[{i}].name"),
-                format!("{letter}{sep}{}", l.name),
-            )?;
+        let mut components = Vec::new();
+        for (k, letter) in ["X", "Y", "Z", "L", "M", "N"].iter().enumerate() {
+            if t[k] {
+                let n = format!("{letter}{sep}{}", l.name);
+                components.push((k, add(format!("links[{i}].name"), n, &mut out.names)?));
+            }
         }
+        out.links.push(components);
     }
     for (i, a) in spec.actions.iter().enumerate() {
+        let mut own = Vec::with_capacity(a.unknowns.len());
         for (k, n) in a.unknowns.iter().enumerate() {
-            add(format!("actions[{i}].unknowns[{k}]"), n.clone())?;
+            let path = format!("actions[{i}].unknowns[{k}]");
+            own.push(add(path, n.clone(), &mut out.names)?);
         }
+        out.actions.push(own);
     }
     Ok(out)
 }
@@ -366,6 +394,10 @@ pub fn with_signs(spec: &SpecFile) -> Result<Cow<'_, SpecFile>, Refusal> {
             );
             return Err(at(format!("links[{i}].coulomb"), why));
         }
+        check_identifier(&name).map_err(|m| {
+            let why = format!("the sign of its relative rate under dry friction is named {m}");
+            at(format!("links[{i}].name"), why)
+        })?;
         out.parameters.push(ParameterSpec {
             name,
             description: Some(format!(

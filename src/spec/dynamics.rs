@@ -1,6 +1,6 @@
-//! Validation of a spec's PFD sections (`gravity`, `links`, `actions`, `pfd`, `small`) into
-//! [`Dynamics`], on the references the shared resolution found, every error naming the JSON
-//! path.
+//! Validation of a spec's PFD sections (`gravity`, `links`, `actions`, `pfd`) into
+//! [`Dynamics`], on the references and unknowns the shared resolution found, and of the
+//! exact side's own `small` section, every error naming the JSON path.
 
 use super::SpecError;
 use super::validate::{at, expr_err};
@@ -8,9 +8,9 @@ use crate::expr::{Expr, Registry};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::{omega, velocity};
 use crate::mechanism::{BodyId, DryFriction, Mechanism};
-use crate::pfd::{Action, Dynamics, Small, Source, SpringPart, Theorem, transmitted};
+use crate::pfd::{Action, Dynamics, Small, Source, SpringPart, Theorem};
 use crate::point::PointId;
-use crate::resolve::{LinkNode, Resolved, Side};
+use crate::resolve::{LinkNode, Resolved, Side, Unknowns};
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, LinkKind, LinkSpec, SpecFile};
 use std::rc::Rc;
@@ -76,17 +76,17 @@ fn source(s: Side) -> Source {
 pub(super) fn build(
     m: &Mechanism,
     spec: &SpecFile,
-    resolved: &Resolved,
+    (resolved, unknowns): (&Resolved, &Unknowns),
 ) -> Result<Dynamics, SpecError> {
     let mut d = Dynamics {
         gravity: gravity(m, spec)?,
         ..Default::default()
     };
-    // The unknowns, named in the order of the links' transmitted components.
-    let mut unknowns = m.reg.unknowns().iter();
     for (i, node) in resolved.links.iter().enumerate() {
         let path = format!("links[{i}]");
-        let action = link(m, (&spec.links[i], &path), node, &mut unknowns, &mut d.dry)?;
+        // Its unknowns: the components this side's own transmissibility gave, as named.
+        let comps = (unknowns.links[i].iter()).map(|&(k, u)| (k, unknowns.names[u].as_str()));
+        let action = link(m, (&spec.links[i], &path), node, comps, &mut d.dry)?;
         d.actions.push(action);
     }
     for (i, node) in resolved.actions.iter().enumerate() {
@@ -130,20 +130,15 @@ fn link<'u>(
     m: &Mechanism,
     (l, path): (&LinkSpec, &str),
     node: &LinkNode,
-    unknowns: &mut impl Iterator<Item = &'u String>,
+    unknowns: impl Iterator<Item = (usize, &'u str)>,
     dry: &mut Vec<DryFriction>,
 ) -> Result<Action, SpecError> {
     let reg = &m.reg;
-    let from = source(node.between[0]);
-    let Source::Body(on) = source(node.between[1]) else {
-        unreachable!("the ground never receives a link's action, as resolved")
-    };
+    let (from, on) = (source(node.from), BodyId(node.on));
     let (point, basis) = (PointId(node.point), FrameId(node.axis.0));
     let axis = Axis::ALL[node.axis.1];
-    let t = transmitted(l.kind, axis, node.direction.map(|d| Axis::ALL[d]));
     let mut comps: [Expr; 6] = std::array::from_fn(|_| reg.zero());
-    for (k, _) in t.iter().enumerate().filter(|c| *c.1) {
-        let n = unknowns.next().expect("unknowns declared in order");
+    for (k, n) in unknowns {
         comps[k] = reg.param(n).expect("unknown registered");
     }
     let [x, y, z, ll, mm, nn] = comps;
@@ -175,8 +170,8 @@ fn link<'u>(
         dry.push(friction);
         description.push_str(", avec frottement sec");
     }
-    let spring = match (&l.spring, node.spring) {
-        (Some(s), Some(_)) => {
+    let spring = match &l.spring {
+        Some(s) => {
             let (force, potential) = spring(reg, s, &format!("{path}.spring"))?;
             let force = u.scale(&force).neg();
             along(force.clone());
@@ -191,7 +186,7 @@ fn link<'u>(
                 moment,
             })
         }
-        _ => None,
+        None => None,
     };
     Ok(Action {
         from_label: l.between[0].clone(),

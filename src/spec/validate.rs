@@ -9,7 +9,7 @@ use crate::inertia::{Inertia, Symmetry};
 use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
 use crate::point::{PointId, Points};
 use crate::quantity::{Quantity, check_name};
-use crate::resolve::Resolved;
+use crate::resolve::{Resolved, Unknowns};
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
 use std::rc::Rc;
@@ -57,16 +57,22 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     let signed = crate::resolve::with_signs(spec).map_err(refused)?;
     let written = spec;
     let spec = signed.as_ref();
-    // Names, trees and references: resolved once for both sides.
+    // Names, trees and references, and the PFD's unknowns named from this side's own reading
+    // of which components each link transmits: resolved once for both sides.
     let resolved = crate::resolve::resolve(spec).map_err(refused)?;
+    let transmitted = |kind, a: usize, d: Option<usize>| {
+        crate::pfd::transmitted(kind, Axis::ALL[a], d.map(|d| Axis::ALL[d]))
+    };
+    let unknowns = crate::resolve::unknowns(spec, &resolved, &transmitted).map_err(refused)?;
+    let shared = (&resolved, &unknowns);
     match super::closures::solve(spec, &resolved)? {
-        None => build_with(spec, written, &resolved, None),
+        None => build_with(spec, written, shared, None),
         Some(solved) => {
             let mut with_rates = spec.clone();
             for (k, rate) in &solved.rates {
                 with_rates.coordinates[*k].rate = Some(rate.clone());
             }
-            build_with(&with_rates, written, &resolved, Some(&solved))
+            build_with(&with_rates, written, shared, Some(&solved))
         }
     }
 }
@@ -76,15 +82,16 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
 fn build_with(
     spec: &SpecFile,
     written: &SpecFile,
-    resolved: &Resolved,
+    (resolved, unknowns): (&Resolved, &Unknowns),
     solved: Option<&super::closures::Solved>,
 ) -> Result<Mechanism, SpecError> {
-    // Free texts first: a formula the answer key could not print safely refuses the spec.
+    // Free texts, after the shared resolution: a formula the answer key could not print
+    // safely refuses the spec.
     for (path, text) in free_texts(spec) {
         crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
     }
     units(spec)?;
-    let reg = registry(spec, resolved, solved)?;
+    let reg = registry(spec, &unknowns.names, solved)?;
 
     let frames = frames(spec, &reg, resolved)?;
     let points = points(spec, &reg, &frames, resolved)?;
@@ -132,7 +139,7 @@ fn build_with(
             rolling: s.rolling.clone(),
         }),
     };
-    m.dynamics = super::dynamics::build(&m, spec, resolved)?;
+    m.dynamics = super::dynamics::build(&m, spec, (resolved, unknowns))?;
     // Each requested quantity must refer to known objects.
     for (i, q) in m.quantities.iter().enumerate() {
         crate::derivation::resolve(&m, q)
@@ -181,7 +188,7 @@ fn units(spec: &SpecFile) -> Result<(), SpecError> {
 /// from the loop closures, the reciprocals of cos φ.
 fn registry(
     spec: &SpecFile,
-    resolved: &Resolved,
+    unknowns: &[String],
     solved: Option<&super::closures::Solved>,
 ) -> Result<Rc<Registry>, SpecError> {
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
@@ -191,13 +198,6 @@ fn registry(
         .filter(|p| p.kind == ParameterKind::Angle)
         .map(|p| p.name.clone())
         .collect();
-    // The PFD's unknowns, named and checked by the resolution from this side's own reading
-    // of which components each link transmits.
-    let transmitted = |kind, a: usize, d: Option<usize>| {
-        let axis = |k: usize| [Axis::X, Axis::Y, Axis::Z][k];
-        crate::pfd::transmitted(kind, axis(a), d.map(axis))
-    };
-    let unknowns = crate::resolve::unknowns(spec, resolved, &transmitted).map_err(refused)?;
     let mut raw_angles = super::dynamics::raw_angles(spec);
     // An angle coordinate written as itself (a disc's centre at R*theta*x1) gets a variable
     // of its own besides cos and sin.
@@ -238,7 +238,7 @@ fn registry(
                 None => b.coordinate(&c.name, c.kind),
             }
         })
-        .unknowns(&unknowns)
+        .unknowns(unknowns)
         .raw_angles(&raw_angles)
         .angle_parameters(&angle_params)
         .phases(&pulsations)

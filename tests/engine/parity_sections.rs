@@ -119,8 +119,14 @@ fn both_sides_refuse_an_unknowns_name_alike() {
             "moment": format!("{unknown}*z0"), "unknowns": [unknown]}]);
         v
     };
+    // Two faults: each side reports the unknown's first, before reading the point's position.
+    let multiple = {
+        let mut v = acting("X01");
+        v["points"] = json!([{"name": "P", "position": "L*(x0"}]);
+        v
+    };
     let signed = {
-        let mut v = linked(json!({"coulomb": "k"}));
+        let mut v = linked(json!({"coulomb": "m"}));
         v["parameters"][1]["name"] = json!("epsilon01");
         v
     };
@@ -148,6 +154,10 @@ fn both_sides_refuse_an_unknowns_name_alike() {
         (
             acting("pi"),
             "actions[0].unknowns[0]: `pi` is reserved by the expression syntax",
+        ),
+        (
+            multiple,
+            "actions[0].unknowns[0]: the unknown `X01` is declared twice",
         ),
         (
             signed,
@@ -240,9 +250,60 @@ fn both_sides_refuse_a_closures_and_a_rolling_conditions_references_alike() {
             disc(&|v| v["rolling"][0]["dependent"] = json!(["x", "x"])),
             "rolling[0].dependent[1]: `x` is determined twice",
         ),
+        (
+            disc(&|v| v["rolling"][0]["dependent"] = json!([])),
+            "rolling[0].dependent: name the coordinates the rolling condition determines",
+        ),
+        (
+            crank(&|v| {
+                v["rolling"] = json!([{"velocity": "V(B,S2/0)", "dependent": ["x"]}]);
+            }),
+            "rolling[0].dependent[0]: `x` is determined twice",
+        ),
     ]);
     for ok in [crank(&|_| {}), disc(&|_| {})] {
         let (exact, float) = verdicts(&ok).expect("a spec's shape");
         assert!(exact.is_ok() && float.is_ok(), "{exact:?} {float:?}");
+    }
+}
+
+/// Each side names the PFD's unknowns from its own reading of which components a link
+/// transmits: for every link kind, on a course basis and on the statement's names for one,
+/// both must give the same unknowns (their values are held against each other by `check`).
+#[test]
+fn both_sides_read_the_same_unknowns_from_every_link_kind() {
+    let kinds = [
+        ("fixed", None, None, 6),
+        ("pivot", Some("z1"), None, 5),
+        ("slider", Some("x1"), None, 5),
+        ("pivot_slider", Some("z1"), None, 4),
+        ("ball", None, None, 3),
+        ("plane", Some("z1"), None, 3),
+        ("annular", Some("x1"), None, 2),
+        ("line", Some("z1"), Some("x1"), 2),
+        ("line", Some("w"), Some("u"), 2),
+        ("point", Some("v"), None, 1),
+    ];
+    for (kind, axis, direction, count) in kinds {
+        let mut v = linked(json!({"kind": kind, "between": ["S", "T"], "name": "A"}));
+        let l = v["links"][0].as_object_mut().expect("link");
+        l.remove("axis");
+        if let Some(a) = axis {
+            l.insert("axis".into(), json!(a));
+        }
+        if let Some(d) = direction {
+            l.insert("direction".into(), json!(d));
+        }
+        // S on the ground by a pivot, T on S by the link under test.
+        v["links"][1] = json!({"name": "01", "kind": "pivot", "between": ["0", "S"],
+            "point": "O0", "axis": "z0"});
+        let file = torseur::spec::parse_spec(&v.to_string()).expect("a spec");
+        let exact = torseur::spec::build(&file).expect("the exact side builds it");
+        let float = torseur::numeric::NumericModel::new(&file).expect("the float side too");
+        let float: Vec<&str> = float.unknown_names().collect();
+        let exact: Vec<&str> = exact.reg().unknowns().iter().map(String::as_str).collect();
+        assert_eq!(exact, float, "{kind} {axis:?} {direction:?}");
+        assert_eq!(exact.len(), count + 5, "{kind}: {exact:?}");
+        assert!(exact[0].ends_with("_A"), "{exact:?}");
     }
 }

@@ -23,7 +23,7 @@ use super::expr::{self, Env, Node};
 use super::kin::{self, State, Values};
 use super::model::{Context, spec_err};
 use super::{NumericError, NumericModel, cloud};
-use crate::resolve::{ActionNode, LinkNode, Resolved, Side};
+use crate::resolve::{ActionNode, LinkNode, Resolved, Side, Unknowns};
 use crate::wire::{ActionSpec, LinkKind, LinkSpec, SpecFile, TheoremKind};
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use std::collections::{BTreeMap, BTreeSet};
@@ -128,8 +128,9 @@ pub(super) struct Dynamics {
 }
 
 /// Components a link transmits (0..3 resultant, 3..6 moment, in its basis), `a` the axis and
-/// `d` the line direction.
-fn transmitted(kind: LinkKind, a: usize, d: usize) -> [bool; 6] {
+/// `d` a line contact's direction.
+pub(super) fn transmitted(kind: LinkKind, a: usize, d: Option<usize>) -> [bool; 6] {
+    let d = d.unwrap_or((a + 1) % 3);
     let mut t = [false; 6];
     let (b, c) = ((a + 1) % 3, (a + 2) % 3);
     match kind {
@@ -176,34 +177,27 @@ pub(super) fn build(
     spec: &SpecFile,
     m: &NumericModel,
     trees: &Resolved,
+    unknowns: Unknowns,
 ) -> Result<Dynamics, NumericError> {
     let mut d = Dynamics {
         gravity: gravity(spec, m)?,
         ..Default::default()
     };
-    // The unknowns: named and checked by the resolution, from this backend's own reading of
-    // which components each link transmits.
-    let own = |kind, a, dir: Option<usize>| transmitted(kind, a, dir.unwrap_or(0));
-    d.unknowns =
-        crate::resolve::unknowns(spec, trees, &own).map_err(|e| spec_err(e.path, e.message))?;
-    d.unknown_index = (d.unknowns.iter().enumerate())
-        .map(|(k, n)| (n.clone(), k))
-        .collect();
-    let mut next = 0;
     for (i, (l, node)) in spec.links.iter().zip(&trees.links).enumerate() {
-        let (path, t) = (
-            format!("links[{i}]"),
-            transmitted(l.kind, node.axis.1, node.direction.unwrap_or(0)),
-        );
-        let components: Vec<(usize, usize)> = (0..6).filter(|&k| t[k]).zip(next..).collect();
-        next += components.len();
-        d.links.push(link(m, (l, &path), node, components)?);
+        let path = format!("links[{i}]");
+        d.links
+            .push(link(m, (l, &path), node, unknowns.links[i].clone())?);
     }
     for (i, (a, node)) in spec.actions.iter().zip(&trees.actions).enumerate() {
+        // Its own unknowns, the only ones its expressions may name.
+        let own = (a.unknowns.iter().cloned()).zip(unknowns.actions[i].iter().copied());
         let path = format!("actions[{i}]");
-        d.actions
-            .push(given(m, (a, &path), node, &d.unknown_index)?);
+        d.actions.push(given(m, (a, &path), node, own.collect())?);
     }
+    d.unknown_index = (unknowns.names.iter().enumerate())
+        .map(|(k, n)| (n.clone(), k))
+        .collect();
+    d.unknowns = unknowns.names;
     // The declared equations: what each isolates, its point, its vector and its coordinate,
     // as resolved.
     for (t, node) in spec.pfd.iter().zip(&trees.theorems) {
@@ -265,31 +259,26 @@ fn link(
         .map(|f| constant(f, "friction"))
         .transpose()?;
     let coulomb = match (&l.coulomb, l.sign_parameter()) {
-        (Some(c), Some(sign)) => {
-            let eps = *m.param_index.get(&sign).ok_or_else(|| {
-                spec_err(format!("{path}.coulomb"), format!("no parameter `{sign}`"))
-            })?;
-            Some((constant(c, "coulomb")?, eps))
-        }
+        (Some(c), Some(sign)) => Some((constant(c, "coulomb")?, m.param_index[&sign])),
         _ => None,
     };
-    let spring = match (&l.spring, node.spring) {
-        (Some(s), Some(coord)) => Some(SpringInfo {
-            coord,
+    let spring = match &l.spring {
+        Some(s) => Some(SpringInfo {
+            coord: node.spring.expect("a spring's coordinate, as resolved"),
             stiffness: constant(&s.stiffness, "spring.stiffness")?,
             free: (s.free.as_deref())
                 .map(|q0| constant(q0, "spring.free"))
                 .transpose()?,
         }),
-        _ => None,
+        None => None,
     };
-    let side = |s: Side| match s {
+    let from = match node.from {
         Side::Ground => Body::Frame(0),
         Side::Solid(k) => Body::Solid(k),
     };
     Ok(LinkInfo {
         kind: l.kind,
-        between: node.between.map(side),
+        between: [from, Body::Solid(node.on)],
         names: l.between.clone(),
         point: node.point,
         basis: node.axis.0,
@@ -307,11 +296,8 @@ fn given(
     m: &NumericModel,
     (a, path): (&ActionSpec, &str),
     node: &ActionNode,
-    unknowns: &BTreeMap<String, usize>,
+    local: BTreeMap<String, usize>,
 ) -> Result<ActionInfo, NumericError> {
-    let local: BTreeMap<String, usize> = (a.unknowns.iter())
-        .map(|u| (u.clone(), unknowns[u]))
-        .collect();
     let parse = |text: &Option<String>, field: &str| -> Result<Option<Node>, NumericError> {
         let Some(text) = text else { return Ok(None) };
         let at = format!("{path}.{field}");
