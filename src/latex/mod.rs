@@ -39,10 +39,12 @@ const GREEK: &[&str] = &[
 ];
 
 /// An identifier as the course writes it: `L1` → `L_{1}`, `theta1` → `\theta_{1}`,
-/// `x_a` → `x_{a}`, `omega` → `\omega`.
+/// `x_a` → `x_{a}`, `omega` → `\omega`; φ and ε in the forms French courses write,
+/// `phi` → `\varphi`, `epsilon01` → `\varepsilon_{01}`.
 ///
 /// ```
 /// assert_eq!(torseur::latex::name("theta1"), "\\theta_{1}");
+/// assert_eq!(torseur::latex::name("phi"), "\\varphi");
 /// assert_eq!(torseur::latex::name("A2"), "A_{2}");
 /// assert_eq!(torseur::latex::name("lambda"), "\\lambda");
 /// ```
@@ -62,7 +64,9 @@ pub fn name(n: &str) -> String {
             (safe[..cut].to_string(), safe[cut..].to_string())
         }
     };
-    let head = if GREEK.contains(&head.as_str()) {
+    let head = if matches!(head.as_str(), "phi" | "epsilon") {
+        format!("\\var{head}")
+    } else if GREEK.contains(&head.as_str()) {
         format!("\\{head}")
     } else if head.len() > 1 {
         format!("\\mathrm{{{head}}}")
@@ -88,9 +92,31 @@ pub(crate) fn coordinate(reg: &crate::expr::Registry, q: crate::expr::CoordId) -
 /// The LaTeX name of a Greek letter, without its backslash.
 fn greek(c: char) -> Option<&'static str> {
     const LOWER: [&str; 25] = [
-        "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
-        "lambda", "mu", "nu", "xi", "o", "pi", "rho", "varsigma", "sigma", "tau", "upsilon",
-        "varphi", "chi", "psi", "omega",
+        "alpha",
+        "beta",
+        "gamma",
+        "delta",
+        "varepsilon",
+        "zeta",
+        "eta",
+        "theta",
+        "iota",
+        "kappa",
+        "lambda",
+        "mu",
+        "nu",
+        "xi",
+        "o",
+        "pi",
+        "rho",
+        "varsigma",
+        "sigma",
+        "tau",
+        "upsilon",
+        "varphi",
+        "chi",
+        "psi",
+        "omega",
     ];
     const UPPER: [Option<&str>; 25] = [
         None,

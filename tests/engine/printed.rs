@@ -50,6 +50,15 @@ fn tokenize(s: &str) -> Vec<Tok> {
     out
 }
 
+/// The identifier a Greek letter command stands for: `\varphi` is `phi`, as `\phi`.
+fn greek(c: &str) -> Option<String> {
+    let plain = c
+        .strip_prefix("var")
+        .filter(|p| ["phi", "epsilon"].contains(p));
+    let c = plain.unwrap_or(c);
+    GREEK.contains(&c).then(|| c.to_string())
+}
+
 fn is_cmd(t: Option<&Tok>, name: &str) -> bool {
     matches!(t, Some(Tok::Cmd(c)) if c == name)
 }
@@ -116,7 +125,9 @@ impl Reader<'_> {
                 match self.next()? {
                     Tok::Sym('}') => break,
                     Tok::Letter(c) | Tok::Digit(c) => s.push(c),
-                    Tok::Cmd(c) if GREEK.contains(&c.as_str()) => s.push_str(&c),
+                    Tok::Cmd(c) if greek(&c).is_some() => {
+                        s.push_str(&greek(&c).unwrap_or_default())
+                    }
                     t => return Err(format!("unexpected {t:?} in a name")),
                 }
             },
@@ -147,7 +158,7 @@ impl Reader<'_> {
     fn head(&mut self) -> Result<String, String> {
         match self.next()? {
             Tok::Letter(c) => Ok(c.to_string()),
-            Tok::Cmd(c) if GREEK.contains(&c.as_str()) => Ok(c),
+            Tok::Cmd(c) if greek(&c).is_some() => Ok(greek(&c).unwrap_or_default()),
             Tok::Cmd(c) if c == "mathrm" => self.raw_group(),
             t => Err(format!("expected a name, found {t:?}")),
         }
@@ -327,7 +338,7 @@ impl Reader<'_> {
                         self.seen.push((a, f.clone()));
                         Ok((self.basis)(a, &f).to_string())
                     }
-                    g if GREEK.contains(&g) => {
+                    g if greek(g).is_some() => {
                         self.i -= 1;
                         self.name()
                     }
