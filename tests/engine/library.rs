@@ -301,11 +301,11 @@ fn tilted_rotor_dynamic_moment_by_hand() {
     torseur::assert_equivalent!(m, "delta(O,2/0) in B1", under "H1", &format!("[(C - A)*omega^2*{s}*{c}, 0, 0]"));
     torseur::assert_equivalent!(
         m,
-        "L01",
+        "L02",
         &format!("omega^2*((C - B)*{s}*{c} + D*({c}^2 - {s}^2))")
     );
-    torseur::assert_equivalent!(m, "M01", &format!("-omega^2*(F*{s} + E*{c})"));
-    torseur::assert_equivalent!(m, "Z01", "m*g");
+    torseur::assert_equivalent!(m, "M02", &format!("-omega^2*(F*{s} + E*{c})"));
+    torseur::assert_equivalent!(m, "Z02", "m*g");
     torseur::assert_equivalent!(m, "C_m", "0");
 }
 
