@@ -1172,8 +1172,8 @@ fn eval_and_derive_give_an_unknown_solved_as_a_quotient() {
     let at = d.path().join("values.json");
     std::fs::write(
         &at,
-        r#"{"parameters":{"m":2,"a":0.01,"c":0.2,"L":0.5,"A":1,"B":1,"C":1,"D":0.003,
-        "E":0.004,"F":0,"omega":100,"g":9.81},"coordinates":{"theta":[0.3,100,0]}}"#,
+        r#"{"parameters":{"m":2,"a":0.01,"c":0.2,"L":0.5,"A1":1,"B1":1,"C1":1,"D1":0.003,
+        "E1":0.004,"F1":0,"omega":100,"g":9.81},"coordinates":{"theta":[0.3,100,0]}}"#,
     )
     .unwrap();
     let spec = "derivations/rotor_deux_paliers.json";
@@ -1197,7 +1197,7 @@ fn eval_and_derive_give_an_unknown_solved_as_a_quotient() {
     // derive prints the quotient as it reads back; the JSON splits it.
     let o = run(&["derive", spec, "-q", "Y_B"]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert_eq!(stdout(&o).trim(), "Y_B = -D*omega^2/L\n  under H: 0");
+    assert_eq!(stdout(&o).trim(), "Y_B = -D1*omega^2/L\n  under H: 0");
 }
 
 #[test]

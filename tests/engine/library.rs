@@ -496,34 +496,34 @@ fn pendulum_on_a_turning_shaft_and_its_relative_equilibrium_by_hand() {
 #[test]
 fn rotor_deux_paliers_by_hand() {
     // Rotor on a vertical axis (A, z0) at the imposed rate ω, AG = a x1 + c z1, I_G(1) with
-    // products D, E, F in B1; a ball joint at A and an annular joint of axis (B, z1) at
+    // products D1, E1, F1 in B1; a ball joint at A and an annular joint of axis (B, z1) at
     // AB = L z1; gravity −g z1. In B1 (x1' = ω y1, y1' = −ω x1):
     //   m Γ(G) = −m a ω² x1;
-    //   σ(G) = I_G Ω = ω (−E x1 − D y1 + C z1), so δ(G) = dσ(G)/dt = ω² (D x1 − E y1);
-    //   δ(A) = δ(G) + AG ∧ m Γ(G) = ω² (D x1 − E y1) − m a c ω² y1.
+    //   σ(G) = I_G Ω = ω (−E1 x1 − D1 y1 + C1 z1), so δ(G) = dσ(G)/dt = ω² (D1 x1 − E1 y1);
+    //   δ(A) = δ(G) + AG ∧ m Γ(G) = ω² (D1 x1 − E1 y1) − m a c ω² y1.
     // Moments at A: of the bearing B, L z1 ∧ (X_B x1 + Y_B y1) = −L Y_B x1 + L X_B y1; of the
     // weight, (a x1 + c z1) ∧ (−m g z1) = m g a y1; of the motor, C_m z1. Hence
-    //   x1: D ω² = −L Y_B;  y1: −(E + m a c) ω² = L X_B + m g a;  z1: 0 = C_m;
+    //   x1: D1 ω² = −L Y_B;  y1: −(E1 + m a c) ω² = L X_B + m g a;  z1: 0 = C_m;
     // and the resultant: −m a ω² = X_A + X_B, 0 = Y_A + Y_B, 0 = Z_A − m g.
     let m = problem!("rotor_deux_paliers");
     torseur::assert_equivalent!(
         m,
         "{D(1/0)}_A in B1",
-        "[-m*a*omega^2*x1, D*omega^2*x1 - (E + m*a*c)*omega^2*y1]"
+        "[-m*a*omega^2*x1, D1*omega^2*x1 - (E1 + m*a*c)*omega^2*y1]"
     );
-    torseur::assert_equivalent!(m, "Y_B", "-D*omega^2/L");
-    torseur::assert_equivalent!(m, "X_B", "-(m*g*a + (E + m*a*c)*omega^2)/L");
-    torseur::assert_equivalent!(m, "Y_A", "D*omega^2/L");
-    torseur::assert_equivalent!(m, "X_A", "-m*a*omega^2 + (m*g*a + (E + m*a*c)*omega^2)/L");
+    torseur::assert_equivalent!(m, "Y_B", "-D1*omega^2/L");
+    torseur::assert_equivalent!(m, "X_B", "-(m*g*a + (E1 + m*a*c)*omega^2)/L");
+    torseur::assert_equivalent!(m, "Y_A", "D1*omega^2/L");
+    torseur::assert_equivalent!(m, "X_A", "-m*a*omega^2 + (m*g*a + (E1 + m*a*c)*omega^2)/L");
     torseur::assert_equivalent!(m, "Z_A", "m*g");
     torseur::assert_equivalent!(m, "C_m", "0");
     // A wrong sign in the dynamic part is caught.
-    let wrong = torseur::verify::verify(&m, "X_B", "-(m*g*a - (E + m*a*c)*omega^2)/L", None);
+    let wrong = torseur::verify::verify(&m, "X_B", "-(m*g*a - (E1 + m*a*c)*omega^2)/L", None);
     assert!(!wrong.unwrap().is_equivalent());
     // The solution divides by L, and says so.
     let sol = torseur::pfd::solve(&m).unwrap();
     assert_eq!(sol.conditions, vec![m.reg().parse("L").unwrap()]);
-    // Balanced (a = D = E = 0): the bearings carry the weight alone, whatever ω.
+    // Balanced (a = D1 = E1 = 0): the bearings carry the weight alone, whatever ω.
     for u in ["X_A", "Y_A", "X_B", "Y_B"] {
         torseur::assert_equivalent!(m, u, under "H", "0");
     }
