@@ -36,6 +36,10 @@ fn rolling_conditions_give_the_rates_derived_by_hand() {
             .coord_info(m.reg().coord("y").unwrap())
             .is_holonomic()
     );
+    // The guide's couple keeps the wheel vertical: with Ω(2/0) = ψ̇ z0 + θ̇ y1,
+    // δ(C)·x1 = d(C2 θ̇ y1)/dt·x1 = −C2 θ̇ ψ̇ (ẏ1 = −ψ̇ x1), and Γ(C) = R θ̈ x1 + R θ̇ ψ̇ y1
+    // gives IC ∧ m Γ(C)·x1 = −m R² θ̇ ψ̇; the plan and gravity have no moment at I on x1.
+    torseur::assert_equivalent!(m, "C_g", "-(C2 + m*R^2)*dot(theta)*dot(psi)");
     // The skate (a blade: no sliding across y1 only): V(C,1/0)·y1 = −ẋ sin ψ + ẏ cos ψ = 0,
     // so ẏ = ẋ sin ψ / cos ψ and V(C,1/0) = (ẋ / cos ψ) x1 = u x1. Then Γ(C) = u̇ x1 + u ψ̇ y1,
     // u̇ = ẍ / cos ψ + ẋ ψ̇ sin ψ / cos² ψ; the ice's lateral force is Y = m u ψ̇.

@@ -375,7 +375,8 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         "T" | "N" => one(d(1, 1, -2)),
         u if u.starts_with('X') || u.starts_with('Y') || u.starts_with('Z') => one(d(1, 1, -2)),
         u if u.starts_with('L') || u.starts_with('M') || u.starts_with('N') => one(d(1, 2, -2)),
-        u if u.starts_with("C_m") => one(d(1, 2, -2)),
+        // A motor's torque, the wheel's guide's couple.
+        u if u.starts_with("C_m") || u == "C_g" => one(d(1, 2, -2)),
         other => panic!("no hand dimension for `{other}` ({q})"),
     }
 }
