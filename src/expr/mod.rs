@@ -551,6 +551,20 @@ impl Expr {
         (Expr::from_terms(reg, with), Expr::from_terms(reg, without))
     }
 
+    /// Whether every term has a negative coefficient (−(J/R + m R) ẍ), so that the
+    /// expression reads better negated on the other side of an equation.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// let reg = Registry::new(&["m".into(), "R".into()], &[]).unwrap();
+    /// assert!(reg.parse("-m - 2*R").unwrap().reads_negative());
+    /// assert!(!reg.parse("m - 2*R").unwrap().reads_negative());
+    /// assert!(!reg.zero().reads_negative());
+    /// ```
+    pub fn reads_negative(&self) -> bool {
+        !self.is_zero() && self.terms().all(|(c, _)| c.is_negative())
+    }
+
     /// Terms of the canonical form: (numerator, denominator, exponent per variable).
     pub(crate) fn terms(&self) -> impl Iterator<Item = (&Rational, &[u8])> {
         (0..self.p.nterms()).map(move |t| (&self.p.coefficients[t], self.p.exponents(t)))

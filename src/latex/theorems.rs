@@ -166,12 +166,12 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
             // equality is already it, box that.
             let Value::Scalar(e) = &v else { return };
             let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
-            let (lhs, rhs) = match &last_equality {
+            let (lhs, rhs) = upright(match &last_equality {
                 Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => {
                     (a.clone(), b.clone())
                 }
                 _ => split_equation(e),
-            };
+            });
             doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
             if let Some(f) = first_integral(e) {
                 let math = super::expr(&f);
@@ -211,7 +211,7 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
                         continue;
                     }
                     let _ = writeln!(doc.o, "Sous l'hypothèse {hname} :");
-                    let (lhs, rhs) = split_equation(&eh);
+                    let (lhs, rhs) = upright(split_equation(&eh));
                     doc.results.push((
                         id.clone(),
                         Some(h.name.clone()),
@@ -308,7 +308,7 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
     let id = d.quantity.to_string();
     doc.results
         .push((id.clone(), hn.clone(), v.clone(), doc.here.clone()));
-    let (lhs, rhs) = split_equation(e);
+    let (lhs, rhs) = upright(split_equation(e));
     doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
     true
 }
@@ -367,6 +367,18 @@ fn first_integral(e: &crate::expr::Expr) -> Option<crate::expr::Expr> {
         }
     }
     (!f.is_zero() && f.dt() == *e).then_some(f)
+}
+
+/// An equation a = b as a teacher writes it: a left side whose every term is negative,
+/// −(J/R + m R) ẍ = m g R sin α, is written (J/R + m R) ẍ = −m g R sin α.
+fn upright(
+    (a, b): (crate::expr::Expr, crate::expr::Expr),
+) -> (crate::expr::Expr, crate::expr::Expr) {
+    if a.reads_negative() {
+        (-&a, -&b)
+    } else {
+        (a, b)
+    }
 }
 
 /// An equation e = 0 as (terms with a rate) = −(the others).
