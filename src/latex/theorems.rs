@@ -165,6 +165,11 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
             // The equation of motion, dynamic side = actions, boxed; when the theorem's
             // equality is already it, box that.
             let Value::Scalar(e) = &v else { return };
+            if let Some((_, Value::Scalar(actions))) = &last_equality
+                && let Some(s) = eliminated(m, actions)
+            {
+                let _ = writeln!(doc.o, "{s}");
+            }
             let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
             let (lhs, rhs) = upright(match &last_equality {
                 Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => {
@@ -367,6 +372,56 @@ fn first_integral(e: &crate::expr::Expr) -> Option<crate::expr::Expr> {
         }
     }
     (!f.is_zero() && f.dt() == *e).then_some(f)
+}
+
+/// The sentence naming the unknowns that the actions' side of an equation of motion's
+/// theorem still holds, and the other equations of the PFD that eliminate them, grouped by
+/// what they isolate (« $X_{12}$ et $Y_{12}$ s'éliminent avec les autres équations du PFD,
+/// obtenues en isolant $S_3$ (résultante sur $\vec{x}_0$) et … »); None when it holds none.
+fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Option<String> {
+    let reg = &m.reg;
+    let holds = |n: &&String| {
+        (reg.param(n).and_then(|u| u.single_variable())).is_some_and(|v| side.contains_var(v))
+    };
+    let held: Vec<String> = (reg.unknowns().iter().filter(holds))
+        .map(|n| format!("${}$", name(n)))
+        .collect();
+    // Per isolated system: the vectors of its resultant theorems, then its moment theorems.
+    let mut groups: Vec<(&str, Vec<String>, Vec<String>)> = Vec::new();
+    for t in m.dynamics.theorems.iter().filter(|t| t.eom.is_none()) {
+        let on = format!("${}$", basis_vector(t.on.1.letter(), m.frame_name(t.on.0)));
+        let g = match groups.iter().position(|g| g.0 == t.isolate) {
+            Some(k) => &mut groups[k],
+            None => {
+                groups.push((&t.isolate, Vec::new(), Vec::new()));
+                groups.last_mut().expect("just pushed")
+            }
+        };
+        match t.kind {
+            crate::wire::TheoremKind::Resultant => g.1.push(on),
+            crate::wire::TheoremKind::Moment => g.2.push(format!(
+                "moment en ${}$ sur {on}",
+                point(m.point_name(t.point))
+            )),
+        }
+    }
+    if held.is_empty() || groups.is_empty() {
+        return None;
+    }
+    let list = super::method::french_list;
+    let isolated: Vec<String> = (groups.iter())
+        .map(|(s, res, mom)| {
+            let res = (!res.is_empty()).then(|| format!("résultante sur {}", list(res)));
+            let what: Vec<String> = res.into_iter().chain(mom.iter().cloned()).collect();
+            format!("${}$ ({})", solid(s), what.join(", "))
+        })
+        .collect();
+    Some(format!(
+        "{} s'élimin{} avec les autres équations du PFD, obtenues en isolant {}.",
+        super::method::french_list(&held),
+        if held.len() > 1 { "ent" } else { "e" },
+        super::method::french_list(&isolated)
+    ))
 }
 
 /// An equation a = b as a teacher writes it: a left side whose every term is negative,
