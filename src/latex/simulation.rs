@@ -27,15 +27,15 @@ pub(super) fn simulation_block(
     for name in &sim.scenarios {
         runs.push(crate::simulate::simulate(m, name).map_err(|e| fail(name, e.to_string()))?);
     }
-    // The assumed values, as the statement gives none.
+    // The values the simulations use (the statement may give some of them, or none).
     if let Some(first) = sim
         .scenarios
         .first()
         .and_then(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
     {
         o.push_str(
-            "Le sujet ne donne pas de valeurs numériques : les simulations utilisent les valeurs \
-             supposées suivantes (unités SI).\n\n\\begin{center}\n\\begin{tabular}{llllll}\n",
+            "Les simulations utilisent les valeurs suivantes (unités SI).\n\n\\begin{center}\n\
+             \\begin{tabular}{llllll}\n",
         );
         // A value that differs between the scenarios (the friction f) is given for each, in
         // the order of the scenarios.
