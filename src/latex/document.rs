@@ -7,9 +7,7 @@ use super::hypotheses::hypothesis_block;
 use super::method::quantity_block;
 use super::simulation::simulation_block;
 use super::theorems::pfd_block;
-use super::{
-    VectorStyle, basis, basis_vector, escape_text, frame, name, point, quantity, value_named,
-};
+use super::{VectorStyle, basis, basis_vector, escape_text, name, point, quantity, value_named};
 use super::{link_graph, rich_text_or_escaped, rotation_figures};
 use crate::derivation::{Value, derive};
 use crate::mechanism::{Hypothesis, Mechanism};
@@ -625,9 +623,9 @@ pub fn answer_key_document(
             None => {
                 let _ = writeln!(
                     o,
-                    "\\item La base ${}$ est celle de ${}$.",
+                    "\\item La base ${}$ est confondue avec ${}$.",
                     basis(&fr.name),
-                    frame(&parent.name)
+                    basis(&parent.name)
                 );
             }
         }
