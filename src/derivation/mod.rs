@@ -269,7 +269,7 @@ enum Found {
 /// use torseur::{derivation::derive, quantity::Quantity, spec};
 /// let m = spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// let d = derive(&m, &Quantity::parse("Omega(2/0) in B1").unwrap()).unwrap();
-/// let reg = &m.reg();
+/// let reg = m.reg();
 /// let expected = [reg.parse("dot(theta2)").unwrap(), reg.zero(), reg.parse("dot(theta1)").unwrap()];
 /// match d.value { torseur::derivation::Value::Vector { components, .. } => assert_eq!(components, expected), _ => unreachable!() }
 /// ```

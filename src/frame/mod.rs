@@ -101,7 +101,7 @@ impl Angle {
     /// ).unwrap();
     /// let text = |f: &str| {
     ///     let r = m.frames().get(m.frames().find(f).unwrap()).rotation.clone().unwrap();
-    ///     r.angle.to_text(&m.reg())
+    ///     r.angle.to_text(m.reg())
     /// };
     /// assert_eq!(text("1"), "pi/2 - q1");
     /// assert_eq!(text("2"), "-q1 - alpha");
@@ -254,7 +254,7 @@ impl Frames {
     pub fn basis_vector(&self, s: &str) -> Option<(FrameId, Axis)> {
         for (i, f) in self.frames.iter().enumerate() {
             if let Some(k) = f.vector_names.iter().flatten().position(|n| n == s) {
-                return Some((FrameId(i), [Axis::X, Axis::Y, Axis::Z][k]));
+                return Some((FrameId(i), Axis::ALL[k]));
             }
         }
         let mut c = s.chars();

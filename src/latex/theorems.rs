@@ -379,12 +379,10 @@ fn first_integral(e: &crate::expr::Expr) -> Option<crate::expr::Expr> {
 /// what they isolate (« $X_{12}$ et $Y_{12}$ s'éliminent avec les autres équations du PFD,
 /// obtenues en isolant $S_3$ (résultante sur $\vec{x}_0$) et … »); None when it holds none.
 fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Option<String> {
-    let reg = &m.reg;
-    let holds = |n: &&String| {
-        (reg.param(n).and_then(|u| u.single_variable())).is_some_and(|v| side.contains_var(v))
-    };
-    let held: Vec<String> = (reg.unknowns().iter().filter(holds))
-        .map(|n| format!("${}$", name(n)))
+    let occurs = side.occurring();
+    let held: Vec<String> = (crate::pfd::unknown_vars(m).into_iter())
+        .filter(|(_, v)| occurs[v.index()])
+        .map(|(n, _)| format!("${}$", name(&n)))
         .collect();
     // Per isolated system: the vectors of its resultant theorems, then its moment theorems.
     let mut groups: Vec<(&str, Vec<String>, Vec<String>)> = Vec::new();

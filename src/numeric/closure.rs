@@ -19,17 +19,9 @@ pub(super) struct Closure {
     dependent: Vec<usize>,
 }
 
-/// A rolling condition: the velocity V(P, i/j) at a contact that is zero (or its components
-/// along `on`), and the coordinates whose rates it determines.
-#[derive(Debug, Clone)]
-pub(super) struct Rolling {
-    point: usize,
-    moving: usize,
-    reference: usize,
-    /// (frame, axis) of each direction it is zero along; empty: all of it.
-    on: Vec<(usize, usize)>,
-    dependent: Vec<usize>,
-}
+/// A rolling condition, as resolved: the velocity V(P, i/j) at a contact that is zero (or
+/// its components along `on`), and the coordinates whose rates it determines.
+pub(super) type Rolling = crate::resolve::RollingNode;
 
 /// Newton iterations before a loop is declared open.
 const NEWTON_STEPS: usize = 60;
@@ -55,20 +47,6 @@ pub(super) fn build(
     Ok(out)
 }
 
-/// The spec's rolling conditions, as resolved: the point, the two frames, the directions and
-/// the coordinates whose rates each determines.
-pub(super) fn build_rolling(trees: &Resolved) -> Vec<Rolling> {
-    (trees.rolling.iter())
-        .map(|r| Rolling {
-            point: r.point,
-            moving: r.motion[0],
-            reference: r.motion[1],
-            on: r.on.clone(),
-            dependent: r.dependent.clone(),
-        })
-        .collect()
-}
-
 /// V(P ∈ f/0) and its time derivative in ground components, from the frame's motion:
 /// V = Ȯ + W (P − O) with W = Ṙ Rᵀ, and dV/dt = Ö + Ẇ (P − O) + W (Ṗ − Ȯ),
 /// Ẇ = R̈ Rᵀ + Ṙ Ṙᵀ.
@@ -88,8 +66,8 @@ fn rolling_rows(m: &NumericModel, v: &Values) -> Result<[Vec<f64>; 2], NumericEr
     let st = state(m, v)?;
     let mut rows = [Vec::new(), Vec::new()];
     for r in &m.rolling {
-        let [vi, ai] = carried(&st, r.point, r.moving);
-        let [vj, aj] = carried(&st, r.point, r.reference);
+        let [vi, ai] = carried(&st, r.point, r.motion[0]);
+        let [vj, aj] = carried(&st, r.point, r.motion[1]);
         let (c, dc) = (vi - vj, ai - aj);
         if r.on.is_empty() {
             rows[0].extend(c.iter());

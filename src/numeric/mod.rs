@@ -331,7 +331,7 @@ impl NumericModel {
             crate::resolve::unknowns(spec, &trees, &dynamics::transmitted).map_err(refused)?;
         let mut model = model::build(spec, &trees)?;
         model.closures = closure::build(spec, &model, &trees)?;
-        model.rolling = closure::build_rolling(&trees);
+        model.rolling = trees.rolling.clone();
         closure::check_shape(&model)?;
         model.dynamics = dynamics::build(spec, &model, &trees, unknowns)?;
         model::mark_positive(&mut model);

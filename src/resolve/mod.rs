@@ -237,13 +237,19 @@ fn place<'a>(
     Ok(order)
 }
 
+/// A name read as the course writes a basis vector: x, y or z, then a frame's name (`z1` →
+/// ('z', "1")), whether or not that frame exists.
+fn course_vector(n: &str) -> Option<(char, &str)> {
+    let mut c = n.chars();
+    let axis = c.next().filter(|a| matches!(a, 'x' | 'y' | 'z'))?;
+    Some((axis, c.as_str()))
+}
+
 /// The message refusing a name `n` of a scalar (`what`: parameter, coordinate, alias,
 /// unknown) that is the name of a basis vector (`x0` when frame `0` exists), if it is one: in
 /// a vector expression the name could only be read as the basis vector.
-pub fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
-    let mut c = n.chars();
-    let axis = c.next().filter(|a| matches!(a, 'x' | 'y' | 'z'))?;
-    let frame = c.as_str();
+fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
+    let (axis, frame) = course_vector(n)?;
     let exists = frame == spec.ground || spec.frames.iter().any(|f| f.name == frame);
     exists.then(|| {
         format!(
@@ -253,9 +259,8 @@ pub fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String
     })
 }
 
-/// A name expressions read, declared at `path`: an identifier, not a word of the syntax, not
-/// a basis vector's name.
-fn readable(spec: &SpecFile, what: &str, path: &str, n: &str) -> Result<(), Refusal> {
+/// A word expressions may use as a name, at `path`: an identifier, not a word of the syntax.
+fn word(path: &str, n: &str) -> Result<(), Refusal> {
     check_identifier(n).map_err(|m| at(path, m))?;
     if RESERVED.contains(&n) {
         return Err(at(
@@ -263,6 +268,13 @@ fn readable(spec: &SpecFile, what: &str, path: &str, n: &str) -> Result<(), Refu
             format!("`{n}` is reserved by the expression syntax"),
         ));
     }
+    Ok(())
+}
+
+/// A name expressions read, declared at `path`: an identifier, not a word of the syntax, not
+/// a basis vector's name.
+fn readable(spec: &SpecFile, what: &str, path: &str, n: &str) -> Result<(), Refusal> {
+    word(path, n)?;
     match basis_vector_clash(spec, what, n) {
         Some(m) => Err(at(path, m)),
         None => Ok(()),
@@ -324,17 +336,8 @@ fn named_vectors<'a>(
         let Some(given) = given else { continue };
         for (k, n) in given.iter().enumerate() {
             let path = format!("{path}[{k}]");
-            check_identifier(n).map_err(|m| at(&path, m))?;
-            if RESERVED.contains(&n.as_str()) {
-                return Err(at(
-                    path,
-                    format!("`{n}` is reserved by the expression syntax"),
-                ));
-            }
-            let taken = names.params.contains_key(n.as_str())
-                || names.coords.contains_key(n.as_str())
-                || names.aliases.contains_key(n.as_str());
-            if taken
+            word(&path, n)?;
+            if names.contains(n)
                 || vectors
                     .insert(n.as_str(), (frames[frame.as_str()], k))
                     .is_some()
@@ -347,17 +350,11 @@ fn named_vectors<'a>(
                     ),
                 ));
             }
-            let mut c = n.chars();
-            if let Some(axis) = c.next().filter(|a| matches!(a, 'x' | 'y' | 'z'))
-                && frames.contains_key(c.as_str())
+            if let Some((axis, frame)) = course_vector(n)
+                && frames.contains_key(frame)
             {
-                return Err(at(
-                    path,
-                    format!(
-                        "`{n}` is already the basis vector {axis} of frame {}",
-                        c.as_str()
-                    ),
-                ));
+                let why = format!("`{n}` is already the basis vector {axis} of frame {frame}");
+                return Err(at(path, why));
             }
         }
     }

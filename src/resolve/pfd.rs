@@ -3,7 +3,7 @@
 //! sides and points, the unknowns' names, the theorems' isolated solids, points, vectors and
 //! coordinates, and the parameters standing for dry friction's signs.
 
-use super::{Refusal, Resolved, SolidNode, at, distinct, find, readable};
+use super::{Refusal, Resolved, SolidNode, at, course_vector, distinct, find, readable};
 use crate::expr::check_identifier;
 use crate::wire::{LinkKind, LinkSpec, ParameterSpec, SpecFile, TheoremKind};
 use std::borrow::Cow;
@@ -110,10 +110,11 @@ impl Known<'_, '_> {
         if let Some(&v) = self.vectors.get(s) {
             return Some(v);
         }
-        let mut c = s.chars();
-        let first = c.next()?;
-        let axis = ['x', 'y', 'z'].iter().position(|&a| a == first)?;
-        Some((*self.frames.get(c.as_str())?, axis))
+        let (axis, frame) = course_vector(s)?;
+        Some((
+            *self.frames.get(frame)?,
+            ['x', 'y', 'z'].iter().position(|&a| a == axis)?,
+        ))
     }
 
     /// The position of the point `n`, refused at `path` if there is none.

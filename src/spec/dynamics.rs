@@ -15,25 +15,6 @@ use crate::vector::Vector;
 use crate::wire::{CoordinateKind, LinkKind, LinkSpec, SpecFile};
 use std::rc::Rc;
 
-/// The angle coordinates that enter as themselves: a small angle's (sin q ≈ q) and a torsion
-/// spring's (½ k (q − q0)²).
-pub(super) fn raw_angles(spec: &SpecFile) -> Vec<String> {
-    let angle = |n: &String| {
-        (spec.coordinates.iter()).any(|c| &c.name == n && c.kind == CoordinateKind::Angle)
-    };
-    let springs = spec
-        .links
-        .iter()
-        .filter_map(|l| Some(&l.spring.as_ref()?.coordinate));
-    let mut raw: Vec<String> = Vec::new();
-    for n in spec.small.iter().map(|s| &s.coordinate).chain(springs) {
-        if angle(n) && !raw.contains(n) {
-            raw.push(n.clone());
-        }
-    }
-    raw
-}
-
 fn vector(m: &Mechanism, path: &str, text: &str) -> Result<(Vector, FrameId), SpecError> {
     let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
     let parts = m
@@ -165,7 +146,7 @@ fn link<'u>(
         description.push_str(", avec frottement visqueux");
     }
     if let Some(c) = &l.coulomb {
-        let (push, friction) = coulomb(reg, (l, path), c, rate())?;
+        let (push, friction) = coulomb(m, (l, path), c, rate())?;
         along(u.scale(&push).neg());
         dry.push(friction);
         description.push_str(", avec frottement sec");
@@ -221,20 +202,17 @@ fn description(l: &LinkSpec) -> String {
 /// relative rate along its axis is `rate`, not zero whatever the motion: C ε, what the link
 /// adds against the axis, and the friction the samples set ε's sign from.
 fn coulomb(
-    reg: &Rc<Registry>,
+    m: &Mechanism,
     (l, path): (&LinkSpec, &str),
     text: &str,
     rate: Expr,
 ) -> Result<(Expr, DryFriction), SpecError> {
-    let path = format!("{path}.coulomb");
+    let (reg, path) = (&m.reg, format!("{path}.coulomb"));
     let err = |why: String| at(&path, why);
     let c = constant(reg, &path, text)?;
-    let holds = |n: &&String| {
-        reg.param(n)
-            .and_then(|u| u.single_variable())
-            .is_some_and(|v| c.contains_var(v))
-    };
-    if let Some(n) = reg.unknowns().iter().find(holds) {
+    let occurs = c.occurring();
+    if let Some((n, _)) = (crate::pfd::unknown_vars(m).into_iter()).find(|(_, v)| occurs[v.index()])
+    {
         return Err(err(format!(
             "the magnitude holds the unknown `{n}`: dry friction takes a magnitude of the \
              parameters (write the normal force the statement knows, f*m*g*cos(alpha))"

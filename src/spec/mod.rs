@@ -6,7 +6,6 @@ mod hypotheses;
 mod locate;
 mod texts;
 mod validate;
-mod vectors;
 /// The wire types, also at [`crate::wire`] (the spec's data, used by every layer).
 pub use crate::wire;
 

@@ -183,6 +183,24 @@ fn units(spec: &SpecFile) -> Result<(), SpecError> {
     Ok(())
 }
 
+/// The angle coordinates that get a variable of their own besides cos and sin: a small
+/// angle's (sin q ≈ q), a torsion spring's (½ k (q − q0)²), one an expression writes as
+/// itself (a disc's centre at R*theta*x1).
+fn raw_angles(spec: &SpecFile) -> Vec<String> {
+    let angle =
+        |n: &str| (spec.coordinates.iter()).any(|c| c.name == n && c.kind == CoordinateKind::Angle);
+    let small = spec.small.iter().map(|s| s.coordinate.clone());
+    let springs = (spec.links.iter()).filter_map(|l| Some(l.spring.as_ref()?.coordinate.clone()));
+    let bare = (expression_texts(spec).into_iter()).flat_map(|(_, t)| crate::expr::bare_names(t));
+    let mut raw: Vec<String> = Vec::new();
+    for n in small.chain(springs).chain(bare) {
+        if angle(&n) && !raw.contains(&n) {
+            raw.push(n);
+        }
+    }
+    raw
+}
+
 /// The registry of the spec's variables: its parameters, coordinates (with their rates),
 /// the PFD's unknowns, the angles written as themselves, the phases Ω t, the divisors and,
 /// from the loop closures, the reciprocals of cos φ.
@@ -198,21 +216,7 @@ fn registry(
         .filter(|p| p.kind == ParameterKind::Angle)
         .map(|p| p.name.clone())
         .collect();
-    let mut raw_angles = super::dynamics::raw_angles(spec);
-    // An angle coordinate written as itself (a disc's centre at R*theta*x1) gets a variable
-    // of its own besides cos and sin.
-    for (_, text) in expression_texts(spec) {
-        for n in crate::expr::bare_names(text) {
-            if spec
-                .coordinates
-                .iter()
-                .any(|c| c.name == n && c.kind == CoordinateKind::Angle)
-                && !raw_angles.contains(&n)
-            {
-                raw_angles.push(n);
-            }
-        }
-    }
+    let raw_angles = raw_angles(spec);
     // The time enters as phases Ω t (a forcing F0 cos(Ω t), a frame turned by Ω t): each
     // pulsation that is a parameter gets its phase coordinate.
     let mut pulsations: Vec<String> = Vec::new();
@@ -263,8 +267,6 @@ fn registry(
 /// The frames, each after its parent (the spec may list them in any order; the resolved
 /// positions are the arena's ids), and the names the statement gives their basis vectors.
 fn frames(spec: &SpecFile, reg: &Rc<Registry>, resolved: &Resolved) -> Result<Frames, SpecError> {
-    // Frames, each after its parent (the spec may list them in any order); the resolved
-    // positions are the arena's ids.
     let mut frames = Frames::new(reg.clone(), &spec.ground);
     for node in &resolved.frames[1..] {
         let i = node.spec.expect("a frame of the spec");
@@ -289,8 +291,16 @@ fn frames(spec: &SpecFile, reg: &Rc<Registry>, resolved: &Resolved) -> Result<Fr
         };
         frames.add(node.name, FrameId(node.parent), rotation);
     }
-    // Basis vectors named as the statement does ((u, v, w), (i, j, k)).
-    super::vectors::name_vectors(spec, &mut frames);
+    // Basis vectors named as the statement does ((u, v, w), (i, j, k)), checked by the
+    // resolution.
+    for (pos, node) in resolved.frames.iter().enumerate() {
+        let given = node
+            .spec
+            .map_or(&spec.ground_basis, |i| &spec.frames[i].basis);
+        if let Some(given) = given {
+            frames.name_vectors(FrameId(pos), given.clone());
+        }
+    }
     Ok(frames)
 }
 

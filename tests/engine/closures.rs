@@ -25,7 +25,7 @@ fn the_crank_slider_loop_law_by_hand() {
         "-R*dot(theta)*(sin(theta)*cos(phi) - cos(theta)*sin(phi))/cos(phi)*x0"
     );
     // The rates of the dependent coordinates are those forms, and q̈ their derivatives.
-    let reg = &m.reg();
+    let reg = m.reg();
     let phi = reg.coord("phi").unwrap();
     assert!(reg.coord_info(phi).is_driven() && reg.coord_info(phi).is_holonomic());
     assert_eq!(

@@ -185,7 +185,7 @@ fn an_equilibrium_that_divides_by_a_parameter_by_hand() {
     let m = torseur::spec::load("derivations/systeme_masse_ressort.json").unwrap();
     let eom = scalar_under(&m, "eom(x)", Some("E"));
     assert!(eom.is_zero(), "eom(x) under E = {eom}");
-    let reg = &m.reg();
+    let reg = m.reg();
     let xe = reg.parse("l0 - m*g*sin(beta)/k").unwrap();
     let k = reg.parse("k").unwrap();
     let lhs = &k * &(&xe - &reg.parse("l0").unwrap());

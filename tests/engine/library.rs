@@ -620,7 +620,7 @@ fn masse_ressort_forcee_by_hand() {
         torseur::derivation::Value::Scalar(e) => h.apply(e),
         v => panic!("{v:?}"),
     };
-    let reg = &m.reg();
+    let reg = m.reg();
     let x = reg.coord("x").unwrap();
     let var = |role| reg.index_of(role).unwrap();
     use torseur::expr::VarRole;

@@ -63,7 +63,7 @@ fn the_kinetic_energy_theorem_is_lagrange_summed_over_the_rates() {
     let mut tried = 0;
     for path in specs_in(&["derivations", "tests/specs"]) {
         let m = torseur::spec::load(&path).unwrap();
-        let reg = &m.reg();
+        let reg = m.reg();
         // A constant imposed rate needs the torque that keeps it; a driven one (a gear
         // ratio) is a relation between the coordinates, which Lagrange's side follows.
         if reg
@@ -228,7 +228,7 @@ fn a_wheel_rolling_on_a_plane_by_hand() {
     // moment at I on y1 or z0, so (C2 + m R²) θ̈ = 0 and A ψ̈ = 0; the x1 component is the
     // guide's couple. X x0 + Y y0 + (Z − m g) z0 = m Γ(C).
     let m = torseur::spec::load("derivations/roue_sur_plan.json").unwrap();
-    let reg = &m.reg();
+    let reg = m.reg();
     assert!(!reg.coord_info(reg.coord("x").unwrap()).is_holonomic());
     torseur::assert_equivalent!(m, "V(I,2/0) in B1", "[0, 0, 0]");
     torseur::assert_equivalent!(
@@ -283,7 +283,7 @@ fn lagrange_follows_a_driven_coordinate_through_its_ratio() {
         .push(serde_json::json!({"name": "k2", "unit": "N m/rad"}));
     v["links"][1]["spring"] = serde_json::json!({"coordinate": "theta2", "stiffness": "k2"});
     let m = torseur::spec::from_str(&v.to_string()).unwrap();
-    let reg = &m.reg();
+    let reg = m.reg();
     let all = all_solids(&m);
     let g0 = m.frames().ground();
     let ec = torseur::pfd::kinetic_energy(&m, &all);
