@@ -122,7 +122,7 @@ pub(super) fn bilan(doc: &mut Doc) {
             .map(|(t, v, u, _)| format!("{t} & {v} & {u} \\\\"))
             .collect();
         format!(
-            "\\begin{{tabular}}[t]{{@{{}}lll@{{}}}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n{}\n\\hline\n\\end{{tabular}}",
+            "\\begin{{tabular}}[t]{{@{{}}lll@{{}}}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n\\noalign{{\\vspace{{2pt}}}}\n{}\n\\hline\n\\end{{tabular}}",
             body.join("\n")
         )
     };

@@ -566,7 +566,11 @@ pub fn answer_key_document(
             }
             Some(q) if !constant && m.reg.coord_info(q).has_imposed_rate() => {
                 let rate = m.reg.dot(q);
-                let math = format!("\\dot{{{}}} = {}", name(&c.name), super::expr(&rate));
+                let math = format!(
+                    "{} = {}",
+                    super::expr::rate(&m.reg, q, 1),
+                    super::expr(&rate)
+                );
                 // In one piece: a column break after « = » would split the relation.
                 let text = if m.reg.coord_info(q).is_driven() {
                     format!(", liée aux autres par \\mbox{{${math}$}}")

@@ -8,7 +8,7 @@ use crate::expr::{
 };
 
 /// A rate: \dot{\theta}_{1}, the accent on the head, the subscript after.
-fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
+pub(super) fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
     let n = name(&reg.coord_info(q).name);
     let (head, sub) = match n.split_once("_{") {
         Some((h, s)) => (h.to_string(), format!("_{{{s}")),

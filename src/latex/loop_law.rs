@@ -2,7 +2,6 @@
 //! glissement ») after the paramétrage of a mechanism with dependent coordinates.
 
 use super::document::{DisplayRole, Doc, Inline};
-use super::name;
 use crate::derivation::Value;
 use crate::mechanism::RollingLaw;
 use std::fmt::Write as _;
@@ -46,8 +45,8 @@ pub(super) fn loop_law(doc: &mut Doc) {
     for q in dependent.filter_map(|n| m.reg.coord(n)) {
         let rate = m.reg.dot(q);
         let body = format!(
-            "\\dot{{{}}} &= {}",
-            name(&m.reg.coord_info(q).name),
+            "{} &= {}",
+            super::expr::rate(&m.reg, q, 1),
             lines(&super::expr_lines(&rate, super::LINE - 4))
         );
         let what = format!("dot({})", m.reg.coord_info(q).name);

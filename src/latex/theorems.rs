@@ -523,14 +523,12 @@ fn power_sentence(m: &crate::mechanism::Mechanism, d: &Derivation) -> Option<Str
             ))
         }
         QuantityKind::EquivalentInertia(c) => {
-            let q = super::name(c);
-            let length = m
-                .reg
-                .coord(c)
-                .is_some_and(|x| m.reg.coord_info(x).kind == crate::expr::CoordinateKind::Length);
+            let x = m.reg.coord(c)?;
+            let (q, dq) = (super::name(c), super::expr::rate(&m.reg, x, 1));
+            let length = m.reg.coord_info(x).kind == crate::expr::CoordinateKind::Length;
             Some(format!(
-                "Les vitesses des autres coordonnées se déduisent de $\\dot{{{q}}}$ : l'énergie \
-                 cinétique du mécanisme s'écrit $E_c = \\frac{{1}}{{2}}\\,{}\\,\\dot{{{q}}}^{{2}}$, \
+                "Les vitesses des autres coordonnées se déduisent de ${dq}$ : l'énergie \
+                 cinétique du mécanisme s'écrit $E_c = \\frac{{1}}{{2}}\\,{}\\,{dq}^{{2}}$, \
                  où ${}$ est {} ramenée à ${q}$ :",
                 quantity(&d.quantity.kind),
                 quantity(&d.quantity.kind),
