@@ -373,7 +373,11 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
         "\\needspace{{8\\baselineskip}}\n\\section*{{{}}}",
         rich_text_or_escaped(&qs.title)
     );
-    doc.here = format!("la {}", escape_text(&qs.title.to_lowercase()));
+    // A title may hold formulas ($S_1$), which keep their case.
+    doc.here = format!(
+        "la {}",
+        rich_text_or_escaped(&super::text::lowercase_text(&qs.title))
+    );
     if let Some(st) = &qs.statement {
         let _ = writeln!(doc.o, "\\emph{{{}}}\n", rich_text_or_escaped(st));
     }
@@ -521,7 +525,7 @@ pub fn answer_key_document(
     let _ = writeln!(
         o,
         "\\begin{{document}}\n\\begin{{center}}\n{{\\Large\\bfseries Corrigé -- {}\\par}}\n\\end{{center}}",
-        escape_text(&m.title)
+        rich_text_or_escaped(&m.title)
     );
     if let Some(d) = &m.description {
         let _ = writeln!(o, "{}\n", rich_text_or_escaped(d));

@@ -9,6 +9,7 @@
 mod bilan;
 mod document;
 mod expr;
+mod fault;
 mod figures;
 mod hypotheses;
 mod loop_law;
@@ -23,7 +24,9 @@ pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
 };
 pub use expr::{expr, expr_lines, fraction};
+pub use fault::text_at_fault;
 pub use figures::{link_graph, link_text, rotation_figures};
+pub use text::{MAX_ARROW_DEPTH, MAX_FORMULA_DEPTH, MAX_LABEL_CHARS, MAX_PROSE_CHARS};
 pub use text::{RichTextError, rich_text, rich_text_or_escaped};
 
 use crate::derivation::Value;
@@ -154,16 +157,24 @@ fn greek(c: char) -> Option<&'static str> {
 
 /// Escapes free text (titles, statements) for LaTeX: every special character is neutralised,
 /// so `\input`, `\write18` or unbalanced braces print as text and execute nothing. Greek
-/// letters and the dots of θ̇, θ̈ become math.
+/// letters and the dots of θ̇, θ̈ become math. Control characters are dropped, and a combining
+/// dot goes only over a letter or a digit this escaper printed itself (elsewhere it is
+/// dropped).
 ///
 /// ```
 /// assert_eq!(torseur::latex::escape_text("ω, θ̇"), "$\\omega$, $\\dot{\\theta}$");
 /// assert_eq!(torseur::latex::escape_text("\\input{x} 50% & $"),
 ///            "\\textbackslash{}input\\{x\\} 50\\% \\& \\$");
+/// assert_eq!(torseur::latex::escape_text("$\u{307}"), "\\$");
 /// ```
 pub fn escape_text(s: &str) -> String {
     let mut o = String::with_capacity(s.len());
+    // The last character printed, when a combining dot may go over it: where its LaTeX starts
+    // in `o`, and its LaTeX in math mode.
+    let mut dottable: Option<(usize, String)> = None;
     for c in s.chars() {
+        let start = o.len();
+        let mut letter = None;
         match c {
             '\\' => o.push_str("\\textbackslash{}"),
             '{' => o.push_str("\\{"),
@@ -178,7 +189,12 @@ pub fn escape_text(s: &str) -> String {
             '<' => o.push_str("\\textless{}"),
             '>' => o.push_str("\\textgreater{}"),
             '\n' | '\r' | '\t' => o.push(' '),
-            c if (c as u32) < 0x20 => {}
+            // C0, DEL and C1: TeX reads them as invalid or undefined characters.
+            c if c.is_control() => {}
+            c if c.is_ascii_alphanumeric() => {
+                o.push(c);
+                letter = Some(format!("\\mathrm{{{c}}}"));
+            }
             c if (c as u32) <= 0xFF => o.push(c),
             '’' => o.push('\''),
             '«' | '»' => o.push('"'),
@@ -186,26 +202,22 @@ pub fn escape_text(s: &str) -> String {
             '·' => o.push_str("$\\cdot$"),
             '−' => o.push('-'),
             c if greek(c).is_some() => {
-                let _ = write!(o, "$\\{}$", greek(c).unwrap_or_default());
+                let g = greek(c).unwrap_or_default();
+                let _ = write!(o, "$\\{g}$");
+                letter = Some(format!("\\{g}"));
             }
-            // A combining dot above or two dots (θ̇, θ̈) over the previous letter.
+            // A combining dot above or two dots (θ̇, θ̈) over the letter just printed:
+            // $\theta$ → $\dot{\theta}$, x → $\dot{\mathrm{x}}$.
             '\u{307}' | '\u{308}' => {
-                let accent = if c == '\u{307}' { "dot" } else { "ddot" };
-                match o.pop() {
-                    Some('$') => {
-                        // The previous letter was a Greek one: $\theta$ → $\dot{\theta}$.
-                        let start = o.rfind('$').unwrap_or(o.len());
-                        let inner = o.split_off(start + 1);
-                        let _ = write!(o, "\\{accent}{{{inner}}}$");
-                    }
-                    Some(prev) => {
-                        let _ = write!(o, "$\\{accent}{{\\mathrm{{{prev}}}}}$");
-                    }
-                    None => {}
+                if let Some((at, math)) = dottable.take() {
+                    let accent = if c == '\u{307}' { "dot" } else { "ddot" };
+                    o.truncate(at);
+                    let _ = write!(o, "$\\{accent}{{{math}}}$");
                 }
             }
             _ => o.push('?'),
         }
+        dottable = letter.map(|l| (start, l));
     }
     o
 }

@@ -7,6 +7,11 @@
 //! macro not listed are refused, as are unbalanced braces, an unclosed `$` and characters that
 //! would end or comment out the formula (`%`, `#`, `&`). Outside `$…$`, text is escaped as
 //! [`super::escape_text`] does; `\$` is a literal dollar.
+//!
+//! What TeX could not typeset is refused too, so that every accepted text compiles: control
+//! characters and invisible formatting characters anywhere, a formula nesting more than
+//! [`MAX_FORMULA_DEPTH`] groups or more than [`MAX_ARROW_DEPTH`] `\overrightarrow`, a script
+//! whose argument TeX does not take (a prime, `\sin`, `\quad`, `\ldots`).
 
 use std::fmt::Write as _;
 
@@ -73,6 +78,27 @@ const PLAIN: &[&str] = &[
 /// Macros taking one argument.
 const ONE_ARG: &[&str] = &["vec", "overrightarrow", "mathcal", "mathrm", "dot", "ddot"];
 
+/// Words that are not a single math symbol: a script takes them only in braces (`x^\sin`
+/// stops TeX with « Missing { inserted »).
+const NOT_SYMBOLS: &[&str] = &["sin", "cos", "tan", "quad", "ldots"];
+
+/// The most characters a title or a label may hold (a line of the key, sometimes inside a
+/// box that does not break: 200 characters is some 1,000 pt, far from TeX's largest
+/// dimension).
+pub const MAX_LABEL_CHARS: usize = 200;
+
+/// The most characters a prose free text (a statement, an answer, a description) may hold.
+pub const MAX_PROSE_CHARS: usize = 20_000;
+
+/// Deepest nesting of groups in a formula: braces and `\left … \right` pairs together. TeX
+/// allows 255 grouping levels in a whole document, and each level of a formula may take
+/// a few (`\frac`, `\mathrm`).
+pub const MAX_FORMULA_DEPTH: usize = 32;
+
+/// Deepest nesting of `\overrightarrow` (TeX typesets its argument four times, so each level
+/// multiplies the work by four).
+pub const MAX_ARROW_DEPTH: usize = 3;
+
 /// Control symbols accepted: thin, medium and negative spaces, braces as characters.
 const SYMBOLS: &[char] = &[',', ';', '!', '{', '}'];
 
@@ -121,6 +147,16 @@ pub struct RichTextError {
 /// ```
 pub fn rich_text(s: &str) -> Result<String, RichTextError> {
     let chars: Vec<char> = s.chars().collect();
+    if let Some((k, what)) = chars
+        .iter()
+        .enumerate()
+        .find_map(|(k, &c)| unprintable(c).map(|w| (k, w)))
+    {
+        return Err(RichTextError {
+            message: format!("{what} (U+{:04X}) is not allowed", chars[k] as u32),
+            position: k + 1,
+        });
+    }
     let mut out = String::with_capacity(s.len() + 8);
     let mut text = String::new();
     let mut i = 0;
@@ -137,6 +173,8 @@ pub fn rich_text(s: &str) -> Result<String, RichTextError> {
                     chars: &chars,
                     pos: i + 1,
                     out: String::new(),
+                    depth: 0,
+                    arrows: 0,
                 };
                 p.formula()?;
                 out.push('$');
@@ -166,11 +204,57 @@ pub fn rich_text_or_escaped(s: &str) -> String {
     rich_text(s).unwrap_or_else(|_| super::escape_text(s))
 }
 
+/// What kind of character TeX must never receive from a free text, if `c` is one: control
+/// characters (C0 but tab and line ends, DEL, C1) and invisible formatting characters
+/// (zero-width, bidirectional controls, byte order mark).
+fn unprintable(c: char) -> Option<&'static str> {
+    match c {
+        '\t' | '\n' | '\r' => None,
+        c if c.is_control() => Some("a control character"),
+        '\u{61C}'
+        | '\u{180E}'
+        | '\u{200B}'..='\u{200F}'
+        | '\u{202A}'..='\u{202E}'
+        | '\u{2060}'..='\u{2064}'
+        | '\u{2066}'..='\u{206F}'
+        | '\u{FEFF}'
+        | '\u{FFF9}'..='\u{FFFB}' => Some("an invisible formatting character"),
+        _ => None,
+    }
+}
+
+/// Lowercases the text of a free text outside its formulas (`Question 2 : $\Omega$` →
+/// `question 2 : $\Omega$`), for a title cited in a sentence.
+pub(crate) fn lowercase_text(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    let mut math = false;
+    let mut chars = s.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '\\' if chars.peek() == Some(&'$') => {
+                out.push(c);
+                out.extend(chars.next());
+            }
+            '$' => {
+                math = !math;
+                out.push(c);
+            }
+            c if math => out.push(c),
+            c => out.extend(c.to_lowercase()),
+        }
+    }
+    out
+}
+
 /// A formula being checked and copied: `pos` is the index of the next character.
 struct Formula<'a> {
     chars: &'a [char],
     pos: usize,
     out: String,
+    /// Groups open around the next token (braces and `\left`).
+    depth: usize,
+    /// `\overrightarrow` open around the next token.
+    arrows: usize,
 }
 
 /// What closes the group being read.
@@ -290,8 +374,10 @@ impl Formula<'_> {
     /// Reads items up to `close` (consumed), checking scripts, `\left`/`\right` and macro
     /// arguments. `open` is where the group started, for the message of an unclosed group.
     fn group(&mut self, close: Close, open: usize) -> Result<(), RichTextError> {
-        // Whether the current atom already has a superscript, a subscript.
-        let (mut sup, mut sub) = (false, false);
+        // Whether the current atom already has a superscript, a subscript; whether it ends
+        // with primes, which a `^` right after joins (any other token closes them into a
+        // superscript).
+        let (mut sup, mut sub, mut primes) = (false, false, false);
         let mut lefts: Vec<usize> = Vec::new();
         loop {
             let Some((t, at)) = self.token()? else {
@@ -300,6 +386,12 @@ impl Formula<'_> {
                     Close::Brace => self.err(open, "a `{` is never closed"),
                 });
             };
+            if primes && matches!(t, Token::Script('^') | Token::Char('\'')) {
+                // `x' ^2`, `x' '`: TeX joins a `^` or a prime only right after a prime.
+                while self.out.ends_with(' ') {
+                    self.out.pop();
+                }
+            }
             match t {
                 Token::Dollar => {
                     if close == Close::Brace {
@@ -323,6 +415,10 @@ impl Formula<'_> {
                     return Ok(());
                 }
                 Token::Script(c) => {
+                    // Primes followed by `_` are a superscript already.
+                    if std::mem::take(&mut primes) && c == '_' {
+                        sup = true;
+                    }
                     let seen = if c == '^' { &mut sup } else { &mut sub };
                     if *seen {
                         let what = if c == '^' { "superscript" } else { "subscript" };
@@ -333,7 +429,7 @@ impl Formula<'_> {
                     }
                     *seen = true;
                     self.out.push(c);
-                    self.argument(at, &format!("`{c}`"))?;
+                    self.argument(at, &format!("`{c}`"), true)?;
                 }
                 Token::Char('\'') => {
                     // A prime is a superscript that a following `^` joins.
@@ -344,36 +440,68 @@ impl Formula<'_> {
                         ));
                     }
                     self.out.push('\'');
+                    primes = true;
                 }
                 Token::Word(w) if w == "left" || w == "right" => {
                     if w == "left" {
                         lefts.push(at);
+                        self.enter(at)?;
                     } else if lefts.pop().is_none() {
                         return Err(self.err(at, "a `\\right` has no `\\left`"));
+                    } else {
+                        self.depth -= 1;
                     }
-                    let _ = write!(self.out, "\\{w}");
+                    self.word(&w);
                     self.delimiter(at, &w)?;
-                    (sup, sub) = (false, false);
+                    (sup, sub, primes) = (false, false, false);
                 }
                 other => {
                     self.atom(other, at)?;
-                    (sup, sub) = (false, false);
+                    (sup, sub, primes) = (false, false, false);
                 }
             }
         }
+    }
+
+    /// One more group open at `at` (a `{` or a `\left`), refused past [`MAX_FORMULA_DEPTH`].
+    fn enter(&mut self, at: usize) -> Result<(), RichTextError> {
+        self.depth += 1;
+        if self.depth > MAX_FORMULA_DEPTH {
+            return Err(self.err(
+                at,
+                format!(
+                    "a formula may nest at most {MAX_FORMULA_DEPTH} groups (braces and \
+                     `\\left … \\right`)"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Writes the control word `\w`.
+    fn word(&mut self, w: &str) {
+        let _ = write!(self.out, "\\{w}");
     }
 
     /// Copies one atom that starts with token `t`: a character, a group, or a macro with its
     /// arguments.
     fn atom(&mut self, t: Token, at: usize) -> Result<(), RichTextError> {
         match t {
-            Token::Char(c) => self.out.push(c),
+            Token::Char(c) => {
+                // A letter right after a control word (`θx` → `\theta x`) stays apart from it.
+                if c.is_ascii_alphabetic() && ends_with_word(&self.out) {
+                    self.out.push(' ');
+                }
+                self.out.push(c);
+            }
             Token::Symbol(s) => {
                 let _ = write!(self.out, "\\{s}");
             }
             Token::Open => {
+                self.enter(at)?;
                 self.out.push('{');
                 self.group(Close::Brace, at)?;
+                self.depth -= 1;
             }
             Token::Word(w) => {
                 let args = if PLAIN.contains(&w.as_str()) {
@@ -388,9 +516,24 @@ impl Formula<'_> {
                         format!("`\\{w}` is not allowed in a formula (allowed: {ALLOWED})"),
                     ));
                 };
-                let _ = write!(self.out, "\\{w}");
+                let arrow = w == "overrightarrow";
+                if arrow {
+                    self.arrows += 1;
+                    if self.arrows > MAX_ARROW_DEPTH {
+                        return Err(self.err(
+                            at,
+                            format!(
+                                "a formula may nest at most {MAX_ARROW_DEPTH} `\\overrightarrow`"
+                            ),
+                        ));
+                    }
+                }
+                self.word(&w);
                 for _ in 0..args {
-                    self.argument(at, &format!("`\\{w}`"))?;
+                    self.argument(at, &format!("`\\{w}`"), false)?;
+                }
+                if arrow {
+                    self.arrows -= 1;
                 }
             }
             Token::Close | Token::Dollar | Token::Script(_) => {
@@ -401,12 +544,20 @@ impl Formula<'_> {
     }
 
     /// The argument of a macro or a script: a group, a character, or a macro without
-    /// argument.
-    fn argument(&mut self, of_at: usize, of: &str) -> Result<(), RichTextError> {
+    /// argument (a script takes neither a prime nor a word that is not one symbol).
+    fn argument(&mut self, of_at: usize, of: &str, script: bool) -> Result<(), RichTextError> {
         let Some((t, at)) = self.token()? else {
             return Err(self.err(of_at, format!("{of} has no argument")));
         };
         match t {
+            Token::Char('\'') if script => Err(self.err(
+                at,
+                format!("{of} takes a prime as argument: put it in braces"),
+            )),
+            Token::Word(ref w) if script && NOT_SYMBOLS.contains(&w.as_str()) => Err(self.err(
+                at,
+                format!("{of} takes `\\{w}` as argument: put it in braces"),
+            )),
             Token::Open | Token::Char(_) => self.atom(t, at),
             Token::Word(ref w) if PLAIN.contains(&w.as_str()) => {
                 // `\vec\omega`: keep the control word apart from what follows.
@@ -441,6 +592,12 @@ impl Formula<'_> {
             )),
         }
     }
+}
+
+/// Whether `out` ends with a control word (`\theta`), which a letter would lengthen.
+fn ends_with_word(out: &str) -> bool {
+    let letters = out.trim_end_matches(|c: char| c.is_ascii_alphabetic());
+    letters.len() < out.len() && letters.ends_with('\\')
 }
 
 /// The macro for a Unicode letter or operator written in a formula (`θ` → `theta`).

@@ -10,6 +10,7 @@ mod validate;
 pub use crate::wire;
 
 pub use locate::locate;
+pub(crate) use texts::free_texts;
 pub use validate::build;
 
 use crate::excerpt::{bounded, excerpt};

@@ -54,9 +54,19 @@ pub(super) fn expression_texts(spec: &SpecFile) -> Vec<(String, &str)> {
     out
 }
 
+/// The most characters the free text at `path` may hold, and what it is (for the message):
+/// a title or a label is a line of the key, the rest is prose.
+pub(super) fn free_text_limit(path: &str) -> (usize, &'static str) {
+    if path == "title" || path.ends_with(".title") || path.ends_with(".label") {
+        (crate::latex::MAX_LABEL_CHARS, "a title or a label")
+    } else {
+        (crate::latex::MAX_PROSE_CHARS, "a text")
+    }
+}
+
 /// Every free text of the spec with its JSON path: what the answer key prints as text, where
 /// `$…$` formulas are allowed (see [`crate::latex::rich_text`]).
-pub(super) fn free_texts(spec: &SpecFile) -> Vec<(String, &str)> {
+pub(crate) fn free_texts(spec: &SpecFile) -> Vec<(String, &str)> {
     let mut out: Vec<(String, &str)> = vec![("title".to_string(), &spec.title)];
     if let Some(d) = &spec.description {
         out.push(("description".to_string(), d));

@@ -2,7 +2,7 @@
 //! parsed, every error naming the JSON path of the offending value.
 
 use super::SpecError;
-use super::texts::{expression_texts, free_texts};
+use super::texts::{expression_texts, free_text_limit, free_texts};
 use crate::expr::{ExprError, Registry};
 use crate::frame::{Angle, Axis, FrameId, Frames, Rotation};
 use crate::inertia::{Inertia, Symmetry};
@@ -88,6 +88,14 @@ fn build_with(
     // Free texts, after the shared resolution: a formula the answer key could not print
     // safely refuses the spec.
     for (path, text) in free_texts(spec) {
+        let (max, what) = free_text_limit(&path);
+        let n = text.chars().count();
+        if n > max {
+            return Err(at(
+                path,
+                format!("{n} characters: {what} may hold at most {max}"),
+            ));
+        }
         crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
     }
     units(spec)?;
