@@ -37,9 +37,10 @@
 //!   [`output`] (text, JSON, numbers), [`verify`], [`check`];
 //! - [`spec`] (JSON to [`mechanism::Mechanism`]); [`Error`] gathers every module's error.
 //!
-//! Utilities for the command line: [`lock`] (one symbolica process at a time) and
-//! [`excerpt`] (bounded quotes in messages). The atomic write is private, exposed as
-//! [`output::write_atomic`].
+//! Utilities for the command line: [`lock`] (one symbolica process at a time), [`input`]
+//! (inputs read with a bound) and [`excerpt`] (bounded quotes in messages). Output files
+//! (what an output path may name, written once a run has succeeded) are exposed in
+//! [`output`]: [`output::target`], [`output::write_outputs`], [`output::write_atomic`].
 #![deny(missing_docs)]
 // Matrix and vector code indexes components as the formulas do (I[i][j], u[k]).
 #![allow(clippy::needless_range_loop)]
@@ -51,6 +52,7 @@ pub mod excerpt;
 pub mod expr;
 pub mod frame;
 pub mod inertia;
+pub mod input;
 pub mod kinematics;
 pub mod latex;
 pub mod lock;

@@ -498,10 +498,31 @@ pub struct AnswerKey {
     pub inline: Vec<Inline>,
 }
 
-/// [`answer_key_with`], with the figures of the simulations the questions show.
+/// [`answer_key_with`], with the figures of the simulations the questions show
+/// (`simulation-7.png` for question 7).
 pub fn answer_key_document(
     m: &Mechanism,
     style: VectorStyle,
+) -> Result<AnswerKey, crate::derivation::ResolveError> {
+    answer_key_named(m, style, "")
+}
+
+/// [`answer_key_document`], its figure files named after the key's own file: `prefix`
+/// (`corrige-`) before each name (`corrige-simulation-7.png`), so that two keys written in
+/// one directory do not share their figures.
+///
+/// ```
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let key = torseur::latex::answer_key_named(&m, torseur::latex::VectorStyle::Sum, "k-").unwrap();
+/// assert!(key.figures.iter().all(|(n, _)| n.starts_with("k-simulation-")));
+/// for (n, _) in &key.figures {
+///     assert!(key.tex.contains(&format!("{{{n}}}")));
+/// }
+/// ```
+pub fn answer_key_named(
+    m: &Mechanism,
+    style: VectorStyle,
+    prefix: &str,
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
     let _names = super::VectorNames::of(m);
     let mut figures = Vec::new();
@@ -745,7 +766,7 @@ pub fn answer_key_document(
         for (k, qs) in m.spec.questions.iter().enumerate() {
             question_block(&mut doc, qs)?;
             if let Some(sim) = &qs.simulation {
-                let file = format!("simulation-{}.png", k + 1);
+                let file = format!("{prefix}simulation-{}.png", k + 1);
                 figures.push((file.clone(), simulation_block(&mut doc.o, m, sim, &file)?));
             }
         }

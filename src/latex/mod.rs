@@ -21,7 +21,8 @@ mod text;
 mod theorems;
 
 pub use document::{
-    AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_with,
+    AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_named,
+    answer_key_with,
 };
 pub use expr::{expr, expr_lines, fraction};
 pub use fault::text_at_fault;

@@ -2,7 +2,10 @@
 
 mod eval;
 
-pub use crate::atomic::write_atomic;
+pub use crate::atomic::{
+    OutputError, Sink, Target, distinct, forget_pending, register_pending, remove_pending, target,
+    write_atomic, write_outputs,
+};
 pub use eval::{Values, ValuesError, eval_value, numeric_point, numeric_point_for, solve_unknowns};
 
 use crate::derivation::{Derivation, Value};

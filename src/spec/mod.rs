@@ -74,7 +74,7 @@ fn shown(place: &str, location: Option<(usize, usize)>, message: &str) -> String
 }
 
 /// Largest spec file accepted (a hand-written spec is a few kilobytes).
-pub const MAX_SPEC_BYTES: u64 = 4 << 20;
+pub const MAX_SPEC_BYTES: u64 = crate::input::MAX_SPEC_BYTES;
 
 /// The JSON Schema (draft 2020-12) of a spec file, generated from the wire types: their doc
 /// comments are its descriptions. The repository commits it as `spec.schema.json`, and every
@@ -90,31 +90,45 @@ pub fn json_schema() -> serde_json::Value {
     schemars::schema_for!(wire::SpecFile).to_value()
 }
 
-/// Reads, parses and validates a spec file.
+/// Reads, parses and validates a spec file (`-`: standard input).
 ///
 /// ```
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// assert_eq!(m.bodies().len(), 2);
 /// ```
 pub fn load(path: impl AsRef<Path>) -> Result<Mechanism, SpecError> {
+    from_str(&read(path)?)
+}
+
+/// Reads a spec's text, bounded by [`MAX_SPEC_BYTES`] while it is read (`-`: standard
+/// input), without parsing it: no symbolica work, so the CLI reads every input before it
+/// queues for symbolica.
+///
+/// ```
+/// let dir = tempfile::tempdir().unwrap();
+/// let p = dir.path().join("big.json");
+/// std::fs::write(&p, vec![b' '; 5 << 20]).unwrap();
+/// let e = torseur::spec::read(&p).unwrap_err().to_string();
+/// assert!(e.ends_with("larger than 4194304 bytes"), "{e}");
+/// ```
+pub fn read(path: impl AsRef<Path>) -> Result<String, SpecError> {
     let p = path.as_ref();
-    let file = p.display().to_string();
-    let io = |m: String| SpecError::Io {
-        file: file.clone(),
-        message: m,
-    };
-    let meta = std::fs::metadata(p).map_err(|e| io(e.to_string()))?;
-    if meta.len() > MAX_SPEC_BYTES {
-        return Err(io(format!("larger than {MAX_SPEC_BYTES} bytes")));
-    }
-    let bytes = std::fs::read(p).map_err(|e| io(e.to_string()))?;
-    let text = String::from_utf8(bytes).map_err(|e| {
-        io(format!(
-            "not UTF-8 text (invalid byte at offset {})",
-            e.utf8_error().valid_up_to()
-        ))
-    })?;
-    from_str(&text)
+    crate::input::read_text(p, MAX_SPEC_BYTES).map_err(|e| SpecError::Io {
+        file: if p.as_os_str() == "-" {
+            "standard input".to_string()
+        } else {
+            p.display().to_string()
+        },
+        message: match e {
+            crate::input::InputError::Io { source, .. } => source.to_string(),
+            crate::input::InputError::TooLarge { limit, .. } => {
+                format!("larger than {limit} bytes")
+            }
+            crate::input::InputError::NotText { offset, .. } => {
+                format!("not UTF-8 text (invalid byte at offset {offset})")
+            }
+        },
+    })
 }
 
 /// Parses and validates spec text; errors carry the line and column of the value.

@@ -4,6 +4,9 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+mod corpus;
+mod hostile;
+
 fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_torseur"))
 }
@@ -1094,7 +1097,7 @@ fn a_long_derived_result_is_read_back_from_a_file() {
     let v = run(&["verify", chain.to_str().unwrap(), "-q", q, "-e", &missing]);
     assert_eq!(v.status.code(), Some(2));
     assert!(
-        stderr(&v).contains("cannot read the file"),
+        stderr(&v).contains("--expr @") && stderr(&v).contains("cannot read"),
         "{}",
         stderr(&v)
     );
