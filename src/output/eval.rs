@@ -74,8 +74,16 @@ impl Values {
         let raw: RawValues = serde_path_to_error::deserialize(&mut de).map_err(|e| {
             let path = e.path().to_string();
             let inner = e.into_inner();
+            let suffix = format!(" at line {} column {}", inner.line(), inner.column());
+            let text = inner.to_string();
+            let mut message = text.strip_suffix(&suffix).unwrap_or(&text).to_string();
+            // serde_json's words for an array longer than its fixed length; the one such
+            // array is a coordinate's [q, q̇, q̈].
+            if message == "trailing characters" && path.starts_with("coordinates.") {
+                message = "more than the 3 values [q, dot(q), ddot(q)] of a coordinate".into();
+            }
             ValuesError(format!(
-                "at {path} (line {}, column {}): {inner}",
+                "at {path} (line {}, column {}): {message}",
                 inner.line(),
                 inner.column()
             ))
@@ -401,8 +409,8 @@ fn point_where(
             && !missing_time
         {
             return Err(ValuesError(format!(
-                "non-finite value for variable {}",
-                i.index()
+                "`{}` is not a finite number at these values",
+                reg.variable(i)
             )));
         }
         point.push(v);
@@ -443,7 +451,55 @@ fn point_where(
     Ok(point)
 }
 
-/// A derived value evaluated at a point, as the JSON of the CLI contract.
+/// A derived value evaluated at a point, as the JSON of the CLI contract; refused when a
+/// number of it is not finite (the values overflow: a parameter of 1e300 squared), naming the
+/// quantity, where [`eval_value`] would print it as `null`.
+///
+/// ```
+/// use torseur::output::{Values, numeric_point_for, try_eval_value};
+/// use torseur::quantity::Quantity;
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let q = Quantity::parse("V(G2,2/0) in B2").unwrap();
+/// let v = torseur::derivation::derive(&m, &q).unwrap().value;
+/// let at = |big: &str| {
+///     let values = Values::parse(&format!(r#"{{"parameters": {{"L1": {big}, "L2": 1,
+///         "d1": 1, "h1": 1}}, "coordinates": {{"theta1": [0, {big}, 0], "theta2": [0, 1, 0]}}}}"#))
+///         .unwrap();
+///     numeric_point_for(&m, &values, &v.exprs()).unwrap()
+/// };
+/// assert!(try_eval_value(&m, "V(G2,2/0) in B2", &v, &at("2")).is_ok());
+/// // L1 θ̇1 = 1e600 overflows.
+/// let e = try_eval_value(&m, "V(G2,2/0) in B2", &v, &at("1e300")).unwrap_err();
+/// assert!(e.to_string().starts_with("values: `V(G2,2/0) in B2` is not a finite number"), "{e}");
+/// ```
+pub fn try_eval_value(
+    m: &Mechanism,
+    id: &str,
+    v: &Value,
+    point: &[f64],
+) -> Result<Json, ValuesError> {
+    let j = eval_value(m, id, v, point);
+    if has_null(&j) {
+        return Err(ValuesError(format!(
+            "`{id}` is not a finite number at these values (a result overflows the \
+             floating-point range, or is undefined there)"
+        )));
+    }
+    Ok(j)
+}
+
+/// Whether a JSON value holds a `null` (serde_json's number for NaN and the infinities).
+fn has_null(j: &Json) -> bool {
+    match j {
+        Json::Null => true,
+        Json::Array(a) => a.iter().any(has_null),
+        Json::Object(o) => o.values().any(has_null),
+        _ => false,
+    }
+}
+
+/// A derived value evaluated at a point, as the JSON of the CLI contract. A number that is
+/// not finite is `null`: [`try_eval_value`] refuses it instead.
 pub fn eval_value(m: &Mechanism, id: &str, v: &Value, point: &[f64]) -> Json {
     let ev = |c: &[crate::expr::Expr; 3]| -> Vec<f64> { c.iter().map(|e| e.eval(point)).collect() };
     match v {

@@ -6,7 +6,10 @@ pub use crate::atomic::{
     OutputError, Sink, Target, distinct, forget_pending, register_pending, remove_pending, target,
     write_atomic, write_outputs,
 };
-pub use eval::{Values, ValuesError, eval_value, numeric_point, numeric_point_for, solve_unknowns};
+pub use eval::{
+    Values, ValuesError, eval_value, numeric_point, numeric_point_for, solve_unknowns,
+    try_eval_value,
+};
 
 use crate::derivation::{Derivation, Value};
 use crate::expr::{Expr, Fraction};
