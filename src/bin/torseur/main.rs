@@ -330,6 +330,9 @@ fn figure_prefix(tex: &Target) -> String {
     format!("{stem}-")
 }
 
+/// Output files, each the index of its resolved target in [`Io`] and its bytes.
+type Files = Vec<(usize, Vec<u8>)>;
+
 /// The answer key of `m`, its figures named after `tex` when it is a file (they are written
 /// beside it, where `\includegraphics` finds them), else not written (said on stderr).
 fn key_with_figures(
@@ -337,7 +340,7 @@ fn key_with_figures(
     style: torseur::latex::VectorStyle,
     io: &mut Io,
     tex: usize,
-) -> Result<(torseur::latex::AnswerKey, Vec<(usize, Vec<u8>)>), Failure> {
+) -> Result<(torseur::latex::AnswerKey, Files), Failure> {
     let dir = io
         .target(tex)
         .file()
@@ -520,7 +523,7 @@ fn prepare_derive(a: DeriveArgs) -> Result<Job, Failure> {
         } else {
             values_only(&m, &qs)?
         };
-        let mut files: Vec<(usize, Vec<u8>)> = Vec::new();
+        let mut files: Files = Vec::new();
         if let Some(k) = latex_out {
             let mq = m.asking(qs.clone());
             let (key, figures) =
@@ -628,7 +631,7 @@ fn prepare_answer_key(a: AnswerKeyArgs) -> Result<Job, Failure> {
             Vectors::Column => torseur::latex::VectorStyle::Column,
         };
         let (key, figures) = key_with_figures(&m, style, &mut io, tex_out)?;
-        let mut files: Vec<(usize, Vec<u8>)> = Vec::new();
+        let mut files: Files = Vec::new();
         if let Some(k) = manifest_out {
             let text = serde_json::to_string_pretty(&output::manifest_json(&m, &key))
                 .map_err(bad_input)?
@@ -776,7 +779,7 @@ fn prepare_simulate(a: SimulateArgs) -> Result<Job, Failure> {
             true,
         );
         // Everything is computed before anything is written.
-        let mut files: Vec<(usize, Vec<u8>)> = Vec::new();
+        let mut files: Files = Vec::new();
         if let Some(k) = svg_out {
             files.push((k, fig.to_svg().map_err(bad_input)?.into_bytes()));
         }
