@@ -72,6 +72,16 @@ fn resolve_err(q: &Quantity, message: String) -> ResolveError {
     ResolveError::new(q, message)
 }
 
+/// Why a name is not an unknown of the PFD.
+pub(super) fn not_an_unknown(name: &str) -> String {
+    format!("`{name}` is not an unknown of the PFD (links' components, actions' unknowns)")
+}
+
+/// Why `eom(c)` of a coordinate `c` has no equation.
+pub(super) fn no_eom_marked(c: &str) -> String {
+    format!("no equation of `pfd` is marked `\"eom\": \"{c}\"`")
+}
+
 /// A solid in a sentence: `$S_{2}$` for solid `2`, its name otherwise (free text).
 fn solid_text(n: &str) -> String {
     if n.chars().all(|c| c.is_ascii_digit()) {
@@ -181,12 +191,7 @@ pub(super) fn derive(
         }
         QuantityKind::Unknown(name) => {
             if !m.reg.unknowns().contains(name) {
-                return Err(resolve_err(
-                    q,
-                    format!(
-                        "`{name}` is not an unknown of the PFD (links' components, actions' unknowns)"
-                    ),
-                ));
+                return Err(resolve_err(q, not_an_unknown(name)));
             }
             let var = unknown_vars(m)
                 .into_iter()
@@ -222,12 +227,7 @@ pub(super) fn derive(
                 .theorems
                 .iter()
                 .find(|t| t.eom == Some(coord))
-                .ok_or_else(|| {
-                    resolve_err(
-                        q,
-                        format!("no equation of `pfd` is marked `\"eom\": \"{c}\"`"),
-                    )
-                })?;
+                .ok_or_else(|| resolve_err(q, no_eom_marked(c)))?;
             let value = shared
                 .eom(m, c)
                 .map_err(|e| ResolveError::new(q, e))?

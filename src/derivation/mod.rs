@@ -141,7 +141,19 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             r.basis = torsor::inertia_basis(m, b);
         }
         KineticResultant(mo) | DynamicResultant(mo) | KineticEnergy(mo) => kinetic(mo, &mut r)?,
-        Unknown(_) | Eom(_) => {}
+        // Named objects checked here, before the PFD is solved: a spec's `quantities` are
+        // resolved when it is loaded.
+        Unknown(name) => {
+            if !m.reg.unknowns().contains(name) {
+                return Err(ResolveError::new(q, dynamics::not_an_unknown(name)));
+            }
+        }
+        Eom(c) => {
+            let coord = m.reg.coord(c).ok_or_else(|| unknown("coordinate", c))?;
+            if !m.dynamics.theorems.iter().any(|t| t.eom == Some(coord)) {
+                return Err(ResolveError::new(q, dynamics::no_eom_marked(c)));
+            }
+        }
         ActionResultant(a) => r.solids = solids(&a.on)?,
         Power { action, reference } => {
             r.solids = solids(&action.on)?;

@@ -16,6 +16,11 @@ use symbolica::poly::polynomial::MultivariatePolynomial;
 const MAX_INPUT: usize = super::MAX_INPUT_LEN;
 const MAX_POWER: i64 = 255;
 
+/// Most digits a number literal may have (integer and decimal digits together): symbolica
+/// reads a literal in a time quadratic in its length (10⁶ digits took minutes), and no
+/// expression of a spec, a typed result or a values file needs more than a few dozen.
+pub(super) const MAX_NUMBER_DIGITS: usize = 100;
+
 /// Term products a power may take to expand (ten times [`super::MAX_EXPANDED_TERMS`]): six
 /// terms to the 25th take 2.9·10^6.
 const POWER_WORK: u128 = 10 * super::MAX_EXPANDED_TERMS;
@@ -73,6 +78,40 @@ pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String
         return Err("empty parentheses".to_string());
     }
     check_powers(s)
+}
+
+/// Each number literal has at most [`MAX_NUMBER_DIGITS`] digits. A number starts with a digit
+/// or a `.` before a digit that does not continue a name (`theta12` is a name).
+fn check_numbers(s: &str) -> Result<(), String> {
+    let b = s.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        let starts = (b[i].is_ascii_digit()
+            || (b[i] == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit)))
+            && (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_'));
+        if !starts {
+            // Skip a whole name, digits included.
+            if b[i].is_ascii_alphabetic() || b[i] == b'_' {
+                while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                    i += 1;
+                }
+            } else {
+                i += 1;
+            }
+            continue;
+        }
+        let mut digits = 0usize;
+        while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
+            digits += usize::from(b[i] != b'.');
+            i += 1;
+        }
+        if digits > MAX_NUMBER_DIGITS {
+            return Err(format!(
+                "a number of {digits} digits: a number has at most {MAX_NUMBER_DIGITS}"
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Exponents are integer literals, nested powers multiply to at most [`MAX_POWER`], and
@@ -185,13 +224,18 @@ pub(super) fn parse_atom(s: &str) -> Result<Atom, ExprError> {
 
 /// symbolica's parse of a text whose characters and functions are checked.
 pub(super) fn parse_checked(s: &str) -> Result<Atom, ExprError> {
-    let exact = exact_decimals(s).map_err(|reason| ExprError::Parse {
-        input: s.to_string(),
-        reason,
-    })?;
+    // Every text symbolica reads passes here (lexical scans included): the bound on number
+    // literals is checked first.
+    let exact = check_numbers(s)
+        .and_then(|()| exact_decimals(s))
+        .map_err(|reason| ExprError::Parse {
+            input: s.to_string(),
+            reason,
+        })?;
     // symbolica's message draws a caret under the text on further lines: its first line
     // says what and where, which is what an error message of ours quotes.
-    symbolica::try_parse!(&exact).map_err(|e| ExprError::Parse {
+    let (parsed, warnings) = caught(|| symbolica::try_parse!(&exact));
+    let atom = parsed.map_err(|e| ExprError::Parse {
         input: s.to_string(),
         reason: e
             .to_string()
@@ -200,7 +244,84 @@ pub(super) fn parse_checked(s: &str) -> Result<Atom, ExprError> {
             .unwrap_or_default()
             .trim_start_matches("Error at line 1, ")
             .to_string(),
-    })
+    })?;
+    // symbolica simplifies as it reads: `a/(b - b)` becomes 0^-1, which it reports as a
+    // warning and turns into an infinity. Refused here, in our words.
+    if warnings.iter().any(|w| undefined(w)) {
+        return Err(ExprError::Unsupported {
+            input: s.to_string(),
+            reason: "division by zero: a divisor is equal to 0".to_string(),
+        });
+    }
+    Ok(atom)
+}
+
+/// Whether a warning of symbolica's says that a value is undefined (an infinity made by a
+/// division by zero, an indeterminate 0/0).
+fn undefined(warning: &str) -> bool {
+    let w = warning.to_ascii_lowercase();
+    [
+        "infinity",
+        "indeterminate",
+        "division by zero",
+        "divide by zero",
+        "undefined",
+    ]
+    .iter()
+    .any(|k| w.contains(k))
+}
+
+/// Runs `f` with symbolica's log events (`tracing`, WARN and ERROR) caught instead of printed:
+/// it prints them with colours and timestamps on the terminal otherwise. Returns `f`'s value
+/// and the messages, in order. Scoped to this thread and this call; symbolica runs on one
+/// thread (see [`super::guard`]).
+fn caught<T>(f: impl FnOnce() -> T) -> (T, Vec<String>) {
+    let catcher = Catcher::default();
+    let messages = catcher.messages.clone();
+    let value = tracing::subscriber::with_default(catcher, f);
+    let messages = std::mem::take(&mut *messages.lock().unwrap_or_else(|p| p.into_inner()));
+    (value, messages)
+}
+
+/// A `tracing` subscriber that keeps the messages of WARN and ERROR events and drops the rest.
+#[derive(Default)]
+struct Catcher {
+    messages: std::sync::Arc<std::sync::Mutex<Vec<String>>>,
+}
+
+impl tracing::Subscriber for Catcher {
+    fn enabled(&self, metadata: &tracing::Metadata<'_>) -> bool {
+        metadata.is_event() && *metadata.level() <= tracing::Level::WARN
+    }
+
+    fn new_span(&self, _: &tracing::span::Attributes<'_>) -> tracing::span::Id {
+        tracing::span::Id::from_u64(1)
+    }
+
+    fn record(&self, _: &tracing::span::Id, _: &tracing::span::Record<'_>) {}
+
+    fn record_follows_from(&self, _: &tracing::span::Id, _: &tracing::span::Id) {}
+
+    fn event(&self, event: &tracing::Event<'_>) {
+        struct Message(String);
+        impl tracing::field::Visit for Message {
+            fn record_debug(&mut self, field: &tracing::field::Field, value: &dyn std::fmt::Debug) {
+                if field.name() == "message" {
+                    self.0 = format!("{value:?}");
+                }
+            }
+        }
+        let mut m = Message(String::new());
+        event.record(&mut m);
+        self.messages
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .push(m.0);
+    }
+
+    fn enter(&self, _: &tracing::span::Id) {}
+
+    fn exit(&self, _: &tracing::span::Id) {}
 }
 
 /// Decimal literals as exact fractions (`0.25` → `(25/100)`), so symbolica never reads a

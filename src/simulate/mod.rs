@@ -24,7 +24,7 @@ mod table;
 mod tests;
 
 pub use error::SimError;
-pub use law::TimeLaw;
+pub use law::{LawError, TimeLaw};
 pub use ode::{MAX_OUTPUT_POINTS, Options, Output, Stats, Trajectory, integrate};
 pub use plot::{FONT_DEJAVU_SANS, Figure, Panel, Series, plot};
 pub use table::{NumberFormat, Table, write_atomic};
@@ -151,6 +151,24 @@ pub fn simulate(m: &Mechanism, name: &str) -> Result<Run, SimulateError> {
     simulate_with(m, sc, &[])
 }
 
+/// Longest scenario, in seconds: the run is output every millisecond (every thousandth of
+/// the duration below 1 s), so it holds at most 10⁶ instants.
+pub const MAX_DURATION: f64 = 1000.0;
+
+/// Why a scenario's duration is refused, if it is: it must be more than 0 s and at most
+/// [`MAX_DURATION`].
+///
+/// ```
+/// use torseur::simulate::duration_refusal;
+/// assert_eq!(duration_refusal(1.5), None);
+/// assert_eq!(duration_refusal(1e12).unwrap(),
+///     "1000000000000 s: a duration is more than 0 s and at most 1000 s");
+/// ```
+pub fn duration_refusal(duration: f64) -> Option<String> {
+    (!(duration.is_finite() && duration > 0.0 && duration <= MAX_DURATION))
+        .then(|| format!("{duration} s: a duration is more than 0 s and at most {MAX_DURATION} s"))
+}
+
 /// Runs a scenario, also integrating each expression of `integrals` over time (a power, to
 /// get a work): its integral is recorded as a column named after it.
 pub fn simulate_with(
@@ -158,9 +176,9 @@ pub fn simulate_with(
     sc: &ScenarioSpec,
     integrals: &[(String, Expr)],
 ) -> Result<Run, SimulateError> {
-    if !(sc.duration.is_finite() && sc.duration > 0.0 && sc.duration <= 1e6) {
+    if let Some(why) = duration_refusal(sc.duration) {
         return Err(SimulateError::Scenario(format!(
-            "scenario `{}`: the duration must be positive (seconds)",
+            "scenario `{}`: duration {why}",
             sc.name
         )));
     }

@@ -157,7 +157,11 @@ impl Plan {
                 ))
             })?;
             let law = TimeLaw::new(&im.rate, reg.parameters(), &params)
-                .map_err(|e| err(format!("imposed[{k}].rate: {e}")))?;
+                .and_then(|law| law.check_starts(sc.duration).map(|()| law))
+                .map_err(|e| {
+                    let at = e.path_under(&format!("imposed[{k}].rate"));
+                    err(format!("{at}: {}", e.message))
+                })?;
             breakpoints.extend(law.breakpoints());
             imposed.push(Imposed {
                 coord: q,
@@ -234,6 +238,10 @@ impl Plan {
             hs.push(h);
         }
         exprs.extend(hs);
+        // Every coordinate imposed: nothing to solve for (the evaluator gets one dummy output).
+        if exprs.is_empty() {
+            exprs.push(reg.zero());
+        }
         let refs: Vec<&Expr> = exprs.iter().collect();
         let dynamics = reg
             .compile(&refs)
@@ -443,6 +451,10 @@ impl Plan {
     ) -> Result<DVector<f64>, String> {
         let ni = self.imposed.len();
         let n = self.free.len();
+        if n == 0 {
+            // Every motion is imposed: no equation of motion to solve.
+            return Ok(DVector::zeros(0));
+        }
         self.dynamics.evaluate(point, out);
         let mass = DMatrix::from_row_slice(n, n, &out[..n * n]);
         let h = DVector::from_column_slice(&out[n * n..]);

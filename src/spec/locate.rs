@@ -157,3 +157,64 @@ pub fn locate(text: &str, path: &str) -> Option<(usize, usize)> {
     let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
     Some((line, column))
 }
+
+/// The fixed number of elements of the array at a JSON path of a spec (`solids[1].inertia.matrix`
+/// holds 3 rows, `ground_basis` 3 names), read from the spec's JSON Schema; none where the
+/// path is not a fixed-length array.
+///
+/// ```
+/// // Through an internal function: the message of an array given too many elements.
+/// let spec = r#"{"title": "t", "ground_basis": ["x", "y", "z", "w"]}"#;
+/// let e = torseur::spec::parse_spec(spec).unwrap_err().to_string();
+/// assert!(e.starts_with("at ground_basis (line 1, column "), "{e}");
+/// assert!(e.ends_with("more elements than the 3 this array holds"), "{e}");
+/// ```
+pub(super) fn fixed_length(path: &str) -> Option<usize> {
+    let schema = super::json_schema();
+    let defs = schema.get("$defs");
+    // The node and its alternatives (an optional value is `anyOf` a type and null), each with
+    // its `$ref` followed.
+    let choices = |n: &serde_json::Value| -> Vec<serde_json::Value> {
+        let mut out = Vec::new();
+        let mut todo = vec![n.clone()];
+        while let Some(n) = todo.pop() {
+            if out.len() + todo.len() > 64 {
+                break;
+            }
+            match n.get("$ref").and_then(|r| r.as_str()) {
+                Some(r) => todo.extend(
+                    (r.strip_prefix("#/$defs/"))
+                        .and_then(|name| defs?.get(name))
+                        .cloned(),
+                ),
+                None => {
+                    for key in ["anyOf", "oneOf", "allOf"] {
+                        if let Some(alts) = n.get(key).and_then(|a| a.as_array()) {
+                            todo.extend(alts.iter().cloned());
+                        }
+                    }
+                    out.push(n);
+                }
+            }
+        }
+        out
+    };
+    let mut nodes = choices(&schema);
+    for seg in segments(path)? {
+        nodes = nodes
+            .iter()
+            .filter_map(|n| match &seg {
+                Seg::Key(k) => n
+                    .get("properties")
+                    .and_then(|p| p.get(k))
+                    .or_else(|| n.get("additionalProperties").filter(|a| a.is_object())),
+                Seg::Index(_) => n.get("items").filter(|i| i.is_object()),
+            })
+            .flat_map(choices)
+            .collect();
+    }
+    nodes.iter().find_map(|n| {
+        let max = n.get("maxItems")?.as_u64()?;
+        (n.get("minItems")?.as_u64()? == max).then_some(max as usize)
+    })
+}

@@ -4,6 +4,7 @@ mod closures;
 mod dynamics;
 mod hypotheses;
 mod locate;
+mod scenarios;
 mod texts;
 mod validate;
 /// The wire types, also at [`crate::wire`] (the spec's data, used by every layer).
@@ -150,6 +151,19 @@ pub fn parse_spec(text: &str) -> Result<SpecFile, SpecError> {
     let spec: SpecFile = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
+        // An array longer than its fixed length (a 3-vector given 4 names) is a syntax error
+        // of serde_json's, « trailing characters », inside the document: its path says where.
+        if inner.is_syntax()
+            && inner.to_string().starts_with("trailing characters")
+            && let Some(n) = locate::fixed_length(&path)
+        {
+            return SpecError::Json {
+                path,
+                line: inner.line(),
+                column: inner.column(),
+                message: format!("more elements than the {n} this array holds"),
+            };
+        }
         // A syntax error has no path (`?`); the line and column say where.
         let path = if inner.is_syntax() || inner.is_eof() || path == "?" {
             String::new()

@@ -168,6 +168,7 @@ fn build_with(
             crate::derivation::resolve(&m, &parsed).map_err(|e| at(&path, e.to_string()))?;
         }
     }
+    super::scenarios::check(&m)?;
     Ok(m)
 }
 

@@ -337,10 +337,12 @@ fn reader_one(derived: &Value) -> Expr {
 
 fn parse_shaped(
     reader: &mut Reader,
+    q: &Quantity,
     derived: &Value,
     text: &str,
 ) -> Result<Vec<(Expr, Expr)>, VerifyError> {
     let n = derived.fractions().len();
+    let m = reader.m;
     // A vector of the torsor or the vector itself, in the quantity's basis.
     let one = || reader_one(derived);
     let vector = |reader: &mut Reader, t: &str, b| -> Result<Vec<(Expr, Expr)>, VerifyError> {
@@ -353,14 +355,31 @@ fn parse_shaped(
                 "expected 3 components, got {}",
                 list.len()
             ))),
-            None => Ok(reader
-                .read_vector(t.trim(), b)?
-                .into_iter()
-                .map(|e| (e, one()))
-                .collect()),
+            None => match reader.read_vector(t.trim(), b) {
+                Ok(v) => Ok(v.into_iter().map(|e| (e, one())).collect()),
+                // A scalar where a vector is expected: no basis vector in the text.
+                Err(_)
+                    if !crate::expr::bare_names(t)
+                        .iter()
+                        .any(|n| m.frames.basis_vector(n).is_some()) =>
+                {
+                    Err(VerifyError::Shape(format!(
+                        "`{q}` is a vector: give [x, y, z], its components in B{}, or a sum over \
+                         the basis vectors (a*x1 + b*y2), not the scalar `{}`",
+                        m.frame_name(b),
+                        crate::excerpt::excerpt(t.trim())
+                    )))
+                }
+                Err(e) => Err(e),
+            },
         }
     };
     let given: Vec<(Expr, Expr)> = match derived {
+        Value::Scalar(_) | Value::Quotient(_) if split_list(text).is_some() => {
+            return Err(VerifyError::Shape(format!(
+                "`{q}` is a scalar: give one expression, not a list [x, y, z]"
+            )));
+        }
         Value::Scalar(_) | Value::Quotient(_) => vec![reader.read_fraction(text.trim())?],
         Value::Vector { basis, .. } => vector(reader, text, *basis)?,
         Value::Torsor { basis, .. } => {
@@ -480,7 +499,7 @@ pub fn verify(
     let mut reader = Reader::new(m, h);
     // An action of the bilan holds its links' unknowns as declared: so does the text.
     reader.keep_unknowns = q.kind.action().is_some();
-    let given = parse_shaped(&mut reader, &derived, text)?;
+    let given = parse_shaped(&mut reader, &q, &derived, text)?;
     // n/d − N/D, multiplied by d D ≠ 0: n D − d N.
     let difference = given
         .iter()

@@ -6,6 +6,7 @@ use std::process::{Command, Output};
 
 mod corpus;
 mod hostile;
+mod messages;
 
 fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_torseur"))

@@ -23,6 +23,7 @@ mod latex_safe;
 mod layers;
 mod library;
 mod links;
+mod messages;
 mod parity;
 mod parity_sections;
 mod pfd;

@@ -40,6 +40,9 @@ const MAX_INPUT: usize = 16 << 20;
 const MAX_DEPTH: usize = 128;
 /// Largest power exponent, in absolute value.
 const MAX_POWER: i32 = 64;
+/// Most digits a number literal may have, the exact side's bound (its parser reads a literal
+/// in a time quadratic in its length).
+const MAX_NUMBER_DIGITS: usize = 100;
 
 /// A parsed expression whose names are resolved to indices of the model.
 #[derive(Debug, Clone, PartialEq)]
@@ -327,6 +330,12 @@ impl Parser<'_> {
                 self.pos += 1;
             }
             let text = std::str::from_utf8(&self.s[start..self.pos]).unwrap_or("");
+            let digits = text.bytes().filter(u8::is_ascii_digit).count();
+            if digits > MAX_NUMBER_DIGITS {
+                return Err(format!(
+                    "a number of {digits} digits: a number has at most {MAX_NUMBER_DIGITS}"
+                ));
+            }
             let v: f64 = text
                 .parse()
                 .map_err(|_| format!("`{text}` is not a number"))?;

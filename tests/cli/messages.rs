@@ -1,0 +1,126 @@
+//! Messages that keep the contract, seen from the terminal (issue 32, item 6): one line of
+//! torseur's, the JSON path or the argument named, nothing printed by symbolica but its licence
+//! notice, exit 2. Expected messages written by hand.
+
+use super::{run, spec, stderr, stdout, tmp};
+use std::path::PathBuf;
+
+/// The regulator's spec changed by `edit`, in a temporary directory.
+fn edited(edit: impl Fn(&mut serde_json::Value)) -> (tempfile::TempDir, PathBuf) {
+    let d = tmp();
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(spec()).unwrap()).unwrap();
+    edit(&mut v);
+    let p = d.path().join("spec.json");
+    std::fs::write(&p, v.to_string()).unwrap();
+    (d, p)
+}
+
+/// The error line of a run that exits 2, after checking that nothing else of torseur's or
+/// symbolica's (a log line, colours, a panic) reached stderr or stdout.
+fn refused(o: &std::process::Output) -> String {
+    let e = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(stdout(o).is_empty(), "{}", stdout(o));
+    for bad in ["WARN", "\x1b[", "symbolica::", "panicked"] {
+        assert!(!e.contains(bad), "`{bad}` on stderr: {e}");
+    }
+    let lines: Vec<&str> = e.lines().filter(|l| l.starts_with("torseur:")).collect();
+    assert_eq!(lines.len(), 1, "{e}");
+    lines[0].to_string()
+}
+
+#[test]
+fn a_division_by_zero_in_a_spec_prints_no_log_line_of_symbolica() {
+    let (_d, p) = edited(|v| v["points"][2]["position"] = "d1/(L1 - L1)*z0 + L1*y1".into());
+    let line = refused(&run(&["derive", p.to_str().unwrap(), "-q", "Omega(1/0)"]));
+    assert!(
+        line.starts_with("torseur: error: at points[2].position (line "),
+        "{line}"
+    );
+    assert!(
+        line.ends_with("`d1/(L1 - L1)*z0 + L1*y1`: division by zero: a divisor is equal to 0"),
+        "{line}"
+    );
+}
+
+#[test]
+fn a_division_by_zero_in_a_typed_result_prints_no_log_line_of_symbolica() {
+    let line = refused(&run(&[
+        "verify",
+        spec().to_str().unwrap(),
+        "-q",
+        "Omega(2/0).x2",
+        "-e",
+        "dot(theta2)/(L1 - L1)",
+    ]));
+    assert_eq!(
+        line,
+        "torseur: error: `dot(theta2)/(L1 - L1)`: division by zero: a divisor is equal to 0"
+    );
+}
+
+#[test]
+fn a_list_given_for_a_scalar_quantity_says_it_is_a_scalar() {
+    let line = refused(&run(&[
+        "verify",
+        spec().to_str().unwrap(),
+        "-q",
+        "Omega(2/0).x2",
+        "-e",
+        "[1,2,3]",
+    ]));
+    assert_eq!(
+        line,
+        "torseur: error: `Omega(2/0).x2` is a scalar: give one expression, not a list [x, y, z]"
+    );
+}
+
+#[test]
+fn eval_refuses_a_result_that_overflows() {
+    let d = tmp();
+    let at = d.path().join("values.json");
+    std::fs::write(
+        &at,
+        r#"{"parameters": {"L1": 1e300, "L2": 1, "d1": 1, "h1": 1},
+            "coordinates": {"theta1": [0, 1e300, 0], "theta2": [0, 1, 0]}}"#,
+    )
+    .unwrap();
+    let line = refused(&run(&[
+        "eval",
+        spec().to_str().unwrap(),
+        "--at",
+        at.to_str().unwrap(),
+        "-q",
+        "V(G2,2/0) in B2",
+    ]));
+    assert_eq!(
+        line,
+        "torseur: error: values: `V(G2,2/0) in B2` is not a finite number at these values (a \
+         result overflows the floating-point range, or is undefined there)"
+    );
+}
+
+#[test]
+fn simulate_refuses_a_rate_law_that_divides_by_zero_at_its_start_naming_its_path() {
+    let (d, p) = edited(|v| v["scenarios"][0]["imposed"][0]["rate"][0]["value"] = "1/t".into());
+    let csv = d.path().join("run.csv");
+    let o = run(&[
+        "simulate",
+        p.to_str().unwrap(),
+        "--scenario",
+        "sans_frottement",
+        "-o",
+        csv.to_str().unwrap(),
+    ]);
+    let line = refused(&o);
+    assert!(
+        line.starts_with("torseur: error: at scenarios[0].imposed[0].rate[0].value (line "),
+        "{line}"
+    );
+    assert!(
+        line.ends_with("the rate at t = 0 s, where this piece starts: division by zero"),
+        "{line}"
+    );
+    assert!(!csv.exists());
+}
