@@ -11,7 +11,6 @@ mod validate;
 pub use crate::wire;
 
 pub use locate::locate;
-pub(crate) use texts::free_texts;
 pub use validate::build;
 
 use crate::excerpt::{bounded, excerpt};
