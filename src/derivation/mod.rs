@@ -28,7 +28,7 @@ pub use value::Value;
 /// assert_eq!(e.to_string(), "V(Q,2/0): unknown point `Q`");
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{quantity}: {reason}")]
+#[error("{}", message(.quantity, .reason))]
 pub struct ResolveError {
     /// The quantity as written.
     pub quantity: String,
@@ -53,6 +53,19 @@ pub enum Unresolved {
     /// Anything else, said in a sentence.
     #[error("{0}")]
     Other(String),
+    /// The derivation outgrew the budget of terms ([`crate::expr::ExprError::Budget`], whose
+    /// `what` names the quantity: see [`crate::expr::budget`]).
+    #[error(transparent)]
+    Budget(crate::expr::ExprError),
+}
+
+/// `quantity: reason`, or for a derivation that outgrew the budget, the budget's sentence,
+/// which names the quantity itself.
+fn message(quantity: &str, reason: &Unresolved) -> String {
+    match reason {
+        Unresolved::Budget(e) => e.to_string(),
+        reason => format!("{quantity}: {reason}"),
+    }
 }
 
 impl ResolveError {
@@ -285,12 +298,45 @@ enum Found {
 /// let expected = [reg.parse("dot(theta2)").unwrap(), reg.zero(), reg.parse("dot(theta1)").unwrap()];
 /// match d.value { torseur::derivation::Value::Vector { components, .. } => assert_eq!(components, expected), _ => unreachable!() }
 /// ```
+///
+/// The derivation runs under the budget of terms ([`crate::expr::budget`]): one that outgrows
+/// it stops with [`Unresolved::Budget`].
 pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
+    within_budget(q, || derive_unbounded(m, q))
+}
+
+/// Runs `f`, the derivation of `q`, under the budget of terms: an expression that outgrows it
+/// stops `f` with an error that names `q`.
+fn within_budget<T>(
+    q: &Quantity,
+    f: impl FnOnce() -> Result<T, ResolveError>,
+) -> Result<T, ResolveError> {
+    match crate::expr::budget::bounded(f) {
+        Ok(r) => r,
+        Err(crate::expr::ExprError::Budget {
+            detail,
+            terms,
+            limit,
+            ..
+        }) => Err(ResolveError::new(
+            q,
+            Unresolved::Budget(crate::expr::ExprError::Budget {
+                what: format!("the derivation of {q}"),
+                detail,
+                terms,
+                limit,
+            }),
+        )),
+        Err(e) => Err(ResolveError::new(q, Unresolved::Budget(e))),
+    }
+}
+
+fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
     if q.linear {
         return linearised(
             m,
             q,
-            derive(
+            derive_unbounded(
                 m,
                 &Quantity {
                     linear: false,
@@ -633,6 +679,7 @@ pub fn derive_values(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, 
 }
 
 /// [`derive_values`], calling `done(k, q)` after the k-th quantity (1-based), for progress.
+/// Each quantity is derived under the budget of terms, as by [`derive()`].
 pub fn derive_values_with(
     m: &Mechanism,
     qs: &[Quantity],
@@ -642,7 +689,7 @@ pub fn derive_values_with(
     cache.expect(qs);
     let mut out = Vec::with_capacity(qs.len());
     for (k, q) in qs.iter().enumerate() {
-        out.push(derive_value(m, q, &mut cache)?);
+        out.push(within_budget(q, || derive_value(m, q, &mut cache))?);
         done(k + 1, q);
     }
     Ok(out)

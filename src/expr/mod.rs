@@ -8,6 +8,7 @@
 //! expressions are equal as functions iff their canonical forms are identical, so the zero
 //! test is exact and costs nothing.
 
+pub mod budget;
 mod builder;
 mod compile;
 mod eval;
@@ -162,6 +163,26 @@ pub enum ExprError {
     /// Another thread is using symbolica (restricted mode: one thread at a time).
     #[error("{0}")]
     Thread(String),
+    /// An expression outgrew the budget of terms (see [`budget`]).
+    #[error(
+        "{what} grew past {} terms ({detail}); --max-terms raises this budget if memory \
+         allows",
+        budget::grouped(.limit)
+    )]
+    Budget {
+        /// What grew: `an expression`, or the derivation it belongs to
+        /// (`the derivation of eom(theta12)`).
+        what: String,
+        /// How: `its expressions held 5,000,012 terms at once, the last one built 73,692`,
+        /// `a product of 68,140 by 90 terms, would form 6,132,600 terms before like terms
+        /// combine`.
+        detail: String,
+        /// The terms held, or for a product refused before it was formed, the terms it would
+        /// form.
+        terms: u128,
+        /// The budget ([`budget::max_terms`]).
+        limit: usize,
+    },
 }
 
 /// How a coordinate enters expressions.
@@ -332,10 +353,23 @@ impl fmt::Debug for Compiled {
 ///
 /// Arithmetic keeps the canonical form: after every product, sin²qᵢ is replaced by
 /// 1 − cos²qᵢ. Equality is structural equality of canonical forms, hence exact.
-#[derive(Clone)]
 pub struct Expr {
     p: Poly,
     reg: Rc<Registry>,
+}
+
+impl Clone for Expr {
+    fn clone(&self) -> Expr {
+        self.with(self.p.clone())
+    }
+}
+
+impl Drop for Expr {
+    /// Its terms are no longer held (see [`budget`]).
+    #[inline]
+    fn drop(&mut self) {
+        budget::freed(self.p.nterms());
+    }
 }
 
 impl fmt::Debug for Expr {
@@ -454,7 +488,16 @@ impl Expr {
         self.p.degree(i.0) > 0
     }
 
+    /// The polynomial, whose terms this expression no longer holds (see [`budget`]).
+    fn into_poly(mut self) -> Poly {
+        let zero = self.p.zero();
+        let p = std::mem::replace(&mut self.p, zero);
+        budget::freed(p.nterms());
+        p
+    }
+
     fn with(&self, p: Poly) -> Expr {
+        budget::built(&p);
         Expr {
             p,
             reg: self.reg.clone(),
@@ -480,7 +523,7 @@ impl Expr {
                 continue;
             }
             let q = CoordId(i);
-            let qdot = reg.rate(q, 1).p;
+            let qdot = reg.rate(q, 1).into_poly();
             if let Some((ci, si)) = c.trig {
                 if self.p.degree(ci) > 0 {
                     let d = self.p.derivative(ci);
@@ -505,7 +548,7 @@ impl Expr {
             if let Some(r) = c.rates {
                 for k in 0..2 {
                     if self.p.degree(r[k]) > 0 {
-                        let next = reg.var(r[k + 1]).p;
+                        let next = reg.var(r[k + 1]).into_poly();
                         acc = &acc + &(&self.p.derivative(r[k]) * &next);
                     }
                 }
@@ -648,6 +691,9 @@ macro_rules! binop {
             type Output = Expr;
             fn $method(self, rhs: &Expr) -> Expr {
                 debug_assert!(Rc::ptr_eq(&self.reg, &rhs.reg), "expressions of two registries");
+                if $reduce {
+                    budget::product([(self.p.nterms(), rhs.p.nterms())]);
+                }
                 let p = &self.p $op &rhs.p;
                 let p = if $reduce { Expr::reduce(p, &self.reg) } else { p };
                 self.with(p)

@@ -121,6 +121,7 @@ impl Expr {
     /// The reduction is the normal form modulo sin²q + cos²q − 1 and p·p⁻¹ − 1, a linear map,
     /// so reducing the sum equals summing the reduced products, at a fraction of the cost.
     pub(crate) fn sum_of_products(reg: &Rc<Registry>, terms: &[(&Expr, &Expr, bool)]) -> Expr {
+        super::budget::product(terms.iter().map(|(a, b, _)| (a.nterms(), b.nterms())));
         let raw: Vec<Poly> = terms
             .iter()
             .filter(|(a, b, _)| !a.is_zero() && !b.is_zero())
@@ -145,7 +146,10 @@ impl Expr {
     /// assert!(Expr::sum(&reg, Vec::new()).is_zero());
     /// ```
     pub fn sum(reg: &Rc<Registry>, terms: impl IntoIterator<Item = Expr>) -> Expr {
-        reg.wrap(balanced_sum(terms.into_iter().map(|e| e.p).collect(), reg))
+        reg.wrap(balanced_sum(
+            terms.into_iter().map(Expr::into_poly).collect(),
+            reg,
+        ))
     }
 }
 

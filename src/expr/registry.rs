@@ -426,7 +426,7 @@ impl Registry {
                     ),
                 });
             }
-            reg.aliases.push((name.clone(), e.p));
+            reg.aliases.push((name.clone(), e.into_poly()));
         }
         if coords.iter().any(|c| c.2.is_some()) {
             let base = snapshot(&reg)?;
@@ -455,7 +455,7 @@ impl Registry {
                                 reason,
                             }
                         })?;
-                    reg.coords[i].imposed_rate = Some(e.p);
+                    reg.coords[i].imposed_rate = Some(e.into_poly());
                     reg.coords[i].driven = driven.is_some();
                     // A rate solved from a loop closure f(q) = 0 is holonomic, whatever its
                     // coefficients hold.
@@ -615,6 +615,7 @@ impl Registry {
     }
 
     pub(super) fn wrap(self: &Rc<Self>, p: Poly) -> Expr {
+        super::budget::built(&p);
         Expr {
             p,
             reg: self.clone(),

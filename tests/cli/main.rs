@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+mod budget;
 mod corpus;
 mod hostile;
 mod messages;

@@ -6,6 +6,7 @@
 
 mod actions;
 mod bilan;
+mod budget;
 mod chain;
 mod check;
 mod closures;
