@@ -75,3 +75,31 @@ fn a_blow_up_ends_within_seconds_with_exit_2_naming_what_grew() {
     }
     assert!(!key.exists() && !json.exists(), "nothing is written");
 }
+
+/// `--max-terms` moves the budget both ways and never changes a result: the regulator's
+/// derivation holds a few hundred terms at once, so a budget of 50 stops it (exit 2, the
+/// figure named), and any budget it fits in prints the default's output byte for byte.
+#[test]
+fn max_terms_moves_the_budget_and_never_the_result() {
+    let spec = "derivations/regulateur_centrifuge.json";
+    let default = run(&["derive", spec]);
+    assert_eq!(default.status.code(), Some(0), "{}", stderr(&default));
+    let small = run(&["--max-terms", "50", "derive", spec]);
+    assert_eq!(small.status.code(), Some(2), "{}", stderr(&small));
+    assert!(
+        stderr(&small).contains("grew past 50 terms ("),
+        "{}",
+        stderr(&small)
+    );
+    assert_eq!(stdout(&small), "");
+    for budget in ["100000", "18446744073709551615"] {
+        let o = run(&["derive", spec, "--max-terms", budget]);
+        assert_eq!(o.status.code(), Some(0), "{budget}: {}", stderr(&o));
+        assert_eq!(stdout(&o), stdout(&default), "--max-terms {budget}");
+    }
+    for bad in ["0", "-3", "1e6", "many", ""] {
+        let o = run(&[&format!("--max-terms={bad}"), "derive", spec]);
+        assert_eq!(o.status.code(), Some(2), "--max-terms {bad:?}");
+        assert!(stderr(&o).contains("--max-terms"), "{bad:?}: {}", stderr(&o));
+    }
+}

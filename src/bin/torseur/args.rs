@@ -15,6 +15,12 @@ pub struct Cli {
     /// nothing is written then.
     #[arg(long, global = true, value_name = "SECONDS")]
     pub timeout: Option<f64>,
+    /// The derivation's budget of terms: the most its expressions may hold at once, and the
+    /// most a product may form before like terms combine; past it the run stops (exit 2)
+    /// naming what grew. A derivation that fits gives the same result under any budget.
+    #[arg(long, global = true, value_name = "N", default_value_t = torseur::expr::budget::DEFAULT_MAX_TERMS as u64,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_terms: u64,
     #[command(subcommand)]
     pub command: Command,
 }

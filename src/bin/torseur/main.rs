@@ -465,6 +465,7 @@ type Job = Box<dyn FnOnce(&mut File) -> Result<(), Failure>>;
 
 fn run(cli: Cli, mut out: File) -> Result<(), Failure> {
     watch_signals();
+    torseur::expr::budget::set_max_terms(usize::try_from(cli.max_terms).unwrap_or(usize::MAX));
     if let Some(limit) = cli.timeout {
         watchdog(limit)?;
     }
@@ -555,6 +556,14 @@ fn prepare_derive(a: DeriveArgs) -> Result<Job, Failure> {
             eprintln!(
                 "terms {total:>9}  total; {:.3} s",
                 start.elapsed().as_secs_f64()
+            );
+            let p = torseur::expr::budget::peaks();
+            eprintln!(
+                "budget: at most {} terms held at once, {} in one expression, {} formed by one product (--max-terms {})",
+                p.held,
+                p.expression,
+                p.product,
+                torseur::expr::budget::max_terms()
             );
         }
         Ok(())
