@@ -1,7 +1,9 @@
 //! The layers of ARCHITECTURE.md, checked against the code: every `crate::` edge between the
 //! top-level modules of `src/` is in the table and points up it, and every edge of the table
 //! exists; the same for the files of the float backend (`src/numeric/`) and their `super::`
-//! edges, against the second table.
+//! edges, against the second table. And the map itself: every path ARCHITECTURE.md and
+//! docs/design-notes.md name exists, and every folder of `src/` and every top-level module
+//! file is named in ARCHITECTURE.md.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -191,5 +193,172 @@ fn the_float_backend_files_form_layers_too() {
         "src/numeric/",
         &numeric_edges_in_code(),
         &table("## Layers of the float backend"),
+    );
+}
+
+/// The crate's root directory.
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Where a path the documents name may start: the crate's folders and top-level files.
+const ROOTS: &[&str] = &[
+    "src/",
+    "tests/",
+    "docs/",
+    "derivations/",
+    "latex/",
+    "benches/",
+    "examples/",
+    "fuzz/",
+    "scripts/",
+    "assets/",
+    ".ci/",
+    ".cargo/",
+    "README.md",
+    "ARCHITECTURE.md",
+    "Cargo.toml",
+    "Cargo.lock",
+    "spec.schema.json",
+    "rustfmt.toml",
+];
+
+/// The paths a text names: each run of path characters (letters, digits, `_ - . / *`) that
+/// starts at one of [`ROOTS`] or ends in `.rs` (so that a bare `mod.rs` is caught too), a
+/// sentence's final period left out. Backticks, brackets and a link's parentheses all end a
+/// run, so `` `src/pfd.rs` ``, `[x](docs/history.md)` and a path in a sketch are all found.
+fn paths_named(text: &str) -> Vec<String> {
+    let is_path_char = |c: char| c.is_ascii_alphanumeric() || "_-./*".contains(c);
+    text.split(|c: char| !is_path_char(c))
+        .map(|t| t.trim_end_matches('.'))
+        .filter(|t| ROOTS.iter().any(|r| t.starts_with(r)) || t.ends_with(".rs"))
+        .map(str::to_string)
+        .collect()
+}
+
+/// Whether `path` (relative to the crate) exists; a `*` in its last part matches any run of
+/// characters of a name in its folder, and at least one name must match.
+fn exists(path: &str) -> bool {
+    let (dir, name) = path.rsplit_once('/').unwrap_or(("", path));
+    if dir.contains('*') {
+        return false;
+    }
+    match name.split_once('*') {
+        None => root().join(path).exists(),
+        Some((head, tail)) => std::fs::read_dir(root().join(dir)).is_ok_and(|entries| {
+            entries.filter_map(|e| e.ok()).any(|e| {
+                let n = e.file_name().to_string_lossy().into_owned();
+                n.len() >= head.len() + tail.len() && n.starts_with(head) && n.ends_with(tail)
+            })
+        }),
+    }
+}
+
+/// The folders under `src/` (at every depth, `src/expr/present/` included) and the top-level
+/// module files (`src/pfd.rs`), as the map writes them: `src/expr/`, `src/pfd.rs`.
+fn source_tree() -> (Vec<String>, Vec<String>) {
+    fn folders(dir: &Path, rel: &str, out: &mut Vec<String>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                let name = p.file_name().unwrap().to_str().unwrap();
+                let rel = format!("{rel}{name}/");
+                folders(&p, &rel, out);
+                out.push(rel);
+            }
+        }
+    }
+    let src = root().join("src");
+    let mut dirs = Vec::new();
+    folders(&src, "src/", &mut dirs);
+    let mut files: Vec<String> = std::fs::read_dir(&src)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "rs"))
+        .map(|p| format!("src/{}", p.file_name().unwrap().to_str().unwrap()))
+        .collect();
+    dirs.sort();
+    files.sort();
+    (dirs, files)
+}
+
+/// The paths of the map and of the design notes that do not exist, each with its document.
+fn missing_paths(docs: &[&str]) -> (usize, Vec<String>) {
+    let mut count = 0;
+    let mut missing = Vec::new();
+    for doc in docs {
+        let text = std::fs::read_to_string(root().join(doc))
+            .unwrap_or_else(|e| panic!("{doc} cannot be read: {e}"));
+        for p in paths_named(&text) {
+            count += 1;
+            if !exists(&p) {
+                missing.push(format!("{doc} names `{p}`, which does not exist"));
+            }
+        }
+    }
+    missing.sort();
+    missing.dedup();
+    (count, missing)
+}
+
+#[test]
+fn the_path_reader_finds_what_a_map_names() {
+    // Written by hand: what a reader of this paragraph sees as paths.
+    let text = "The parser (`src/spec/mod.rs`) feeds [the notes](docs/design-notes.md); \
+                see src/expr/ and `mod.rs`. The specs are derivations/*.json, the CI .ci/run. \
+                Ω(i/j) and V(P, 2/0) are not paths, nor is `crate::expr` or 1/2.";
+    assert_eq!(
+        paths_named(text),
+        [
+            "src/spec/mod.rs",
+            "docs/design-notes.md",
+            "src/expr/",
+            "mod.rs",
+            "derivations/*.json",
+            ".ci/run",
+        ]
+    );
+    assert!(exists("src/spec/mod.rs") && exists("src/expr/") && exists("derivations/*.json"));
+    assert!(!exists("mod.rs") && !exists("src/verify.rs") && !exists("derivations/*.tex"));
+}
+
+#[test]
+fn every_path_the_map_and_the_design_notes_name_exists() {
+    let (count, missing) = missing_paths(&["ARCHITECTURE.md", "docs/design-notes.md"]);
+    // The map names every folder and top-level file of src/ and the files a change touches:
+    // far more than this, so an extractor that finds nothing cannot pass.
+    assert!(
+        count >= 100,
+        "only {count} paths found in ARCHITECTURE.md and docs/design-notes.md"
+    );
+    assert!(
+        missing.is_empty(),
+        "paths named in the documents do not exist (write a path from the crate's root, \
+         e.g. `src/latex/text.rs`; fix or remove it):\n{}",
+        missing.join("\n")
+    );
+}
+
+#[test]
+fn every_folder_and_top_level_module_of_src_is_named_in_the_map() {
+    let map = std::fs::read_to_string(root().join("ARCHITECTURE.md")).unwrap();
+    let named: BTreeSet<String> = paths_named(&map)
+        .into_iter()
+        .map(|p| p.trim_end_matches('/').to_string())
+        .collect();
+    let (dirs, files) = source_tree();
+    assert!(
+        dirs.len() >= 15 && files.len() >= 10,
+        "src/ read wrong: {} folders, {} top-level files",
+        dirs.len(),
+        files.len()
+    );
+    let unnamed: Vec<&String> = (dirs.iter().chain(&files))
+        .filter(|p| !named.contains(p.trim_end_matches('/')))
+        .collect();
+    assert!(
+        unnamed.is_empty(),
+        "ARCHITECTURE.md does not name {unnamed:?}: give each a short paragraph (what it owns, \
+         what it must not do) and, for a module, its row in the layers table"
     );
 }
