@@ -17,6 +17,7 @@ mod flat;
 mod fourier;
 mod fraction;
 mod guard;
+mod lexical;
 mod names;
 mod number_text;
 mod parse;

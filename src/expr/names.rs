@@ -1,6 +1,6 @@
 //! Lexical scans of an expression's names, before (or without) parsing it.
 
-use super::parse::FUNCTIONS;
+use super::lexical::FUNCTIONS;
 
 /// The names an expression writes as themselves, outside the arguments of sin, cos, dot and
 /// ddot (`R*theta*x1 + L*sin(theta)*y1` gives `R`, `theta`, `x1`, `L`, `y1`), in order, each

@@ -100,6 +100,10 @@ fn max_terms_moves_the_budget_and_never_the_result() {
     for bad in ["0", "-3", "1e6", "many", ""] {
         let o = run(&[&format!("--max-terms={bad}"), "derive", spec]);
         assert_eq!(o.status.code(), Some(2), "--max-terms {bad:?}");
-        assert!(stderr(&o).contains("--max-terms"), "{bad:?}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("--max-terms"),
+            "{bad:?}: {}",
+            stderr(&o)
+        );
     }
 }
