@@ -3,7 +3,7 @@
 //! the expected words, no panic, no abort, no output of symbolica's own besides its notice,
 //! and nothing written beside the inputs.
 
-use super::{bin, stderr, stdout, tmp};
+use super::{bin, files_in, stderr, stdout, tmp};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -78,15 +78,6 @@ fn spec_path(name: &str) -> std::path::PathBuf {
         "regulateur" => root.join("derivations/regulateur_centrifuge.json"),
         other => panic!("unknown spec {other}"),
     }
-}
-
-fn files_in(d: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(d)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
 }
 
 /// Runs one case; `Err` says how it failed.

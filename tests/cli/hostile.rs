@@ -3,7 +3,7 @@
 //! PDF. Each case states its exit code and the shape of its message. Nothing here writes to a
 //! real device: the device, FIFO and links are made inside a temporary directory.
 
-use super::{bin, run, spec, stderr, stdout, tmp};
+use super::{bin, files_in, run, spec, stderr, stdout, tmp};
 use std::os::unix::fs::{FileTypeExt, MetadataExt};
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -27,15 +27,6 @@ fn exit2(o: &Output, shape: &str) {
     assert!(line.contains(shape), "{line}");
     assert!(line.len() < 400, "message too long: {line}");
     assert!(!e.contains("panicked"), "{e}");
-}
-
-fn files_in(d: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(d)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
 }
 
 // ---- outputs -----------------------------------------------------------------------------

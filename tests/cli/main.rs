@@ -33,6 +33,16 @@ fn tmp() -> tempfile::TempDir {
     tempfile::tempdir().unwrap()
 }
 
+/// The names in a directory, sorted: what a run left there.
+fn files_in(d: &std::path::Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(d)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
 #[test]
 fn derive_prints_only_results_on_stdout() {
     let o = run(&["derive", spec().to_str().unwrap(), "-q", "delta(O2,2/0).x2"]);

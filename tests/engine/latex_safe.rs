@@ -28,7 +28,7 @@ const TEXT_WORDS: &[&str] = &[
 const TEXT_SYMBOLS: &str = "{}$&#%_";
 
 /// Math words that are one symbol: a script may take them as its argument.
-const MATH_SYMBOLS: &[&str] = &[
+pub const MATH_SYMBOLS: &[&str] = &[
     "alpha",
     "beta",
     "gamma",
@@ -83,10 +83,10 @@ const MATH_SYMBOLS: &[&str] = &[
 ];
 
 /// Math words without argument that a script must not take bare.
-const MATH_OTHERS: &[&str] = &["sin", "cos", "tan", "quad", "ldots"];
+pub const MATH_OTHERS: &[&str] = &["sin", "cos", "tan", "quad", "ldots"];
 
 /// Math words with their number of arguments.
-const MATH_MACROS: &[(&str, usize)] = &[
+pub const MATH_MACROS: &[(&str, usize)] = &[
     ("vec", 1),
     ("overrightarrow", 1),
     ("mathcal", 1),
@@ -97,7 +97,7 @@ const MATH_MACROS: &[(&str, usize)] = &[
 ];
 
 /// Characters a formula holds as they are.
-const MATH_CHARS: &str = "+-=()[],.;:/|<>!*";
+pub const MATH_CHARS: &str = "+-=()[],.;:/|<>!*";
 
 #[derive(Debug, Clone, PartialEq)]
 enum Tok {
