@@ -41,6 +41,10 @@
 //! (inputs read with a bound) and [`excerpt`] (bounded quotes in messages). Output files
 //! (what an output path may name, written once a run has succeeded) are exposed in
 //! [`output`]: [`output::target`], [`output::write_outputs`], [`output::write_atomic`].
+//!
+//! The command line's own dependencies (clap, anyhow, signal-hook, mimalloc) sit behind the
+//! default feature `cli`; a library user leaves them out with
+//! `torseur = { version = "0.1", default-features = false }`: every module above stays.
 #![deny(missing_docs)]
 // Matrix and vector code indexes components as the formulas do (I[i][j], u[k]).
 #![allow(clippy::needless_range_loop)]
