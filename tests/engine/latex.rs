@@ -1,38 +1,11 @@
 //! The answer key is pinned by a committed golden file, and so are `derive`'s text and JSON;
 //! re-approve a reviewed change with `TORSEUR_BLESS=1 cargo test --release --test engine latex`.
 
+use super::golden::golden_in;
 use super::*;
 
 fn golden(name: &str, actual: &str) {
     golden_in("latex", name, actual)
-}
-
-/// Compares `actual` with the committed file `dir/name` (relative to the crate), or writes it
-/// under `TORSEUR_BLESS`.
-pub fn golden_in(dir: &str, name: &str, actual: &str) {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join(dir)
-        .join(name);
-    if std::env::var_os("TORSEUR_BLESS").is_some() {
-        std::fs::write(&path, actual).unwrap();
-        return;
-    }
-    let expected = std::fs::read_to_string(&path)
-        .unwrap_or_else(|_| panic!("{} missing: run with TORSEUR_BLESS=1", path.display()));
-    if expected != actual {
-        let (e, a): (Vec<&str>, Vec<&str>) = (expected.lines().collect(), actual.lines().collect());
-        let first = e
-            .iter()
-            .zip(&a)
-            .position(|(x, y)| x != y)
-            .unwrap_or(e.len().min(a.len()));
-        panic!(
-            "{name} differs from the golden file at line {}:\n- {}\n+ {}\n(re-approve a reviewed change with TORSEUR_BLESS=1)",
-            first + 1,
-            e.get(first).unwrap_or(&"<end>"),
-            a.get(first).unwrap_or(&"<end>")
-        );
-    }
 }
 
 /// Every spec's answer key is pinned (its layout; its signs are proven in `printed`).

@@ -17,6 +17,7 @@ mod figures;
 mod fourier;
 mod free_texts;
 mod friction;
+mod golden;
 mod hypotheses;
 mod kinematics;
 mod latex;
