@@ -279,9 +279,10 @@ impl Quantity {
                 }
                 other => {
                     return Err(err(&format!(
-                        "unknown quantity `{other}` (known: Omega, V, Gamma, I, Rc, sigma, Rd, \
+                        "unknown quantity `{other}` ({}known: Omega, V, Gamma, I, Rc, sigma, Rd, \
                          delta, Ec, eom, R, M, P, Pint, J_eq, {{V(..)}}_A, {{C(..)}}_A, \
-                         {{D(..)}}_A, {{T(..)}}_A, or the name of an unknown)"
+                         {{D(..)}}_A, {{T(..)}}_A, or the name of an unknown)",
+                        crate::expr::function_hint(other)
                     )));
                 }
             }

@@ -31,7 +31,13 @@ pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String
     }
     for c in s.chars() {
         if !(c.is_ascii_alphanumeric() || " \t\n+-*/^()._,[]".contains(c)) {
-            return Err(format!("character `{c}` is not allowed"));
+            let hint = match c {
+                '\'' | '’' | '′' => " (a time derivative is written dot(q), ddot(q))",
+                'π' => " (write pi, inside an angle: sin(theta + pi/2))",
+                'θ' | 'φ' | 'ψ' | 'ω' | 'α' | 'β' => " (names are ASCII: theta, phi, psi…)",
+                _ => "",
+            };
+            return Err(format!("character `{c}` is not allowed{hint}"));
         }
     }
     let mut depth: i32 = 0;
@@ -57,7 +63,8 @@ pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String
         let word = &s[start..end];
         if called && !functions.contains(&word) {
             return Err(format!(
-                "`{word}(...)`: the functions are {}",
+                "`{word}(...)`: {}the functions are {}",
+                function_hint(word),
                 listed(functions)
             ));
         }
@@ -333,4 +340,19 @@ pub(super) fn exact_decimals(s: &str) -> Result<String, String> {
         }
     }
     Ok(out)
+}
+
+/// What to write instead of a function the syntax does not have, when there is an answer:
+/// a time derivative is `dot(q)`, a square root or a tangent is not part of the syntax.
+pub(crate) fn function_hint(word: &str) -> &'static str {
+    match word {
+        "diff" | "d" | "D" | "derivative" | "Derivative" | "deriv" => {
+            "a time derivative is written dot(q) or ddot(q) for a coordinate q; "
+        }
+        "sqrt" | "Sqrt" | "exp" | "log" | "ln" | "tan" | "atan" | "asin" | "acos" => {
+            "a result of the spec syntax is a polynomial in parameters, coordinates, their rates, \
+             and sin and cos of angles; "
+        }
+        _ => "",
+    }
 }

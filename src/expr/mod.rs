@@ -33,6 +33,7 @@ pub use builder::RegistryBuilder;
 pub use flat::FlatEval;
 pub use fourier::Fourier;
 pub use fraction::Fraction;
+pub(crate) use lexical::function_hint;
 pub use names::{bare_names, divisors_in};
 pub use number_text::evaluate_number;
 pub(crate) use present::num_den;

@@ -173,6 +173,9 @@ impl Walker<'_> {
                 if name == TIME {
                     return Err(self.unsupported(TIME_IN_PHASES));
                 }
+                if var.get_symbol() == Symbol::PI || name == "pi" {
+                    return Err(self.unsupported(PI_OUTSIDE_ANGLES));
+                }
                 Err(ExprError::UnknownName {
                     name,
                     input: self.input.to_string(),
@@ -465,6 +468,11 @@ impl Linear {
 }
 
 /// Why a constant angle is refused.
+/// Why `pi` is refused outside an angle, and what to write instead.
+const PI_OUTSIDE_ANGLES: &str = "`pi` is read only inside an angle (sin(theta + pi/2)); \
+                                  elsewhere declare a parameter for the number (e.g. `k`, with \
+                                  the value 3.14159… in the values)";
+
 const NOT_QUARTER_TURNS: &str = "a constant angle written with numbers must be a multiple of \
      pi/2 (the only ones whose cos and sin are exact rationals): declare any other constant \
      angle as a parameter with \"kind\": \"angle\"";

@@ -393,3 +393,29 @@ fn a_scenario_that_imposes_every_motion_runs_with_nothing_to_solve() {
         col("C_m").iter().fold(0.0_f64, |a, x| a.max(x.abs()))
     );
 }
+
+/// What a teacher types from habit is refused with what to write instead (issue 37, messages
+/// that say the fix): a prime or `diff` for a time derivative, `pi` as a factor, `sqrt`.
+#[test]
+fn habits_of_other_tools_are_refused_with_the_fix() {
+    let reg = torseur::expr::Registry::new(&["L".into()], &[]).unwrap();
+    let said = |text: &str| reg.parse(text).unwrap_err().to_string();
+    assert_eq!(
+        said("L*psi'"),
+        "cannot parse `L*psi'`: character `'` is not allowed (a time derivative is written \
+         dot(q), ddot(q))"
+    );
+    assert_eq!(
+        said("diff(psi, t)*L"),
+        "cannot parse `diff(psi, t)*L`: `diff(...)`: a time derivative is written dot(q) or \
+         ddot(q) for a coordinate q; the functions are sin, cos, dot and ddot"
+    );
+    assert!(said("sqrt(L)").contains("`sqrt(...)`: a result of the spec syntax is a polynomial"));
+    assert!(said("2*π*L").contains("character `π` is not allowed (write pi, inside an angle"));
+    let pi = said("2*pi*L");
+    assert!(pi.contains("`pi` is read only inside an angle"), "{pi}");
+    assert!(!pi.contains('𝜋'), "quotes only what was typed: {pi}");
+    // The quantity reader says the same of a derivative written as a function.
+    let e = Quantity::parse("diff(theta1)").unwrap_err().to_string();
+    assert!(e.contains("unknown quantity `diff` (a time derivative is written dot(q)"), "{e}");
+}
