@@ -153,154 +153,17 @@ impl Quantity {
             q.linear = true;
             return Ok(q);
         }
-        // Optional " in B.." suffix.
-        let (body, basis) = match s.rsplit_once(" in ") {
-            Some((b, basis)) => {
-                let basis = basis.trim();
-                let name = basis
-                    .strip_prefix('B')
-                    .ok_or_else(|| err("the basis after `in` is written B<frame>, e.g. B2"))?;
-                check_name(name).map_err(|r| err(&r))?;
-                (b.trim().to_string(), Some(name.to_string()))
-            }
-            None => (s.clone(), None),
-        };
+        let (body, basis) = split_basis(&s).map_err(|r| err(&r))?;
         let body = body.replace(' ', "");
-        // Optional ".x2" projection (only after a closing parenthesis).
-        let (core, projection) = match body.rfind(").") {
-            Some(pos) => {
-                let v = &body[pos + 2..];
-                let mut chars = v.chars();
-                let axis = chars.next().ok_or_else(|| err("empty projection"))?;
-                if !matches!(axis, 'x' | 'y' | 'z') {
-                    return Err(err("a projection is on x<frame>, y<frame> or z<frame>"));
-                }
-                let frame: String = chars.collect();
-                if frame.is_empty() {
-                    return Err(err(&format!(
-                        "a projection names its frame after the axis, as the course writes \
-                         it: .{axis}0 for the ground, .{axis}2 for frame 2, not .{axis}"
-                    )));
-                }
-                check_name(&frame).map_err(|r| err(&r))?;
-                (body[..pos + 1].to_string(), Some((frame, axis)))
-            }
-            None => (body.clone(), None),
-        };
-        let kind = if !core.contains('(') && crate::expr::check_identifier(&core).is_ok() {
-            QuantityKind::Unknown(core.clone())
+        let (core, projection) = split_projection(&body).map_err(|r| err(&r))?;
+        let kind = if !core.contains('(') && crate::expr::check_identifier(core).is_ok() {
+            QuantityKind::Unknown(core.to_string())
         } else if let Some(rest) = core.strip_prefix('{') {
-            // {C(2/0)}_O2, {T(0->1)}_O1
-            let (inner, point) = rest
-                .split_once("}_")
-                .ok_or_else(|| err("a torsor is written {C(S/R)}_A"))?;
-            check_name(point).map_err(|r| err(&r))?;
-            let (letter, args) =
-                call(inner).ok_or_else(|| err("a torsor is written {C(S/R)}_A"))?;
-            let point = point.to_string();
-            if letter == "T" {
-                let action = action(args).map_err(|r| err(&r))?;
-                QuantityKind::ActionTorsor { action, point }
-            } else {
-                let motion = motion(args).map_err(|r| err(&r))?;
-                match letter {
-                    "V" => QuantityKind::KinematicTorsor { motion, point },
-                    "C" => QuantityKind::KineticTorsor { motion, point },
-                    "D" => QuantityKind::DynamicTorsor { motion, point },
-                    _ => return Err(err("torsors are {V(..)}, {C(..)}, {D(..)} and {T(..)}")),
-                }
-            }
+            torsor_kind(rest).map_err(|r| err(&r))?
         } else {
-            let (name, args) = call(&core).ok_or_else(|| err("expected name(arguments)"))?;
-            let two = |args: &str| -> Result<(String, Motion), String> {
-                let (p, m) = args
-                    .split_once(',')
-                    .ok_or_else(|| "expected (point,moving/reference)".to_string())?;
-                check_name(p)?;
-                Ok((p.to_string(), motion(m)?))
-            };
-            match name {
-                "Omega" => QuantityKind::Omega(motion(args).map_err(|r| err(&r))?),
-                "Rc" => QuantityKind::KineticResultant(motion(args).map_err(|r| err(&r))?),
-                "Rd" => QuantityKind::DynamicResultant(motion(args).map_err(|r| err(&r))?),
-                "V" | "Gamma" | "sigma" | "delta" => {
-                    let (point, motion) = two(args).map_err(|r| err(&r))?;
-                    match name {
-                        "V" => QuantityKind::Velocity { point, motion },
-                        "Gamma" => QuantityKind::Acceleration { point, motion },
-                        "sigma" => QuantityKind::KineticMoment { point, motion },
-                        _ => QuantityKind::DynamicMoment { point, motion },
-                    }
-                }
-                "Ec" => QuantityKind::KineticEnergy(motion(args).map_err(|r| err(&r))?),
-                "P" => {
-                    let (a, reference) = args.rsplit_once('/').ok_or_else(|| {
-                        err("a power is written P(from->on/reference), e.g. P(ext->E/0)")
-                    })?;
-                    check_name(reference).map_err(|r| err(&r))?;
-                    QuantityKind::Power {
-                        action: action(a).map_err(|r| err(&r))?,
-                        reference: reference.to_string(),
-                    }
-                }
-                "Pint" => {
-                    check_name(args).map_err(|r| err(&r))?;
-                    QuantityKind::InternalPower(args.to_string())
-                }
-                "J_eq" => {
-                    crate::expr::check_identifier(args).map_err(|r| err(&r))?;
-                    QuantityKind::EquivalentInertia(args.to_string())
-                }
-                "R" => QuantityKind::ActionResultant(action(args).map_err(|r| err(&r))?),
-                "M" => {
-                    let (p, a) = args
-                        .split_once(',')
-                        .ok_or_else(|| err("a moment of an action is written M(A,from->on)"))?;
-                    check_name(p).map_err(|r| err(&r))?;
-                    QuantityKind::ActionMoment {
-                        point: p.to_string(),
-                        action: action(a).map_err(|r| err(&r))?,
-                    }
-                }
-                "eom" => {
-                    crate::expr::check_identifier(args).map_err(|r| err(&r))?;
-                    QuantityKind::Eom(args.to_string())
-                }
-                "I" => {
-                    let (p, solid) = args
-                        .split_once(',')
-                        .ok_or_else(|| err("an inertia operator is written I(P,S)"))?;
-                    check_name(p).map_err(|r| err(&r))?;
-                    check_name(solid).map_err(|r| err(&r))?;
-                    QuantityKind::Inertia {
-                        point: p.to_string(),
-                        solid: solid.to_string(),
-                    }
-                }
-                other => {
-                    return Err(err(&format!(
-                        "unknown quantity `{other}` ({}known: Omega, V, Gamma, I, Rc, sigma, Rd, \
-                         delta, Ec, eom, R, M, P, Pint, J_eq, {{V(..)}}_A, {{C(..)}}_A, \
-                         {{D(..)}}_A, {{T(..)}}_A, or the name of an unknown)",
-                        crate::expr::function_hint(other)
-                    )));
-                }
-            }
+            call_kind(core).map_err(|r| err(&r))?
         };
-        if projection.is_some() && matches!(kind, QuantityKind::Inertia { .. }) {
-            return Err(err("an inertia operator cannot be projected"));
-        }
-        if (projection.is_some() || basis.is_some()) && kind.is_scalar_kind() {
-            return Err(err(
-                "this quantity is a scalar: it takes no basis or projection",
-            ));
-        }
-        if projection.is_some() && kind.is_torsor() {
-            return Err(err("a torsor cannot be projected"));
-        }
-        if projection.is_some() && basis.is_some() {
-            return Err(err("a projection is a scalar: it takes no basis"));
-        }
+        check_written(&kind, basis.is_some(), projection.is_some()).map_err(err)?;
         Ok(Quantity {
             kind,
             basis,
@@ -482,6 +345,166 @@ pub fn check_name(s: &str) -> Result<(), String> {
         return Err(format!(
             "name `{s}`: only ASCII letters, digits and `_` are allowed"
         ));
+    }
+    Ok(())
+}
+
+/// The optional ` in B<frame>` suffix: the text before it, and the frame.
+fn split_basis(s: &str) -> Result<(&str, Option<String>), String> {
+    match s.rsplit_once(" in ") {
+        Some((b, basis)) => {
+            let basis = basis.trim();
+            let name = basis
+                .strip_prefix('B')
+                .ok_or("the basis after `in` is written B<frame>, e.g. B2")?;
+            check_name(name)?;
+            Ok((b.trim(), Some(name.to_string())))
+        }
+        None => Ok((s, None)),
+    }
+}
+
+/// A projection `.x2`: (frame, axis).
+type Projection = (String, char);
+
+/// The optional `.x2` projection (only after a closing parenthesis): the text before it, and
+/// the projection.
+fn split_projection(body: &str) -> Result<(&str, Option<Projection>), String> {
+    let Some(pos) = body.rfind(").") else {
+        return Ok((body, None));
+    };
+    let v = &body[pos + 2..];
+    let mut chars = v.chars();
+    let axis = chars.next().ok_or("empty projection")?;
+    if !matches!(axis, 'x' | 'y' | 'z') {
+        return Err("a projection is on x<frame>, y<frame> or z<frame>".to_string());
+    }
+    let frame: String = chars.collect();
+    if frame.is_empty() {
+        return Err(format!(
+            "a projection names its frame after the axis, as the course writes \
+             it: .{axis}0 for the ground, .{axis}2 for frame 2, not .{axis}"
+        ));
+    }
+    check_name(&frame)?;
+    Ok((&body[..pos + 1], Some((frame, axis))))
+}
+
+/// A torsor after its `{`: `C(2/0)}_O2`, `T(0->1)}_O1`.
+fn torsor_kind(rest: &str) -> Result<QuantityKind, String> {
+    let (inner, point) = rest
+        .split_once("}_")
+        .ok_or("a torsor is written {C(S/R)}_A")?;
+    check_name(point)?;
+    let (letter, args) = call(inner).ok_or("a torsor is written {C(S/R)}_A")?;
+    let point = point.to_string();
+    if letter == "T" {
+        let action = action(args)?;
+        return Ok(QuantityKind::ActionTorsor { action, point });
+    }
+    let motion = motion(args)?;
+    Ok(match letter {
+        "V" => QuantityKind::KinematicTorsor { motion, point },
+        "C" => QuantityKind::KineticTorsor { motion, point },
+        "D" => QuantityKind::DynamicTorsor { motion, point },
+        _ => return Err("torsors are {V(..)}, {C(..)}, {D(..)} and {T(..)}".to_string()),
+    })
+}
+
+/// `(point,moving/reference)`.
+fn point_motion(args: &str) -> Result<(String, Motion), String> {
+    let (p, m) = args
+        .split_once(',')
+        .ok_or_else(|| "expected (point,moving/reference)".to_string())?;
+    check_name(p)?;
+    Ok((p.to_string(), motion(m)?))
+}
+
+/// A quantity written `name(arguments)`.
+fn call_kind(core: &str) -> Result<QuantityKind, String> {
+    let (name, args) = call(core).ok_or("expected name(arguments)")?;
+    Ok(match name {
+        "Omega" => QuantityKind::Omega(motion(args)?),
+        "Rc" => QuantityKind::KineticResultant(motion(args)?),
+        "Rd" => QuantityKind::DynamicResultant(motion(args)?),
+        "V" | "Gamma" | "sigma" | "delta" => {
+            let (point, motion) = point_motion(args)?;
+            match name {
+                "V" => QuantityKind::Velocity { point, motion },
+                "Gamma" => QuantityKind::Acceleration { point, motion },
+                "sigma" => QuantityKind::KineticMoment { point, motion },
+                _ => QuantityKind::DynamicMoment { point, motion },
+            }
+        }
+        "Ec" => QuantityKind::KineticEnergy(motion(args)?),
+        "P" => {
+            let (a, reference) = args
+                .rsplit_once('/')
+                .ok_or("a power is written P(from->on/reference), e.g. P(ext->E/0)")?;
+            check_name(reference)?;
+            QuantityKind::Power {
+                action: action(a)?,
+                reference: reference.to_string(),
+            }
+        }
+        "Pint" => {
+            check_name(args)?;
+            QuantityKind::InternalPower(args.to_string())
+        }
+        "J_eq" => {
+            crate::expr::check_identifier(args)?;
+            QuantityKind::EquivalentInertia(args.to_string())
+        }
+        "R" => QuantityKind::ActionResultant(action(args)?),
+        "M" => {
+            let (p, a) = args
+                .split_once(',')
+                .ok_or("a moment of an action is written M(A,from->on)")?;
+            check_name(p)?;
+            QuantityKind::ActionMoment {
+                point: p.to_string(),
+                action: action(a)?,
+            }
+        }
+        "eom" => {
+            crate::expr::check_identifier(args)?;
+            QuantityKind::Eom(args.to_string())
+        }
+        "I" => {
+            let (p, solid) = args
+                .split_once(',')
+                .ok_or("an inertia operator is written I(P,S)")?;
+            check_name(p)?;
+            check_name(solid)?;
+            QuantityKind::Inertia {
+                point: p.to_string(),
+                solid: solid.to_string(),
+            }
+        }
+        other => {
+            return Err(format!(
+                "unknown quantity `{other}` ({}known: Omega, V, Gamma, I, Rc, sigma, Rd, \
+                 delta, Ec, eom, R, M, P, Pint, J_eq, {{V(..)}}_A, {{C(..)}}_A, \
+                 {{D(..)}}_A, {{T(..)}}_A, or the name of an unknown)",
+                crate::expr::function_hint(other)
+            ));
+        }
+    })
+}
+
+/// Whether a kind takes the basis and projection written after it.
+fn check_written(kind: &QuantityKind, basis: bool, projection: bool) -> Result<(), &'static str> {
+    if projection && matches!(kind, QuantityKind::Inertia { .. }) {
+        return Err("an inertia operator cannot be projected");
+    }
+    if (projection || basis) && kind.is_scalar_kind() {
+        return Err("this quantity is a scalar: it takes no basis or projection");
+    }
+    if projection && kind.is_torsor() {
+        return Err("a torsor cannot be projected");
+    }
+    if projection && basis {
+        return Err("a projection is a scalar: it takes no basis");
     }
     Ok(())
 }

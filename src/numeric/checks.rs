@@ -55,77 +55,11 @@ pub(super) fn linear_angle(
     angle_param: &dyn Fn(usize) -> bool,
     angle_coord: &dyn Fn(usize) -> bool,
 ) -> Result<(), String> {
-    // The form as (coefficient of each variable, constant), with the variables as
-    // (0, param) or (1, coordinate).
-    type Form = (BTreeMap<(u8, usize), f64>, f64);
-    fn walk(
-        n: &Node,
-        angle_param: &dyn Fn(usize) -> bool,
-        angle_coord: &dyn Fn(usize) -> bool,
-    ) -> Result<Form, String> {
-        let not_linear = || "an angle is an integer combination of angles and π/2".to_string();
-        let constant = |f: &Form| f.0.values().all(|c| *c == 0.0).then_some(f.1);
-        Ok(match n {
-            // A phase k Ω t (checked when parsed): a variable of its own, Ω's.
-            Node::Mul(..) | Node::Neg(_) | Node::Time if expr::holds_time(n) => {
-                let (p, k) = expr::phase(n).ok_or_else(not_linear)?;
-                (BTreeMap::from([((2, p), k)]), 0.0)
-            }
-            Node::Num(x) => (BTreeMap::new(), *x),
-            Node::Param(p) if angle_param(*p) => (BTreeMap::from([((0, *p), 1.0)]), 0.0),
-            Node::Coord(c) if angle_coord(*c) => (BTreeMap::from([((1, *c), 1.0)]), 0.0),
-            Node::Param(_) | Node::Coord(_) => {
-                return Err(
-                    "this name is not an angle: an angle is an angle coordinate or a \
-                            parameter declared with \"kind\": \"angle\""
-                        .to_string(),
-                );
-            }
-            Node::Neg(a) => {
-                let (v, k) = walk(a, angle_param, angle_coord)?;
-                (v.into_iter().map(|(x, c)| (x, -c)).collect(), -k)
-            }
-            Node::Add(a, b) | Node::Sub(a, b) => {
-                let sign = if matches!(n, Node::Sub(..)) {
-                    -1.0
-                } else {
-                    1.0
-                };
-                let (mut v, k) = walk(a, angle_param, angle_coord)?;
-                let (w, l) = walk(b, angle_param, angle_coord)?;
-                for (x, c) in w {
-                    *v.entry(x).or_insert(0.0) += sign * c;
-                }
-                (v, k + sign * l)
-            }
-            Node::Mul(a, b) => {
-                let (fa, fb) = (
-                    walk(a, angle_param, angle_coord)?,
-                    walk(b, angle_param, angle_coord)?,
-                );
-                let (f, k) = match (constant(&fa), constant(&fb)) {
-                    (Some(k), _) => (fb, k),
-                    (None, Some(k)) => (fa, k),
-                    (None, None) => return Err(not_linear()),
-                };
-                (f.0.into_iter().map(|(x, c)| (x, c * k)).collect(), f.1 * k)
-            }
-            Node::Div(a, b) => {
-                let fa = walk(a, angle_param, angle_coord)?;
-                let k = constant(&walk(b, angle_param, angle_coord)?).ok_or_else(not_linear)?;
-                (
-                    fa.0.into_iter().map(|(x, c)| (x, c / k)).collect(),
-                    fa.1 / k,
-                )
-            }
-            Node::Pow(a, e) => {
-                let k = constant(&walk(a, angle_param, angle_coord)?).ok_or_else(not_linear)?;
-                (BTreeMap::new(), k.powi(*e))
-            }
-            _ => return Err(not_linear()),
-        })
-    }
-    let (vars, k) = walk(node, angle_param, angle_coord)?;
+    let angles = Angles {
+        param: angle_param,
+        coord: angle_coord,
+    };
+    let (vars, k) = angles.form(node)?;
     if !k.is_finite() || vars.values().any(|c| !c.is_finite()) {
         return Err("division by zero in an angle".to_string());
     }
@@ -154,6 +88,80 @@ pub(super) fn linear_angle(
         return Err("a constant angle written with numbers must be a multiple of pi/2".to_string());
     }
     Ok(())
+}
+
+/// An angle as a linear form: (coefficient of each variable, constant), with the variables
+/// as (0, param), (1, coordinate) or (2, the pulsation of a phase).
+type Form = (BTreeMap<(u8, usize), f64>, f64);
+
+/// Which parameters and coordinates are angles.
+struct Angles<'a> {
+    param: &'a dyn Fn(usize) -> bool,
+    coord: &'a dyn Fn(usize) -> bool,
+}
+
+impl Angles<'_> {
+    /// The linear form of `n`, refused when it is not one in angles.
+    fn form(&self, n: &Node) -> Result<Form, String> {
+        let not_linear = || "an angle is an integer combination of angles and π/2".to_string();
+        let constant = |f: &Form| f.0.values().all(|c| *c == 0.0).then_some(f.1);
+        Ok(match n {
+            // A phase k Ω t (checked when parsed): a variable of its own, Ω's.
+            Node::Mul(..) | Node::Neg(_) | Node::Time if expr::holds_time(n) => {
+                let (p, k) = expr::phase(n).ok_or_else(not_linear)?;
+                (BTreeMap::from([((2, p), k)]), 0.0)
+            }
+            Node::Num(x) => (BTreeMap::new(), *x),
+            Node::Param(p) if (self.param)(*p) => (BTreeMap::from([((0, *p), 1.0)]), 0.0),
+            Node::Coord(c) if (self.coord)(*c) => (BTreeMap::from([((1, *c), 1.0)]), 0.0),
+            Node::Param(_) | Node::Coord(_) => {
+                return Err(
+                    "this name is not an angle: an angle is an angle coordinate or a \
+                            parameter declared with \"kind\": \"angle\""
+                        .to_string(),
+                );
+            }
+            Node::Neg(a) => {
+                let (v, k) = self.form(a)?;
+                (v.into_iter().map(|(x, c)| (x, -c)).collect(), -k)
+            }
+            Node::Add(a, b) | Node::Sub(a, b) => {
+                let sign = if matches!(n, Node::Sub(..)) {
+                    -1.0
+                } else {
+                    1.0
+                };
+                let (mut v, k) = self.form(a)?;
+                let (w, l) = self.form(b)?;
+                for (x, c) in w {
+                    *v.entry(x).or_insert(0.0) += sign * c;
+                }
+                (v, k + sign * l)
+            }
+            Node::Mul(a, b) => {
+                let (fa, fb) = (self.form(a)?, self.form(b)?);
+                let (f, k) = match (constant(&fa), constant(&fb)) {
+                    (Some(k), _) => (fb, k),
+                    (None, Some(k)) => (fa, k),
+                    (None, None) => return Err(not_linear()),
+                };
+                (f.0.into_iter().map(|(x, c)| (x, c * k)).collect(), f.1 * k)
+            }
+            Node::Div(a, b) => {
+                let fa = self.form(a)?;
+                let k = constant(&self.form(b)?).ok_or_else(not_linear)?;
+                (
+                    fa.0.into_iter().map(|(x, c)| (x, c / k)).collect(),
+                    fa.1 / k,
+                )
+            }
+            Node::Pow(a, e) => {
+                let k = constant(&self.form(a)?).ok_or_else(not_linear)?;
+                (BTreeMap::new(), k.powi(*e))
+            }
+            _ => return Err(not_linear()),
+        })
+    }
 }
 
 /// Parameter values for the checks at build time: integers 2, 3, 5, … (`draw` 0) and then

@@ -256,8 +256,40 @@ pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
     for v in &configs {
         at.push(loops(m, v)?);
     }
+    let rank_needed = closure_relations(m, &at)? + rolling_relations(m, &configs)?;
+    let dep: Vec<usize> = m
+        .closures
+        .iter()
+        .flat_map(|c| c.dependent.clone())
+        .chain(m.rolling.iter().flat_map(|r| r.dependent.clone()))
+        .collect();
+    let full = configs.iter().any(|v| {
+        jacobian(m, v, &dep).is_ok_and(|j| j.rank(1e-9 * j.amax().max(1e-300)) == rank_needed)
+    });
+    if !full {
+        let place = match (m.closures.is_empty(), m.rolling.is_empty()) {
+            (false, true) => "closures",
+            (true, false) => "rolling",
+            _ => "closures and rolling",
+        };
+        return Err(super::model::spec_err(
+            place,
+            "the closures and rolling conditions do not determine their dependent coordinates: \
+             their relations are redundant",
+        ));
+    }
+    Ok(())
+}
+
+/// The closures' scalar relations, counted from their values `at` the configurations: each
+/// nonzero ground component must vary, and they must be as many as the dependent
+/// coordinates.
+fn closure_relations(
+    m: &NumericModel,
+    at: &[Vec<Vector3<num_dual::Dual2_64>>],
+) -> Result<usize, NumericError> {
     let axes = ["x", "y", "z"];
-    let mut rank_needed = 0;
+    let mut count = 0;
     for (i, c) in m.closures.iter().enumerate() {
         let path = format!("closures[{i}].vector");
         let mut n = 0;
@@ -289,12 +321,16 @@ pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
                 ),
             ));
         }
-        rank_needed += n;
+        count += n;
     }
-    // Each rolling condition: its relations, linear in the rates, of rank its dependent
-    // coordinates' count over all the rates.
-    let first = 3 * m.closures.len();
-    let mut row = first;
+    Ok(count)
+}
+
+/// Each rolling condition: its relations, linear in the rates, of rank its dependent
+/// coordinates' count over all the rates. Returns the sum of the ranks.
+fn rolling_relations(m: &NumericModel, configs: &[Values]) -> Result<usize, NumericError> {
+    let mut count = 0;
+    let mut row = 3 * m.closures.len();
     for (i, r) in m.rolling.iter().enumerate() {
         let n = if r.on.is_empty() { 3 } else { r.on.len() };
         let all: Vec<usize> = (0..m.coords.len()).collect();
@@ -323,29 +359,8 @@ pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
                 ),
             ));
         }
-        rank_needed += rank;
+        count += rank;
         row += n;
     }
-    let dep: Vec<usize> = m
-        .closures
-        .iter()
-        .flat_map(|c| c.dependent.clone())
-        .chain(m.rolling.iter().flat_map(|r| r.dependent.clone()))
-        .collect();
-    let full = configs.iter().any(|v| {
-        jacobian(m, v, &dep).is_ok_and(|j| j.rank(1e-9 * j.amax().max(1e-300)) == rank_needed)
-    });
-    if !full {
-        let place = match (m.closures.is_empty(), m.rolling.is_empty()) {
-            (false, true) => "closures",
-            (true, false) => "rolling",
-            _ => "closures and rolling",
-        };
-        return Err(super::model::spec_err(
-            place,
-            "the closures and rolling conditions do not determine their dependent coordinates: \
-             their relations are redundant",
-        ));
-    }
-    Ok(())
+    Ok(count)
 }

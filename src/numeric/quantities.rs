@@ -48,179 +48,239 @@ pub(super) fn evaluate(
 ) -> Result<NumValue, NumericError> {
     let vals = values(m, sample)?;
     let st = state(m, &vals)?;
-    let basis_name = q.basis.as_deref().unwrap_or(default_basis);
-    let frames = |mo: &Motion| -> Result<(usize, usize), NumericError> {
+    let at = At {
+        m,
+        q,
+        st,
+        vals,
+        unknowns,
+    };
+    let raw = at.raw()?;
+    at.written(raw, q.basis.as_deref().unwrap_or(default_basis))
+}
+
+/// A quantity at a placed sample.
+struct At<'a> {
+    m: &'a NumericModel,
+    q: &'a Quantity,
+    st: State,
+    vals: Values,
+    unknowns: &'a BTreeMap<String, f64>,
+}
+
+/// The resultant and the moment of an action, each evaluated on its own.
+type Parts = [Result<Vector3<f64>, NumericError>; 2];
+
+impl At<'_> {
+    /// The frames of a motion i/j.
+    fn frames(&self, mo: &Motion) -> Result<(usize, usize), NumericError> {
         Ok((
-            m.body_frame(&mo.moving, q)?,
-            m.body_frame(&mo.reference, q)?,
+            self.m.body_frame(&mo.moving, self.q)?,
+            self.m.body_frame(&mo.reference, self.q)?,
         ))
-    };
-    let kin = |mo: &Motion, a: usize| -> Result<[Vector3<f64>; 4], NumericError> {
-        let solids = m.solids_of(&mo.moving)?;
-        let j = m.body_frame(&mo.reference, q)?;
-        kinetic(m, &st, &vals, &solids, j, a)
-    };
-    // The actions of `a.from` on `a.on`, at point p (the ground origin for a resultant).
-    type Parts = [Result<Vector3<f64>, NumericError>; 2];
-    let action = |a: &ActionRef, p: usize| -> Result<Parts, NumericError> {
+    }
+
+    /// The kinetic and dynamic resultants and moments at point `a` of a motion.
+    fn kin(&self, mo: &Motion, a: usize) -> Result<[Vector3<f64>; 4], NumericError> {
+        let solids = self.m.solids_of(&mo.moving)?;
+        let j = self.m.body_frame(&mo.reference, self.q)?;
+        kinetic(self.m, &self.st, &self.vals, &solids, j, a)
+    }
+
+    /// The actions of `a.from` on `a.on`, at point p (the ground origin for a resultant).
+    fn action(&self, a: &ActionRef, p: usize) -> Result<Parts, NumericError> {
+        let solids = self.m.solids_of(&a.on)?;
+        let (m, st, vals) = (self.m, &self.st, &self.vals);
+        dynamics::action(m, st, vals, &a.from, &solids, &a.on, p, self.unknowns)
+    }
+
+    /// The quantity's value in ground components, before any basis or projection.
+    fn raw(&self) -> Result<Raw, NumericError> {
+        let (m, st, vals, q) = (self.m, &self.st, &self.vals, self.q);
+        use QuantityKind as K;
+        Ok(match &q.kind {
+            K::Omega(mo) => {
+                let (i, j) = self.frames(mo)?;
+                Raw::Vector(omega(st, i, j))
+            }
+            K::Velocity { point, motion } | K::Acceleration { point, motion } => {
+                let (i, j) = self.frames(motion)?;
+                let [v, g] = point_motion(st, m.point(point)?, i, j);
+                Raw::Vector(if matches!(q.kind, K::Velocity { .. }) {
+                    v
+                } else {
+                    g
+                })
+            }
+            K::Inertia { point, solid } => {
+                let solids = m.solids_of(solid)?;
+                Raw::Matrix(inertia(m, st, vals, &solids, m.point(point)?)?)
+            }
+            K::KineticResultant(mo) => Raw::Vector(self.kin(mo, 0)?[0]),
+            K::DynamicResultant(mo) => Raw::Vector(self.kin(mo, 0)?[2]),
+            K::KineticMoment { point, motion } => {
+                Raw::Vector(self.kin(motion, m.point(point)?)?[1])
+            }
+            K::DynamicMoment { point, motion } => {
+                Raw::Vector(self.kin(motion, m.point(point)?)?[3])
+            }
+            K::KinematicTorsor { motion, point } => {
+                let (i, j) = self.frames(motion)?;
+                let [v, _] = point_motion(st, m.point(point)?, i, j);
+                Raw::Torsor(point.clone(), omega(st, i, j), v)
+            }
+            K::KineticTorsor { motion, point } => {
+                let k = self.kin(motion, m.point(point)?)?;
+                Raw::Torsor(point.clone(), k[0], k[1])
+            }
+            K::DynamicTorsor { motion, point } => {
+                let k = self.kin(motion, m.point(point)?)?;
+                Raw::Torsor(point.clone(), k[2], k[3])
+            }
+            K::KineticEnergy(mo) => {
+                let solids = m.solids_of(&mo.moving)?;
+                let j = m.body_frame(&mo.reference, q)?;
+                Raw::Scalar(kinetic_energy(m, st, vals, &solids, j)?)
+            }
+            K::Unknown(name) => Raw::Scalar(dynamics::unknown(m, st, vals, name)?),
+            K::Eom(c) => Raw::Scalar(dynamics::eom(m, st, vals, c)?),
+            K::ActionResultant(a) => {
+                let [r, _] = self.action(a, 0)?;
+                Raw::Vector(r?)
+            }
+            K::ActionMoment { point, action: a } => {
+                let [_, mo] = self.action(a, m.point(point)?)?;
+                Raw::Vector(mo?)
+            }
+            K::ActionTorsor { action: a, point } => {
+                let [r, mo] = self.action(a, m.point(point)?)?;
+                Raw::Torsor(point.clone(), r?, mo?)
+            }
+            K::Power {
+                action: a,
+                reference,
+            } => Raw::Scalar(self.power(a, reference)?),
+            K::EquivalentInertia(c) => Raw::Scalar(self.equivalent_inertia(c)?),
+            K::InternalPower(set) => Raw::Scalar(self.internal_power(set)?),
+        })
+    }
+
+    /// P(from->on/reference).
+    fn power(&self, a: &ActionRef, reference: &str) -> Result<f64, NumericError> {
+        let (m, st, vals) = (self.m, &self.st, &self.vals);
         let solids = m.solids_of(&a.on)?;
-        dynamics::action(m, &st, &vals, &a.from, &solids, &a.on, p, unknowns)
-    };
-    use QuantityKind as K;
-    let raw = match &q.kind {
-        K::Omega(mo) => {
-            let (i, j) = frames(mo)?;
-            Raw::Vector(omega(&st, i, j))
-        }
-        K::Velocity { point, motion } | K::Acceleration { point, motion } => {
-            let (i, j) = frames(motion)?;
-            let [v, g] = point_motion(&st, m.point(point)?, i, j);
-            Raw::Vector(if matches!(q.kind, K::Velocity { .. }) {
-                v
-            } else {
-                g
-            })
-        }
-        K::Inertia { point, solid } => {
-            let solids = m.solids_of(solid)?;
-            Raw::Matrix(inertia(m, &st, &vals, &solids, m.point(point)?)?)
-        }
-        K::KineticResultant(mo) => Raw::Vector(kin(mo, 0)?[0]),
-        K::DynamicResultant(mo) => Raw::Vector(kin(mo, 0)?[2]),
-        K::KineticMoment { point, motion } => Raw::Vector(kin(motion, m.point(point)?)?[1]),
-        K::DynamicMoment { point, motion } => Raw::Vector(kin(motion, m.point(point)?)?[3]),
-        K::KinematicTorsor { motion, point } => {
-            let (i, j) = frames(motion)?;
-            let [v, _] = point_motion(&st, m.point(point)?, i, j);
-            Raw::Torsor(point.clone(), omega(&st, i, j), v)
-        }
-        K::KineticTorsor { motion, point } => {
-            let k = kin(motion, m.point(point)?)?;
-            Raw::Torsor(point.clone(), k[0], k[1])
-        }
-        K::DynamicTorsor { motion, point } => {
-            let k = kin(motion, m.point(point)?)?;
-            Raw::Torsor(point.clone(), k[2], k[3])
-        }
-        K::KineticEnergy(mo) => {
-            let solids = m.solids_of(&mo.moving)?;
-            let j = m.body_frame(&mo.reference, q)?;
-            Raw::Scalar(kinetic_energy(m, &st, &vals, &solids, j)?)
-        }
-        K::Unknown(name) => Raw::Scalar(dynamics::unknown(m, &st, &vals, name)?),
-        K::Eom(c) => Raw::Scalar(dynamics::eom(m, &st, &vals, c)?),
-        K::ActionResultant(a) => {
-            let [r, _] = action(a, 0)?;
-            Raw::Vector(r?)
-        }
-        K::ActionMoment { point, action: a } => {
-            let [_, mo] = action(a, m.point(point)?)?;
-            Raw::Vector(mo?)
-        }
-        K::ActionTorsor { action: a, point } => {
-            let [r, mo] = action(a, m.point(point)?)?;
-            Raw::Torsor(point.clone(), r?, mo?)
-        }
-        K::Power {
-            action: a,
-            reference,
-        } => {
-            let solids = m.solids_of(&a.on)?;
-            let j = m.body_frame(reference, q)?;
-            Raw::Scalar(dynamics::power(
-                m, &st, &vals, &a.from, &solids, &a.on, j, unknowns,
-            )?)
-        }
-        K::EquivalentInertia(c) => {
-            // 2 Ec(all/0)/q̇², from the clouds: the rate q̇ is the sample's.
-            let all: Vec<usize> = (0..m.solids.len()).collect();
-            let i = m.coords.iter().position(|x| &x.name == c).ok_or_else(|| {
-                NumericError::Quantity {
-                    quantity: q.to_string(),
+        let j = m.body_frame(reference, self.q)?;
+        let (from, on) = (&a.from, &a.on);
+        dynamics::power(m, st, vals, from, &solids, on, j, self.unknowns)
+    }
+
+    /// P_int(set).
+    fn internal_power(&self, set: &str) -> Result<f64, NumericError> {
+        let (m, st, vals) = (self.m, &self.st, &self.vals);
+        let solids = m.solids_of(set)?;
+        dynamics::internal_power(m, st, vals, &solids, self.unknowns)
+    }
+
+    /// J_eq(c) = 2 Ec(all/0)/q̇², from the clouds: the rate q̇ is the sample's.
+    fn equivalent_inertia(&self, c: &str) -> Result<f64, NumericError> {
+        let (m, st, vals) = (self.m, &self.st, &self.vals);
+        let all: Vec<usize> = (0..m.solids.len()).collect();
+        let i =
+            m.coords
+                .iter()
+                .position(|x| x.name == c)
+                .ok_or_else(|| NumericError::Quantity {
+                    quantity: self.q.to_string(),
                     message: format!("unknown coordinate `{c}`"),
-                }
-            })?;
-            let qd = vals.coords[i][1];
-            Raw::Scalar(2.0 * kinetic_energy(m, &st, &vals, &all, 0)? / (qd * qd))
-        }
-        K::InternalPower(set) => {
-            let solids = m.solids_of(set)?;
-            Raw::Scalar(dynamics::internal_power(m, &st, &vals, &solids, unknowns)?)
-        }
-    };
-    let not_finite = || NumericError::Quantity {
-        quantity: q.to_string(),
-        message: "the value is not finite at this sample".into(),
-    };
-    // The basis is only looked up when the result is written in it (not for a projection).
-    let rb = if q.projection.is_none() && !matches!(raw, Raw::Scalar(_)) {
-        st.rot0(m.frame(basis_name)?)
-    } else {
-        Matrix3::identity()
-    };
-    let rbt = rb.transpose();
-    let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
-    match (raw, &q.projection) {
-        (Raw::Scalar(x), None) => {
-            if !x.is_finite() {
-                return Err(not_finite());
-            }
-            Ok(NumValue::Scalar(x))
-        }
-        (Raw::Vector(v), Some((frame, axis))) => {
-            let k = match axis {
-                'x' => 0,
-                'y' => 1,
-                'z' => 2,
-                _ => {
-                    return Err(NumericError::Quantity {
-                        quantity: q.to_string(),
-                        message: format!("`{axis}` is not an axis"),
-                    });
-                }
-            };
-            let x = v.dot(&st.rot0(m.frame(frame)?).column(k));
-            if !x.is_finite() {
-                return Err(not_finite());
-            }
-            Ok(NumValue::Scalar(x))
-        }
-        (Raw::Vector(v), None) => {
-            let value: [f64; 3] = (rbt * v).into();
-            if !finite(&value) {
-                return Err(not_finite());
-            }
-            Ok(NumValue::Vector {
-                basis: basis_name.to_string(),
-                value,
-            })
-        }
-        (Raw::Matrix(mat), None) => {
-            let value = rows(&(rbt * mat * rb));
-            if !finite(value.as_flattened()) {
-                return Err(not_finite());
-            }
-            Ok(NumValue::Matrix {
-                basis: basis_name.to_string(),
-                value,
-            })
-        }
-        (Raw::Torsor(point, r, mo), None) => {
-            let (resultant, moment): ([f64; 3], [f64; 3]) = ((rbt * r).into(), (rbt * mo).into());
-            if !finite(&resultant) || !finite(&moment) {
-                return Err(not_finite());
-            }
-            Ok(NumValue::Torsor {
-                point,
-                basis: basis_name.to_string(),
-                resultant,
-                moment,
-            })
-        }
-        (_, Some(_)) => Err(NumericError::Quantity {
+                })?;
+        let qd = vals.coords[i][1];
+        Ok(2.0 * kinetic_energy(m, st, vals, &all, 0)? / (qd * qd))
+    }
+
+    /// The raw value written as asked: in basis `basis_name`, or projected; refused when a
+    /// number of it is not finite.
+    fn written(&self, raw: Raw, basis_name: &str) -> Result<NumValue, NumericError> {
+        let q = self.q;
+        let not_finite = || NumericError::Quantity {
             quantity: q.to_string(),
-            message: "only a vector can be projected".into(),
-        }),
+            message: "the value is not finite at this sample".into(),
+        };
+        // The basis is only looked up when the result is written in it (not for a projection).
+        let rb = if q.projection.is_none() && !matches!(raw, Raw::Scalar(_)) {
+            self.st.rot0(self.m.frame(basis_name)?)
+        } else {
+            Matrix3::identity()
+        };
+        let rbt = rb.transpose();
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        match (raw, &q.projection) {
+            (Raw::Scalar(x), None) => {
+                if !x.is_finite() {
+                    return Err(not_finite());
+                }
+                Ok(NumValue::Scalar(x))
+            }
+            (Raw::Vector(v), Some((frame, axis))) => {
+                let x = self.projected(v, frame, *axis)?;
+                if !x.is_finite() {
+                    return Err(not_finite());
+                }
+                Ok(NumValue::Scalar(x))
+            }
+            (Raw::Vector(v), None) => {
+                let value: [f64; 3] = (rbt * v).into();
+                if !finite(&value) {
+                    return Err(not_finite());
+                }
+                Ok(NumValue::Vector {
+                    basis: basis_name.to_string(),
+                    value,
+                })
+            }
+            (Raw::Matrix(mat), None) => {
+                let value = rows(&(rbt * mat * rb));
+                if !finite(value.as_flattened()) {
+                    return Err(not_finite());
+                }
+                Ok(NumValue::Matrix {
+                    basis: basis_name.to_string(),
+                    value,
+                })
+            }
+            (Raw::Torsor(point, r, mo), None) => {
+                let (resultant, moment): ([f64; 3], [f64; 3]) =
+                    ((rbt * r).into(), (rbt * mo).into());
+                if !finite(&resultant) || !finite(&moment) {
+                    return Err(not_finite());
+                }
+                Ok(NumValue::Torsor {
+                    point,
+                    basis: basis_name.to_string(),
+                    resultant,
+                    moment,
+                })
+            }
+            (_, Some(_)) => Err(NumericError::Quantity {
+                quantity: q.to_string(),
+                message: "only a vector can be projected".into(),
+            }),
+        }
+    }
+
+    /// v · the basis vector `axis` of `frame`.
+    fn projected(&self, v: Vector3<f64>, frame: &str, axis: char) -> Result<f64, NumericError> {
+        let k = match axis {
+            'x' => 0,
+            'y' => 1,
+            'z' => 2,
+            _ => {
+                return Err(NumericError::Quantity {
+                    quantity: self.q.to_string(),
+                    message: format!("`{axis}` is not an axis"),
+                });
+            }
+        };
+        Ok(v.dot(&self.st.rot0(self.m.frame(frame)?).column(k)))
     }
 }
 

@@ -2,8 +2,8 @@
 
 use super::cloud::{cloud_inertia, solid_cloud};
 use super::expr::{self, Node};
-use super::kin::{Values, state};
-use super::{Hypothesis, NumericError, NumericModel, Sample};
+use super::kin::{State, Values, state};
+use super::{Hypothesis, InertiaInfo, NumericError, NumericModel, Sample, SolidInfo};
 use crate::wire::CoordinateKind;
 use nalgebra::{Matrix3, Vector3};
 use rand::Rng;
@@ -219,6 +219,41 @@ fn fit(pattern: &[[Entry; 3]; 3], mat: &Matrix3<f64>) -> Option<BTreeMap<usize, 
     Some(out)
 }
 
+fn fail(msg: String) -> NumericError {
+    NumericError::Sampling(msg)
+}
+
+/// What a hypothesis imposes on a sample: nothing without one.
+struct Imposed<'a> {
+    /// Solids given their declared symmetries.
+    symmetric: &'a [usize],
+    /// Coordinates with q̈ = 0.
+    constant_rates: &'a [usize],
+    /// Coordinates whose motion is given.
+    motions: &'a [(usize, Option<Node>, Option<Node>)],
+    /// Parameters set from the others.
+    relations: &'a [(usize, Node)],
+}
+
+impl<'a> Imposed<'a> {
+    fn of(hypothesis: Option<&'a Hypothesis>) -> Imposed<'a> {
+        match hypothesis {
+            Some(h) => Imposed {
+                symmetric: &h.symmetric_solids,
+                constant_rates: &h.constant_rates,
+                motions: &h.motions,
+                relations: &h.relations,
+            },
+            None => Imposed {
+                symmetric: &[],
+                constant_rates: &[],
+                motions: &[],
+                relations: &[],
+            },
+        }
+    }
+}
+
 /// Draws a sample; `symmetric` solids get their declared symmetries, `constant_rates`
 /// coordinates get q̈ = 0.
 pub(super) fn draw(
@@ -226,62 +261,113 @@ pub(super) fn draw(
     rng: &mut impl Rng,
     hypothesis: Option<&Hypothesis>,
 ) -> Result<Sample, NumericError> {
-    let fail = |msg: String| NumericError::Sampling(msg);
-    let (symmetric, constant_rates, motions, relations) = match hypothesis {
-        Some(h) => (
-            &h.symmetric_solids[..],
-            &h.constant_rates[..],
-            &h.motions[..],
-            &h.relations[..],
-        ),
-        None => (&[][..], &[][..], &[][..], &[][..]),
+    let imposed = Imposed::of(hypothesis);
+    let from_cloud = cloud_parameters(m)?;
+    let mut vals = Values {
+        params: draw_parameters(m, rng, &from_cloud),
+        coords: Vec::with_capacity(m.coords.len()),
+        time: 0.0,
     };
-    // Entries written `P` or `-P` are read off a random body; the parameter must then appear
-    // nowhere else. `elsewhere` says where each other parameter is first used.
-    let mut elsewhere: BTreeMap<usize, String> = BTreeMap::new();
-    let mut note = |node: &Node, place: &dyn Fn() -> String| {
+    impose_relations(m, imposed.relations, &from_cloud, &mut vals)?;
+    draw_coordinates(m, rng, &imposed, &mut vals)?;
+    drive_rates(m, &mut vals)?;
+    if m.uses_time {
+        vals.time = rng.random_range(0.0..=10.0);
+    }
+    // Coordinates a loop closure determines: moved onto the loop (after any rate a gear
+    // drives, and the time, which the loop may read).
+    super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
+    // Dry friction's signs, from the relative rates now drawn.
+    super::dynamics::set_signs(m, &mut vals)?;
+
+    // Inertia parameters: the geometry does not depend on them, so place it once.
+    let st = state(m, &vals)?;
+    for s in 0..m.solids.len() {
+        fit_inertia(m, &st, rng, s, imposed.symmetric.contains(&s), &mut vals)?;
+    }
+    // Every solid must now be realisable.
+    for s in 0..m.solids.len() {
+        solid_cloud(m, &st, &vals, s)?;
+    }
+    Ok(Sample {
+        parameters: m
+            .params
+            .iter()
+            .zip(&vals.params)
+            .map(|(p, v)| (p.name.clone(), *v))
+            .collect(),
+        coordinates: m
+            .coords
+            .iter()
+            .zip(&vals.coords)
+            .map(|(c, v)| (c.name.clone(), *v))
+            .collect(),
+        time: vals.time,
+    })
+}
+
+/// Where each parameter is first used, to name it when an inertia entry read off a random
+/// body also appears there.
+#[derive(Default)]
+struct FirstUse(BTreeMap<usize, String>);
+
+impl FirstUse {
+    fn note(&mut self, node: &Node, place: &dyn Fn() -> String) {
         let mut used = BTreeSet::new();
         expr::params_in(node, &mut used);
         for p in used {
-            elsewhere.entry(p).or_insert_with(place);
-        }
-    };
-    for f in &m.frames {
-        if let Some((_, _, a)) = &f.rotation {
-            note(a, &|| format!("the rotation angle of frame {}", f.name));
+            self.0.entry(p).or_insert_with(place);
         }
     }
-    for p in &m.points {
-        note(&p.position, &|| format!("the position of point {}", p.name));
-    }
-    for c in &m.coords {
-        if let Some(r) = &c.rate {
-            note(r, &|| format!("the imposed rate of {}", c.name));
-        }
-    }
-    let dy = &m.dynamics;
-    if let Some(g) = &dy.gravity {
-        note(g, &|| "gravity".to_string());
-    }
-    for (i, l) in dy.links.iter().enumerate() {
-        if let Some(f) = &l.friction {
-            note(f, &|| format!("the friction of links[{i}]"));
-        }
-        if let Some(sp) = &l.spring {
-            note(&sp.stiffness, &|| format!("the spring of links[{i}]"));
-            if let Some(q0) = &sp.free {
-                note(q0, &|| format!("the spring of links[{i}]"));
+
+    /// The uses outside the solids: rotations, positions, imposed rates, gravity, links and
+    /// actions.
+    fn outside_solids(m: &NumericModel) -> FirstUse {
+        let mut uses = FirstUse::default();
+        for f in &m.frames {
+            if let Some((_, _, a)) = &f.rotation {
+                uses.note(a, &|| format!("the rotation angle of frame {}", f.name));
             }
         }
-    }
-    for (i, a) in dy.actions.iter().enumerate() {
-        for node in a.resultant.iter().chain(&a.moment) {
-            note(node, &|| format!("actions[{i}]"));
+        for p in &m.points {
+            uses.note(&p.position, &|| format!("the position of point {}", p.name));
         }
+        for c in &m.coords {
+            if let Some(r) = &c.rate {
+                uses.note(r, &|| format!("the imposed rate of {}", c.name));
+            }
+        }
+        let dy = &m.dynamics;
+        if let Some(g) = &dy.gravity {
+            uses.note(g, &|| "gravity".to_string());
+        }
+        for (i, l) in dy.links.iter().enumerate() {
+            if let Some(f) = &l.friction {
+                uses.note(f, &|| format!("the friction of links[{i}]"));
+            }
+            if let Some(sp) = &l.spring {
+                uses.note(&sp.stiffness, &|| format!("the spring of links[{i}]"));
+                if let Some(q0) = &sp.free {
+                    uses.note(q0, &|| format!("the spring of links[{i}]"));
+                }
+            }
+        }
+        for (i, a) in dy.actions.iter().enumerate() {
+            for node in a.resultant.iter().chain(&a.moment) {
+                uses.note(node, &|| format!("actions[{i}]"));
+            }
+        }
+        uses
     }
+}
+
+/// The parameters read off a random body, each with its solid: the inertia entries written
+/// `P` or `-P`. Such a parameter must appear nowhere else.
+fn cloud_parameters(m: &NumericModel) -> Result<BTreeMap<usize, usize>, NumericError> {
+    let mut elsewhere = FirstUse::outside_solids(m);
     let mut from_cloud: BTreeMap<usize, usize> = BTreeMap::new();
     for (s, solid) in m.solids.iter().enumerate() {
-        note(&solid.mass, &|| format!("the mass of solid {}", solid.name));
+        elsewhere.note(&solid.mass, &|| format!("the mass of solid {}", solid.name));
         let Some(inr) = &solid.inertia else { continue };
         for r in 0..3 {
             for c in 0..3 {
@@ -296,7 +382,7 @@ pub(super) fn draw(
                             )));
                         }
                     }
-                    None => note(&inr.matrix[r][c], &|| {
+                    None => elsewhere.note(&inr.matrix[r][c], &|| {
                         format!(
                             "the inertia entry [{r}][{c}] `{}` of solid {}",
                             inr.text[r][c], solid.name
@@ -307,7 +393,7 @@ pub(super) fn draw(
         }
     }
     for (p, s) in &from_cloud {
-        if let Some(place) = elsewhere.get(p) {
+        if let Some(place) = elsewhere.0.get(p) {
             return Err(fail(format!(
                 "parameter `{}` is an inertia entry of solid {}, read off a random body, but \
                  it also appears in {place}",
@@ -315,23 +401,36 @@ pub(super) fn draw(
             )));
         }
     }
+    Ok(from_cloud)
+}
 
-    let mut vals = Values {
-        params: vec![0.0; m.params.len()],
-        coords: Vec::with_capacity(m.coords.len()),
-        time: 0.0,
-    };
+/// Random values of the parameters not read off a random body (0 for those).
+fn draw_parameters(
+    m: &NumericModel,
+    rng: &mut impl Rng,
+    from_cloud: &BTreeMap<usize, usize>,
+) -> Vec<f64> {
+    let mut params = vec![0.0; m.params.len()];
     for (i, p) in m.params.iter().enumerate() {
         if !from_cloud.contains_key(&i) {
-            vals.params[i] = if p.positive {
+            params[i] = if p.positive {
                 rng.random_range(0.5..=2.0)
             } else {
                 rng.random_range(-1.0..=1.0)
             };
         }
     }
-    // Relations: a parameter set from the others (repeated, for a chain A = B, B = C). An
-    // inertia entry read off a random body cannot be set so.
+    params
+}
+
+/// Relations: a parameter set from the others (repeated, for a chain A = B, B = C). An
+/// inertia entry read off a random body cannot be set so.
+fn impose_relations(
+    m: &NumericModel,
+    relations: &[(usize, Node)],
+    from_cloud: &BTreeMap<usize, usize>,
+    vals: &mut Values,
+) -> Result<(), NumericError> {
     for (p, node) in relations {
         let mut used = BTreeSet::new();
         expr::params_in(node, &mut used);
@@ -356,6 +455,17 @@ pub(super) fn draw(
                 .map_err(|e| fail(format!("relation on `{}`: {e}", m.params[*p].name)))?;
         }
     }
+    Ok(())
+}
+
+/// Random [q, q̇, q̈] of every coordinate, then what the spec and the hypothesis impose: an
+/// imposed rate, a constant rate, a given motion.
+fn draw_coordinates(
+    m: &NumericModel,
+    rng: &mut impl Rng,
+    imposed: &Imposed,
+    vals: &mut Values,
+) -> Result<(), NumericError> {
     for (i, c) in m.coords.iter().enumerate() {
         let q = match c.kind {
             CoordinateKind::Angle => rng.random_range(-std::f64::consts::PI..=std::f64::consts::PI),
@@ -370,11 +480,11 @@ pub(super) fn draw(
                 .map_err(|e| fail(format!("imposed rate of `{}`: {e}", c.name)))?;
             qdd = 0.0;
         }
-        if constant_rates.contains(&i) {
+        if imposed.constant_rates.contains(&i) {
             qdd = 0.0;
         }
         let mut q = q;
-        if let Some((_, value, rate)) = motions.iter().find(|(j, _, _)| *j == i) {
+        if let Some((_, value, rate)) = imposed.motions.iter().find(|(j, _, _)| *j == i) {
             let at = |node: &Node| {
                 expr::eval_scalar(node, &vals.constants())
                     .map_err(|e| fail(format!("the motion of `{}`: {e}", c.name)))
@@ -390,127 +500,138 @@ pub(super) fn draw(
         }
         vals.coords.push([q, qd, qdd]);
     }
-    // Rates driven by the others' (a gear ratio), once those are drawn; a coefficient may
-    // hold a driven coordinate's value, whose rates are then settled by the passes before.
+    Ok(())
+}
+
+/// Rates driven by the others' (a gear ratio), once those are drawn; a coefficient may
+/// hold a driven coordinate's value, whose rates are then settled by the passes before.
+fn drive_rates(m: &NumericModel, vals: &mut Values) -> Result<(), NumericError> {
     for _ in 0..m.coords.len() {
         for (i, c) in m.coords.iter().enumerate() {
             if let (Some(rate), true) = (&c.rate, c.driven) {
-                let [qd, qdd] = super::kin::driven(rate, &vals)
+                let [qd, qdd] = super::kin::driven(rate, vals)
                     .map_err(|e| fail(format!("the rate of `{}`: {e}", c.name)))?;
                 vals.coords[i][1] = qd;
                 vals.coords[i][2] = qdd;
             }
         }
     }
-    if m.uses_time {
-        vals.time = rng.random_range(0.0..=10.0);
-    }
-    // Coordinates a loop closure determines: moved onto the loop (after any rate a gear
-    // drives, and the time, which the loop may read).
-    super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
-    // Dry friction's signs, from the relative rates now drawn.
-    super::dynamics::set_signs(m, &mut vals)?;
+    Ok(())
+}
 
-    // Inertia parameters: the geometry does not depend on them, so place it once.
-    let st = state(m, &vals)?;
-    for (s, solid) in m.solids.iter().enumerate() {
-        let Some(inr) = &solid.inertia else { continue };
-        let mass = expr::eval_scalar(&solid.mass, &vals.constants())
-            .map_err(|e| fail(format!("mass of solid {}: {e}", solid.name)))?;
-        if !(mass.is_finite() && mass > 0.0) {
-            return Err(fail(format!(
-                "solid {} has mass {mass} at the drawn parameters; give its mass parameters \
-                 the unit kg",
-                solid.name
-            )));
-        }
-        let mut pattern = [[Entry::Number(0.0); 3]; 3];
-        let mut free = false;
-        for (r, row) in pattern.iter_mut().enumerate() {
-            for (c, entry) in row.iter_mut().enumerate() {
-                *entry = match bare_param(&inr.matrix[r][c]) {
-                    Some((p, sign)) => {
-                        free = true;
-                        Entry::Param(p, sign)
-                    }
-                    None => Entry::Number(
-                        expr::eval_scalar(&inr.matrix[r][c], &vals.constants()).map_err(|e| {
-                            fail(format!(
-                                "inertia entry [{r}][{c}] `{}` of solid {}: {e}",
-                                inr.text[r][c], solid.name
-                            ))
-                        })?,
-                    ),
-                };
-            }
-        }
-        if !free {
-            // Fully written in terms of other parameters: checked below like any body.
-            continue;
-        }
-        let mut forced = 0usize;
-        if symmetric.contains(&s) {
-            for sym in &solid.symmetries {
-                if sym.frame != inr.basis {
-                    return Err(fail(format!(
-                        "a symmetry of solid {} is written in the basis of frame {}, its \
-                         inertia in that of frame {}",
-                        solid.name, m.frames[sym.frame].name, m.frames[inr.basis].name
-                    )));
+/// The inertia matrix of solid `s` as written: numbers at the drawn parameters, and the
+/// entries `P` or `-P`; `None` when it has no such entry.
+fn inertia_pattern(
+    solid: &SolidInfo,
+    inr: &InertiaInfo,
+    vals: &Values,
+) -> Result<Option<[[Entry; 3]; 3]>, NumericError> {
+    let mut pattern = [[Entry::Number(0.0); 3]; 3];
+    let mut free = false;
+    for (r, row) in pattern.iter_mut().enumerate() {
+        for (c, entry) in row.iter_mut().enumerate() {
+            *entry = match bare_param(&inr.matrix[r][c]) {
+                Some((p, sign)) => {
+                    free = true;
+                    Entry::Param(p, sign)
                 }
-                let op = if sym.revolution {
-                    Op::Turn(sym.axis)
-                } else {
-                    Op::Mirror(sym.axis)
-                };
-                forced |= 1 << OPS.iter().position(|o| *o == op).unwrap_or(0);
-            }
+                None => Entry::Number(
+                    expr::eval_scalar(&inr.matrix[r][c], &vals.constants()).map_err(|e| {
+                        fail(format!(
+                            "inertia entry [{r}][{c}] `{}` of solid {}: {e}",
+                            inr.text[r][c], solid.name
+                        ))
+                    })?,
+                ),
+            };
         }
-        // QG in the inertia basis.
-        let qg = st.rot0(inr.basis).transpose() * (st.pos0(solid.centre) - st.pos0(inr.point));
-        let base = random_cloud(rng, mass);
-        let mut masks: Vec<usize> = (0..1usize << OPS.len())
-            .filter(|mk| mk & forced == forced)
-            .collect();
-        masks.sort_by_key(|mk| {
-            let c: u32 = (0..OPS.len())
-                .filter(|k| mk & (1 << k) != 0)
-                .map(|k| cost(OPS[k]))
-                .sum();
-            (c, *mk)
-        });
-        let found = masks.iter().find_map(|mk| {
-            let cloud = symmetrize(&base, *mk);
-            fit(&pattern, &cloud_inertia(&cloud, &qg))
-        });
-        let Some(assigned) = found else {
+    }
+    Ok(free.then_some(pattern))
+}
+
+/// The symmetry operations (bits over [`OPS`]) a solid's declared symmetries force.
+fn forced_ops(
+    m: &NumericModel,
+    solid: &SolidInfo,
+    inr: &InertiaInfo,
+) -> Result<usize, NumericError> {
+    let mut forced = 0usize;
+    for sym in &solid.symmetries {
+        if sym.frame != inr.basis {
             return Err(fail(format!(
-                "no random body fits the inertia matrix {:?} of solid {} (numbers and repeated \
-                 parameters must follow from mirror planes, axes of revolution or flatness)",
-                inr.text, solid.name
+                "a symmetry of solid {} is written in the basis of frame {}, its \
+                 inertia in that of frame {}",
+                solid.name, m.frames[sym.frame].name, m.frames[inr.basis].name
             )));
-        };
-        for (p, v) in assigned {
-            vals.params[p] = v;
         }
+        let op = if sym.revolution {
+            Op::Turn(sym.axis)
+        } else {
+            Op::Mirror(sym.axis)
+        };
+        forced |= 1 << OPS.iter().position(|o| *o == op).unwrap_or(0);
     }
-    // Every solid must now be realisable.
-    for s in 0..m.solids.len() {
-        solid_cloud(m, &st, &vals, s)?;
+    Ok(forced)
+}
+
+/// Sets the inertia parameters of solid `s` (`symmetric`: with its declared symmetries) from
+/// the cheapest symmetrised random cloud whose matrix fits the written one.
+fn fit_inertia(
+    m: &NumericModel,
+    st: &State,
+    rng: &mut impl Rng,
+    s: usize,
+    symmetric: bool,
+    vals: &mut Values,
+) -> Result<(), NumericError> {
+    let solid = &m.solids[s];
+    let Some(inr) = &solid.inertia else {
+        return Ok(());
+    };
+    let mass = expr::eval_scalar(&solid.mass, &vals.constants())
+        .map_err(|e| fail(format!("mass of solid {}: {e}", solid.name)))?;
+    if !(mass.is_finite() && mass > 0.0) {
+        return Err(fail(format!(
+            "solid {} has mass {mass} at the drawn parameters; give its mass parameters \
+             the unit kg",
+            solid.name
+        )));
     }
-    Ok(Sample {
-        parameters: m
-            .params
-            .iter()
-            .zip(&vals.params)
-            .map(|(p, v)| (p.name.clone(), *v))
-            .collect(),
-        coordinates: m
-            .coords
-            .iter()
-            .zip(&vals.coords)
-            .map(|(c, v)| (c.name.clone(), *v))
-            .collect(),
-        time: vals.time,
-    })
+    let Some(pattern) = inertia_pattern(solid, inr, vals)? else {
+        // Fully written in terms of other parameters: checked like any body.
+        return Ok(());
+    };
+    let forced = if symmetric {
+        forced_ops(m, solid, inr)?
+    } else {
+        0
+    };
+    // QG in the inertia basis.
+    let qg = st.rot0(inr.basis).transpose() * (st.pos0(solid.centre) - st.pos0(inr.point));
+    let base = random_cloud(rng, mass);
+    let mut masks: Vec<usize> = (0..1usize << OPS.len())
+        .filter(|mk| mk & forced == forced)
+        .collect();
+    masks.sort_by_key(|mk| {
+        let c: u32 = (0..OPS.len())
+            .filter(|k| mk & (1 << k) != 0)
+            .map(|k| cost(OPS[k]))
+            .sum();
+        (c, *mk)
+    });
+    let found = masks.iter().find_map(|mk| {
+        let cloud = symmetrize(&base, *mk);
+        fit(&pattern, &cloud_inertia(&cloud, &qg))
+    });
+    let Some(assigned) = found else {
+        return Err(fail(format!(
+            "no random body fits the inertia matrix {:?} of solid {} (numbers and repeated \
+             parameters must follow from mirror planes, axes of revolution or flatness)",
+            inr.text, solid.name
+        )));
+    };
+    for (p, v) in assigned {
+        vals.params[p] = v;
+    }
+    Ok(())
 }

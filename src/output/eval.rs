@@ -1,7 +1,7 @@
 //! Numeric evaluation of derived values at given parameters and coordinates.
 
 use crate::derivation::Value;
-use crate::expr::{Expr, Trig, VarRole};
+use crate::expr::{Expr, Registry, Trig, VarId, VarRole};
 use crate::mechanism::Mechanism;
 use serde::Deserialize;
 use serde_json::{Value as Json, json};
@@ -285,6 +285,35 @@ fn point_where(
     why: &str,
 ) -> Result<Vec<f64>, ValuesError> {
     let reg = &m.reg;
+    check_names(reg, values)?;
+    let mut missing = Missing::default();
+    let mut point = Vec::with_capacity(reg.nvars());
+    for i in reg.var_ids() {
+        let v = if needed(i.index()) {
+            variable_value(reg, values, i, &mut missing)?
+        } else {
+            f64::NAN
+        };
+        let exempt = !needed(i.index())
+            || match reg.role(i) {
+                VarRole::Rate(_, 3) => true,
+                VarRole::Parameter(k) => reg.is_unknown(k),
+                _ => false,
+            };
+        if !v.is_finite() && !exempt && missing.is_empty() {
+            return Err(ValuesError(format!(
+                "`{}` is not a finite number at these values",
+                reg.variable(i)
+            )));
+        }
+        point.push(v);
+    }
+    missing.refuse(why)?;
+    Ok(point)
+}
+
+/// Every name of the values file is a parameter, a coordinate or an unknown of the PFD.
+fn check_names(reg: &Registry, values: &Values) -> Result<(), ValuesError> {
     for p in values.parameters.keys() {
         if !reg.parameters().contains(p) {
             return Err(ValuesError(format!("unknown parameter `{p}`")));
@@ -300,155 +329,176 @@ fn point_where(
             return Err(ValuesError(format!("`{u}` is not an unknown of the PFD")));
         }
     }
-    let (mut missing_parameters, mut missing_coordinates) = (Vec::new(), Vec::new());
-    let mut missing_time = false;
-    let miss = |list: &mut Vec<String>, name: &str| {
+    Ok(())
+}
+
+/// What the values file lacks, in the order met.
+#[derive(Default)]
+struct Missing {
+    parameters: Vec<String>,
+    coordinates: Vec<String>,
+    time: bool,
+}
+
+impl Missing {
+    fn is_empty(&self) -> bool {
+        self.parameters.is_empty() && self.coordinates.is_empty() && !self.time
+    }
+
+    /// Notes a missing parameter; its value is NaN.
+    fn parameter(&mut self, name: &str) -> f64 {
+        Missing::note(&mut self.parameters, name)
+    }
+
+    /// Notes a missing coordinate; its value is NaN.
+    fn coordinate(&mut self, name: &str) -> f64 {
+        Missing::note(&mut self.coordinates, name)
+    }
+
+    fn note(list: &mut Vec<String>, name: &str) -> f64 {
         if !list.iter().any(|x| x == name) {
             list.push(name.to_string());
         }
         f64::NAN
-    };
-    let mut point = Vec::with_capacity(reg.nvars());
-    for i in reg.var_ids() {
-        let v = match reg.role(i) {
-            _ if !needed(i.index()) => f64::NAN,
-            // Solved values never contain an unknown; an action of the bilan holds them as
-            // they are, and takes the values given.
-            VarRole::Parameter(k) if reg.is_unknown(k) => {
-                let name = reg.scalar_name(k);
-                values.unknowns.get(name).copied().unwrap_or(f64::NAN)
-            }
-            VarRole::Parameter(k) => {
-                let name = reg.scalar_name(k);
-                match values.parameters.get(name) {
-                    Some(v) => *v,
-                    None => miss(&mut missing_parameters, name),
-                }
-            }
-            // 1/k, for a parameter k the spec divides by.
-            VarRole::Inverse(k) => {
-                let name = reg.scalar_name(k);
-                match values.parameters.get(name) {
-                    Some(v) if *v == 0.0 => {
-                        return Err(ValuesError(format!(
-                            "`{name}` = 0, and the results divide by it"
-                        )));
-                    }
-                    Some(v) => 1.0 / v,
-                    None => miss(&mut missing_parameters, name),
-                }
-            }
-            // A constant angle parameter: its value is among the parameters.
-            VarRole::Cos(q) | VarRole::Sin(q) if reg.coord_info(q).is_constant() => {
-                let name = &reg.coord_info(q).name;
-                match values.parameters.get(name) {
-                    Some(a) if matches!(reg.role(i), VarRole::Cos(_)) => a.cos(),
-                    Some(a) => a.sin(),
-                    None => miss(&mut missing_parameters, name),
-                }
-            }
-            // A phase Ω t: Ω among the parameters, t the values' time.
-            VarRole::Cos(q) | VarRole::Sin(q) if reg.coord_info(q).phase().is_some() => {
-                let w = reg.coord_info(q).phase().unwrap_or_default();
-                let w = match values.parameters.get(w) {
-                    Some(w) => *w,
-                    None => miss(&mut missing_parameters, w),
-                };
-                match values.time {
-                    Some(t) if matches!(reg.role(i), VarRole::Cos(_)) => (w * t).cos(),
-                    Some(t) => (w * t).sin(),
-                    None => {
-                        missing_time = true;
-                        f64::NAN
-                    }
-                }
-            }
-            VarRole::Cos(q)
-            | VarRole::Sin(q)
-            | VarRole::Value(q)
-            | VarRole::Rate(q, _)
-            | VarRole::Reciprocal(q, _) => {
-                let name = &reg.coord_info(q).name;
-                match values.coordinates.get(name) {
-                    // 1/cos q or 1/sin q, for an angle a loop closure divides by.
-                    Some(c) if matches!(reg.role(i), VarRole::Reciprocal(..)) => {
-                        let (f, v) = match reg.role(i) {
-                            VarRole::Reciprocal(_, Trig::Sin) => ("sin", c[0].sin()),
-                            _ => ("cos", c[0].cos()),
-                        };
-                        if v.abs() < 1e-12 {
-                            return Err(ValuesError(format!(
-                                "{f}({name}) = 0 here, and the results divide by it (the loop \
-                                 closure is singular)"
-                            )));
-                        }
-                        1.0 / v
-                    }
-                    Some(c) => match reg.role(i) {
-                        VarRole::Cos(_) => c[0].cos(),
-                        VarRole::Sin(_) => c[0].sin(),
-                        VarRole::Value(_) => c[0],
-                        VarRole::Rate(_, 1) => c[1],
-                        VarRole::Rate(_, 2) => c[2],
-                        _ => f64::NAN,
-                    },
-                    None => miss(&mut missing_coordinates, name),
-                }
+    }
+
+    /// The error that names everything missing, if anything is.
+    fn refuse(&self, why: &str) -> Result<(), ValuesError> {
+        let plural = |n: usize, word: &str| {
+            if n > 1 {
+                format!("{word}s")
+            } else {
+                word.to_string()
             }
         };
-        let exempt = !needed(i.index())
-            || match reg.role(i) {
-                VarRole::Rate(_, 3) => true,
-                VarRole::Parameter(k) => reg.is_unknown(k),
-                _ => false,
-            };
-        if !v.is_finite()
-            && !exempt
-            && missing_parameters.is_empty()
-            && missing_coordinates.is_empty()
-            && !missing_time
-        {
-            return Err(ValuesError(format!(
-                "`{}` is not a finite number at these values",
-                reg.variable(i)
-            )));
+        let mut parts = Vec::new();
+        if !self.parameters.is_empty() {
+            parts.push(format!(
+                "{} {}",
+                plural(self.parameters.len(), "parameter"),
+                listed(&self.parameters)
+            ));
         }
-        point.push(v);
-    }
-    let plural = |n: usize, word: &str| {
-        if n > 1 {
-            format!("{word}s")
-        } else {
-            word.to_string()
+        if !self.coordinates.is_empty() {
+            parts.push(format!(
+                "{} {}",
+                plural(self.coordinates.len(), "coordinate"),
+                listed(&self.coordinates)
+            ));
         }
-    };
-    let mut parts = Vec::new();
-    if !missing_parameters.is_empty() {
-        parts.push(format!(
-            "{} {}",
-            plural(missing_parameters.len(), "parameter"),
-            listed(&missing_parameters)
-        ));
-    }
-    if !missing_coordinates.is_empty() {
-        parts.push(format!(
-            "{} {}",
-            plural(missing_coordinates.len(), "coordinate"),
-            listed(&missing_coordinates)
-        ));
-    }
-    if missing_time {
-        parts.push("the time `t` (\"time\": a number)".to_string());
-    }
-    if !parts.is_empty() {
+        if self.time {
+            parts.push("the time `t` (\"time\": a number)".to_string());
+        }
+        if parts.is_empty() {
+            return Ok(());
+        }
         // The time alone is one thing missing.
-        let why = match parts.len() == 1 && missing_time {
+        let why = match parts.len() == 1 && self.time {
             true => why.replace("hold them", "hold it"),
             false => why.to_string(),
         };
-        return Err(ValuesError(format!("missing {}{why}", parts.join(" and "))));
+        Err(ValuesError(format!("missing {}{why}", parts.join(" and "))))
     }
-    Ok(point)
+}
+
+/// The value of the needed variable `i` at the values file, NaN (and noted in `missing`) when
+/// the file lacks it.
+fn variable_value(
+    reg: &Registry,
+    values: &Values,
+    i: VarId,
+    missing: &mut Missing,
+) -> Result<f64, ValuesError> {
+    Ok(match reg.role(i) {
+        // Solved values never contain an unknown; an action of the bilan holds them as
+        // they are, and takes the values given.
+        VarRole::Parameter(k) if reg.is_unknown(k) => {
+            let name = reg.scalar_name(k);
+            values.unknowns.get(name).copied().unwrap_or(f64::NAN)
+        }
+        VarRole::Parameter(k) => {
+            let name = reg.scalar_name(k);
+            match values.parameters.get(name) {
+                Some(v) => *v,
+                None => missing.parameter(name),
+            }
+        }
+        // 1/k, for a parameter k the spec divides by.
+        VarRole::Inverse(k) => {
+            let name = reg.scalar_name(k);
+            match values.parameters.get(name) {
+                Some(v) if *v == 0.0 => {
+                    return Err(ValuesError(format!(
+                        "`{name}` = 0, and the results divide by it"
+                    )));
+                }
+                Some(v) => 1.0 / v,
+                None => missing.parameter(name),
+            }
+        }
+        // A constant angle parameter: its value is among the parameters.
+        VarRole::Cos(q) | VarRole::Sin(q) if reg.coord_info(q).is_constant() => {
+            let name = &reg.coord_info(q).name;
+            match values.parameters.get(name) {
+                Some(a) if matches!(reg.role(i), VarRole::Cos(_)) => a.cos(),
+                Some(a) => a.sin(),
+                None => missing.parameter(name),
+            }
+        }
+        // A phase Ω t: Ω among the parameters, t the values' time.
+        VarRole::Cos(q) | VarRole::Sin(q) if reg.coord_info(q).phase().is_some() => {
+            let w = reg.coord_info(q).phase().unwrap_or_default();
+            let w = match values.parameters.get(w) {
+                Some(w) => *w,
+                None => missing.parameter(w),
+            };
+            match values.time {
+                Some(t) if matches!(reg.role(i), VarRole::Cos(_)) => (w * t).cos(),
+                Some(t) => (w * t).sin(),
+                None => {
+                    missing.time = true;
+                    f64::NAN
+                }
+            }
+        }
+        VarRole::Cos(q)
+        | VarRole::Sin(q)
+        | VarRole::Value(q)
+        | VarRole::Rate(q, _)
+        | VarRole::Reciprocal(q, _) => {
+            let name = &reg.coord_info(q).name;
+            match values.coordinates.get(name) {
+                Some(c) => coordinate_value(reg.role(i), name, c)?,
+                None => missing.coordinate(name),
+            }
+        }
+    })
+}
+
+/// A variable of coordinate `name` (cos, sin, value, rate, reciprocal) at its [q, q̇, q̈] `c`.
+fn coordinate_value(role: VarRole, name: &str, c: &[f64; 3]) -> Result<f64, ValuesError> {
+    Ok(match role {
+        // 1/cos q or 1/sin q, for an angle a loop closure divides by.
+        VarRole::Reciprocal(_, trig) => {
+            let (f, v) = match trig {
+                Trig::Sin => ("sin", c[0].sin()),
+                _ => ("cos", c[0].cos()),
+            };
+            if v.abs() < 1e-12 {
+                return Err(ValuesError(format!(
+                    "{f}({name}) = 0 here, and the results divide by it (the loop \
+                     closure is singular)"
+                )));
+            }
+            1.0 / v
+        }
+        VarRole::Cos(_) => c[0].cos(),
+        VarRole::Sin(_) => c[0].sin(),
+        VarRole::Value(_) => c[0],
+        VarRole::Rate(_, 1) => c[1],
+        VarRole::Rate(_, 2) => c[2],
+        _ => f64::NAN,
+    })
 }
 
 /// A derived value evaluated at a point, as the JSON of the CLI contract; refused when a

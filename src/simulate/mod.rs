@@ -191,9 +191,29 @@ pub fn simulate_with(
         ..Options::default()
     };
     let y0 = plan.initial_state();
-    // The dependent coordinates start on the loop: their initial values are given.
+    check_loop_start(m, sc, &mut plan, &y0)?;
+    let traj = integrate(|t, y, dy| plan.rhs(m, t, y, dy), &y0, sc.duration, &opts)?;
+    let (mut columns, shown) = empty_columns(m, sc, &plan, integrals, traj.len());
+    let drift = fill_columns(m, sc, &mut plan, &traj, &shown, &mut columns)?;
+    Ok(Run {
+        scenario: sc.name.clone(),
+        label: sc.label(),
+        times: traj.times().to_vec(),
+        columns,
+        stats: traj.stats(),
+        drift,
+    })
+}
+
+/// The dependent coordinates start on the loop: their initial values are given.
+fn check_loop_start(
+    m: &Mechanism,
+    sc: &ScenarioSpec,
+    plan: &mut Plan,
+    y0: &[f64],
+) -> Result<(), SimulateError> {
     let scale = sc.values.values().fold(1.0_f64, |a, v| a.max(v.abs()));
-    if let Some(r) = plan.closure_residual(m, 0.0, &y0)
+    if let Some(r) = plan.closure_residual(m, 0.0, y0)
         && r > 1e-9 * scale
     {
         let names: Vec<&str> = plan
@@ -208,7 +228,19 @@ pub fn simulate_with(
             names.join(", ")
         )));
     }
-    let traj = integrate(|t, y, dy| plan.rhs(m, t, y, dy), &y0, sc.duration, &opts)?;
+    Ok(())
+}
+
+/// The run's columns, with room for `len` instants: each shown coordinate and its rate
+/// (imposed, free, driven), the recorded unknowns, the integrals. Also which imposed
+/// coordinates are shown (a phase Ω t is the time itself, scaled: not a column of its own).
+fn empty_columns(
+    m: &Mechanism,
+    sc: &ScenarioSpec,
+    plan: &Plan,
+    integrals: &[(String, Expr)],
+    len: usize,
+) -> (Vec<Column>, Vec<bool>) {
     let reg = &m.reg;
     let unit = |q: crate::expr::CoordId, rate: bool| {
         let base = match reg.coord_info(q).kind {
@@ -226,10 +258,9 @@ pub fn simulate_with(
         columns.push(Column {
             id,
             unit,
-            values: Vec::with_capacity(traj.len()),
+            values: Vec::with_capacity(len),
         })
     };
-    // A phase Ω t is the time itself, scaled: not a column of its own.
     let shown: Vec<bool> = plan
         .imposed
         .iter()
@@ -251,6 +282,19 @@ pub fn simulate_with(
     for (name, _) in integrals {
         push(format!("int({name})"), "SI".to_string());
     }
+    (columns, shown)
+}
+
+/// Fills the columns at every instant of the trajectory; returns the largest drift of the
+/// loop closures, if any.
+fn fill_columns(
+    m: &Mechanism,
+    sc: &ScenarioSpec,
+    plan: &mut Plan,
+    traj: &Trajectory,
+    shown: &[bool],
+    columns: &mut [Column],
+) -> Result<Option<f64>, SimulateError> {
     let ni = plan.imposed.len();
     let nf = plan.free.len();
     let at = ni + 2 * nf + plan.integrals;
@@ -287,14 +331,7 @@ pub fn simulate_with(
             put(y[ni + 2 * nf + i], &mut c);
         }
     }
-    Ok(Run {
-        scenario: sc.name.clone(),
-        label: sc.label(),
-        times: traj.times().to_vec(),
-        columns,
-        stats: traj.stats(),
-        drift,
-    })
+    Ok(drift)
 }
 
 /// A figure comparing runs: one panel per column id, one curve per run, named by the legend

@@ -261,70 +261,68 @@ pub fn integrate(
     let mut y = DVector::from_column_slice(y0);
 
     for (p, w) in pieces.windows(2).enumerate() {
-        let (a, b) = (w[0], w[1]);
-        let first = p == 0;
-        let last = p + 2 == pieces.len();
-        let len = b - a;
+        let span = Span {
+            a: w[0],
+            b: w[1],
+            last: p + 2 == pieces.len(),
+        };
         let system = Piece {
             f: &rhs,
             failure: &failure,
-            offset: a,
-            t_lo: if first { a } else { a.next_up() },
-            t_hi: if last { b } else { b.next_down() },
+            offset: span.a,
+            t_lo: if p == 0 { span.a } else { span.a.next_up() },
+            t_hi: if span.last {
+                span.b
+            } else {
+                span.b.next_down()
+            },
         };
         let budget = opts.max_steps.saturating_sub(steps_used);
         if budget == 0 {
             return Err(SimError::MaxSteps {
-                t: a,
+                t: span.a,
                 steps: steps_used,
             });
         }
-        let h_max = opts.max_step.map_or(len, |h| h.min(len));
-        let mut stepper = Dopri5::from_param(
-            system,
-            0.0,
-            len,
-            len, // output increment: unused with a continuous output model
-            y.clone(),
-            opts.rtol,
-            opts.atol,
-            0.9,  // safety factor (DOPRI5 default)
-            0.04, // beta of the PI controller (DOPRI5 default)
-            0.2,  // smallest step ratio (DOPRI5 default)
-            10.0, // largest step ratio (DOPRI5 default)
-            h_max,
-            0.0, // initial step: automatic
-            u32::try_from(budget).unwrap_or(u32::MAX),
-            1000, // stiffness test period (DOPRI5 default)
-            OutputType::Continuous,
-        );
+        let mut stepper = stepper(system, &y, span.b - span.a, budget, opts);
         let mut model = ContinuousOutputModel::default();
         let outcome = stepper.integrate_with_continuous_output_model(&mut model);
         if let Some(err) = failure.take() {
             return Err(err);
         }
-        let stats = match outcome {
-            Ok(stats) => stats,
-            Err(IntegrationError::MaxNumStepReached { x, n_step }) => {
-                return Err(SimError::MaxSteps {
-                    t: a + x,
-                    steps: steps_used + u64::from(n_step),
-                });
-            }
-            Err(IntegrationError::StepSizeUnderflow { x }) => {
-                return Err(SimError::StepSizeUnderflow { t: a + x });
-            }
-            Err(IntegrationError::StiffnessDetected { x }) => {
-                return Err(SimError::Stiff { t: a + x });
-            }
-        };
+        let stats = outcome.map_err(|e| integration_error(e, span.a, steps_used))?;
         out.stats.evaluations += u64::from(stats.num_eval);
         out.stats.accepted_steps += u64::from(stats.accepted_steps);
         out.stats.rejected_steps += u64::from(stats.rejected_steps);
         steps_used += u64::from(stats.accepted_steps) + u64::from(stats.rejected_steps);
 
-        let xs = stepper.x_out();
-        let ys = stepper.y_out();
+        let (xs, ys) = (stepper.x_out(), stepper.y_out());
+        let end = span.end(xs, ys)?;
+        match &grid {
+            None => out.push_steps(&span, xs, ys),
+            Some(grid) => out.push_grid(grid, &mut next_k, &span, &model, end)?,
+        }
+        y = end.1.clone();
+    }
+    Ok(out)
+}
+
+/// One piece `[a, b]` of the integration, `last` if it ends at `t_end`.
+struct Span {
+    a: f64,
+    b: f64,
+    last: bool,
+}
+
+impl Span {
+    /// The last instant (local time) and state the integrator reached, refused when it
+    /// stopped before the end of the piece.
+    fn end<'y>(
+        &self,
+        xs: &[f64],
+        ys: &'y [DVector<f64>],
+    ) -> Result<(f64, &'y DVector<f64>), SimError> {
+        let (a, b, len) = (self.a, self.b, self.b - self.a);
         let (Some(&x_last), Some(y_last)) = (xs.last(), ys.last()) else {
             return Err(SimError::Integrator(format!(
                 "no step taken from t = {a} s"
@@ -337,43 +335,95 @@ pub fn integrate(
                 a + x_last
             )));
         }
+        Ok((x_last, y_last))
+    }
+}
 
-        match &grid {
-            None => {
-                let n = xs.len();
-                for (i, (x, yi)) in xs.iter().zip(ys).enumerate() {
-                    let t = if i + 1 == n { b } else { a + x };
-                    if i + 1 == n || t < b {
-                        out.times.push(t);
-                        out.values.extend_from_slice(yi.as_slice());
-                    }
-                }
-            }
-            Some(grid) => {
-                while next_k < grid.count {
-                    let t = grid.time(next_k);
-                    if t > b && !last {
-                        break;
-                    }
-                    let tau = (t - a).max(0.0);
-                    if tau >= x_last {
-                        out.values.extend_from_slice(y_last.as_slice());
-                    } else {
-                        let Some(yt) = model.evaluate(tau) else {
-                            return Err(SimError::Integrator(format!(
-                                "no dense output at t = {t} s"
-                            )));
-                        };
-                        out.values.extend_from_slice(yt.as_slice());
-                    }
-                    out.times.push(t);
-                    next_k += 1;
-                }
+/// A Dormand–Prince 5(4) integrator over a piece of length `len` from state `y`, with at most
+/// `budget` steps.
+fn stepper<S: System<f64, DVector<f64>>>(
+    system: S,
+    y: &DVector<f64>,
+    len: f64,
+    budget: u64,
+    opts: &Options,
+) -> Dopri5<f64, DVector<f64>, S> {
+    let h_max = opts.max_step.map_or(len, |h| h.min(len));
+    Dopri5::from_param(
+        system,
+        0.0,
+        len,
+        len, // output increment: unused with a continuous output model
+        y.clone(),
+        opts.rtol,
+        opts.atol,
+        0.9,  // safety factor (DOPRI5 default)
+        0.04, // beta of the PI controller (DOPRI5 default)
+        0.2,  // smallest step ratio (DOPRI5 default)
+        10.0, // largest step ratio (DOPRI5 default)
+        h_max,
+        0.0, // initial step: automatic
+        u32::try_from(budget).unwrap_or(u32::MAX),
+        1000, // stiffness test period (DOPRI5 default)
+        OutputType::Continuous,
+    )
+}
+
+/// The integrator's failure in a piece starting at `a`, after `steps_used` steps before it.
+fn integration_error(e: IntegrationError, a: f64, steps_used: u64) -> SimError {
+    match e {
+        IntegrationError::MaxNumStepReached { x, n_step } => SimError::MaxSteps {
+            t: a + x,
+            steps: steps_used + u64::from(n_step),
+        },
+        IntegrationError::StepSizeUnderflow { x } => SimError::StepSizeUnderflow { t: a + x },
+        IntegrationError::StiffnessDetected { x } => SimError::Stiff { t: a + x },
+    }
+}
+
+impl Trajectory {
+    /// Records the accepted steps of a piece (its last one at exactly `b`).
+    fn push_steps(&mut self, span: &Span, xs: &[f64], ys: &[DVector<f64>]) {
+        let n = xs.len();
+        for (i, (x, yi)) in xs.iter().zip(ys).enumerate() {
+            let t = if i + 1 == n { span.b } else { span.a + x };
+            if i + 1 == n || t < span.b {
+                self.times.push(t);
+                self.values.extend_from_slice(yi.as_slice());
             }
         }
-        y = y_last.clone();
     }
-    Ok(out)
+
+    /// Records the grid instants of a piece, from `next_k` on, from its dense output.
+    fn push_grid(
+        &mut self,
+        grid: &Grid,
+        next_k: &mut usize,
+        span: &Span,
+        model: &ContinuousOutputModel<f64, DVector<f64>>,
+        (x_last, y_last): (f64, &DVector<f64>),
+    ) -> Result<(), SimError> {
+        while *next_k < grid.count {
+            let t = grid.time(*next_k);
+            if t > span.b && !span.last {
+                break;
+            }
+            let tau = (t - span.a).max(0.0);
+            if tau >= x_last {
+                self.values.extend_from_slice(y_last.as_slice());
+            } else {
+                let Some(yt) = model.evaluate(tau) else {
+                    return Err(SimError::Integrator(format!(
+                        "no dense output at t = {t} s"
+                    )));
+                };
+                self.values.extend_from_slice(yt.as_slice());
+            }
+            self.times.push(t);
+            *next_k += 1;
+        }
+        Ok(())
+    }
 }
 
 /// Checks the arguments; returns the piece boundaries `t0 = p_0 < p_1 < … < p_n = t_end`.

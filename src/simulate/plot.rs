@@ -11,7 +11,10 @@ use std::path::Path;
 use std::sync::OnceLock;
 
 use plotters::backend::{BitMapBackend, DrawingBackend, RGBPixel, SVGBackend};
+use plotters::chart::ChartContext;
 use plotters::coord::Shift;
+use plotters::coord::cartesian::Cartesian2d;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::{
     ChartBuilder, Color, DrawingArea, IntoDrawingArea, IntoFont, LineSeries, PathElement, RGBColor,
     SeriesLabelPosition, ShapeStyle,
@@ -328,83 +331,124 @@ impl Figure {
         let cuts: Vec<u32> = (1..k).map(|i| (plot_h * i as f64).round() as u32).collect();
         let areas = body.split_by_breakpoints(Vec::<u32>::new(), cuts);
 
-        for (i, (panel, area)) in self.panels.iter().zip(&areas).enumerate() {
-            let bottom = i + 1 == k;
-            let y_range = match panel.y_range {
-                Some(r) => checked_range(r, "y")?,
-                None => padded_range(
-                    panel.series.iter().flat_map(|se| &se.points).map(|p| p.1),
-                    0.05,
-                ),
+        for (i, area) in areas.iter().enumerate().take(k) {
+            let at = PanelAt {
+                i,
+                bottom: i + 1 == k,
+                x_range,
+                x_label_area,
+                s,
             };
-            let mut chart = ChartBuilder::on(area)
-                .margin_top(px(6.0))
-                .margin_bottom(px(if bottom { 0.0 } else { 6.0 }))
-                .x_label_area_size(if bottom { x_label_area } else { 0 })
-                .y_label_area_size(px(78.0))
-                .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)
-                .map_err(plot_err)?;
-            let grid = |c: u8, w: f64| ShapeStyle {
-                color: RGBAColor(c, c, c, 1.0),
-                filled: false,
-                stroke_width: px(w).max(1),
-            };
-            let mut mesh = chart.configure_mesh();
-            mesh.y_desc(panel.y_label.as_str())
-                .label_style(font(13.0))
-                .axis_desc_style(font(15.0))
-                .light_line_style(grid(238, 1.0))
-                .bold_line_style(grid(208, 1.0))
-                .axis_style(grid(0, 1.0))
-                .set_all_tick_mark_size(px(5.0))
-                .x_labels(10)
-                .y_labels(8)
-                .x_label_formatter(&tick_label)
-                .y_label_formatter(&tick_label);
-            if bottom {
-                mesh.x_desc(self.x_label.as_str());
-            }
-            mesh.draw().map_err(plot_err)?;
-
-            // A legend that would repeat the one above (same series names) is left out.
-            let names = |p: &Panel| p.series.iter().map(|s| s.name.clone()).collect::<Vec<_>>();
-            let repeated = i > 0 && names(panel) == names(&self.panels[i - 1]);
-            let mut labelled = false;
-            for (c, series) in panel.series.iter().enumerate() {
-                let style = ShapeStyle {
-                    color: PALETTE[c % PALETTE.len()].to_rgba(),
-                    filled: false,
-                    stroke_width: px(2.0).max(1),
-                };
-                let runs = finite_runs(&series.points);
-                for (r, run) in runs.iter().enumerate() {
-                    let anno = chart
-                        .draw_series(LineSeries::new(run.iter().copied(), style))
-                        .map_err(plot_err)?;
-                    if r == 0 && !repeated && !series.name.is_empty() {
-                        let len = px(22.0) as i32;
-                        anno.label(series.name.as_str()).legend(move |(x, y)| {
-                            PathElement::new(vec![(x, y), (x + len, y)], style)
-                        });
-                        labelled = true;
-                    }
-                }
-            }
-            if labelled {
-                chart
-                    .configure_series_labels()
-                    .position(legend_corner(panel, x_range, y_range))
-                    .margin(px(8.0))
-                    .legend_area_size(px(28.0))
-                    .label_font(font(13.0))
-                    .background_style(RGBColor(255, 255, 255).mix(0.85))
-                    .border_style(RGBColor(120, 120, 120))
-                    .draw()
-                    .map_err(plot_err)?;
-            }
+            self.draw_panel(area, &at)?;
         }
         Ok(())
     }
+
+    /// Draws panel `at.i` on `area`: its axes and grid, then its curves and legend.
+    fn draw_panel<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        at: &PanelAt,
+    ) -> Result<(), SimError> {
+        let panel = &self.panels[at.i];
+        let px = |v: f64| (v * at.s).round() as u32;
+        let font = |size: f64| TextStyle::from((FAMILY, size * at.s).into_font());
+        let (x_range, bottom) = (at.x_range, at.bottom);
+        let y_range = match panel.y_range {
+            Some(r) => checked_range(r, "y")?,
+            None => padded_range(
+                panel.series.iter().flat_map(|se| &se.points).map(|p| p.1),
+                0.05,
+            ),
+        };
+        let mut chart = ChartBuilder::on(area)
+            .margin_top(px(6.0))
+            .margin_bottom(px(if bottom { 0.0 } else { 6.0 }))
+            .x_label_area_size(if bottom { at.x_label_area } else { 0 })
+            .y_label_area_size(px(78.0))
+            .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)
+            .map_err(plot_err)?;
+        let grid = |c: u8, w: f64| ShapeStyle {
+            color: RGBAColor(c, c, c, 1.0),
+            filled: false,
+            stroke_width: px(w).max(1),
+        };
+        let mut mesh = chart.configure_mesh();
+        mesh.y_desc(panel.y_label.as_str())
+            .label_style(font(13.0))
+            .axis_desc_style(font(15.0))
+            .light_line_style(grid(238, 1.0))
+            .bold_line_style(grid(208, 1.0))
+            .axis_style(grid(0, 1.0))
+            .set_all_tick_mark_size(px(5.0))
+            .x_labels(10)
+            .y_labels(8)
+            .x_label_formatter(&tick_label)
+            .y_label_formatter(&tick_label);
+        if bottom {
+            mesh.x_desc(self.x_label.as_str());
+        }
+        mesh.draw().map_err(plot_err)?;
+
+        if self.draw_curves(&mut chart, at)? {
+            chart
+                .configure_series_labels()
+                .position(legend_corner(panel, x_range, y_range))
+                .margin(px(8.0))
+                .legend_area_size(px(28.0))
+                .label_font(font(13.0))
+                .background_style(RGBColor(255, 255, 255).mix(0.85))
+                .border_style(RGBColor(120, 120, 120))
+                .draw()
+                .map_err(plot_err)?;
+        }
+        Ok(())
+    }
+
+    /// Draws the curves of panel `at.i` (each series split where it is not finite); returns
+    /// whether one is labelled for a legend.
+    fn draw_curves<DB: DrawingBackend>(
+        &self,
+        chart: &mut ChartContext<'_, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+        at: &PanelAt,
+    ) -> Result<bool, SimError> {
+        let (i, panel) = (at.i, &self.panels[at.i]);
+        let px = |v: f64| (v * at.s).round() as u32;
+        // A legend that would repeat the one above (same series names) is left out.
+        let names = |p: &Panel| p.series.iter().map(|s| s.name.clone()).collect::<Vec<_>>();
+        let repeated = i > 0 && names(panel) == names(&self.panels[i - 1]);
+        let mut labelled = false;
+        for (c, series) in panel.series.iter().enumerate() {
+            let style = ShapeStyle {
+                color: PALETTE[c % PALETTE.len()].to_rgba(),
+                filled: false,
+                stroke_width: px(2.0).max(1),
+            };
+            let runs = finite_runs(&series.points);
+            for (r, run) in runs.iter().enumerate() {
+                let anno = chart
+                    .draw_series(LineSeries::new(run.iter().copied(), style))
+                    .map_err(plot_err)?;
+                if r == 0 && !repeated && !series.name.is_empty() {
+                    let len = px(22.0) as i32;
+                    anno.label(series.name.as_str())
+                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + len, y)], style));
+                    labelled = true;
+                }
+            }
+        }
+        Ok(labelled)
+    }
+}
+
+/// Where a panel is drawn: its index, whether it is the bottom one (with the x labels), the
+/// shared x range, the height of the x label area and the scale of every length.
+struct PanelAt {
+    i: usize,
+    bottom: bool,
+    x_range: (f64, f64),
+    x_label_area: u32,
+    s: f64,
 }
 
 /// Plots `series` on one chart (one panel) and writes it as SVG to `path_svg` and, if given,

@@ -95,228 +95,27 @@ impl Plan {
         integrate: &[(String, Expr)],
     ) -> Result<Plan, SimulateError> {
         let err = |s: String| SimulateError::Scenario(format!("scenario `{}`: {s}", sc.name));
-        let reg = &m.reg;
         let sol = pfd::solve(m).map_err(|e| err(e.to_string()))?;
-        let sign = |p: &str| m.dynamics.dry.iter().any(|d| d.sign == p);
-        for p in reg.parameters() {
-            if !sc.values.contains_key(p) && !sign(p) {
-                return Err(err(format!("no value for the parameter `{p}`")));
-            }
-        }
-        for (k, v) in &sc.values {
-            if sign(k) {
-                return Err(err(format!(
-                    "`{k}` is the sign of a link's relative rate under dry friction: the \
-                     simulation sets it"
-                )));
-            }
-            if !reg.parameters().contains(k) {
-                return Err(err(format!("`{k}` is not a parameter")));
-            }
-            if !v.is_finite() {
-                return Err(err(format!("the value of `{k}` is not finite")));
-            }
-        }
-        let mut base = vec![0.0; reg.nvars()];
-        for v in reg.var_ids() {
-            let i = v.index();
-            match reg.role(v) {
-                VarRole::Parameter(k) if !reg.is_unknown(k) => {
-                    base[i] = sc.values.get(reg.scalar_name(k)).copied().unwrap_or(0.0);
-                }
-                // 1/k, for a parameter k the spec divides by.
-                VarRole::Inverse(k) => {
-                    let name = reg.scalar_name(k);
-                    if sc.values[name] == 0.0 {
-                        return Err(err(format!("`{name}` = 0, and the spec divides by it")));
-                    }
-                    base[i] = 1.0 / sc.values[name];
-                }
-                // cos and sin of a constant angle parameter.
-                VarRole::Cos(q) if reg.coord_info(q).is_constant() => {
-                    base[i] = sc.values[&reg.coord_info(q).name].cos();
-                }
-                VarRole::Sin(q) if reg.coord_info(q).is_constant() => {
-                    base[i] = sc.values[&reg.coord_info(q).name].sin();
-                }
-                _ => {}
-            }
-        }
-        let params: Vec<f64> = reg
-            .parameters()
-            .iter()
-            .map(|p| sc.values.get(p).copied().unwrap_or(0.0))
-            .collect();
-        let mut imposed = Vec::new();
-        let mut breakpoints = Vec::new();
-        for (k, im) in sc.imposed.iter().enumerate() {
-            let q = reg.coord(&im.coordinate).ok_or_else(|| {
-                err(format!(
-                    "imposed[{k}]: unknown coordinate `{}`",
-                    im.coordinate
-                ))
-            })?;
-            let law = TimeLaw::new(&im.rate, reg.parameters(), &params)
-                .and_then(|law| law.check_starts(sc.duration).map(|()| law))
-                .map_err(|e| {
-                    let at = e.path_under(&format!("imposed[{k}].rate"));
-                    err(format!("{at}: {}", e.message))
-                })?;
-            breakpoints.extend(law.breakpoints());
-            imposed.push(Imposed {
-                coord: q,
-                initial: im.initial,
-                law: ImposedLaw::Law(law),
-            });
-        }
-        // A law on a driven coordinate would contradict its relation.
-        if let Some(im) = imposed
-            .iter()
-            .find(|im| reg.coord_info(im.coord).is_driven())
-        {
-            return Err(err(format!(
-                "`{}` is driven by other coordinates' rates: its motion cannot be imposed",
-                reg.coord_info(im.coord).name
-            )));
-        }
-        let mut free = Vec::new();
-        let mut driven = Vec::new();
-        for (i, c) in reg.coordinates().iter().enumerate() {
-            let q = CoordId(i);
-            if imposed.iter().any(|x| x.coord == q) {
-                continue;
-            }
-            if c.is_driven() {
-                driven.push(q);
-                continue;
-            }
-            if c.has_imposed_rate() {
-                let w = reg.rate(q, 1).eval(&base);
-                imposed.push(Imposed {
-                    coord: q,
-                    initial: sc.initial.get(&c.name).map(|v| v[0]).unwrap_or(0.0),
-                    law: ImposedLaw::Constant(w),
-                });
-                continue;
-            }
-            free.push(q);
-        }
-        let mut initial = Vec::new();
-        for &q in &free {
-            let name = &reg.coord_info(q).name;
-            if !sol.eom.contains_key(name) {
-                return Err(err(format!(
-                    "the coordinate `{name}` is neither imposed nor given an equation of motion \
-                     (mark one equation of `pfd` with \"eom\": \"{name}\")"
-                )));
-            }
-            initial.push(sc.initial.get(name).copied().unwrap_or([0.0, 0.0]));
-        }
-        for name in sc.initial.keys() {
-            if reg.coord(name).is_none() {
-                return Err(err(format!("initial: unknown coordinate `{name}`")));
-            }
-        }
-        // M q̈ + h = 0 over the free coordinates; every eom is linear in the q̈.
-        let n = free.len();
-        let mut exprs: Vec<Expr> = Vec::with_capacity(n * n + n);
-        let mut hs = Vec::with_capacity(n);
-        for &qi in &free {
-            let e = &sol.eom[&reg.coord_info(qi).name];
-            let mut h = e.clone();
-            for &qj in &free {
-                let mij = e.partial_rate(qj, 2);
-                if !mij.partial_rate(qj, 2).is_zero() {
-                    return Err(err(
-                        "an equation of motion is not linear in the accelerations".into(),
-                    ));
-                }
-                let x = reg.ddot(qj);
-                h = &h - &(&mij * &x);
-                exprs.push(mij);
-            }
-            hs.push(h);
-        }
-        exprs.extend(hs);
-        // Every coordinate imposed: nothing to solve for (the evaluator gets one dummy output).
-        if exprs.is_empty() {
-            exprs.push(reg.zero());
-        }
-        let refs: Vec<&Expr> = exprs.iter().collect();
-        let dynamics = reg
-            .compile(&refs)
-            .map_err(|e| err(format!("compiling the equations of motion: {e}")))?;
-        let mut rec: Vec<Expr> = Vec::new();
-        let mut scales = Vec::new();
-        for id in record {
-            let v = sol
-                .unknowns
-                .get(id)
-                .ok_or_else(|| err(format!("record: `{id}` is not a solved unknown")))?;
-            rec.push(v.num.clone());
-            scales.push(1.0 / v.den.eval(&base));
-        }
-        for (_, e) in integrate {
-            rec.push(e.clone());
-            scales.push(1.0);
-        }
-        if rec.is_empty() {
-            rec.push(reg.zero());
-        }
-        let refs: Vec<&Expr> = rec.iter().collect();
-        let recorded = reg
-            .compile(&refs)
-            .map_err(|e| err(format!("compiling the recorded quantities: {e}")))?;
+        check_values(m, sc).map_err(err)?;
+        let base = base_values(m, sc).map_err(err)?;
+        let (mut imposed, mut breakpoints) = imposed_laws(m, sc).map_err(err)?;
+        let (free, driven) = split_coordinates(m, sc, &base, &mut imposed);
+        let initial = free_initial(m, sc, &sol, &free).map_err(err)?;
+        let dynamics = compile_dynamics(m, &sol, &free).map_err(err)?;
+        let (recorded, scales) =
+            compile_recorded(m, &sol, &base, record, integrate).map_err(err)?;
         breakpoints.sort_by(f64::total_cmp);
         breakpoints.dedup();
         let driven_initial: Vec<f64> = driven
             .iter()
             .map(|&q| {
-                let name = &reg.coord_info(q).name;
+                let name = &m.reg.coord_info(q).name;
                 sc.initial.get(name).map(|v| v[0]).unwrap_or(0.0)
             })
             .collect();
-        let mut rates: Vec<Expr> = driven.iter().map(|&q| reg.dot(q)).collect();
-        if rates.is_empty() {
-            rates.push(reg.zero());
-        }
-        let refs: Vec<&Expr> = rates.iter().collect();
-        let driven_rates = reg
-            .compile(&refs)
-            .map_err(|e| err(format!("compiling the driven rates: {e}")))?;
-        let g0 = m.frames.ground();
-        let rows: Vec<Expr> = m
-            .closure_vectors()
-            .iter()
-            .flat_map(|v| v.express_in(&m.frames, g0))
-            .filter(|e| !e.is_zero())
-            .collect();
-        let closure = if rows.is_empty() {
-            None
-        } else {
-            let refs: Vec<&Expr> = rows.iter().collect();
-            Some(
-                reg.compile(&refs)
-                    .map_err(|e| err(format!("compiling the loop closures: {e}")))?,
-            )
-        };
-        let mut dry = Vec::new();
-        for d in &m.dynamics.dry {
-            let var = reg
-                .var_ids()
-                .find(|&v| {
-                    matches!(reg.role(v), VarRole::Parameter(k) if reg.scalar_name(k) == d.sign)
-                })
-                .ok_or_else(|| err(format!("no variable for `{}`", d.sign)))?;
-            let acc = d.rate.dt();
-            let motion = reg
-                .compile(&[&d.rate, &acc])
-                .map_err(|e| err(format!("compiling the dry friction's rates: {e}")))?;
-            dry.push(Dry {
-                var: var.index(),
-                motion,
-            });
-        }
+        let driven_rates = compile_driven_rates(m, &driven).map_err(err)?;
+        let closure = compile_closure(m).map_err(err)?;
+        let dry = dry_links(m).map_err(err)?;
         Ok(Plan {
             dry,
             driven,
@@ -516,4 +315,287 @@ fn set(m: &Mechanism, q: CoordId, v: [f64; 3], point: &mut [f64]) {
             point[i.index()] = x;
         }
     }
+}
+
+/// Every parameter given a finite value, and only parameters (a dry friction's sign is set by
+/// the simulation).
+fn check_values(m: &Mechanism, sc: &ScenarioSpec) -> Result<(), String> {
+    let reg = &m.reg;
+    let sign = |p: &str| m.dynamics.dry.iter().any(|d| d.sign == p);
+    for p in reg.parameters() {
+        if !sc.values.contains_key(p) && !sign(p) {
+            return Err(format!("no value for the parameter `{p}`"));
+        }
+    }
+    for (k, v) in &sc.values {
+        if sign(k) {
+            return Err(format!(
+                "`{k}` is the sign of a link's relative rate under dry friction: the \
+                 simulation sets it"
+            ));
+        }
+        if !reg.parameters().contains(k) {
+            return Err(format!("`{k}` is not a parameter"));
+        }
+        if !v.is_finite() {
+            return Err(format!("the value of `{k}` is not finite"));
+        }
+    }
+    Ok(())
+}
+
+/// The registry variables fixed by the scenario's values: parameters, their inverses, cos and
+/// sin of constant angles (0 for the others).
+fn base_values(m: &Mechanism, sc: &ScenarioSpec) -> Result<Vec<f64>, String> {
+    let reg = &m.reg;
+    let mut base = vec![0.0; reg.nvars()];
+    for v in reg.var_ids() {
+        let i = v.index();
+        match reg.role(v) {
+            VarRole::Parameter(k) if !reg.is_unknown(k) => {
+                base[i] = sc.values.get(reg.scalar_name(k)).copied().unwrap_or(0.0);
+            }
+            // 1/k, for a parameter k the spec divides by.
+            VarRole::Inverse(k) => {
+                let name = reg.scalar_name(k);
+                if sc.values[name] == 0.0 {
+                    return Err(format!("`{name}` = 0, and the spec divides by it"));
+                }
+                base[i] = 1.0 / sc.values[name];
+            }
+            // cos and sin of a constant angle parameter.
+            VarRole::Cos(q) if reg.coord_info(q).is_constant() => {
+                base[i] = sc.values[&reg.coord_info(q).name].cos();
+            }
+            VarRole::Sin(q) if reg.coord_info(q).is_constant() => {
+                base[i] = sc.values[&reg.coord_info(q).name].sin();
+            }
+            _ => {}
+        }
+    }
+    Ok(base)
+}
+
+/// The scenario's imposed rate laws, and their breakpoints.
+fn imposed_laws(m: &Mechanism, sc: &ScenarioSpec) -> Result<(Vec<Imposed>, Vec<f64>), String> {
+    let reg = &m.reg;
+    let params: Vec<f64> = reg
+        .parameters()
+        .iter()
+        .map(|p| sc.values.get(p).copied().unwrap_or(0.0))
+        .collect();
+    let mut imposed = Vec::new();
+    let mut breakpoints = Vec::new();
+    for (k, im) in sc.imposed.iter().enumerate() {
+        let q = reg
+            .coord(&im.coordinate)
+            .ok_or_else(|| format!("imposed[{k}]: unknown coordinate `{}`", im.coordinate))?;
+        let law = TimeLaw::new(&im.rate, reg.parameters(), &params)
+            .and_then(|law| law.check_starts(sc.duration).map(|()| law))
+            .map_err(|e| {
+                let at = e.path_under(&format!("imposed[{k}].rate"));
+                format!("{at}: {}", e.message)
+            })?;
+        breakpoints.extend(law.breakpoints());
+        imposed.push(Imposed {
+            coord: q,
+            initial: im.initial,
+            law: ImposedLaw::Law(law),
+        });
+    }
+    // A law on a driven coordinate would contradict its relation.
+    if let Some(im) = imposed
+        .iter()
+        .find(|im| reg.coord_info(im.coord).is_driven())
+    {
+        return Err(format!(
+            "`{}` is driven by other coordinates' rates: its motion cannot be imposed",
+            reg.coord_info(im.coord).name
+        ));
+    }
+    Ok((imposed, breakpoints))
+}
+
+/// The coordinates neither imposed by the scenario nor driven: a constant rate of the spec
+/// joins `imposed`; the others are returned as (free, driven).
+fn split_coordinates(
+    m: &Mechanism,
+    sc: &ScenarioSpec,
+    base: &[f64],
+    imposed: &mut Vec<Imposed>,
+) -> (Vec<CoordId>, Vec<CoordId>) {
+    let reg = &m.reg;
+    let mut free = Vec::new();
+    let mut driven = Vec::new();
+    for (i, c) in reg.coordinates().iter().enumerate() {
+        let q = CoordId(i);
+        if imposed.iter().any(|x| x.coord == q) {
+            continue;
+        }
+        if c.is_driven() {
+            driven.push(q);
+            continue;
+        }
+        if c.has_imposed_rate() {
+            let w = reg.rate(q, 1).eval(base);
+            imposed.push(Imposed {
+                coord: q,
+                initial: sc.initial.get(&c.name).map(|v| v[0]).unwrap_or(0.0),
+                law: ImposedLaw::Constant(w),
+            });
+            continue;
+        }
+        free.push(q);
+    }
+    (free, driven)
+}
+
+/// Initial [q, q̇] of each free coordinate, each with its equation of motion; `initial` names
+/// only coordinates.
+fn free_initial(
+    m: &Mechanism,
+    sc: &ScenarioSpec,
+    sol: &pfd::Solution,
+    free: &[CoordId],
+) -> Result<Vec<[f64; 2]>, String> {
+    let reg = &m.reg;
+    let mut initial = Vec::new();
+    for &q in free {
+        let name = &reg.coord_info(q).name;
+        if !sol.eom.contains_key(name) {
+            return Err(format!(
+                "the coordinate `{name}` is neither imposed nor given an equation of motion \
+                 (mark one equation of `pfd` with \"eom\": \"{name}\")"
+            ));
+        }
+        initial.push(sc.initial.get(name).copied().unwrap_or([0.0, 0.0]));
+    }
+    for name in sc.initial.keys() {
+        if reg.coord(name).is_none() {
+            return Err(format!("initial: unknown coordinate `{name}`"));
+        }
+    }
+    Ok(initial)
+}
+
+/// M (row-major) then h of M q̈ + h = 0 over the free coordinates, compiled; every eom is
+/// linear in the q̈.
+fn compile_dynamics(
+    m: &Mechanism,
+    sol: &pfd::Solution,
+    free: &[CoordId],
+) -> Result<Compiled, String> {
+    let reg = &m.reg;
+    let n = free.len();
+    let mut exprs: Vec<Expr> = Vec::with_capacity(n * n + n);
+    let mut hs = Vec::with_capacity(n);
+    for &qi in free {
+        let e = &sol.eom[&reg.coord_info(qi).name];
+        let mut h = e.clone();
+        for &qj in free {
+            let mij = e.partial_rate(qj, 2);
+            if !mij.partial_rate(qj, 2).is_zero() {
+                return Err("an equation of motion is not linear in the accelerations".into());
+            }
+            let x = reg.ddot(qj);
+            h = &h - &(&mij * &x);
+            exprs.push(mij);
+        }
+        hs.push(h);
+    }
+    exprs.extend(hs);
+    // Every coordinate imposed: nothing to solve for (the evaluator gets one dummy output).
+    if exprs.is_empty() {
+        exprs.push(reg.zero());
+    }
+    let refs: Vec<&Expr> = exprs.iter().collect();
+    reg.compile(&refs)
+        .map_err(|e| format!("compiling the equations of motion: {e}"))
+}
+
+/// The recorded unknowns' numerators then the integrands, compiled, with each one's scale
+/// (1 / the unknown's denominator at the parameters).
+fn compile_recorded(
+    m: &Mechanism,
+    sol: &pfd::Solution,
+    base: &[f64],
+    record: &[String],
+    integrate: &[(String, Expr)],
+) -> Result<(Compiled, Vec<f64>), String> {
+    let reg = &m.reg;
+    let mut rec: Vec<Expr> = Vec::new();
+    let mut scales = Vec::new();
+    for id in record {
+        let v = sol
+            .unknowns
+            .get(id)
+            .ok_or_else(|| format!("record: `{id}` is not a solved unknown"))?;
+        rec.push(v.num.clone());
+        scales.push(1.0 / v.den.eval(base));
+    }
+    for (_, e) in integrate {
+        rec.push(e.clone());
+        scales.push(1.0);
+    }
+    if rec.is_empty() {
+        rec.push(reg.zero());
+    }
+    let refs: Vec<&Expr> = rec.iter().collect();
+    let recorded = reg
+        .compile(&refs)
+        .map_err(|e| format!("compiling the recorded quantities: {e}"))?;
+    Ok((recorded, scales))
+}
+
+/// q̇ of each driven coordinate, compiled.
+fn compile_driven_rates(m: &Mechanism, driven: &[CoordId]) -> Result<Compiled, String> {
+    let reg = &m.reg;
+    let mut rates: Vec<Expr> = driven.iter().map(|&q| reg.dot(q)).collect();
+    if rates.is_empty() {
+        rates.push(reg.zero());
+    }
+    let refs: Vec<&Expr> = rates.iter().collect();
+    reg.compile(&refs)
+        .map_err(|e| format!("compiling the driven rates: {e}"))
+}
+
+/// The nonzero ground components of the loop closures, compiled; `None` without any.
+fn compile_closure(m: &Mechanism) -> Result<Option<Compiled>, String> {
+    let g0 = m.frames.ground();
+    let rows: Vec<Expr> = m
+        .closure_vectors()
+        .iter()
+        .flat_map(|v| v.express_in(&m.frames, g0))
+        .filter(|e| !e.is_zero())
+        .collect();
+    if rows.is_empty() {
+        return Ok(None);
+    }
+    let refs: Vec<&Expr> = rows.iter().collect();
+    m.reg
+        .compile(&refs)
+        .map(Some)
+        .map_err(|e| format!("compiling the loop closures: {e}"))
+}
+
+/// The links with dry friction: their sign's variable and their relative rate and
+/// acceleration, compiled.
+fn dry_links(m: &Mechanism) -> Result<Vec<Dry>, String> {
+    let reg = &m.reg;
+    let mut dry = Vec::new();
+    for d in &m.dynamics.dry {
+        let var = reg
+            .var_ids()
+            .find(|&v| matches!(reg.role(v), VarRole::Parameter(k) if reg.scalar_name(k) == d.sign))
+            .ok_or_else(|| format!("no variable for `{}`", d.sign))?;
+        let acc = d.rate.dt();
+        let motion = reg
+            .compile(&[&d.rate, &acc])
+            .map_err(|e| format!("compiling the dry friction's rates: {e}"))?;
+        dry.push(Dry {
+            var: var.index(),
+            motion,
+        });
+    }
+    Ok(dry)
 }

@@ -10,7 +10,7 @@
 
 use super::SpecError;
 use super::validate::{at, expr_err};
-use crate::expr::{CoordId, Expr, VarRole};
+use crate::expr::{CoordId, Expr, Registry, VarRole};
 use crate::frame::{Axis, FrameId};
 use crate::mechanism::{Mechanism, RollingLaw};
 use crate::point::PointId;
@@ -106,10 +106,76 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         .iter()
         .map(|(d, _)| reg.coord(d).expect("a declared coordinate"))
         .collect();
+    let rows = closure_rows(spec, &m)?;
+    // d/dt fᵢ = Σ_d J_id q̇_d − bᵢ, bᵢ the free rates' part with its sign changed.
+    let mut derivatives = Vec::new();
+    let mut linear = Vec::new();
+    for r in &rows {
+        let d = r.dt();
+        derivatives.push(crate::latex::expr_lines(&d, crate::latex::LINE - 4));
+        linear.push(d);
+    }
+    let mut rolling = Vec::new();
+    for (i, (r, node)) in spec.rolling.iter().zip(&resolved.rolling).enumerate() {
+        let (law, rs) = rolling_rows(&m, i, r, node)?;
+        rolling.push(law);
+        linear.extend(rs);
+    }
+    let mut jac: Vec<Vec<Expr>> = Vec::new();
+    let mut rhs: Vec<Expr> = Vec::new();
+    for d in &linear {
+        let js: Vec<Expr> = ids.iter().map(|&q| d.partial_rate(q, 1)).collect();
+        let mut b = -d;
+        for (q, j) in ids.iter().zip(&js) {
+            b = &b + &(j * &reg.dot(*q));
+        }
+        jac.push(js);
+        rhs.push(b);
+    }
+    let names: Vec<&str> = dependent.iter().map(|d| d.0.as_str()).collect();
+    let (d, divided) = determinant(spec, &jac, &zero, &names)?;
+    let mut rates = Vec::new();
+    for (col, (_, k)) in dependent.iter().enumerate() {
+        let replaced: Vec<Vec<Expr>> = jac
+            .iter()
+            .zip(&rhs)
+            .map(|(row, b)| {
+                let mut r = row.clone();
+                r[col] = b.clone();
+                r
+            })
+            .collect();
+        let n = det(&replaced, &zero);
+        rates.push((*k, format!("({n})/({d})")));
+    }
+    let Divisors {
+        secants,
+        cosecants,
+        inverses,
+    } = divided;
+    Ok(Some(Solved {
+        rates,
+        secants,
+        cosecants,
+        inverses,
+        dependent: dependent
+            .into_iter()
+            .map(|d| d.0)
+            .filter(|d| spec.closures.iter().any(|c| c.dependent.contains(d)))
+            .collect(),
+        derivatives,
+        rolling,
+        determinant: d.to_string(),
+    }))
+}
+
+/// The scalar relations of the closures: each one's nonzero components on the ground's
+/// basis, as many as its dependent coordinates, each holding a coordinate.
+fn closure_rows(spec: &SpecFile, m: &Mechanism) -> Result<Vec<Expr>, SpecError> {
+    let reg = &m.reg;
     let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
     let ground = m.frames.ground();
     let axes = ["x", "y", "z"];
-    // The scalar relations: each closure's nonzero components on the ground's basis.
     let mut rows: Vec<Expr> = Vec::new();
     for (i, c) in spec.closures.iter().enumerate() {
         let path = format!("closures[{i}].vector");
@@ -154,32 +220,18 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
             ));
         }
     }
-    // d/dt fᵢ = Σ_d J_id q̇_d − bᵢ, bᵢ the free rates' part with its sign changed.
-    let mut jac: Vec<Vec<Expr>> = Vec::new();
-    let mut rhs: Vec<Expr> = Vec::new();
-    let mut derivatives = Vec::new();
-    let mut linear = Vec::new();
-    for r in &rows {
-        let d = r.dt();
-        derivatives.push(crate::latex::expr_lines(&d, crate::latex::LINE - 4));
-        linear.push(d);
-    }
-    let mut rolling = Vec::new();
-    for (i, (r, node)) in spec.rolling.iter().zip(&resolved.rolling).enumerate() {
-        let (law, rs) = rolling_rows(&m, i, r, node)?;
-        rolling.push(law);
-        linear.extend(rs);
-    }
-    for d in &linear {
-        let js: Vec<Expr> = ids.iter().map(|&q| d.partial_rate(q, 1)).collect();
-        let mut b = -d;
-        for (q, j) in ids.iter().zip(&js) {
-            b = &b + &(j * &reg.dot(*q));
-        }
-        jac.push(js);
-        rhs.push(b);
-    }
-    let names: Vec<&str> = dependent.iter().map(|d| d.0.as_str()).collect();
+    Ok(rows)
+}
+
+/// The determinant of the relations' derivative in the dependent rates (`jac`) and its
+/// factors, refused when a rate is missing from them, when it is 0, and when the canonical
+/// form cannot divide by it.
+fn determinant(
+    spec: &SpecFile,
+    jac: &[Vec<Expr>],
+    zero: &Expr,
+    names: &[&str],
+) -> Result<(Expr, Divisors), SpecError> {
     let place = match (spec.closures.is_empty(), spec.rolling.is_empty()) {
         (false, true) => "closures",
         (true, false) => "rolling",
@@ -187,7 +239,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
     };
     let noun = place.replace("rolling", "rolling conditions");
     // A dependent coordinate whose rate no relation holds cannot be determined by them.
-    if let Some(col) = (0..ids.len()).find(|&c| jac.iter().all(|row| row[c].is_zero())) {
+    if let Some(col) = (0..names.len()).find(|&c| jac.iter().all(|row| row[c].is_zero())) {
         return Err(at(
             place,
             format!(
@@ -197,7 +249,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
             ),
         ));
     }
-    let d = det(&jac, &zero);
+    let d = det(jac, zero);
     if d.is_zero() {
         return Err(at(
             place,
@@ -208,8 +260,36 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
             ),
         ));
     }
-    // The determinant must be invertible in the canonical form: a number times parameters
-    // and cosines of coordinates.
+    let Some(divided) = divisors(zero.registry(), &d) else {
+        return Err(at(
+            place,
+            format!(
+                "solving the {noun} for {} divides by `{}`, which is not a product of \
+                 parameters and of a cosine or a sine of each coordinate: not supported yet \
+                 (measure the angles so that it is one: L cos φ for a crank–slider's rod, \
+                 L2 L3 sin ψ for a four-bar whose rocker turns by ψ from its coupler)",
+                names.join(", "),
+                crate::excerpt::excerpt(&d.to_string())
+            ),
+        ));
+    };
+    Ok((d, divided))
+}
+
+/// What the rates divide by, named for the registry.
+struct Divisors {
+    /// The angles whose cosine.
+    secants: Vec<String>,
+    /// The angles whose sine.
+    cosecants: Vec<String>,
+    /// The parameters.
+    inverses: Vec<String>,
+}
+
+/// The factors of the determinant `d` when the canonical form can invert it: a number times
+/// parameters and cosines or sines of coordinates, never both of one angle (1/cos q and
+/// 1/sin q would tie the two reductions of sin² and cos²); `None` otherwise.
+fn divisors(reg: &Registry, d: &Expr) -> Option<Divisors> {
     let mut secants = Vec::new();
     let mut cosecants = Vec::new();
     let mut inverses = Vec::new();
@@ -235,49 +315,12 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
                 _ => false,
             }
         });
-    // 1/cos q and 1/sin q of one angle would tie the two reductions of sin² and cos².
-    let both: Vec<&String> = secants.iter().filter(|n| cosecants.contains(n)).collect();
-    if !monomial || !both.is_empty() {
-        return Err(at(
-            place,
-            format!(
-                "solving the {noun} for {} divides by `{}`, which is not a product of \
-                 parameters and of a cosine or a sine of each coordinate: not supported yet \
-                 (measure the angles so that it is one: L cos φ for a crank–slider's rod, \
-                 L2 L3 sin ψ for a four-bar whose rocker turns by ψ from its coupler)",
-                names.join(", "),
-                crate::excerpt::excerpt(&d.to_string())
-            ),
-        ));
-    }
-    let mut rates = Vec::new();
-    for (col, (_, k)) in dependent.iter().enumerate() {
-        let replaced: Vec<Vec<Expr>> = jac
-            .iter()
-            .zip(&rhs)
-            .map(|(row, b)| {
-                let mut r = row.clone();
-                r[col] = b.clone();
-                r
-            })
-            .collect();
-        let n = det(&replaced, &zero);
-        rates.push((*k, format!("({n})/({d})")));
-    }
-    Ok(Some(Solved {
-        rates,
+    let both = secants.iter().any(|n| cosecants.contains(n));
+    (monomial && !both).then_some(Divisors {
         secants,
         cosecants,
         inverses,
-        dependent: dependent
-            .into_iter()
-            .map(|d| d.0)
-            .filter(|d| spec.closures.iter().any(|c| c.dependent.contains(d)))
-            .collect(),
-        derivatives,
-        rolling,
-        determinant: d.to_string(),
-    }))
+    })
 }
 
 /// A rolling condition's scalar relations (linear in the rates) and how the key writes them.

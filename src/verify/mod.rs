@@ -233,55 +233,78 @@ impl fmt::Display for Verdict {
             None => format!("{}{under}", self.quantity),
         };
         if self.is_equivalent() {
-            return match (&self.check, &self.factor) {
-                (Check::Value, _) => write!(f, "{subject}: equivalent"),
-                (Check::Relation, _) => write!(
+            return match &self.check {
+                Check::Value => write!(f, "{subject}: equivalent"),
+                Check::Relation => write!(
                     f,
                     "{subject}: equivalent (relation: lhs − rhs = 0{})",
                     self.replaced()
                 ),
-                (Check::EquationOfMotion { coordinate }, k) => {
-                    // Say which equation it is, unless that was the quantity asked.
-                    let asked = self.asked_equation_of_motion();
-                    let eom = asked.clone().unwrap_or(format!("eom({coordinate})"));
-                    let is = if asked.is_none() {
-                        format!(" (it is the equation of motion {eom}{})", self.replaced())
-                    } else {
-                        String::new()
-                    };
-                    match k {
-                        Some(k) if !k.is_one() => {
-                            write!(f, "{subject}: equivalent, up to the factor {k}{is}")?;
-                            write!(f, "\n  {eom} = {k} × (lhs − rhs)")?;
-                            // The same equation wherever the factor is defined and nonzero.
-                            let conditions: Vec<String> = [&k.numerator, &k.denominator]
-                                .into_iter()
-                                .filter(|e| e.as_rational().is_none())
-                                .map(|e| format!("{e} ≠ 0"))
-                                .collect();
-                            if !conditions.is_empty() {
-                                write!(
-                                    f,
-                                    ", the same equation where {}",
-                                    conditions.join(" and ")
-                                )?;
-                            }
-                        }
-                        _ => write!(f, "{subject}: equivalent{is}")?,
-                    }
-                    // Identically 0: the hypothesis' motion satisfies it, and so does every
-                    // equation that holds under the hypothesis; say so.
-                    if self.derived.exprs().iter().all(|e| e.is_zero()) {
-                        write!(
-                            f,
-                            "\n  note: {eom} is identically 0{under}: any equation true{under} \
-                             is equivalent to it"
-                        )?;
-                    }
-                    Ok(())
+                Check::EquationOfMotion { coordinate } => {
+                    self.write_equivalent_eom(f, &subject, &under, coordinate)
                 }
             };
         }
+        self.write_not_equivalent(f, &subject)?;
+        for (k, d) in self.difference.iter().enumerate() {
+            if !d.is_zero() {
+                writeln!(f, "  {}: {}", self.difference_label(k), d.presentation())?;
+                if let Some(den) = self.denominators.get(k).filter(|x| !x.is_one()) {
+                    writeln!(f, "    (multiplied by the denominator typed, {den})")?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Verdict {
+    /// An equivalent equation of motion: up to which factor, and where that holds.
+    fn write_equivalent_eom(
+        &self,
+        f: &mut fmt::Formatter<'_>,
+        subject: &str,
+        under: &str,
+        coordinate: &str,
+    ) -> fmt::Result {
+        // Say which equation it is, unless that was the quantity asked.
+        let asked = self.asked_equation_of_motion();
+        let eom = asked.clone().unwrap_or(format!("eom({coordinate})"));
+        let is = if asked.is_none() {
+            format!(" (it is the equation of motion {eom}{})", self.replaced())
+        } else {
+            String::new()
+        };
+        match &self.factor {
+            Some(k) if !k.is_one() => {
+                write!(f, "{subject}: equivalent, up to the factor {k}{is}")?;
+                write!(f, "\n  {eom} = {k} × (lhs − rhs)")?;
+                // The same equation wherever the factor is defined and nonzero.
+                let conditions: Vec<String> = [&k.numerator, &k.denominator]
+                    .into_iter()
+                    .filter(|e| e.as_rational().is_none())
+                    .map(|e| format!("{e} ≠ 0"))
+                    .collect();
+                if !conditions.is_empty() {
+                    write!(f, ", the same equation where {}", conditions.join(" and "))?;
+                }
+            }
+            _ => write!(f, "{subject}: equivalent{is}")?,
+        }
+        // Identically 0: the hypothesis' motion satisfies it, and so does every
+        // equation that holds under the hypothesis; say so.
+        if self.derived.exprs().iter().all(|e| e.is_zero()) {
+            write!(
+                f,
+                "\n  note: {eom} is identically 0{under}: any equation true{under} \
+                 is equivalent to it"
+            )?;
+        }
+        Ok(())
+    }
+
+    /// The first line of a verdict that is not equivalent: what differs, and how.
+    fn write_not_equivalent(&self, f: &mut fmt::Formatter<'_>, subject: &str) -> fmt::Result {
         match &self.check {
             Check::Value => writeln!(f, "{subject}: NOT equivalent; given − derived =")?,
             Check::EquationOfMotion { coordinate } => {
@@ -314,14 +337,6 @@ impl fmt::Display for Verdict {
                  motion times a nonzero factor made of parameters; lhs − rhs =",
                 self.replaced()
             )?,
-        }
-        for (k, d) in self.difference.iter().enumerate() {
-            if !d.is_zero() {
-                writeln!(f, "  {}: {}", self.difference_label(k), d.presentation())?;
-                if let Some(den) = self.denominators.get(k).filter(|x| !x.is_one()) {
-                    writeln!(f, "    (multiplied by the denominator typed, {den})")?;
-                }
-            }
         }
         Ok(())
     }

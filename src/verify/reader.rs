@@ -2,6 +2,7 @@
 //! notation and unknowns of the PFD inside it.
 
 use super::*;
+use crate::expr::Registry;
 
 /// Reads what the user typed: quantities written in the course's notation inside it are
 /// replaced by their derived values, unknowns of the PFD by their solved values, everything
@@ -152,21 +153,7 @@ impl<'a> Reader<'a> {
                 || (n == "t" && timed)
                 || allowed(n)
         };
-        // Placeholders: a prefix that neither the text nor any name of the spec holds.
-        let mut prefix = String::from("qty");
-        while text.contains(&prefix)
-            || reg
-                .parameters()
-                .iter()
-                .chain(reg.unknowns())
-                .any(|n| n.starts_with(&prefix))
-            || reg
-                .coordinates()
-                .iter()
-                .any(|c| c.name.starts_with(&prefix))
-        {
-            prefix.push('_');
-        }
+        let prefix = placeholder_prefix(&reg, text);
         let b = text.as_bytes();
         let mut out = String::with_capacity(text.len());
         let mut placeholders: Vec<(String, Expr)> = Vec::new();
@@ -210,42 +197,7 @@ impl<'a> Reader<'a> {
                 out.push_str(word);
                 continue;
             }
-            // A quantity: `name(...)`, then an optional projection `.x2`.
-            let mut depth = 0usize;
-            let mut end = j;
-            while end < b.len() {
-                match b[end] {
-                    b'(' => depth += 1,
-                    b')' => {
-                        depth -= 1;
-                        if depth == 0 {
-                            break;
-                        }
-                    }
-                    _ => {}
-                }
-                end += 1;
-            }
-            if end >= b.len() {
-                return Err(ExprError::Parse {
-                    input: text.to_string(),
-                    reason: "unbalanced parentheses".to_string(),
-                }
-                .into());
-            }
-            end += 1;
-            if end + 2 < b.len() + 1
-                && b.get(end) == Some(&b'.')
-                && b.get(end + 1)
-                    .is_some_and(|a| matches!(a, b'x' | b'y' | b'z'))
-                && b.get(end + 2)
-                    .is_some_and(|a| a.is_ascii_alphanumeric() || *a == b'_')
-            {
-                end += 2;
-                while end < b.len() && (b[end].is_ascii_alphanumeric() || b[end] == b'_') {
-                    end += 1;
-                }
-            }
+            let end = quantity_end(text, j)?;
             let notation = &text[start..end];
             let q = Quantity::parse(notation)?;
             let value = self.quantity_value(&q, notation)?;
@@ -374,4 +326,65 @@ pub(super) fn split_list(s: &str) -> Option<Vec<String>> {
     }
     out.push(cur);
     Some(out)
+}
+
+/// A prefix for placeholder names that neither the text nor any name of the spec holds.
+fn placeholder_prefix(reg: &Registry, text: &str) -> String {
+    let mut prefix = String::from("qty");
+    while text.contains(&prefix)
+        || reg
+            .parameters()
+            .iter()
+            .chain(reg.unknowns())
+            .any(|n| n.starts_with(&prefix))
+        || reg
+            .coordinates()
+            .iter()
+            .any(|c| c.name.starts_with(&prefix))
+    {
+        prefix.push('_');
+    }
+    prefix
+}
+
+/// The end of a quantity `name(...)` whose opening parenthesis is at byte `open` of `text`,
+/// after an optional projection `.x2`.
+fn quantity_end(text: &str, open: usize) -> Result<usize, VerifyError> {
+    let b = text.as_bytes();
+    let mut depth = 0usize;
+    let mut end = open;
+    while end < b.len() {
+        match b[end] {
+            b'(' => depth += 1,
+            b')' => {
+                depth -= 1;
+                if depth == 0 {
+                    break;
+                }
+            }
+            _ => {}
+        }
+        end += 1;
+    }
+    if end >= b.len() {
+        return Err(ExprError::Parse {
+            input: text.to_string(),
+            reason: "unbalanced parentheses".to_string(),
+        }
+        .into());
+    }
+    end += 1;
+    if end + 2 < b.len() + 1
+        && b.get(end) == Some(&b'.')
+        && b.get(end + 1)
+            .is_some_and(|a| matches!(a, b'x' | b'y' | b'z'))
+        && b.get(end + 2)
+            .is_some_and(|a| a.is_ascii_alphanumeric() || *a == b'_')
+    {
+        end += 2;
+        while end < b.len() && (b[end].is_ascii_alphanumeric() || b[end] == b'_') {
+            end += 1;
+        }
+    }
+    Ok(end)
 }

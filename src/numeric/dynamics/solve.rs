@@ -142,75 +142,99 @@ fn gravity(m: &NumericModel, st: &State, vals: &Values) -> Result<Vector3<f64>, 
 /// Every declared action (links and given actions) at the sampled instant, each followed by
 /// its reaction.
 fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, NumericError> {
-    let dy = &m.dynamics;
-    let n = dy.unknowns.len();
+    let n = m.dynamics.unknowns.len();
     let zero = Lin::constant(Vector3::zeros(), Vector3::zeros(), n);
     let mut out = Vec::new();
-    for (i, l) in dy.links.iter().enumerate() {
-        let rb = st.rot0(l.basis);
-        let mut resultant = zero.clone();
-        let mut moment = zero.clone();
-        for (k, idx) in &l.components {
-            let e = rb.column(k % 3).into_owned();
-            if *k < 3 {
-                resultant.a[*idx] = e;
-            } else {
-                moment.a[*idx] = e;
-            }
-        }
-        let [fa, fb] = l.between.map(|b| body_frame(m, b));
-        let u = rb.column(l.axis).into_owned();
-        let slider = l.kind == LinkKind::Slider;
-        if let Some(f) = &l.friction {
-            let f = constant(f, vals, || format!("friction of links[{i}]"))?;
-            if slider {
-                let [v, _] = kin::point_motion(st, l.point, fb, fa);
-                resultant.c -= u * (f * v.dot(&u));
-            } else {
-                let w = kin::omega(st, fb, fa);
-                moment.c -= u * (f * w.dot(&u));
-            }
-        }
-        if let Some((c, eps)) = &l.coulomb {
-            let c = constant(c, vals, || format!("dry friction of links[{i}]"))?;
-            let push = u * (c * vals.params[*eps]);
-            if slider {
-                resultant.c -= push;
-            } else {
-                moment.c -= push;
-            }
-        }
-        if let Some(s) = &l.spring {
-            let k = constant(&s.stiffness, vals, || {
-                format!("stiffness of the spring of links[{i}]")
-            })?;
-            let q0 = match &s.free {
-                Some(q0) => constant(q0, vals, || {
-                    format!("free value of the spring of links[{i}]")
-                })?,
-                None => 0.0,
-            };
-            let push = u * (-k * (vals.coords[s.coord][0] - q0));
-            if slider {
-                resultant.c += push;
-            } else {
-                moment.c += push;
-            }
-        }
-        let t = Term {
-            names: l.names.clone(),
-            reaction_names: [l.names[1].clone(), l.names[0].clone()],
-            from: l.between[0],
-            on: l.between[1],
-            point: st.pos0(l.point),
-            resultant,
-            moment,
-        };
+    for i in 0..m.dynamics.links.len() {
+        let t = link_term(m, st, vals, i, &zero)?;
         out.push(t.reaction());
         out.push(t);
     }
-    // Given actions: the part free of unknowns, and each unknown's coefficient exactly (the
-    // expressions are affine in the unknowns: checked when the model is built).
+    given_terms(m, st, vals, &zero, &mut out)?;
+    Ok(out)
+}
+
+/// The action of link `i`: its unknowns on the link's basis, and its viscous friction, dry
+/// friction and spring.
+fn link_term(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    i: usize,
+    zero: &Lin<Vector3<f64>>,
+) -> Result<Term, NumericError> {
+    let l = &m.dynamics.links[i];
+    let rb = st.rot0(l.basis);
+    let mut resultant = zero.clone();
+    let mut moment = zero.clone();
+    for (k, idx) in &l.components {
+        let e = rb.column(k % 3).into_owned();
+        if *k < 3 {
+            resultant.a[*idx] = e;
+        } else {
+            moment.a[*idx] = e;
+        }
+    }
+    let [fa, fb] = l.between.map(|b| body_frame(m, b));
+    let u = rb.column(l.axis).into_owned();
+    let slider = l.kind == LinkKind::Slider;
+    if let Some(f) = &l.friction {
+        let f = constant(f, vals, || format!("friction of links[{i}]"))?;
+        if slider {
+            let [v, _] = kin::point_motion(st, l.point, fb, fa);
+            resultant.c -= u * (f * v.dot(&u));
+        } else {
+            let w = kin::omega(st, fb, fa);
+            moment.c -= u * (f * w.dot(&u));
+        }
+    }
+    if let Some((c, eps)) = &l.coulomb {
+        let c = constant(c, vals, || format!("dry friction of links[{i}]"))?;
+        let push = u * (c * vals.params[*eps]);
+        if slider {
+            resultant.c -= push;
+        } else {
+            moment.c -= push;
+        }
+    }
+    if let Some(s) = &l.spring {
+        let k = constant(&s.stiffness, vals, || {
+            format!("stiffness of the spring of links[{i}]")
+        })?;
+        let q0 = match &s.free {
+            Some(q0) => constant(q0, vals, || {
+                format!("free value of the spring of links[{i}]")
+            })?,
+            None => 0.0,
+        };
+        let push = u * (-k * (vals.coords[s.coord][0] - q0));
+        if slider {
+            resultant.c += push;
+        } else {
+            moment.c += push;
+        }
+    }
+    Ok(Term {
+        names: l.names.clone(),
+        reaction_names: [l.names[1].clone(), l.names[0].clone()],
+        from: l.between[0],
+        on: l.between[1],
+        point: st.pos0(l.point),
+        resultant,
+        moment,
+    })
+}
+
+/// Given actions, each followed by its reaction: the part free of unknowns, and each
+/// unknown's coefficient exactly (the expressions are affine in the unknowns: checked when
+/// the model is built).
+fn given_terms(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    zero: &Lin<Vector3<f64>>,
+    out: &mut Vec<Term>,
+) -> Result<(), NumericError> {
     let frames: Vec<Matrix3<f64>> = (0..m.frames.len()).map(|f| st.rot0(f)).collect();
     let (coords, rates) = vals.split();
     let env = Env {
@@ -220,7 +244,7 @@ fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, Numer
         frames: &frames,
         time: vals.time,
     };
-    for (i, a) in dy.actions.iter().enumerate() {
+    for (i, a) in m.dynamics.actions.iter().enumerate() {
         let mut parts = [zero.clone(), zero.clone()];
         for (part, (node, field)) in parts
             .iter_mut()
@@ -248,7 +272,7 @@ fn terms(m: &NumericModel, st: &State, vals: &Values) -> Result<Vec<Term>, Numer
         out.push(t.reaction());
         out.push(t);
     }
-    Ok(out)
+    Ok(())
 }
 
 /// The residual of a declared equation, dynamic side minus actions, and the size of the terms
