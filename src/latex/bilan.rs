@@ -10,14 +10,50 @@ use std::fmt::Write;
 /// when it is short or the question where it is boxed, and its unit from the parameters'
 /// units. A long list is set in two tables side by side.
 pub(super) fn bilan(doc: &mut Doc) {
+    let (entries, inline) = bilan_entries(doc);
+    doc.inline.extend(inline);
+    let rows: Vec<Row> = entries.into_iter().map(Entry::row).collect();
+    if rows.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        doc.o,
+        "\\section*{{Bilan}}\n{{\\small\\renewcommand{{\\arraystretch}}{{1.15}}\\noindent\n{}\\par}}",
+        tables(&rows)
+    );
+}
+
+/// A result of the bilan: the same result shown in general and under hypotheses, both
+/// boxed in one question, is one entry.
+struct Entry {
+    /// The grandeur, in math.
+    title: String,
+    /// The hypotheses it holds under, none for the general case.
+    unders: Vec<Option<String>>,
+    /// The résultat: the value, or where it is boxed.
+    value: String,
+    unit: String,
+    /// The printed width of the résultat.
+    width: usize,
+    /// The quantity id.
+    what: String,
+}
+
+/// A row of the bilan's table: grandeur, résultat, unité, and its printed width.
+struct Row {
+    grandeur: String,
+    value: String,
+    unit: String,
+    width: usize,
+}
+
+/// The entries of the bilan, one per result of the key (in the order of the questions),
+/// and the short values it repeats, recorded to be proven like every formula.
+fn bilan_entries(doc: &Doc) -> (Vec<Entry>, Vec<Inline>) {
     let m = doc.m;
     let dims = crate::units::Dimensions::of(m);
-    // (grandeur, résultat, unité, width of the résultat)
-    let mut rows: Vec<(String, String, String, usize)> = Vec::new();
     let mut inline = Vec::new();
-    // (grandeur, hypotheses, résultat, unité, width of the résultat, quantity)
-    type Row = (String, Vec<Option<String>>, String, String, usize, String);
-    let mut merged: Vec<Row> = Vec::new();
+    let mut merged: Vec<Entry> = Vec::new();
     // A short list is one table, with room for a one-line result; a long one may be split
     // into tables side by side, where only short results fit.
     let longest = if doc.results.len() <= 6 { 60 } else { 34 };
@@ -25,37 +61,9 @@ pub(super) fn bilan(doc: &mut Doc) {
         let Ok(q) = Quantity::parse(what) else {
             continue;
         };
-        let style = crate::units::unit_style(&q.kind);
-        let expected = crate::units::expected_dimension(m, &dims, &q);
-        let unit = |k: usize| {
-            expected
-                .component(k)
-                .map(|u| u.si_latex(style))
-                .filter(|u| !u.is_empty())
-                .map(|u| format!("${u}$"))
-                .unwrap_or_else(|| "--".to_string())
-        };
-        let unit = if q.kind.is_torsor() {
-            format!("{} ; {}", unit(0), unit(3))
-        } else {
-            unit(0)
-        };
-        let title = match &q.kind {
-            QuantityKind::Eom(c) if q.linear => {
-                format!(
-                    "\\text{{Éq. du mouvement en }} {} \\text{{ (linéarisée)}}",
-                    name(c)
-                )
-            }
-            QuantityKind::Eom(c) => format!("\\text{{Éq. du mouvement en }} {}", name(c)),
-            // The same vector asked in two bases reads apart.
-            _ => match &q.basis {
-                Some(b) => format!("{} \\text{{ dans }} {}", quantity_title(&q), basis(b)),
-                None => quantity_title(&q),
-            },
-        };
-        // A short scalar is repeated (and recorded, to be proven like every formula); a
-        // long result or an equation of motion is found where it is boxed.
+        let unit = unit_of(m, &dims, &q);
+        // A short scalar is repeated (and recorded); a long result or an equation of motion
+        // is found where it is boxed.
         let short = match (v, &q.kind) {
             (_, QuantityKind::Eom(_)) => None,
             (Value::Scalar(e), _) => {
@@ -80,19 +88,70 @@ pub(super) fn bilan(doc: &mut Doc) {
             },
         };
         let under = hyp.as_deref().map(escape_text);
-        // The same result shown in general and under a hypothesis, both boxed in one
-        // question: one row.
         match merged
             .iter_mut()
-            .find(|r| r.5 == *what && r.2 == value && r.3 == unit)
+            .find(|r| r.what == *what && r.value == value && r.unit == unit)
         {
-            Some(r) => r.1.push(under),
-            None => merged.push((title, vec![under], value, unit, w, what.clone())),
+            Some(r) => r.unders.push(under),
+            None => merged.push(Entry {
+                title: bilan_title(&q),
+                unders: vec![under],
+                value,
+                unit,
+                width: w,
+                what: what.clone(),
+            }),
         }
     }
-    doc.inline.extend(inline);
-    for (title, unders, value, unit, w, _) in merged {
-        let under = match unders.as_slice() {
+    (merged, inline)
+}
+
+/// The unit of a result from the parameters' units (`--` when it has none), both elements'
+/// for a torsor.
+fn unit_of(
+    m: &crate::mechanism::Mechanism,
+    dims: &crate::units::Dimensions,
+    q: &Quantity,
+) -> String {
+    let style = crate::units::unit_style(&q.kind);
+    let expected = crate::units::expected_dimension(m, dims, q);
+    let unit = |k: usize| {
+        expected
+            .component(k)
+            .map(|u| u.si_latex(style))
+            .filter(|u| !u.is_empty())
+            .map(|u| format!("${u}$"))
+            .unwrap_or_else(|| "--".to_string())
+    };
+    if q.kind.is_torsor() {
+        format!("{} ; {}", unit(0), unit(3))
+    } else {
+        unit(0)
+    }
+}
+
+/// The grandeur of a result: « Éq. du mouvement en θ », or the quantity with the basis
+/// asked (the same vector asked in two bases reads apart).
+fn bilan_title(q: &Quantity) -> String {
+    match &q.kind {
+        QuantityKind::Eom(c) if q.linear => {
+            format!(
+                "\\text{{Éq. du mouvement en }} {} \\text{{ (linéarisée)}}",
+                name(c)
+            )
+        }
+        QuantityKind::Eom(c) => format!("\\text{{Éq. du mouvement en }} {}", name(c)),
+        _ => match &q.basis {
+            Some(b) => format!("{} \\text{{ dans }} {}", quantity_title(q), basis(b)),
+            None => quantity_title(q),
+        },
+    }
+}
+
+impl Entry {
+    /// The entry as a row, its hypotheses after the grandeur.
+    fn row(self) -> Row {
+        let under = match self.unders.as_slice() {
             [None] => String::new(),
             [Some(h)] => format!(" ({h})"),
             hs => {
@@ -104,31 +163,34 @@ pub(super) fn bilan(doc: &mut Doc) {
             }
         };
         // The row's printed width: the grandeur, the résultat, the unit.
-        let title_w = super::width(&title) + under.chars().count();
-        let unit_w = super::width(&unit).min(12);
-        rows.push((
-            format!("${title}${under}"),
-            value,
-            unit,
-            title_w + w + unit_w,
-        ));
+        let title_w = super::width(&self.title) + under.chars().count();
+        let unit_w = super::width(&self.unit).min(12);
+        Row {
+            grandeur: format!("${}${under}", self.title),
+            value: self.value,
+            width: title_w + self.width + unit_w,
+            unit: self.unit,
+        }
     }
-    if rows.is_empty() {
-        return;
-    }
-    let table = |rows: &[(String, String, String, usize)]| {
-        let body: Vec<String> = rows
-            .iter()
-            .map(|(t, v, u, _)| format!("{t} & {v} & {u} \\\\"))
-            .collect();
-        format!(
-            "\\begin{{tabular}}[t]{{@{{}}lll@{{}}}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n\\noalign{{\\vspace{{2pt}}}}\n{}\n\\hline\n\\end{{tabular}}",
-            body.join("\n")
-        )
-    };
-    // Two or three tables side by side when the values are short and the list long.
+}
+
+/// One table of the bilan.
+fn table(rows: &[Row]) -> String {
+    let body: Vec<String> = rows
+        .iter()
+        .map(|r| format!("{} & {} & {} \\\\", r.grandeur, r.value, r.unit))
+        .collect();
+    format!(
+        "\\begin{{tabular}}[t]{{@{{}}lll@{{}}}}\n\\hline\nGrandeur & Résultat & Unité \\\\\n\\hline\n\\noalign{{\\vspace{{2pt}}}}\n{}\n\\hline\n\\end{{tabular}}",
+        body.join("\n")
+    )
+}
+
+/// The rows in one centred table, or in two or three tables side by side when the values
+/// are short and the list long.
+fn tables(rows: &[Row]) -> String {
     // (in \small, a line holds about 1.2 × LINE characters)
-    let widest = rows.iter().map(|r| r.3).max().unwrap_or(0);
+    let widest = rows.iter().map(|r| r.width).max().unwrap_or(0);
     let narrow = widest + 6 <= super::LINE * 6 / 10;
     // Side by side, each table is scaled down to its share of the line if it is wider (the
     // width estimate is rough; the page's margin is not).
@@ -137,7 +199,7 @@ pub(super) fn bilan(doc: &mut Doc) {
             "\\resizebox{{\\ifdim\\width>{share}\\linewidth {share}\\linewidth\\else\\width\\fi}}{{!}}{{{t}}}"
         )
     };
-    let tables = match rows.len() {
+    match rows.len() {
         n if n > 9 && widest + 6 <= super::LINE * 4 / 10 => rows
             .chunks(n.div_ceil(3))
             .map(|c| fit(table(c), "0.32"))
@@ -148,10 +210,6 @@ pub(super) fn bilan(doc: &mut Doc) {
             .map(|c| fit(table(c), "0.49"))
             .collect::<Vec<_>>()
             .join("\\hfill\n"),
-        _ => format!("\\centering\n{}", table(&rows)),
-    };
-    let _ = writeln!(
-        doc.o,
-        "\\section*{{Bilan}}\n{{\\small\\renewcommand{{\\arraystretch}}{{1.15}}\\noindent\n{tables}\\par}}"
-    );
+        _ => format!("\\centering\n{}", table(rows)),
+    }
 }

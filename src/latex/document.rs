@@ -5,10 +5,10 @@
 
 use super::hypotheses::hypothesis_block;
 use super::method::quantity_block;
+use super::rich_text_or_escaped;
 use super::simulation::simulation_block;
 use super::theorems::pfd_block;
-use super::{VectorStyle, basis, basis_vector, escape_text, name, point, quantity, value_named};
-use super::{link_graph, rich_text_or_escaped, rotation_figures};
+use super::{VectorStyle, basis, basis_vector, escape_text, name, quantity, value_named};
 use crate::derivation::{Value, derive};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::quantity::Quantity;
@@ -525,24 +525,49 @@ pub fn answer_key_named(
     prefix: &str,
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
     let _names = super::VectorNames::of(m);
-    let mut figures = Vec::new();
-    let mut doc = Doc {
-        m,
-        style,
-        o: String::new(),
-        displays: Vec::new(),
-        inline: Vec::new(),
-        shown: HashMap::new(),
-        bilans: HashMap::new(),
-        stated: Vec::new(),
-        here: "le paramétrage".to_string(),
-        under: None,
-        results: Vec::new(),
-        conditions_stated: false,
-    };
+    let mut doc = Doc::new(m, style);
+    title_block(&mut doc);
+    super::setup::parametrage(&mut doc);
+    super::loop_law::loop_law(&mut doc);
+    super::setup::solids(&mut doc);
+    super::hypotheses::model_hypotheses(&mut doc);
+    let figures = questions(&mut doc, prefix)?;
+    super::bilan::bilan(&mut doc);
+    doc.o.push_str("\\end{document}\n");
+    Ok(AnswerKey {
+        tex: doc.o,
+        figures,
+        displays: doc.displays,
+        inline: doc.inline,
+    })
+}
+
+impl<'m> Doc<'m> {
+    /// An empty document about `m`, in the paramétrage.
+    fn new(m: &'m Mechanism, style: VectorStyle) -> Self {
+        Doc {
+            m,
+            style,
+            o: String::new(),
+            displays: Vec::new(),
+            inline: Vec::new(),
+            shown: HashMap::new(),
+            bilans: HashMap::new(),
+            stated: Vec::new(),
+            here: "le paramétrage".to_string(),
+            under: None,
+            results: Vec::new(),
+            conditions_stated: false,
+        }
+    }
+}
+
+/// The preamble, the title as a teacher's handout has it (one line, no page of its own) and
+/// the problem's description.
+fn title_block(doc: &mut Doc) {
+    let m = doc.m;
     let o = &mut doc.o;
     o.push_str(PREAMBLE);
-    // The title as a teacher's handout has it: one line, no page of its own.
     let _ = writeln!(
         o,
         "\\begin{{document}}\n\\begin{{center}}\n{{\\Large\\bfseries Corrigé -- {}\\par}}\n\\end{{center}}",
@@ -551,204 +576,21 @@ pub fn answer_key_named(
     if let Some(d) = &m.description {
         let _ = writeln!(o, "{}\n", rich_text_or_escaped(d));
     }
+}
 
-    // Set-up.
-    o.push_str("\\section*{Paramétrage}\n\\begin{multicols}{2}\n\\begin{itemize}\n");
-    let mut rates = Vec::new();
-    for c in &m.spec.coordinates {
-        let kind = match c.kind {
-            crate::wire::CoordinateKind::Angle => "angle",
-            crate::wire::CoordinateKind::Length => "longueur",
-        };
-        let desc = c
-            .description
-            .as_deref()
-            .map(rich_text_or_escaped)
-            .unwrap_or_default();
-        // A coordinate held constant (rate 0) is a constant, not a function of t.
-        let constant = c.rate.as_deref().is_some_and(|r| r.trim() == "0");
-        let _ = kind;
-        let t = if constant { "" } else { "(t)" };
-        // An imposed rate is stated where the coordinate is: ψ̇ = ω.
-        let closed = m
-            .spec
-            .closures
-            .iter()
-            .any(|l| l.dependent.contains(&c.name));
-        let rolls = m
-            .spec
-            .rolling
-            .iter()
-            .find(|l| l.dependent.contains(&c.name));
-        let imposed = match m.reg.coord(&c.name) {
-            // Its rate is the loop law's, written after the paramétrage.
-            Some(_) if closed => ", déterminée par la fermeture géométrique".to_string(),
-            Some(_) if rolls.is_some() => {
-                format!(
-                    ", de vitesse déterminée par {}",
-                    rolls.map_or("", |r| r.course_name())
-                )
-            }
-            Some(q) if !constant && m.reg.coord_info(q).has_imposed_rate() => {
-                let rate = m.reg.dot(q);
-                let math = format!(
-                    "{} = {}",
-                    super::expr::rate(&m.reg, q, 1),
-                    super::expr(&rate)
-                );
-                // In one piece: a column break after « = » would split the relation.
-                let text = if m.reg.coord_info(q).is_driven() {
-                    format!(", liée aux autres par \\mbox{{${math}$}}")
-                } else {
-                    format!(", de vitesse imposée \\mbox{{${math}$}}")
-                };
-                rates.push(Inline {
-                    what: format!("dot({})", c.name),
-                    latex: math,
-                    value: Value::Scalar(rate),
-                });
-                text
-            }
-            _ => String::new(),
-        };
-        let _ = writeln!(o, "\\item ${}{t}$ : {desc}{imposed}", name(&c.name));
-    }
-    // The aliases the statement poses: « On pose K = C ω ».
-    for (a, (n, v)) in m.spec.aliases.iter().zip(m.reg.aliases()) {
-        let math = format!("{} = {}", name(n), super::expr(&v));
-        let desc = a
-            .description
-            .as_deref()
-            .map(|d| format!(" : {}", rich_text_or_escaped(d)))
-            .unwrap_or_default();
-        let _ = writeln!(o, "\\item On pose ${math}${desc}.");
-        rates.push(Inline {
-            what: format!("alias {n}"),
-            latex: math,
-            value: Value::Scalar(v),
-        });
-    }
-    for f in m.frames.ids().skip(1) {
-        let fr = m.frames.get(f);
-        let parent = m.frames.get(fr.parent.unwrap_or(m.frames.ground()));
-        match &fr.rotation {
-            Some(r) => {
-                // The course's paramétrage: (x0, x1) = (y0, y1) = θ1 about z0 = z1.
-                let k = r.axis.index();
-                let (u, v) = (['y', 'z', 'x'][k], ['z', 'x', 'y'][k]);
-                let angle =
-                    super::figures::angle_latex(&m.reg, &r.angle.terms, r.angle.quarter_turns);
-                let _ = writeln!(
-                    o,
-                    "\\item $({}, {}) = ({}, {}) = {angle}$, autour de ${} = {}$.",
-                    basis_vector(u, &parent.name),
-                    basis_vector(u, &fr.name),
-                    basis_vector(v, &parent.name),
-                    basis_vector(v, &fr.name),
-                    basis_vector(r.axis.letter(), &parent.name),
-                    basis_vector(r.axis.letter(), &fr.name)
-                );
-            }
-            None => {
-                let _ = writeln!(
-                    o,
-                    "\\item La base ${}$ est confondue avec ${}$.",
-                    basis(&fr.name),
-                    basis(&parent.name)
-                );
-            }
-        }
-    }
-    let mut positions = Vec::new();
-    for p in m.points.ids().skip(1) {
-        let pt = m.points.get(p);
-        let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
-        let rhs = super::vector_over_bases(m, &pt.offset);
-        let math = format!(
-            "\\overrightarrow{{{}{}}} = {rhs}",
-            point(from),
-            point(&pt.name)
-        );
-        let _ = writeln!(o, "\\item ${math}$.");
-        let ground = m.frames.ground();
-        positions.push(Inline {
-            what: format!("{from}{}", pt.name),
-            latex: math,
-            value: Value::Vector {
-                basis: ground,
-                components: pt.offset.express_in(&m.frames, ground),
-            },
-        });
-    }
-    o.push_str("\\end{itemize}\n\\end{multicols}\n");
-    // The figures planes of the rotations and the graph of links, side by side when small.
-    let planes = super::figures::rotation_pictures(m);
-    let graph = super::figures::link_picture(m);
-    let planes_width = planes.len() as f64 * (super::figures::PLANE_WIDTH + 0.5);
-    match graph {
-        Some((g, w)) if !planes.is_empty() && planes_width + w + 1.0 <= 17.5 => {
-            let _ = write!(
-                o,
-                "\\begin{{center}}\n{}\\hspace{{2em}}\n{g}\\end{{center}}\n",
-                planes.join("\\hspace{1.5em}\n")
-            );
-        }
-        _ => {
-            o.push_str(&rotation_figures(m));
-            o.push_str(&link_graph(m));
-        }
-    }
-    doc.inline.extend(rates);
-    doc.inline.extend(positions);
-    super::loop_law::loop_law(&mut doc);
-    // Each solid's mass, centre and inertia operator; the operators side by side.
-    let mut cells = Vec::new();
-    let mut widths = Vec::new();
-    for b in &m.bodies {
-        let mass = super::expr(&b.mass);
-        let intro = format!(
-            "Solide ${}$ : masse ${mass}$, centre d'inertie ${}$",
-            name(&b.name),
-            point(m.point_name(b.centre))
-        );
-        doc.inline.push(Inline {
-            what: format!("m({})", b.name),
-            latex: mass,
-            value: Value::Scalar(b.mass.clone()),
-        });
-        match &b.inertia {
-            Some(i) => {
-                let lhs = format!("I_{{{}}}({})", point(m.point_name(i.point)), name(&b.name));
-                let what = format!("I({},{})", m.point_name(i.point), b.name);
-                cells.push(doc.capture(|doc| {
-                    let _ = writeln!(doc.o, "{intro}, opérateur d'inertie");
-                    doc.show_keyed(
-                        DisplayRole::Inertia,
-                        &what,
-                        &lhs,
-                        &lhs,
-                        &Value::Matrix(i.clone()),
-                        false,
-                    );
-                }));
-                widths.push(doc.last_width());
-            }
-            None => {
-                // A line of its own: the solids then stay in the spec's order.
-                cells.push(format!("{intro} (masse ponctuelle).\n\n"));
-                widths.push(super::LINE);
-            }
-        }
-    }
-    doc.rows(&cells, &widths, 2);
-
-    super::hypotheses::model_hypotheses(&mut doc);
-
+/// The questions of the spec with their simulations (figure files named after `prefix`),
+/// or, without questions, the hypotheses and every requested quantity.
+fn questions(
+    doc: &mut Doc,
+    prefix: &str,
+) -> Result<Vec<(String, crate::simulate::Figure)>, crate::derivation::ResolveError> {
+    let m = doc.m;
+    let mut figures = Vec::new();
     if m.spec.questions.is_empty() {
         if !m.hypotheses.is_empty() {
             doc.o.push_str("\\section*{Hypothèses}\n");
             for (h, hs) in m.hypotheses.iter().zip(&m.spec.hypotheses) {
-                hypothesis_block(&mut doc, h, hs);
+                hypothesis_block(doc, h, hs);
             }
         }
         let all = QuestionSpec {
@@ -761,22 +603,15 @@ pub fn answer_key_named(
             equations: vec![],
             simulation: None,
         };
-        question_block(&mut doc, &all)?;
+        question_block(doc, &all)?;
     } else {
         for (k, qs) in m.spec.questions.iter().enumerate() {
-            question_block(&mut doc, qs)?;
+            question_block(doc, qs)?;
             if let Some(sim) = &qs.simulation {
                 let file = format!("{prefix}simulation-{}.png", k + 1);
                 figures.push((file.clone(), simulation_block(&mut doc.o, m, sim, &file)?));
             }
         }
     }
-    super::bilan::bilan(&mut doc);
-    doc.o.push_str("\\end{document}\n");
-    Ok(AnswerKey {
-        tex: doc.o,
-        figures,
-        displays: doc.displays,
-        inline: doc.inline,
-    })
+    Ok(figures)
 }

@@ -117,11 +117,21 @@ fn plane_figure(
         (phi, basis_vector(h, child), "->, thick"),
         (phi + 90.0, basis_vector(v, child), "->, thick"),
     ];
-    for (deg, _, _) in &vectors {
+    draw_vectors(&mut o, &mut taken, &vectors);
+    let clean = draw_angle(&mut o, &mut taken, phi, &label);
+    draw_axis(&mut o, &taken, &axis_label);
+    o.push_str("\\end{tikzpicture}\n");
+    (o, clean)
+}
+
+/// The basis vectors of a figure plane, (direction in degrees, name, TikZ style) each, from
+/// the origin with its name outside its tip; each taken in the layout.
+fn draw_vectors(o: &mut String, taken: &mut Layout, vectors: &[(f64, String, &str)]) {
+    for (deg, _, _) in vectors {
         taken.segment(*deg, VECTOR);
     }
     taken.boxes.push(Rect::around((0.0, 0.0), 0.26, 0.26));
-    for (deg, vec, style) in &vectors {
+    for (deg, vec, style) in vectors {
         let (x, y) = polar(*deg, VECTOR);
         taken
             .boxes
@@ -134,8 +144,11 @@ fn plane_figure(
             num((deg + 180.0).rem_euclid(360.0))
         );
     }
-    // The angle, from the parent's first vector to the child's, named in the widest gap
-    // between the vectors it sweeps.
+}
+
+/// The angle `phi`, from the parent's first vector to the child's, named `label` in the
+/// widest gap between the vectors it sweeps; whether the name stays clear of the vectors.
+fn draw_angle(o: &mut String, taken: &mut Layout, phi: f64, label: &str) -> bool {
     let radius = 0.8;
     let _ = writeln!(
         o,
@@ -157,7 +170,7 @@ fn plane_figure(
         .map(|p| (p[0], p[1] - p[0]))
         .fold((0.0, -1.0), |best, g| if g.1 > best.1 { g } else { best });
     // Along the gap and outwards, the first place where the name touches no vector.
-    let lw = width(&label);
+    let lw = width(label);
     let spots: Vec<(f64, f64)> = [0.5, 0.4, 0.6]
         .into_iter()
         .flat_map(|f| [0.05, 0.2].map(|dr| (gap_start + f * gap, radius + dr)))
@@ -182,9 +195,13 @@ fn plane_figure(
         num(at.1)
     );
     taken.boxes.push(angle_box);
-    // The common axis, towards the reader, named where nothing else is drawn: a diagonal
-    // below first.
-    let (aw, ah) = (width(&axis_label), 0.42);
+    clean
+}
+
+/// The common axis, towards the reader (⊙), named `axis_label` where nothing else is drawn:
+/// a diagonal below first.
+fn draw_axis(o: &mut String, taken: &Layout, axis_label: &str) {
+    let (aw, ah) = (width(axis_label), 0.42);
     let candidates = [225.0, 315.0, 135.0, 45.0, 270.0, 180.0, 0.0, 90.0];
     let place = [0.14, 0.45, 0.8]
         .into_iter()
@@ -201,8 +218,6 @@ fn plane_figure(
         num(at.0),
         num(at.1)
     );
-    o.push_str("\\end{tikzpicture}\n");
-    (o, clean)
 }
 
 /// Size of a basis vector's name (`\vec{x}_{1}` in `\small`, with its inner sep), in cm.
@@ -452,9 +467,22 @@ pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
     if links.is_empty() {
         return None;
     }
+    let (nodes, edges) = link_graph_of(m, links);
+    let forest = Forest::of(nodes.len(), &edges);
+    let row = forest.rows();
+    let o = draw_link_graph(&nodes, &edges, &forest, &row);
+    // The deepest level, the node and the labels' overhang on both sides.
+    let deepest = forest.depth.iter().copied().max().unwrap_or(0) as f64;
+    Some((o, deepest * LEVEL + 1.6))
+}
+
+/// Edges between two nodes (by index, the smaller first), with the texts of their links.
+type Edges = BTreeMap<(usize, usize), Vec<String>>;
+
+/// The solids in order of appearance, the ground first, and the edges between them.
+fn link_graph_of(m: &Mechanism, links: &[LinkSpec]) -> (Vec<String>, Edges) {
     let ground = m.frame_name(m.frames.ground()).to_string();
-    // Nodes in order of appearance, the ground first.
-    let mut nodes: Vec<String> = vec![ground.clone()];
+    let mut nodes: Vec<String> = vec![ground];
     for l in links {
         for s in &l.between {
             if !nodes.contains(s) {
@@ -463,8 +491,7 @@ pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
         }
     }
     let index = |s: &str| nodes.iter().position(|n| n == s).unwrap_or(0);
-    // Edges between two nodes, with the texts of their links.
-    let mut edges: BTreeMap<(usize, usize), Vec<String>> = BTreeMap::new();
+    let mut edges = Edges::new();
     for l in links {
         let (a, b) = (index(&l.between[0]), index(&l.between[1]));
         edges
@@ -472,62 +499,87 @@ pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
             .or_default()
             .push(link_text(l));
     }
-    // A spanning forest from the ground (then from any solid not reached), breadth first.
-    let n = nodes.len();
-    let mut parent: Vec<Option<usize>> = vec![None; n];
-    let mut depth = vec![0usize; n];
-    let mut children: Vec<Vec<usize>> = vec![Vec::new(); n];
-    let mut seen = vec![false; n];
-    let mut roots = Vec::new();
-    for root in 0..n {
-        if seen[root] {
-            continue;
-        }
-        seen[root] = true;
-        roots.push(root);
-        let mut queue = std::collections::VecDeque::from([root]);
-        while let Some(x) = queue.pop_front() {
-            for &(a, b) in edges.keys() {
-                let y = match (a == x, b == x) {
-                    (true, _) => b,
-                    (_, true) => a,
-                    _ => continue,
-                };
-                if !seen[y] {
-                    seen[y] = true;
-                    parent[y] = Some(x);
-                    depth[y] = depth[x] + 1;
-                    children[x].push(y);
-                    queue.push_back(y);
+    (nodes, edges)
+}
+
+/// A spanning forest of the graph of links from the ground (then from any solid not
+/// reached), breadth first.
+struct Forest {
+    parent: Vec<Option<usize>>,
+    depth: Vec<usize>,
+    children: Vec<Vec<usize>>,
+    roots: Vec<usize>,
+}
+
+impl Forest {
+    fn of(n: usize, edges: &Edges) -> Forest {
+        let mut f = Forest {
+            parent: vec![None; n],
+            depth: vec![0usize; n],
+            children: vec![Vec::new(); n],
+            roots: Vec::new(),
+        };
+        let mut seen = vec![false; n];
+        for root in 0..n {
+            if seen[root] {
+                continue;
+            }
+            seen[root] = true;
+            f.roots.push(root);
+            let mut queue = std::collections::VecDeque::from([root]);
+            while let Some(x) = queue.pop_front() {
+                for &(a, b) in edges.keys() {
+                    let y = match (a == x, b == x) {
+                        (true, _) => b,
+                        (_, true) => a,
+                        _ => continue,
+                    };
+                    if !seen[y] {
+                        seen[y] = true;
+                        f.parent[y] = Some(x);
+                        f.depth[y] = f.depth[x] + 1;
+                        f.children[x].push(y);
+                        queue.push_back(y);
+                    }
                 }
             }
         }
-    }
-    // Leaves take successive rows; a node sits at the middle of its children.
-    fn place(x: usize, children: &[Vec<usize>], next: &mut f64, row: &mut [f64]) {
-        if children[x].is_empty() {
-            row[x] = *next;
-            *next += 1.0;
-            return;
-        }
-        for &c in &children[x] {
-            place(c, children, next, row);
-        }
-        let (first, last) = (children[x][0], children[x][children[x].len() - 1]);
-        row[x] = (row[first] + row[last]) / 2.0;
-    }
-    let mut row = vec![0.0; n];
-    let mut next = 0.0;
-    for &r in &roots {
-        place(r, &children, &mut next, &mut row);
+        f
     }
 
+    /// Each node's row: leaves take successive rows; a node sits at the middle of its
+    /// children.
+    fn rows(&self) -> Vec<f64> {
+        fn place(x: usize, children: &[Vec<usize>], next: &mut f64, row: &mut [f64]) {
+            if children[x].is_empty() {
+                row[x] = *next;
+                *next += 1.0;
+                return;
+            }
+            for &c in &children[x] {
+                place(c, children, next, row);
+            }
+            let (first, last) = (children[x][0], children[x][children[x].len() - 1]);
+            row[x] = (row[first] + row[last]) / 2.0;
+        }
+        let mut row = vec![0.0; self.parent.len()];
+        let mut next = 0.0;
+        for &r in &self.roots {
+            place(r, &self.children, &mut next, &mut row);
+        }
+        row
+    }
+}
+
+/// The `tikzpicture` of the graph of links: each solid a circled node at its depth and
+/// row (« bâti » under the ground), each edge labelled with its links.
+fn draw_link_graph(nodes: &[String], edges: &Edges, forest: &Forest, row: &[f64]) -> String {
     let mut o = String::from(
         "\\begin{tikzpicture}[font=\\small]\n\
          \\tikzset{solide/.style={draw, circle, minimum size=0.75cm, inner sep=1pt}}\n",
     );
     for (i, s) in nodes.iter().enumerate() {
-        let (x, y) = (depth[i] as f64 * LEVEL, -row[i] * BRANCH);
+        let (x, y) = (forest.depth[i] as f64 * LEVEL, -row[i] * BRANCH);
         let _ = writeln!(
             o,
             "\\node[solide] (n{i}) at ({},{}) {{${}$}};",
@@ -544,9 +596,9 @@ pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
             );
         }
     }
-    for ((a, b), texts) in &edges {
+    for ((a, b), texts) in edges {
         // Drawn from the node nearer the ground.
-        let (a, b) = if parent[*a] == Some(*b) {
+        let (a, b) = if forest.parent[*a] == Some(*b) {
             (*b, *a)
         } else {
             (*a, *b)
@@ -561,7 +613,5 @@ pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
         );
     }
     o.push_str("\\end{tikzpicture}\n");
-    // The deepest level, the node and the labels' overhang on both sides.
-    let deepest = depth.iter().copied().max().unwrap_or(0) as f64;
-    Some((o, deepest * LEVEL + 1.6))
+    o
 }

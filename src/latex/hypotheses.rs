@@ -40,7 +40,6 @@ fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) ->
 /// its plane or axis) and the particular inertia matrices; a later hypothesis with the same
 /// symmetries refers to the first and adds only what is new (constant rates).
 pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec) {
-    let m = d.m;
     if d.stated.iter().any(|(n, _, _)| n == &h.name) {
         return;
     }
@@ -58,129 +57,160 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
         .iter()
         .find(|(_, solids, _)| !solids.is_empty() && *solids == hs.symmetric_solids)
         .map(|(n, _, e)| (n.clone(), e.clone()));
-    let old_effects: Vec<String>;
-    if let Some((other, effects)) = &same {
+    let old_effects: Vec<String> = if let Some((other, effects)) = same {
         let _ = writeln!(
             d.o,
             "Les symétries sont celles de l'hypothèse {} : mêmes matrices d'inertie.\n",
-            escape_text(other)
+            escape_text(&other)
         );
-        old_effects = effects.clone();
+        effects
     } else {
-        // Each solid's symmetries and its matrix, side by side.
-        let mut cells = Vec::new();
-        let mut widths = Vec::new();
-        for sname in &hs.symmetric_solids {
-            let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
-                continue;
-            };
-            let Some(i) = &b.inertia else { continue };
-            cells.push(d.capture(|d| {
-                let bn = m.frame_name(i.basis).to_string();
-                let centre = m.point_name(i.point).to_string();
-                // One sentence per solid: its planes and axes, then the products they cancel.
-                let mut why = Vec::new();
-                let mut zeros: Vec<String> = Vec::new();
-                let mut equal = false;
-                for s in &b.symmetries {
-                    why.push(symmetry_text(m, &bn, *s, &centre));
-                    for t in s
-                        .zero_entries()
-                        .iter()
-                        .map(|&(r, c)| super::expr(&i.matrix[r][c]))
-                        .filter(|t| t != "0")
-                        .map(|t| format!("${}$", t.trim_start_matches('-')))
-                    {
-                        if !zeros.contains(&t) {
-                            zeros.push(t);
-                        }
-                    }
-                    equal |= s.equal_moments().is_some();
-                }
-                if !why.is_empty() {
-                    let _ = writeln!(
-                        d.o,
-                        "Pour le solide ${}$, {} : {}{}.\n",
-                        name(sname),
-                        super::method::french_list(&why),
-                        if zeros.is_empty() {
-                            "les produits d'inertie correspondants sont nuls".to_string()
-                        } else {
-                            format!(
-                                "les produits d'inertie {} sont nuls",
-                                super::method::french_list(&zeros)
-                            )
-                        },
-                        if equal {
-                            " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
-                        } else {
-                            ""
-                        }
-                    );
-                }
-                let under = Value::Matrix(i.clone()).under(h);
-                let lhs = format!("I_{{{}}}({})", point(&centre), name(sname));
-                let saved = d.under;
-                d.under = Some(h);
-                d.show_keyed(
-                    DisplayRole::Inertia,
-                    &format!("I({centre},{sname})"),
-                    &lhs,
-                    &lhs,
-                    &under,
-                    false,
-                );
-                d.under = saved;
-            }));
-            widths.push(d.last_width());
-        }
-        d.rows(&cells, &widths, 2);
+        symmetric_matrices(d, h, hs);
         // The symmetries' zeros are what the matrices show.
-        old_effects = h
-            .effects
+        h.effects
             .iter()
             .filter(|e| !hs.symmetric_solids.is_empty() && !e.contains("dot("))
             .cloned()
-            .collect();
-    }
-    let new_effects: Vec<&String> = h
-        .effects
-        .iter()
-        .filter(|e| !old_effects.contains(e))
-        .collect();
-    if !new_effects.is_empty() {
-        let eff: Vec<String> = new_effects
-            .iter()
-            .map(|e| {
-                let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
-                // An angle held at a value may have no variable of its own: its name.
-                let side = |t: &str| match m.reg.parse(t) {
-                    Ok(x) => super::expr(&x),
-                    Err(_) => name(t),
-                };
-                format!("${} = {}$", side(l), side(r))
-            })
-            .collect();
-        let _ = writeln!(d.o, "Sous cette hypothèse : {}.\n", eff.join(", "));
-    }
-    if !h.first_order.is_empty() {
-        let small: Vec<String> = h
-            .first_order
-            .iter()
-            .map(|v| format!("${}$", super::expr(&m.reg.variable(*v))))
-            .collect();
-        let _ = writeln!(
-            d.o,
-            "Les résultats sont écrits au premier ordre en {} : les termes de degré 2 ou plus \
-             en ces petits paramètres sont négligés.\n",
-            super::method::french_list(&small)
-        );
-    }
+            .collect()
+    };
+    new_effects(d, h, &old_effects);
+    first_order(d, h);
     d.stated.push((
         h.name.clone(),
         hs.symmetric_solids.clone(),
         h.effects.clone(),
     ));
+}
+
+/// Each symmetric solid's symmetries and its particular inertia matrix under `h`, side by
+/// side.
+fn symmetric_matrices<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec) {
+    let m = d.m;
+    let mut cells = Vec::new();
+    let mut widths = Vec::new();
+    for sname in &hs.symmetric_solids {
+        let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
+            continue;
+        };
+        let Some(i) = &b.inertia else { continue };
+        cells.push(d.capture(|d| {
+            let bn = m.frame_name(i.basis).to_string();
+            let centre = m.point_name(i.point).to_string();
+            if let Some(s) = symmetry_sentence(m, sname, b, &bn, &centre) {
+                let _ = writeln!(d.o, "{s}");
+            }
+            let under = Value::Matrix(i.clone()).under(h);
+            let lhs = format!("I_{{{}}}({})", point(&centre), name(sname));
+            let saved = d.under;
+            d.under = Some(h);
+            d.show_keyed(
+                DisplayRole::Inertia,
+                &format!("I({centre},{sname})"),
+                &lhs,
+                &lhs,
+                &under,
+                false,
+            );
+            d.under = saved;
+        }));
+        widths.push(d.last_width());
+    }
+    d.rows(&cells, &widths, 2);
+}
+
+/// One sentence per solid: its planes and axes of symmetry, then the products of inertia
+/// they cancel (and the equal moments of a revolution); none without symmetries.
+fn symmetry_sentence(
+    m: &Mechanism,
+    sname: &str,
+    b: &crate::mechanism::Body,
+    bn: &str,
+    centre: &str,
+) -> Option<String> {
+    let i = b.inertia.as_ref()?;
+    let mut why = Vec::new();
+    let mut zeros: Vec<String> = Vec::new();
+    let mut equal = false;
+    for s in &b.symmetries {
+        why.push(symmetry_text(m, bn, *s, centre));
+        for t in s
+            .zero_entries()
+            .iter()
+            .map(|&(r, c)| super::expr(&i.matrix[r][c]))
+            .filter(|t| t != "0")
+            .map(|t| format!("${}$", t.trim_start_matches('-')))
+        {
+            if !zeros.contains(&t) {
+                zeros.push(t);
+            }
+        }
+        equal |= s.equal_moments().is_some();
+    }
+    if why.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "Pour le solide ${}$, {} : {}{}.\n",
+        name(sname),
+        super::method::french_list(&why),
+        if zeros.is_empty() {
+            "les produits d'inertie correspondants sont nuls".to_string()
+        } else {
+            format!(
+                "les produits d'inertie {} sont nuls",
+                super::method::french_list(&zeros)
+            )
+        },
+        if equal {
+            " et les moments d'inertie autour des deux axes orthogonaux sont égaux"
+        } else {
+            ""
+        }
+    ))
+}
+
+/// « Sous cette hypothèse : … », the effects of `h` not already said (`old_effects`).
+fn new_effects(d: &mut Doc, h: &Hypothesis, old_effects: &[String]) {
+    let m = d.m;
+    let new_effects: Vec<&String> = h
+        .effects
+        .iter()
+        .filter(|e| !old_effects.contains(e))
+        .collect();
+    if new_effects.is_empty() {
+        return;
+    }
+    let eff: Vec<String> = new_effects
+        .iter()
+        .map(|e| {
+            let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
+            // An angle held at a value may have no variable of its own: its name.
+            let side = |t: &str| match m.reg.parse(t) {
+                Ok(x) => super::expr(&x),
+                Err(_) => name(t),
+            };
+            format!("${} = {}$", side(l), side(r))
+        })
+        .collect();
+    let _ = writeln!(d.o, "Sous cette hypothèse : {}.\n", eff.join(", "));
+}
+
+/// The small parameters of a hypothesis at first order, said once with the hypothesis.
+fn first_order(d: &mut Doc, h: &Hypothesis) {
+    if h.first_order.is_empty() {
+        return;
+    }
+    let small: Vec<String> = h
+        .first_order
+        .iter()
+        .map(|v| format!("${}$", super::expr(&d.m.reg.variable(*v))))
+        .collect();
+    let _ = writeln!(
+        d.o,
+        "Les résultats sont écrits au premier ordre en {} : les termes de degré 2 ou plus \
+         en ces petits paramètres sont négligés.\n",
+        super::method::french_list(&small)
+    );
 }
 
 /// The model's hypotheses, stated once: the reference frame, the links, gravity.

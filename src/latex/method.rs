@@ -11,7 +11,7 @@ use super::routes::{
 };
 use super::{action_side, basis_vector, frame, name, point, quantity};
 use crate::derivation::{Derivation, Step, StepKind, Value, derive};
-use crate::mechanism::Mechanism;
+use crate::mechanism::{Hypothesis, Mechanism};
 use crate::quantity::{Motion, Quantity, QuantityKind};
 use std::fmt::Write;
 
@@ -42,93 +42,11 @@ fn sentence(m: &Mechanism, s: &Step) -> String {
         StepKind::Quantity(Inertia {
             point: a,
             solid: sn,
-        }) => {
-            if let Some(g) = t.strip_prefix("théorème de Huygens, de ") {
-                let g = g.split(' ').next().unwrap_or(g);
-                format!(
-                    "Théorème de Huygens, de ${}$ en ${}$ (${} = I_{{{}}}({sn})$ + terme de transport de ${}$) :",
-                    point(g),
-                    point(a),
-                    quantity(&Inertia {
-                        point: a.clone(),
-                        solid: sn.clone()
-                    }),
-                    point(g),
-                    mass_of(m, sn)
-                )
-            } else if t == "masse ponctuelle" {
-                format!("${}$ est une masse ponctuelle :", solid(sn))
-            } else {
-                "Opérateur d'inertie :".to_string()
-            }
-        }
+        }) => inertia_sentence(m, t, a, sn),
         StepKind::Quantity(KineticMoment {
             point: a,
             motion: mo,
-        }) => {
-            let sigma = quantity(&KineticMoment {
-                point: a.clone(),
-                motion: mo.clone(),
-            });
-            let i = format!("I_{{{}}}({})", point(a), mo.moving);
-            let om = omega_of(&mo.moving, &mo.reference);
-            let point_mass = m
-                .bodies
-                .iter()
-                .find(|b| b.name == mo.moving)
-                .filter(|b| b.inertia.is_none())
-                .map(|b| m.point_name(b.centre).to_string());
-            if let Some(p) = point_mass {
-                // σ(A) = AP ∧ m V(P): no inertia operator for a point mass.
-                format!(
-                    "${}$ est une masse ponctuelle : ${sigma} = \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
-                    point(&p),
-                    point(a),
-                    point(&p),
-                    mass_of(m, &mo.moving),
-                    quantity(&Velocity {
-                        point: p.clone(),
-                        motion: mo.clone()
-                    })
-                )
-            } else if t.starts_with("σ(G") {
-                format!(
-                    "${}$ est le centre d'inertie de ${}$ : ${sigma} = {i}\\cdot{om}$ :",
-                    point(a),
-                    solid(&mo.moving)
-                )
-            } else if t.starts_with("point fixe") {
-                format!(
-                    "${}$ est un point de ${}$ fixe dans ${}$ : ${sigma} = {i}\\cdot{om}$ :",
-                    point(a),
-                    solid(&mo.moving),
-                    frame(&mo.reference)
-                )
-            } else if t.starts_with("point de vitesse nulle") {
-                format!(
-                    "${}$ est un point de ${}$ de vitesse nulle dans ${}$ : ${sigma} = {i}\\cdot{om}$ :",
-                    point(a),
-                    solid(&mo.moving),
-                    frame(&mo.reference)
-                )
-            } else {
-                let g = m
-                    .bodies
-                    .iter()
-                    .find(|b| b.name == mo.moving)
-                    .map(|b| m.point_name(b.centre).to_string())
-                    .unwrap_or_else(|| "G".into());
-                format!(
-                    "${sigma} = {i}\\cdot{om} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
-                    mass_of(m, &mo.moving),
-                    point(a),
-                    point(&g),
-                    point(a),
-                    mo.moving,
-                    mo.reference
-                )
-            }
-        }
+        }) => kinetic_moment_sentence(m, t, a, mo),
         StepKind::Derivative(_, r) => format!(
             "Dérivée dans ${}$ (formule de Bour, $\\left[\\frac{{\\mathrm{{d}}\\vec u}}{{\\mathrm{{d}}t}}\\right]_{{{}}} = \\left[\\frac{{\\mathrm{{d}}\\vec u}}{{\\mathrm{{d}}t}}\\right]_{{\\mathcal{{R}}_k}} + \\overrightarrow{{\\Omega(k/{r})}}\\wedge\\vec u$) :",
             frame(r),
@@ -142,86 +60,182 @@ fn sentence(m: &Mechanism, s: &Step) -> String {
         StepKind::Quantity(DynamicMoment {
             point: a,
             motion: mo,
-        }) => format!(
-            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}} + \\overrightarrow{{V({}/{})}}\\wedge {}\\,\\overrightarrow{{V({}/{})}}$ :",
-            quantity(&DynamicMoment {
-                point: a.clone(),
-                motion: mo.clone()
-            }),
-            quantity(&KineticMoment {
-                point: a.clone(),
-                motion: mo.clone()
-            }),
-            frame(&mo.reference),
-            point(a),
-            frame(&mo.reference),
-            mass_of(m, &mo.moving),
-            point(
-                &m.bodies
-                    .iter()
-                    .find(|b| b.name == mo.moving)
-                    .map(|b| m.point_name(b.centre).to_string())
-                    .unwrap_or_else(|| "G".into())
-            ),
-            frame(&mo.reference)
-        ),
-        StepKind::Quantity(DynamicResultant(mo)) | StepKind::Quantity(KineticResultant(mo)) => {
-            let dynamic = matches!(s.kind, StepKind::Quantity(DynamicResultant(_)));
-            let g = m
-                .bodies
-                .iter()
-                .find(|b| b.name == mo.moving)
-                .map(|b| m.point_name(b.centre).to_string())
-                .unwrap_or_else(|| "G".into());
-            let (r, v) = if dynamic {
-                (
-                    DynamicResultant(mo.clone()),
-                    Acceleration {
-                        point: g,
-                        motion: mo.clone(),
-                    },
-                )
-            } else {
-                (
-                    KineticResultant(mo.clone()),
-                    Velocity {
-                        point: g,
-                        motion: mo.clone(),
-                    },
-                )
-            };
-            format!(
-                "${} = {}\\,{}$ :",
-                quantity(&r),
-                mass_of(m, &mo.moving),
-                quantity(&v)
-            )
-        }
-        StepKind::Quantity(k) if k.is_torsor() => {
-            // A change of point: M(B) = M(A) + BA ∧ R.
-            let from = t
-                .split("= M(")
-                .nth(1)
-                .and_then(|x| x.split(')').next())
-                .unwrap_or("A")
-                .to_string();
-            let to = match k {
-                KineticTorsor { point: p, .. } | DynamicTorsor { point: p, .. } => p.clone(),
-                _ => "B".into(),
-            };
-            format!(
-                "Changement de point, de ${}$ à ${}$ ($\\vec{{M}}({}) = \\vec{{M}}({}) + \\overrightarrow{{{}{}}}\\wedge\\vec{{R}}$) :",
-                point(&from),
-                point(&to),
-                point(&to),
-                point(&from),
-                point(&to),
-                point(&from)
-            )
-        }
+        }) => dynamic_moment_sentence(m, a, mo),
+        StepKind::Quantity(DynamicResultant(mo)) => resultant_sentence(m, mo, true),
+        StepKind::Quantity(KineticResultant(mo)) => resultant_sentence(m, mo, false),
+        StepKind::Quantity(k) if k.is_torsor() => change_of_point_sentence(t, k),
         StepKind::Action { .. } => format!("{} :", super::theorems::action_line(m, s)),
         _ => format!("{} :", super::escape_text(t)),
     }
+}
+
+/// The name of the centre of inertia of the solid `moving`, `G` for a set.
+fn centre_name(m: &Mechanism, moving: &str) -> String {
+    m.bodies
+        .iter()
+        .find(|b| b.name == moving)
+        .map(|b| m.point_name(b.centre).to_string())
+        .unwrap_or_else(|| "G".into())
+}
+
+/// The sentence of I_A(S) (theorem `t`): Huygens from G, a point mass, or the operator given.
+fn inertia_sentence(m: &Mechanism, t: &str, a: &str, sn: &str) -> String {
+    if let Some(g) = t.strip_prefix("théorème de Huygens, de ") {
+        let g = g.split(' ').next().unwrap_or(g);
+        format!(
+            "Théorème de Huygens, de ${}$ en ${}$ (${} = I_{{{}}}({sn})$ + terme de transport de ${}$) :",
+            point(g),
+            point(a),
+            quantity(&QuantityKind::Inertia {
+                point: a.to_string(),
+                solid: sn.to_string()
+            }),
+            point(g),
+            mass_of(m, sn)
+        )
+    } else if t == "masse ponctuelle" {
+        format!("${}$ est une masse ponctuelle :", solid(sn))
+    } else {
+        "Opérateur d'inertie :".to_string()
+    }
+}
+
+/// The sentence of σ(A,S/R) (theorem `t`): a point mass, at G, at a point fixed or of zero
+/// velocity (I_A Ω), or the general formula.
+fn kinetic_moment_sentence(m: &Mechanism, t: &str, a: &str, mo: &Motion) -> String {
+    let sigma = quantity(&QuantityKind::KineticMoment {
+        point: a.to_string(),
+        motion: mo.clone(),
+    });
+    let i = format!("I_{{{}}}({})", point(a), mo.moving);
+    let om = omega_of(&mo.moving, &mo.reference);
+    let point_mass = m
+        .bodies
+        .iter()
+        .find(|b| b.name == mo.moving)
+        .filter(|b| b.inertia.is_none())
+        .map(|b| m.point_name(b.centre).to_string());
+    if let Some(p) = point_mass {
+        // σ(A) = AP ∧ m V(P): no inertia operator for a point mass.
+        format!(
+            "${}$ est une masse ponctuelle : ${sigma} = \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+            point(&p),
+            point(a),
+            point(&p),
+            mass_of(m, &mo.moving),
+            quantity(&QuantityKind::Velocity {
+                point: p.clone(),
+                motion: mo.clone()
+            })
+        )
+    } else if t.starts_with("σ(G") {
+        format!(
+            "${}$ est le centre d'inertie de ${}$ : ${sigma} = {i}\\cdot{om}$ :",
+            point(a),
+            solid(&mo.moving)
+        )
+    } else if t.starts_with("point fixe") {
+        format!(
+            "${}$ est un point de ${}$ fixe dans ${}$ : ${sigma} = {i}\\cdot{om}$ :",
+            point(a),
+            solid(&mo.moving),
+            frame(&mo.reference)
+        )
+    } else if t.starts_with("point de vitesse nulle") {
+        format!(
+            "${}$ est un point de ${}$ de vitesse nulle dans ${}$ : ${sigma} = {i}\\cdot{om}$ :",
+            point(a),
+            solid(&mo.moving),
+            frame(&mo.reference)
+        )
+    } else {
+        let g = centre_name(m, &mo.moving);
+        format!(
+            "${sigma} = {i}\\cdot{om} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
+            mass_of(m, &mo.moving),
+            point(a),
+            point(&g),
+            point(a),
+            mo.moving,
+            mo.reference
+        )
+    }
+}
+
+/// The sentence of δ(A,S/R): the derivative of σ(A) plus the term of a moving point.
+fn dynamic_moment_sentence(m: &Mechanism, a: &str, mo: &Motion) -> String {
+    let delta = quantity(&QuantityKind::DynamicMoment {
+        point: a.to_string(),
+        motion: mo.clone(),
+    });
+    let sigma = quantity(&QuantityKind::KineticMoment {
+        point: a.to_string(),
+        motion: mo.clone(),
+    });
+    format!(
+        "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}} + \\overrightarrow{{V({}/{})}}\\wedge {}\\,\\overrightarrow{{V({}/{})}}$ :",
+        delta,
+        sigma,
+        frame(&mo.reference),
+        point(a),
+        frame(&mo.reference),
+        mass_of(m, &mo.moving),
+        point(&centre_name(m, &mo.moving)),
+        frame(&mo.reference)
+    )
+}
+
+/// The sentence of Rd = m Γ(G) (`dynamic`) or Rc = m V(G).
+fn resultant_sentence(m: &Mechanism, mo: &Motion, dynamic: bool) -> String {
+    let g = centre_name(m, &mo.moving);
+    let (r, v) = if dynamic {
+        (
+            QuantityKind::DynamicResultant(mo.clone()),
+            QuantityKind::Acceleration {
+                point: g,
+                motion: mo.clone(),
+            },
+        )
+    } else {
+        (
+            QuantityKind::KineticResultant(mo.clone()),
+            QuantityKind::Velocity {
+                point: g,
+                motion: mo.clone(),
+            },
+        )
+    };
+    format!(
+        "${} = {}\\,{}$ :",
+        quantity(&r),
+        mass_of(m, &mo.moving),
+        quantity(&v)
+    )
+}
+
+/// The sentence of a torsor moved to another point (theorem `t`, « … = M(A) … »):
+/// M(B) = M(A) + BA ∧ R.
+fn change_of_point_sentence(t: &str, k: &QuantityKind) -> String {
+    let from = t
+        .split("= M(")
+        .nth(1)
+        .and_then(|x| x.split(')').next())
+        .unwrap_or("A")
+        .to_string();
+    let to = match k {
+        QuantityKind::KineticTorsor { point: p, .. }
+        | QuantityKind::DynamicTorsor { point: p, .. } => p.clone(),
+        _ => "B".into(),
+    };
+    format!(
+        "Changement de point, de ${}$ à ${}$ ($\\vec{{M}}({}) = \\vec{{M}}({}) + \\overrightarrow{{{}{}}}\\wedge\\vec{{R}}$) :",
+        point(&from),
+        point(&to),
+        point(&to),
+        point(&from),
+        point(&to),
+        point(&from)
+    )
 }
 
 /// The course's names of a torsor's elements: (resultant, moment).
@@ -314,29 +328,110 @@ pub(super) fn shown_value(doc: &Doc, v: &Value) -> Value {
 /// Writes the steps of a kinematic or kinetic derivation as the course shows them. Returns
 /// whether the result was boxed where it was derived (so it is not repeated).
 fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
-    let m = doc.m;
-    // The elements of a torsor result are boxed where they are derived (the torsor is then
-    // not written again): (left side, components) of its resultant and its moment.
-    let elements: Vec<(String, [crate::expr::Expr; 3])> =
-        match (torsor_names(&d.quantity.kind), &d.value) {
-            (
-                Some((rn, mn)),
-                Value::Torsor {
-                    resultant, moment, ..
-                },
-            ) => vec![(rn, resultant.clone()), (mn, moment.clone())],
-            _ => Vec::new(),
-        };
-    let is_element = |lhs: &str, v: &Value| match v {
-        Value::Vector { components, .. } => {
-            elements.iter().any(|(l, c)| l == lhs && c == components)
+    let mut run = StepRun {
+        d,
+        result_lhs,
+        elements: result_elements(d),
+        cited: Vec::new(),
+        last_is_result: false,
+    };
+    let n = d.steps.len();
+    let mut i = 0;
+    while i < n {
+        if run.dynamic_moment_as_derivative(doc, i) {
+            i += 2;
+            continue;
+        }
+        if !skipped_for_point_mass(doc.m, d, i) {
+            run.step(doc, i);
+        }
+        i += 1;
+    }
+    run.flush(doc);
+    run.last_is_result
+}
+
+/// (left side, where it was shown, its stage)
+type Cited = (String, String, Option<(u8, String)>);
+
+/// The writing of a derivation's steps: the result they lead to, the elements of a torsor
+/// result (boxed where they are derived), the values cited since the last step written.
+struct StepRun<'d> {
+    d: &'d Derivation,
+    result_lhs: &'d str,
+    /// (left side, components) of a torsor result's resultant and moment.
+    elements: Vec<(String, [crate::expr::Expr; 3])>,
+    cited: Vec<Cited>,
+    /// Whether the result was boxed where it was derived.
+    last_is_result: bool,
+}
+
+/// The elements of a torsor result: (left side, components) of its resultant and its moment.
+fn result_elements(d: &Derivation) -> Vec<(String, [crate::expr::Expr; 3])> {
+    match (torsor_names(&d.quantity.kind), &d.value) {
+        (
+            Some((rn, mn)),
+            Value::Torsor {
+                resultant, moment, ..
+            },
+        ) => vec![(rn, resultant.clone()), (mn, moment.clone())],
+        _ => Vec::new(),
+    }
+}
+
+/// A point mass: σ = AP ∧ m V(P) needs neither its Ω nor an inertia operator, so step `i`
+/// is not written.
+fn skipped_for_point_mass(m: &Mechanism, d: &Derivation, i: usize) -> bool {
+    let point_mass = |sn: &str| m.bodies.iter().any(|b| b.name == sn && b.inertia.is_none());
+    let next = d.steps.get(i + 1).map(|x| &x.kind);
+    match (&d.steps[i].kind, next) {
+        (
+            StepKind::Quantity(QuantityKind::Omega(mo)),
+            Some(StepKind::Quantity(QuantityKind::Inertia { solid, .. })),
+        ) => point_mass(&mo.moving) && solid == &mo.moving,
+        (StepKind::Quantity(QuantityKind::Inertia { solid, .. }), _) => {
+            point_mass(solid)
+                && matches!(
+                    next,
+                    Some(StepKind::Quantity(QuantityKind::KineticMoment { .. }))
+                )
         }
         _ => false,
-    };
-    // (left side, where it was shown, its stage)
-    type Cited = (String, String, Option<(u8, String)>);
-    let mut cited: Vec<Cited> = Vec::new();
-    let flush = |doc: &mut Doc, cited: &mut Vec<Cited>| {
+    }
+}
+
+/// The left side of a step as displayed: V(A/R) ∧ m2 V(G2/R) with the mass of the solid
+/// whose centre G is (each solid of a set has its own term).
+fn displayed_lhs(m: &Mechanism, k: &StepKind) -> String {
+    match k {
+        StepKind::Complementary(_, g, _) => {
+            match m.bodies.iter().find(|b| m.point_name(b.centre) == g) {
+                Some(b) => step_lhs(k).replace(
+                    "\\wedge m\\,",
+                    &format!("\\wedge {}\\,", mass_of(m, &b.name)),
+                ),
+                None => step_lhs(k),
+            }
+        }
+        _ => step_lhs(k),
+    }
+}
+
+impl StepRun<'_> {
+    /// Whether `lhs = v` is an element of the torsor result (boxed where derived).
+    fn is_element(&self, lhs: &str, v: &Value) -> bool {
+        match v {
+            Value::Vector { components, .. } => self
+                .elements
+                .iter()
+                .any(|(l, c)| l == lhs && c == components),
+            _ => false,
+        }
+    }
+
+    /// The values cited since the last step written, in one sentence.
+    fn flush(&mut self, doc: &mut Doc) {
+        let cited = &mut self.cited;
         if cited.is_empty() {
             return;
         }
@@ -364,108 +459,86 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
             }
         }
         let _ = writeln!(doc.o, "{}", citation(&by_place));
-    };
-    let n = d.steps.len();
-    let mut i = 0;
-    let mut last_is_result = false;
-    while i < n {
+    }
+
+    /// A derivative (step `i`) that is already the dynamic moment (step `i + 1`, no
+    /// complementary term): one line, boxed when it is the result. Returns whether it wrote
+    /// (or cited) both steps.
+    fn dynamic_moment_as_derivative(&mut self, doc: &mut Doc, i: usize) -> bool {
+        let (d, m) = (self.d, doc.m);
+        let s = &d.steps[i];
+        let (StepKind::Derivative(_, r), Some(next)) = (&s.kind, d.steps.get(i + 1)) else {
+            return false;
+        };
+        let StepKind::Quantity(QuantityKind::DynamicMoment {
+            point: a,
+            motion: mo,
+        }) = &next.kind
+        else {
+            return false;
+        };
+        if next.value.exprs() != s.value.exprs() {
+            return false;
+        }
+        let v = shown_value(doc, &s.value);
+        let delta = quantity(&next_kind(&next.kind));
+        let lhs = format!("{delta} = {}", step_lhs(&s.kind));
+        let why = if mo_centre(m, a, mo) {
+            format!("${}$ est le centre d'inertie", point(a))
+        } else {
+            format!("${}$ est fixe dans ${}$", point(a), frame(r))
+        };
+        if let Some(place) = doc.cited(&delta, &v) {
+            self.cited.push((delta, place, stage(&next.kind)));
+        } else {
+            self.flush(doc);
+            let _ = writeln!(
+                doc.o,
+                "{why} : le moment dynamique est la dérivée du moment cinétique dans ${}$ (cas particulier du cours) :",
+                frame(r)
+            );
+            // The last step that is the result itself is boxed as the result.
+            let is_result = i + 2 == d.steps.len()
+                && delta == self.result_lhs
+                && next.value.exprs() == d.value.exprs();
+            if is_result {
+                let id = d.quantity.to_string();
+                let hn = doc.under.map(|h| h.name.clone());
+                let here = doc.here.clone();
+                doc.results.push((id.clone(), hn.clone(), v.clone(), here));
+                doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
+                doc.remember(&delta, &v);
+                self.last_is_result = true;
+            } else {
+                let boxed = self.is_element(&delta, &next.value);
+                doc.show_keyed(DisplayRole::Step, &next.label, &lhs, &delta, &v, boxed);
+            }
+        }
+        // The derivative's own key too: a later projection cites it.
+        let dl = step_lhs(&s.kind);
+        doc.remember(&dl, &v);
+        true
+    }
+
+    /// Step `i`: cited when already shown, its sentence alone when it is the result (the
+    /// result's display shows it), else its sentence and display (V(G), Γ(G) first for a
+    /// resultant).
+    fn step(&mut self, doc: &mut Doc, i: usize) {
+        let (d, m) = (self.d, doc.m);
         let s = &d.steps[i];
         let v = shown_value(doc, &s.value);
-        // A derivative that is already the dynamic moment (no complementary term): one line.
-        if let (StepKind::Derivative(sig, r), Some(next)) = (&s.kind, d.steps.get(i + 1))
-            && let StepKind::Quantity(QuantityKind::DynamicMoment {
-                point: a,
-                motion: mo,
-            }) = &next.kind
-            && next.value.exprs() == s.value.exprs()
-        {
-            let delta = quantity(&next_kind(&next.kind));
-            let lhs = format!("{delta} = {}", step_lhs(&s.kind));
-            let _ = sig;
-            let why = if mo_centre(m, a, mo) {
-                format!("${}$ est le centre d'inertie", point(a))
-            } else {
-                format!("${}$ est fixe dans ${}$", point(a), frame(r))
-            };
-            if let Some(place) = doc.cited(&delta, &v) {
-                cited.push((delta, place, stage(&next.kind)));
-            } else {
-                flush(doc, &mut cited);
-                let _ = writeln!(
-                    doc.o,
-                    "{why} : le moment dynamique est la dérivée du moment cinétique dans ${}$ (cas particulier du cours) :",
-                    frame(r)
-                );
-                // The last step that is the result itself is boxed as the result.
-                let is_result =
-                    i + 2 == n && delta == result_lhs && next.value.exprs() == d.value.exprs();
-                if is_result {
-                    let id = d.quantity.to_string();
-                    let hn = doc.under.map(|h| h.name.clone());
-                    let here = doc.here.clone();
-                    doc.results.push((id.clone(), hn.clone(), v.clone(), here));
-                    doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
-                    doc.remember(&delta, &v);
-                    last_is_result = true;
-                } else {
-                    let boxed = is_element(&delta, &next.value);
-                    doc.show_keyed(DisplayRole::Step, &next.label, &lhs, &delta, &v, boxed);
-                }
-            }
-            // The derivative's own key too: a later projection cites it.
-            let dl = step_lhs(&s.kind);
-            doc.remember(&dl, &v);
-            i += 2;
-            continue;
-        }
-        // A point mass: σ = AP ∧ m V(P) needs neither its Ω nor an inertia operator.
-        let point_mass = |sn: &str| m.bodies.iter().any(|b| b.name == sn && b.inertia.is_none());
-        let skip = match (&s.kind, d.steps.get(i + 1).map(|x| &x.kind)) {
-            (
-                StepKind::Quantity(QuantityKind::Omega(mo)),
-                Some(StepKind::Quantity(QuantityKind::Inertia { solid, .. })),
-            ) => point_mass(&mo.moving) && solid == &mo.moving,
-            (StepKind::Quantity(QuantityKind::Inertia { solid, .. }), _) => {
-                point_mass(solid)
-                    && matches!(
-                        d.steps.get(i + 1).map(|x| &x.kind),
-                        Some(StepKind::Quantity(QuantityKind::KineticMoment { .. }))
-                    )
-            }
-            _ => false,
-        };
-        if skip {
-            i += 1;
-            continue;
-        }
-        let lhs = match &s.kind {
-            // V(A/R) ∧ m2 V(G2/R): the solid's own mass.
-            // V(A/R) ∧ m2 V(G2/R): the mass of the solid whose centre G is (each solid of a
-            // set has its own term).
-            StepKind::Complementary(_, g, _) => {
-                match m.bodies.iter().find(|b| m.point_name(b.centre) == g) {
-                    Some(b) => step_lhs(&s.kind).replace(
-                        "\\wedge m\\,",
-                        &format!("\\wedge {}\\,", mass_of(m, &b.name)),
-                    ),
-                    None => step_lhs(&s.kind),
-                }
-            }
-            _ => step_lhs(&s.kind),
-        };
+        let lhs = displayed_lhs(m, &s.kind);
         if let Some(place) = doc.cited(&lhs, &v) {
-            cited.push((lhs, place, stage(&s.kind)));
-            i += 1;
-            continue;
+            self.cited.push((lhs, place, stage(&s.kind)));
+            return;
         }
         // The last step is the result itself: the result display (boxed) shows it.
-        if i + 1 == n && lhs == result_lhs && d.value.exprs() == s.value.exprs() {
-            flush(doc, &mut cited);
+        if i + 1 == d.steps.len() && lhs == self.result_lhs && d.value.exprs() == s.value.exprs() {
+            self.flush(doc);
             let _ = writeln!(doc.o, "{}", sentence(m, s));
-            i += 1;
-            continue;
+            return;
         }
-        flush(doc, &mut cited);
+        self.flush(doc);
         // Rd = m Γ(G) and Rc = m V(G): the velocity and acceleration of G first.
         if let StepKind::Quantity(QuantityKind::DynamicResultant(mo))
         | StepKind::Quantity(QuantityKind::KineticResultant(mo)) = &s.kind
@@ -477,17 +550,13 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
             if kinematics_of_centre(doc, mo, dynamic, &s.value) {
                 // G is fixed: the sentence said the resultant is zero.
                 doc.remember(&lhs, &v);
-                i += 1;
-                continue;
+                return;
             }
         }
         let _ = writeln!(doc.o, "{}", sentence(m, s));
-        let boxed = is_element(&lhs, &s.value);
+        let boxed = self.is_element(&lhs, &s.value);
         doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, boxed);
-        i += 1;
     }
-    flush(doc, &mut cited);
-    last_is_result
 }
 
 /// Values already shown, said in one sentence with where they are: « On reprend
@@ -613,7 +682,6 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
 
 /// A requested quantity of the kinematics or kinetics: its steps, then the boxed result.
 pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &str) {
-    let m = doc.m;
     let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
     // A projection asked alone is computed by the short route when all its steps were not
     // already shown.
@@ -628,6 +696,57 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
             position_route(doc, d);
             steps(doc, d, lhs)
         };
+    method_notes(doc, d);
+    let names = torsor_names(&d.quantity.kind);
+    for h in result_hypotheses(doc) {
+        let v = match h {
+            Some(h) => d.value.under(h),
+            None => d.value.clone(),
+        };
+        if doc.under.is_none()
+            && let Some(h) = h
+        {
+            if v.exprs() == d.value.exprs() {
+                let _ = writeln!(
+                    doc.o,
+                    "Sous l'hypothèse {}, le résultat est inchangé.\n",
+                    super::escape_text(&h.name)
+                );
+                continue;
+            }
+            let _ = writeln!(doc.o, "Sous l'hypothèse {} :", super::escape_text(&h.name));
+        }
+        let hn = h.map(|h| h.name.clone());
+        if let Some(names) = &names
+            && torsor_by_its_elements(doc, d, lhs, names, hn.clone(), &v)
+        {
+            continue;
+        }
+        if h.is_none() && last_is_result {
+            // Already boxed where it was derived.
+            continue;
+        }
+        let id = d.quantity.to_string();
+        if names.is_none() || !matches!(v, Value::Torsor { .. }) {
+            let here = doc.here.clone();
+            doc.results.push((id.clone(), hn.clone(), v.clone(), here));
+        }
+        doc.show_result(
+            DisplayRole::Result,
+            &id,
+            hn.as_deref(),
+            lhs,
+            &v,
+            names.as_ref(),
+        );
+    }
+}
+
+/// What the method says beyond its steps, before the result: Huygens for I_A(S) at a point
+/// other than G, the composition for Ω asked alone, the sentence of an action or of a
+/// kinetic energy.
+fn method_notes(doc: &mut Doc, d: &Derivation) {
+    let m = doc.m;
     // I_A(S) at a point other than G: Huygens, named before the result.
     if let QuantityKind::Inertia {
         point: a,
@@ -660,93 +779,68 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
     {
         let _ = writeln!(doc.o, "{s}");
     }
-    let id = d.quantity.to_string();
-    let names = torsor_names(&d.quantity.kind);
-    // Results under a hypothesis only once it has been stated (never before its question).
-    let hyps: Vec<_> = match doc.under {
+}
+
+/// The hypotheses a result is shown under: the question's; or in general, then under each
+/// hypothesis stated so far (never before its question).
+fn result_hypotheses<'m>(doc: &Doc<'m>) -> Vec<Option<&'m Hypothesis>> {
+    match doc.under {
         Some(h) => vec![Some(h)],
         None => std::iter::once(None)
             .chain(
-                m.hypotheses
+                doc.m
+                    .hypotheses
                     .iter()
                     .filter(|h| doc.is_stated(&h.name))
                     .map(Some),
             )
             .collect(),
-    };
-    let general = d.value.clone();
-    for h in hyps {
-        let v = match h {
-            Some(h) => general.under(h),
-            None => general.clone(),
-        };
-        if doc.under.is_none()
-            && let Some(h) = h
-        {
-            if v.exprs() == general.exprs() {
-                let _ = writeln!(
-                    doc.o,
-                    "Sous l'hypothèse {}, le résultat est inchangé.\n",
-                    super::escape_text(&h.name)
-                );
-                continue;
-            }
-            let _ = writeln!(doc.o, "Sous l'hypothèse {} :", super::escape_text(&h.name));
-        } else if h.is_none() && last_is_result {
-            // The last step is the result: box it without repeating a sentence.
-        }
-        // A torsor whose elements were just shown: its notation, boxed, not its values again.
-        if let (
-            Some((rn, mn)),
-            Value::Torsor {
-                basis,
-                resultant,
-                moment,
-                point: p,
-            },
-        ) = (&names, &v)
-        {
-            let res = Value::Vector {
-                basis: *basis,
-                components: resultant.clone(),
-            };
-            let mom = Value::Vector {
-                basis: *basis,
-                components: moment.clone(),
-            };
-            let here = doc.here.clone();
-            doc.results
-                .push((id.clone(), h.map(|h| h.name.clone()), v.clone(), here));
-            let short = resultant
-                .iter()
-                .chain(moment.iter())
-                .all(|e| e.nterms() <= 1);
-            if !short && doc.cited(rn, &res).is_some() && doc.cited(mn, &mom).is_some() {
-                let _ = writeln!(
-                    doc.o,
-                    "D'où ${lhs} = \\left\\{{ \\begin{{array}}{{l}} {rn} \\\\ {mn} \\end{{array}} \\right\\}}_{{{}}}$, ses éléments de réduction étant encadrés ci-dessus.\n",
-                    point(m.point_name(*p))
-                );
-                doc.remember(lhs, &v);
-                continue;
-            }
-        }
-        if h.is_none() && last_is_result {
-            // Already boxed where it was derived.
-            continue;
-        }
-        let hn = h.map(|h| h.name.clone());
-        if names.is_none() || !matches!(v, Value::Torsor { .. }) {
-            let here = doc.here.clone();
-            doc.results.push((id.clone(), hn.clone(), v.clone(), here));
-        }
-        doc.show_result(
-            DisplayRole::Result,
-            &id,
-            hn.as_deref(),
-            lhs,
-            &v,
-            names.as_ref(),
-        );
     }
+}
+
+/// A torsor result `v` (under `hn`) whose elements `names` were just shown: recorded, and,
+/// when they are long and both boxed above, its notation written instead of its values
+/// again. Returns whether it was written so.
+fn torsor_by_its_elements(
+    doc: &mut Doc,
+    d: &Derivation,
+    lhs: &str,
+    (rn, mn): &(String, String),
+    hn: Option<String>,
+    v: &Value,
+) -> bool {
+    let Value::Torsor {
+        basis,
+        resultant,
+        moment,
+        point: p,
+    } = v
+    else {
+        return false;
+    };
+    let res = Value::Vector {
+        basis: *basis,
+        components: resultant.clone(),
+    };
+    let mom = Value::Vector {
+        basis: *basis,
+        components: moment.clone(),
+    };
+    let here = doc.here.clone();
+    doc.results
+        .push((d.quantity.to_string(), hn, v.clone(), here));
+    let short = resultant
+        .iter()
+        .chain(moment.iter())
+        .all(|e| e.nterms() <= 1);
+    if short || doc.cited(rn, &res).is_none() || doc.cited(mn, &mom).is_none() {
+        return false;
+    }
+    let _ = writeln!(
+        doc.o,
+        "D'où ${lhs} = \\left\\{{ \\begin{{array}}{{l}} {rn} \\\\ {mn} \\end{{array}} \\right\\}}_{{{}}}$, ses éléments de réduction étant encadrés ci-dessus.\n",
+        point(doc.m.point_name(*p))
+    );
+    doc.remember(lhs, v);
+    true
 }

@@ -9,6 +9,7 @@ use super::omega::{omega_of, omega_sentence};
 use super::{basis_vector, frame, point, quantity};
 use crate::derivation::{Derivation, Value, derive};
 use crate::frame::FrameId;
+use crate::mechanism::Mechanism;
 use crate::quantity::{Motion, Quantity, QuantityKind};
 use std::fmt::Write;
 
@@ -53,175 +54,279 @@ fn show_scalar(doc: &mut Doc, what: &str, sentence: &str, lhs: &str, e: crate::e
 /// (A ≠ G), the change of point to the centre of inertia, δ(G)·u + (AG ∧ m Γ(G))·u. Returns
 /// false when neither applies (the steps of the vector are then shown).
 pub(super) fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
-    use crate::kinematics::{acceleration, omega, point_velocity};
-    let m = doc.m;
-    let q = &d.quantity;
-    let QuantityKind::DynamicMoment {
-        point: a,
-        motion: mo,
-    } = &q.kind
-    else {
+    let Some(pm) = ProjectedMoment::of(doc.m, d) else {
         return false;
     };
-    let Ok(r) = crate::derivation::resolve(m, q) else {
-        return false;
-    };
-    let (Some((uf, ua)), [s], Some(pa)) = (r.projection, r.solids.as_slice(), r.point) else {
-        return false;
-    };
-    let rf = r.reference.unwrap_or(m.frames.ground());
-    let body = m.body(*s);
-    let u = crate::vector::Vector::along(uf, ua, m.reg.one());
-    let ul = basis_vector(ua.letter(), m.frame_name(uf));
-    let rl = frame(&mo.reference);
-    let sigma_a = quantity(&QuantityKind::KineticMoment {
-        point: a.clone(),
-        motion: mo.clone(),
-    });
-    let fixed_axis = omega(m, uf, rf).is_zero(&m.frames);
-    // δ(A) = dσ(A)/dt + V(A/R) ∧ m V(G): a point A at rest in R suffices.
-    let fixed_point = point_velocity(m, pa, rf).is_zero(&m.frames);
-    let ib = crate::torsor::inertia_basis(m, *s);
-    let Value::Scalar(result) = &d.value else {
-        return false;
-    };
-    if fixed_point && fixed_axis {
-        // The route must give the engine's value exactly, or it is not taken.
-        let sig = crate::torsor::kinetic_moment_solid(m, *s, pa, rf);
-        let proj = sig.dot(&m.frames, &u);
-        if &proj.dt() != result {
-            return false;
-        }
-        let om = omega(m, body.frame, rf);
-        let oml = omega_of(&mo.moving, &mo.reference);
+    if pm.fixed {
+        fixed_point_route(doc, &pm)
+    } else {
+        centre_route(doc, &pm)
+    }
+}
+
+/// A projected dynamic moment δ(A,S/R)·u of one solid, resolved: its objects and their
+/// names in LaTeX, and the engine's value the route must give.
+struct ProjectedMoment<'d> {
+    /// δ(A,S/R)·u as asked.
+    kind: &'d QuantityKind,
+    a: &'d str,
+    mo: &'d Motion,
+    s: crate::mechanism::BodyId,
+    pa: crate::point::PointId,
+    /// The reference frame R.
+    rf: FrameId,
+    /// The axis u: its frame, its letter, its vector and its LaTeX.
+    uf: FrameId,
+    ua: crate::frame::Axis,
+    u: crate::vector::Vector,
+    ul: String,
+    /// R and σ(A,S/R) in LaTeX.
+    rl: String,
+    sigma_a: String,
+    /// The basis of the solid's inertia operator, and the basis asked.
+    ib: FrameId,
+    basis: FrameId,
+    result: &'d crate::expr::Expr,
+    /// A is at rest in R and u fixed in R.
+    fixed: bool,
+}
+
+impl<'d> ProjectedMoment<'d> {
+    /// The projected dynamic moment of one solid that `d` derives, if it is one.
+    fn of(m: &Mechanism, d: &'d Derivation) -> Option<Self> {
+        use crate::kinematics::{omega, point_velocity};
+        let q = &d.quantity;
+        let QuantityKind::DynamicMoment {
+            point: a,
+            motion: mo,
+        } = &q.kind
+        else {
+            return None;
+        };
+        let r = crate::derivation::resolve(m, q).ok()?;
+        let (Some((uf, ua)), [s], Some(pa)) = (r.projection, r.solids.as_slice(), r.point) else {
+            return None;
+        };
+        let rf = r.reference.unwrap_or(m.frames.ground());
+        let fixed_axis = omega(m, uf, rf).is_zero(&m.frames);
+        // δ(A) = dσ(A)/dt + V(A/R) ∧ m V(G): a point A at rest in R suffices.
+        let fixed_point = point_velocity(m, pa, rf).is_zero(&m.frames);
+        let Value::Scalar(result) = &d.value else {
+            return None;
+        };
+        Some(ProjectedMoment {
+            kind: &q.kind,
+            a,
+            mo,
+            s: *s,
+            pa,
+            rf,
+            uf,
+            ua,
+            u: crate::vector::Vector::along(uf, ua, m.reg.one()),
+            ul: basis_vector(ua.letter(), m.frame_name(uf)),
+            rl: frame(&mo.reference),
+            sigma_a: quantity(&QuantityKind::KineticMoment {
+                point: a.clone(),
+                motion: mo.clone(),
+            }),
+            ib: crate::torsor::inertia_basis(m, *s),
+            basis: r.basis,
+            result,
+            fixed: fixed_point && fixed_axis,
+        })
+    }
+
+    /// Ω(S/R), shown or cited, in the basis of the inertia operator.
+    fn show_omega(&self, doc: &mut Doc) {
+        let m = doc.m;
+        let body = m.body(self.s);
+        let om = crate::kinematics::omega(m, body.frame, self.rf);
+        let oml = omega_of(&self.mo.moving, &self.mo.reference);
         show_vector(
             doc,
-            &format!("Omega({})", mo),
-            &omega_sentence(m, mo),
+            &format!("Omega({})", self.mo),
+            &omega_sentence(m, self.mo),
             &oml,
             &om,
-            ib,
+            self.ib,
         );
-        let il = format!("I_{{{}}}({})", point(a), mo.moving);
-        // σ(A) = I_A Ω only when the point of S at A is at rest; else the general formula.
-        let of_solid = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
-        let gn = m.point_name(body.centre).to_string();
-        let sentence = if of_solid {
-            format!(
-                "${}$ est un point de ${}$ fixe dans ${rl}$ : ${sigma_a} = {il}\\cdot{oml}$ :",
-                point(a),
-                solid(&mo.moving)
-            )
-        } else {
-            format!(
-                "${sigma_a} = {il}\\cdot{oml} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
-                mass_of(m, &mo.moving),
-                point(a),
-                point(&gn),
-                point(a),
-                mo.moving,
-                mo.reference
-            )
-        };
-        show_vector(
-            doc,
-            &format!("sigma({a},{mo})"),
-            &sentence,
-            &sigma_a,
-            &sig,
-            ib,
-        );
-        show_scalar(
-            doc,
-            &format!("sigma({a},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
-            &format!(
-                "${}$ est fixe dans ${rl}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_a}\\cdot {ul}\\right)$, avec :",
-                point(a),
-                quantity(&q.kind)
-            ),
-            &format!("{sigma_a}\\cdot {ul}"),
-            proj,
-        );
-        return true;
     }
-    let g = body.centre;
-    if pa == g {
+}
+
+/// At a point fixed in R on an axis fixed in R: Ω, σ(A,S/R), then δ(A)·u as the derivative
+/// of σ(A)·u. Taken only when it gives the engine's value exactly.
+fn fixed_point_route(doc: &mut Doc, pm: &ProjectedMoment) -> bool {
+    let m = doc.m;
+    let (a, mo, ul, rl, sigma_a) = (pm.a, pm.mo, &pm.ul, &pm.rl, &pm.sigma_a);
+    let body = m.body(pm.s);
+    // The route must give the engine's value exactly, or it is not taken.
+    let sig = crate::torsor::kinetic_moment_solid(m, pm.s, pm.pa, pm.rf);
+    let proj = sig.dot(&m.frames, &pm.u);
+    if &proj.dt() != pm.result {
         return false;
     }
-    let dg = crate::torsor::dynamic_moment_solid(m, *s, g, rf).dot(&m.frames, &u);
-    let gam = acceleration(m, g, body.frame, rf);
-    let ag = crate::kinematics::position(m, pa, g);
+    pm.show_omega(doc);
+    let oml = omega_of(&mo.moving, &mo.reference);
+    let il = format!("I_{{{}}}({})", point(a), mo.moving);
+    // σ(A) = I_A Ω only when the point of S at A is at rest; else the general formula.
+    let of_solid = crate::kinematics::velocity(m, pm.pa, body.frame, pm.rf).is_zero(&m.frames);
+    let gn = m.point_name(body.centre).to_string();
+    let sentence = if of_solid {
+        format!(
+            "${}$ est un point de ${}$ fixe dans ${rl}$ : ${sigma_a} = {il}\\cdot{oml}$ :",
+            point(a),
+            solid(&mo.moving)
+        )
+    } else {
+        format!(
+            "${sigma_a} = {il}\\cdot{oml} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
+            mass_of(m, &mo.moving),
+            point(a),
+            point(&gn),
+            point(a),
+            mo.moving,
+            mo.reference
+        )
+    };
+    show_vector(
+        doc,
+        &format!("sigma({a},{mo})"),
+        &sentence,
+        sigma_a,
+        &sig,
+        pm.ib,
+    );
+    show_scalar(
+        doc,
+        &format!("sigma({a},{mo}).{}{}", pm.ua.letter(), m.frame_name(pm.uf)),
+        &format!(
+            "${}$ est fixe dans ${rl}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_a}\\cdot {ul}\\right)$, avec :",
+            point(a),
+            quantity(pm.kind)
+        ),
+        &format!("{sigma_a}\\cdot {ul}"),
+        proj,
+    );
+    true
+}
+
+/// Elsewhere (A ≠ G), the change of point to the centre of inertia: δ(G)·u + (AG ∧ m Γ(G))·u,
+/// each term shown. Taken only when it gives the engine's value exactly.
+fn centre_route(doc: &mut Doc, pm: &ProjectedMoment) -> bool {
+    let m = doc.m;
+    let body = m.body(pm.s);
+    let g = body.centre;
+    if pm.pa == g {
+        return false;
+    }
+    let dg = crate::torsor::dynamic_moment_solid(m, pm.s, g, pm.rf).dot(&m.frames, &pm.u);
+    let gam = crate::kinematics::acceleration(m, g, body.frame, pm.rf);
+    let ag = crate::kinematics::position(m, pm.pa, g);
     let transport = ag
         .cross(&m.frames, &gam.scale(&body.mass))
-        .dot(&m.frames, &u);
+        .dot(&m.frames, &pm.u);
     // δ(A)·u = δ(G)·u + (AG ∧ m Γ(G))·u must give the engine's value exactly.
-    if &(&dg + &transport) != result {
+    if &(&dg + &transport) != pm.result {
         return false;
     }
-    let gn = m.point_name(g).to_string();
-    let delta_g = QuantityKind::DynamicMoment {
-        point: gn.clone(),
-        motion: mo.clone(),
+    let terms = CentreTerms {
+        gn: m.point_name(g).to_string(),
+        dg,
+        gam,
+        transport,
     };
-    let gamma = QuantityKind::Acceleration {
-        point: gn.clone(),
-        motion: mo.clone(),
-    };
+    centre_route_intro(doc, pm, &terms);
+    centre_route_terms(doc, pm, terms);
+    true
+}
+
+/// The terms of δ(A)·u through the centre of inertia G: δ(G)·u, Γ(G), (AG ∧ m Γ(G))·u.
+struct CentreTerms {
+    gn: String,
+    dg: crate::expr::Expr,
+    gam: crate::vector::Vector,
+    transport: crate::expr::Expr,
+}
+
+/// δ(G) and Γ(G) of the solid's motion.
+fn centre_kinds(pm: &ProjectedMoment, gn: &str) -> (QuantityKind, QuantityKind) {
+    (
+        QuantityKind::DynamicMoment {
+            point: gn.to_string(),
+            motion: pm.mo.clone(),
+        },
+        QuantityKind::Acceleration {
+            point: gn.to_string(),
+            motion: pm.mo.clone(),
+        },
+    )
+}
+
+/// The change of point written out, then Ω and σ(G) = I_G Ω.
+fn centre_route_intro(doc: &mut Doc, pm: &ProjectedMoment, t: &CentreTerms) {
+    let m = doc.m;
+    let (a, mo, ul, gn) = (pm.a, pm.mo, &pm.ul, &t.gn);
+    let (delta_g, gamma) = centre_kinds(pm, gn);
     let mass = mass_of(m, &mo.moving);
     let _ = writeln!(
         doc.o,
         "Changement de point vers le centre d'inertie :\n\\[{} \\cdot {ul} = {} \\cdot {ul} + \\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}\\]",
-        quantity(&q.kind),
+        quantity(pm.kind),
         quantity(&delta_g),
         point(a),
-        point(&gn),
+        point(gn),
         quantity(&gamma)
     );
-    let om = omega(m, body.frame, rf);
+    pm.show_omega(doc);
     let oml = omega_of(&mo.moving, &mo.reference);
-    show_vector(
-        doc,
-        &format!("Omega({mo})"),
-        &omega_sentence(m, mo),
-        &oml,
-        &om,
-        ib,
-    );
     let sigma_g = quantity(&QuantityKind::KineticMoment {
         point: gn.clone(),
         motion: mo.clone(),
     });
-    let sig = crate::torsor::kinetic_moment_solid(m, *s, g, rf);
+    let sig = crate::torsor::kinetic_moment_solid(m, pm.s, m.body(pm.s).centre, pm.rf);
     show_vector(
         doc,
         &format!("sigma({gn},{mo})"),
         &format!(
             "En ${}$, centre d'inertie : ${sigma_g} = I_{{{}}}({})\\cdot{oml}$ :",
-            point(&gn),
-            point(&gn),
+            point(gn),
+            point(gn),
             mo.moving
         ),
         &sigma_g,
         &sig,
-        ib,
+        pm.ib,
     );
+}
+
+/// δ(G)·u as the derivative of σ(G), Γ(G), and the term of transport.
+fn centre_route_terms(doc: &mut Doc, pm: &ProjectedMoment, t: CentreTerms) {
+    let m = doc.m;
+    let (a, mo, ul, rl, gn) = (pm.a, pm.mo, &pm.ul, &pm.rl, &t.gn);
+    let (delta_g, gamma) = centre_kinds(pm, gn);
+    let mass = mass_of(m, &mo.moving);
+    let sigma_g = quantity(&QuantityKind::KineticMoment {
+        point: gn.clone(),
+        motion: mo.clone(),
+    });
     show_scalar(
         doc,
-        &format!("delta({gn},{mo}).{}{}", ua.letter(), m.frame_name(uf)),
+        &format!("delta({gn},{mo}).{}{}", pm.ua.letter(), m.frame_name(pm.uf)),
         &format!(
             "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{sigma_g}\\right]_{{{rl}}}$ (centre d'inertie), projeté sur ${ul}$ :",
             quantity(&delta_g)
         ),
         &format!("{} \\cdot {ul}", quantity(&delta_g)),
-        dg,
+        t.dg,
     );
     show_vector(
         doc,
         &format!("Gamma({gn},{mo})"),
-        &format!("Accélération de ${}$ :", point(&gn)),
+        &format!("Accélération de ${}$ :", point(gn)),
         &quantity(&gamma),
-        &gam,
-        r.basis,
+        &t.gam,
+        pm.basis,
     );
     show_scalar(
         doc,
@@ -230,12 +335,11 @@ pub(super) fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
         &format!(
             "\\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}",
             point(a),
-            point(&gn),
+            point(gn),
             quantity(&gamma)
         ),
-        transport,
+        t.transport,
     );
-    true
 }
 
 /// V(P,S/R) and Γ(P,S/R) have no steps of their own: the method sentence (derivative of the

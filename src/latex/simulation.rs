@@ -22,48 +22,71 @@ pub(super) fn simulation_block(
     sim: &crate::wire::SimulationSpec,
     file: &str,
 ) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
-    let fail = |what: &str, e: String| crate::derivation::ResolveError::new(&what, e);
     let mut runs = Vec::new();
     for name in &sim.scenarios {
         runs.push(crate::simulate::simulate(m, name).map_err(|e| fail(name, e.to_string()))?);
     }
-    // The values the simulations use (the statement may give some of them, or none).
-    if let Some(first) = sim
+    assumed_values(o, m, sim);
+    scenario_descriptions(o, m, sim);
+    let figure = simulation_figure(sim, &runs);
+    let _ = writeln!(
+        o,
+        "\\begin{{center}}\n\\includegraphics[width=0.9\\textwidth]{{{file}}}\n\\end{{center}}"
+    );
+    if let Some(col) = &sim.maximum {
+        maxima_table(o, m, sim, &runs, col)?;
+    }
+    Ok(figure)
+}
+
+/// The error of a simulation that fails, naming its scenario.
+fn fail(what: &str, e: String) -> crate::derivation::ResolveError {
+    crate::derivation::ResolveError::new(&what, e)
+}
+
+/// The values the simulations use (the statement may give some of them, or none), six to a
+/// row; a value that differs between the scenarios (the friction f) is given for each, in
+/// the order of the scenarios.
+fn assumed_values(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSpec) {
+    let Some(first) = sim
         .scenarios
         .first()
         .and_then(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
-    {
-        o.push_str(
-            "Les simulations utilisent les valeurs suivantes (unités SI).\n\n\\begin{center}\n\
-             \\begin{tabular}{llllll}\n",
-        );
-        // A value that differs between the scenarios (the friction f) is given for each, in
-        // the order of the scenarios.
-        let others: Vec<&crate::wire::ScenarioSpec> = sim
-            .scenarios
-            .iter()
-            .filter_map(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
-            .collect();
-        let cells: Vec<String> = first
-            .values
-            .iter()
-            .map(|(k, v)| {
-                let mut vals: Vec<String> = Vec::new();
-                for sc in &others {
-                    let x = sc.values.get(k).copied().unwrap_or(*v);
-                    let t = french_sci(x);
-                    if !vals.contains(&t) {
-                        vals.push(t);
-                    }
+    else {
+        return;
+    };
+    o.push_str(
+        "Les simulations utilisent les valeurs suivantes (unités SI).\n\n\\begin{center}\n\
+         \\begin{tabular}{llllll}\n",
+    );
+    let others: Vec<&crate::wire::ScenarioSpec> = sim
+        .scenarios
+        .iter()
+        .filter_map(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
+        .collect();
+    let cells: Vec<String> = first
+        .values
+        .iter()
+        .map(|(k, v)| {
+            let mut vals: Vec<String> = Vec::new();
+            for sc in &others {
+                let x = sc.values.get(k).copied().unwrap_or(*v);
+                let t = french_sci(x);
+                if !vals.contains(&t) {
+                    vals.push(t);
                 }
-                format!("${} = {}$", name(k), vals.join(" \\text{ ou } "))
-            })
-            .collect();
-        for row in cells.chunks(6) {
-            let _ = writeln!(o, "{} \\\\", row.join(" & "));
-        }
-        o.push_str("\\end{tabular}\n\\end{center}\n");
+            }
+            format!("${} = {}$", name(k), vals.join(" \\text{ ou } "))
+        })
+        .collect();
+    for row in cells.chunks(6) {
+        let _ = writeln!(o, "{} \\\\", row.join(" & "));
     }
+    o.push_str("\\end{tabular}\n\\end{center}\n");
+}
+
+/// Each scenario's description, under its label.
+fn scenario_descriptions(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSpec) {
     for (name, sc) in sim.scenarios.iter().filter_map(|n| {
         m.spec
             .scenarios
@@ -80,56 +103,66 @@ pub(super) fn simulation_block(
             );
         }
     }
-    // The legend names each run by its scenario's label (« sans frottement »).
+}
+
+/// The figure of the runs: wide and short panels (the curves are read across time, and the
+/// page is the limit), the legend naming each run by its scenario's label (« sans
+/// frottement »). The document's title is above; the figure needs none of its own.
+fn simulation_figure(
+    sim: &crate::wire::SimulationSpec,
+    runs: &[crate::simulate::Run],
+) -> crate::simulate::Figure {
     let pairs: Vec<(&str, &crate::simulate::Run)> =
         runs.iter().map(|r| (r.label.as_str(), r)).collect();
     let ids: Vec<&str> = sim.plot.iter().map(String::as_str).collect();
-    // Wide and short panels: the curves are read across time, and the page is the limit.
-    // The document's title is above; the figure needs none of its own.
     let figure = crate::simulate::figure("", &pairs, &ids, true);
     let panels = u32::try_from(figure.panels.len()).unwrap_or(1);
-    let figure = figure.size(1100, 60 + 160 * panels);
+    figure.size(1100, 60 + 160 * panels)
+}
+
+/// The maximum of `col` in each run against the statement's.
+fn maxima_table(
+    o: &mut String,
+    m: &Mechanism,
+    sim: &crate::wire::SimulationSpec,
+    runs: &[crate::simulate::Run],
+    col: &str,
+) -> Result<(), crate::derivation::ResolveError> {
+    let unit = runs
+        .first()
+        .and_then(|r| r.columns.iter().find(|c| c.id == col))
+        .map(|c| format!(" ({})", escape_text(&c.unit)))
+        .unwrap_or_default();
     let _ = writeln!(
         o,
-        "\\begin{{center}}\n\\includegraphics[width=0.9\\textwidth]{{{file}}}\n\\end{{center}}"
+        "\\begin{{center}}\n\\begin{{tabular}}{{lcc}}\nCas & ${}$ maximal calculé{unit} & \
+         ${}$ maximal du sujet{unit} \\\\\n\\hline",
+        name(col),
+        name(col)
     );
-    if let Some(col) = &sim.maximum {
-        let unit = runs
-            .first()
-            .and_then(|r| r.columns.iter().find(|c| &c.id == col))
-            .map(|c| format!(" ({})", escape_text(&c.unit)))
-            .unwrap_or_default();
+    for (scenario, run) in sim.scenarios.iter().zip(runs) {
+        let (v, t) = run
+            .max_abs(col)
+            .ok_or_else(|| fail(scenario, format!("no column `{col}` in the run")))?;
+        let reference = sim
+            .reference
+            .get(scenario)
+            .map(|r| format!("${}$", french(*r)))
+            .unwrap_or_else(|| "--".to_string());
         let _ = writeln!(
             o,
-            "\\begin{{center}}\n\\begin{{tabular}}{{lcc}}\nCas & ${}$ maximal calculé{unit} & \
-             ${}$ maximal du sujet{unit} \\\\\n\\hline",
-            name(col),
-            name(col)
+            "{} & ${}$ (à $t = {}$~s) & {} \\\\",
+            rich_text_or_escaped(
+                &m.scenario_label(scenario)
+                    .unwrap_or_else(|| scenario.clone())
+            ),
+            french(v),
+            french(t),
+            reference
         );
-        for (scenario, run) in sim.scenarios.iter().zip(&runs) {
-            let (v, t) = run
-                .max_abs(col)
-                .ok_or_else(|| fail(scenario, format!("no column `{col}` in the run")))?;
-            let reference = sim
-                .reference
-                .get(scenario)
-                .map(|r| format!("${}$", french(*r)))
-                .unwrap_or_else(|| "--".to_string());
-            let _ = writeln!(
-                o,
-                "{} & ${}$ (à $t = {}$~s) & {} \\\\",
-                rich_text_or_escaped(
-                    &m.scenario_label(scenario)
-                        .unwrap_or_else(|| scenario.clone())
-                ),
-                french(v),
-                french(t),
-                reference
-            );
-        }
-        o.push_str("\\end{tabular}\n\\end{center}\n");
     }
-    Ok(figure)
+    o.push_str("\\end{tabular}\n\\end{center}\n");
+    Ok(())
 }
 
 /// A value for the table of assumed values: plain when moderate, else a power of ten.

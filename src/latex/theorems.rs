@@ -1,11 +1,10 @@
 //! The PFD in the answer key: the bilan of the external actions once per isolated system, each
 //! theorem as its two sides, then the unknown or the equation of motion, boxed.
 
-use super::action_side;
 use super::document::{DisplayRole, Doc};
 use super::method::{shown_value, solid, step_lhs};
 use super::{basis_vector, name, point, quantity};
-use crate::derivation::{Derivation, StepKind, Value};
+use crate::derivation::{Derivation, Step, StepKind, Value};
 use crate::quantity::QuantityKind;
 use std::fmt::Write;
 
@@ -13,7 +12,6 @@ use std::fmt::Write;
 /// the theorem as one equality (dynamic side, actions), then the unknown or the equation of
 /// motion.
 pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
-    let m = doc.m;
     let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
     if linearised_from_above(doc, d) {
         return;
@@ -38,111 +36,23 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         else {
             break;
         };
-        let iso = action_side(isolate);
         let iso_name = solid(isolate);
-        match doc.bilans.get(isolate).cloned() {
-            Some(place) => {
-                let place = if place == doc.here {
-                    "établi ci-dessus".to_string()
-                } else {
-                    format!("celui de {place}")
-                };
-                let _ = writeln!(
-                    doc.o,
-                    "On isole ${iso_name}$ ; le bilan des actions mécaniques extérieures est {place}.\n"
-                );
-            }
-            None => {
-                let _ = writeln!(
-                    doc.o,
-                    "On isole ${iso_name}$. Bilan des actions mécaniques extérieures à ${iso_name}$ :"
-                );
-                // Each action's line and torsor, side by side when they are short.
-                let mut cells = Vec::new();
-                let mut widths = Vec::new();
-                // Actions already shown (asked as quantities above) are cited, not repeated.
-                let mut by_place: Vec<(String, Vec<String>)> = Vec::new();
-                for s in &steps[start..k] {
-                    let lhs = step_lhs(&s.kind);
-                    if let Some(place) = doc.cited(&lhs, &shown_value(doc, &s.value)) {
-                        match by_place.iter_mut().find(|(p, _)| *p == place) {
-                            Some((_, v)) => v.push(lhs),
-                            None => by_place.push((place, vec![lhs])),
-                        }
-                    }
-                }
-                if !by_place.is_empty() {
-                    // After « Bilan … à $S_1$ : », the sentence goes on in lower case.
-                    let c =
-                        super::method::citation(&by_place).replacen("On reprend", "on reprend", 1);
-                    let _ = writeln!(doc.o, "{c}");
-                }
-                for s in &steps[start..k] {
-                    let text = action_line(m, s);
-                    let v = shown_value(doc, &s.value);
-                    let lhs = step_lhs(&s.kind);
-                    if doc.cited(&lhs, &v).is_some() {
-                        continue;
-                    }
-                    cells.push(doc.capture(|doc| {
-                        let _ = writeln!(doc.o, "{text} :");
-                        doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
-                    }));
-                    widths.push(doc.last_width());
-                }
-                doc.rows(&cells, &widths, 3);
-                let here = doc.here.clone();
-                doc.bilans.insert(isolate.clone(), here);
-            }
-        }
-        let theorem = match at {
-            Some(p) => format!(
-                "Théorème du moment dynamique appliqué à ${iso_name}$ en ${}$, en projection sur ${}$",
-                point(p),
-                basis_vector(*a, f)
-            ),
-            None => format!(
-                "Théorème de la résultante dynamique appliqué à ${iso_name}$, en projection sur ${}$",
-                basis_vector(*a, f)
-            ),
+        external_bilan(doc, isolate, &iso_name, &steps[start..k]);
+        let theorem = Theorem {
+            title: theorem_title(&iso_name, at.as_deref(), f, *a),
+            dynamic: (step_lhs(&dyn_step.kind), shown_value(doc, &dyn_step.value)),
+            external: (step_lhs(&ext_step.kind), shown_value(doc, &ext_step.value)),
         };
-        let _ = iso;
-        let dl = step_lhs(&dyn_step.kind);
-        let el = step_lhs(&ext_step.kind);
-        let dv = shown_value(doc, &dyn_step.value);
-        let ev = shown_value(doc, &ext_step.value);
-        // When the actions reduce to the unknown asked (C_m), the theorem gives it at once:
-        // « C_m = δ(O1,E/0)·z0 », boxed below, without writing the dynamic side twice.
-        if let (QuantityKind::Unknown(u), Value::Scalar(e)) = (&d.quantity.kind, &ev)
-            && m.reg.param(u).as_ref() == Some(e)
-            && k + 2 == steps.len()
-        {
-            let id = d.quantity.to_string();
-            let hn = doc.under.map(|h| h.name.clone());
-            // The dynamic side was just boxed (asked as a quantity of its own): the unknown
-            // is that value, said in words rather than printed a second time.
-            if let Some(place) = doc.cited(&dl, &dv) {
-                let place = if place == "ce qui précède" {
-                    "encadrée plus haut".to_string()
-                } else {
-                    format!("encadrée dans {place}")
-                };
-                let _ = writeln!(
-                    doc.o,
-                    "{theorem}, ${dl} = {el}$, soit ${} = {dl}$ (valeur {place}).\n",
-                    name(u)
-                );
-                doc.results.push((id, hn, dv.clone(), doc.here.clone()));
-                return;
-            }
-            let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$, soit :");
-            let here = doc.here.clone();
-            doc.results.push((id.clone(), hn.clone(), dv.clone(), here));
-            let lhs = format!("{} = {dl}", name(u));
-            doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &dv, None);
+        // When the actions reduce to the unknown asked (C_m), the theorem gives it at once.
+        if k + 2 == steps.len() && unknown_at_once(doc, d, &theorem) {
             return;
         }
-        let _ = writeln!(doc.o, "{theorem}, ${dl} = {el}$ :");
+        let Theorem {
+            title,
+            dynamic: (dl, dv),
+            external: (el, ev),
+        } = theorem;
+        let _ = writeln!(doc.o, "{title}, ${dl} = {el}$ :");
         doc.show_equality(
             DisplayRole::Step,
             &dyn_step.label,
@@ -155,6 +65,135 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         last_equality = Some((dv, ev));
         k += 2;
     }
+    pfd_result(doc, d, last_equality);
+}
+
+/// One theorem of the PFD: its title (« Théorème du moment dynamique appliqué à … »), its
+/// dynamic side and its external actions, each as (left side, value shown).
+struct Theorem {
+    title: String,
+    dynamic: (String, Value),
+    external: (String, Value),
+}
+
+/// « On isole S ; » and the bilan of the external actions to `isolate` (its `actions`): written
+/// the first time, each action's line and torsor side by side when short, those already
+/// shown cited; later, where it was written.
+fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]) {
+    if let Some(place) = doc.bilans.get(isolate).cloned() {
+        let place = if place == doc.here {
+            "établi ci-dessus".to_string()
+        } else {
+            format!("celui de {place}")
+        };
+        let _ = writeln!(
+            doc.o,
+            "On isole ${iso_name}$ ; le bilan des actions mécaniques extérieures est {place}.\n"
+        );
+        return;
+    }
+    let m = doc.m;
+    let _ = writeln!(
+        doc.o,
+        "On isole ${iso_name}$. Bilan des actions mécaniques extérieures à ${iso_name}$ :"
+    );
+    // Actions already shown (asked as quantities above) are cited, not repeated.
+    let mut by_place: Vec<(String, Vec<String>)> = Vec::new();
+    for s in actions {
+        let lhs = step_lhs(&s.kind);
+        if let Some(place) = doc.cited(&lhs, &shown_value(doc, &s.value)) {
+            match by_place.iter_mut().find(|(p, _)| *p == place) {
+                Some((_, v)) => v.push(lhs),
+                None => by_place.push((place, vec![lhs])),
+            }
+        }
+    }
+    if !by_place.is_empty() {
+        // After « Bilan … à $S_1$ : », the sentence goes on in lower case.
+        let c = super::method::citation(&by_place).replacen("On reprend", "on reprend", 1);
+        let _ = writeln!(doc.o, "{c}");
+    }
+    // Each action's line and torsor, side by side when they are short.
+    let mut cells = Vec::new();
+    let mut widths = Vec::new();
+    for s in actions {
+        let text = action_line(m, s);
+        let v = shown_value(doc, &s.value);
+        let lhs = step_lhs(&s.kind);
+        if doc.cited(&lhs, &v).is_some() {
+            continue;
+        }
+        cells.push(doc.capture(|doc| {
+            let _ = writeln!(doc.o, "{text} :");
+            doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, false);
+        }));
+        widths.push(doc.last_width());
+    }
+    doc.rows(&cells, &widths, 3);
+    let here = doc.here.clone();
+    doc.bilans.insert(isolate.to_string(), here);
+}
+
+/// The theorem applied to the isolated system, at `at` (moment) or not (resultant), in
+/// projection on the axis `a` of `f`.
+fn theorem_title(iso_name: &str, at: Option<&str>, f: &str, a: char) -> String {
+    match at {
+        Some(p) => format!(
+            "Théorème du moment dynamique appliqué à ${iso_name}$ en ${}$, en projection sur ${}$",
+            point(p),
+            basis_vector(a, f)
+        ),
+        None => format!(
+            "Théorème de la résultante dynamique appliqué à ${iso_name}$, en projection sur ${}$",
+            basis_vector(a, f)
+        ),
+    }
+}
+
+/// When the last theorem's actions reduce to the unknown asked (C_m), the theorem gives it
+/// at once: « C_m = δ(O1,E/0)·z0 », boxed, without writing the dynamic side twice; or, the
+/// dynamic side being boxed already, that value said in words. Returns whether it did.
+fn unknown_at_once(doc: &mut Doc, d: &Derivation, theorem: &Theorem) -> bool {
+    let Theorem {
+        title,
+        dynamic: (dl, dv),
+        external: (el, ev),
+    } = theorem;
+    let (QuantityKind::Unknown(u), Value::Scalar(e)) = (&d.quantity.kind, ev) else {
+        return false;
+    };
+    if doc.m.reg.param(u).as_ref() != Some(e) {
+        return false;
+    }
+    let id = d.quantity.to_string();
+    let hn = doc.under.map(|h| h.name.clone());
+    // The dynamic side was just boxed (asked as a quantity of its own): the unknown is that
+    // value, said in words rather than printed a second time.
+    if let Some(place) = doc.cited(dl, dv) {
+        let place = if place == "ce qui précède" {
+            "encadrée plus haut".to_string()
+        } else {
+            format!("encadrée dans {place}")
+        };
+        let _ = writeln!(
+            doc.o,
+            "{title}, ${dl} = {el}$, soit ${} = {dl}$ (valeur {place}).\n",
+            name(u)
+        );
+        doc.results.push((id, hn, dv.clone(), doc.here.clone()));
+        return true;
+    }
+    let _ = writeln!(doc.o, "{title}, ${dl} = {el}$, soit :");
+    let here = doc.here.clone();
+    doc.results.push((id.clone(), hn.clone(), dv.clone(), here));
+    let lhs = format!("{} = {dl}", name(u));
+    doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, dv, None);
+    true
+}
+
+/// The PFD's result, recorded and boxed: the equation of motion (see [`eom_result`]), or the
+/// unknown after the conditions of the solution.
+fn pfd_result(doc: &mut Doc, d: &Derivation, last_equality: Option<(Value, Value)>) {
     let id = d.quantity.to_string();
     let v = shown_value(doc, &d.value);
     let hn = doc.under.map(|h| h.name.clone());
@@ -162,69 +201,8 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
     doc.results.push((id.clone(), hn.clone(), v.clone(), here));
     match &d.quantity.kind {
         QuantityKind::Eom(q) => {
-            // The equation of motion, dynamic side = actions, boxed; when the theorem's
-            // equality is already it, box that.
-            let Value::Scalar(e) = &v else { return };
-            if let Some((_, Value::Scalar(actions))) = &last_equality
-                && let Some(s) = eliminated(m, actions)
-            {
-                let _ = writeln!(doc.o, "{s}");
-            }
-            let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
-            let (lhs, rhs) = upright(match &last_equality {
-                Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => {
-                    (a.clone(), b.clone())
-                }
-                _ => split_equation(e),
-            });
-            doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
-            if let Some(f) = first_integral(e) {
-                let math = super::expr(&f);
-                let _ = writeln!(
-                    doc.o,
-                    "Intégrale première : cette équation dit que la dérivée par rapport au temps de \
-                     ${math}$ est nulle ; cette quantité se conserve.\n"
-                );
-                doc.inline.push(super::Inline {
-                    what: format!("first integral of {id}"),
-                    latex: math,
-                    value: Value::Scalar(f),
-                });
-            }
-            // Under each hypothesis stated so far, as the other results are.
-            if doc.under.is_none() {
-                let stated: Vec<_> = m
-                    .hypotheses
-                    .iter()
-                    .filter(|h| doc.is_stated(&h.name))
-                    .collect();
-                for h in stated {
-                    let eh = h.apply(e);
-                    let hname = super::escape_text(&h.name);
-                    if eh == *e {
-                        let _ = writeln!(doc.o, "Sous l'hypothèse {hname}, elle est inchangée.\n");
-                        continue;
-                    }
-                    // An equilibrium (or an imposed motion) that the equation admits: no
-                    // « 0 = 0 » in a box.
-                    if eh.is_zero() {
-                        let _ = writeln!(
-                            doc.o,
-                            "Sous l'hypothèse {hname}, l'équation est identiquement vérifiée : \
-                             le mouvement que pose l'hypothèse en est une solution.\n"
-                        );
-                        continue;
-                    }
-                    let _ = writeln!(doc.o, "Sous l'hypothèse {hname} :");
-                    let (lhs, rhs) = upright(split_equation(&eh));
-                    doc.results.push((
-                        id.clone(),
-                        Some(h.name.clone()),
-                        Value::Scalar(eh.clone()),
-                        doc.here.clone(),
-                    ));
-                    doc.show_equation(DisplayRole::Result, &id, Some(&h.name), &lhs, &rhs);
-                }
+            if let Value::Scalar(e) = &v {
+                eom_result(doc, &id, q, e, &last_equality);
             }
         }
         _ => {
@@ -235,7 +213,86 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
             doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
         }
     }
-    let _ = m;
+}
+
+/// The equation of motion `e` in `q`, dynamic side = actions, boxed (the theorem's equality
+/// when it is already it), its first integral, and the equation under each hypothesis
+/// stated so far.
+fn eom_result(
+    doc: &mut Doc,
+    id: &str,
+    q: &str,
+    e: &crate::expr::Expr,
+    last_equality: &Option<(Value, Value)>,
+) {
+    let m = doc.m;
+    let hn = doc.under.map(|h| h.name.clone());
+    if let Some((_, Value::Scalar(actions))) = last_equality
+        && let Some(s) = eliminated(m, actions)
+    {
+        let _ = writeln!(doc.o, "{s}");
+    }
+    let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
+    let (lhs, rhs) = upright(match last_equality {
+        Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => (a.clone(), b.clone()),
+        _ => split_equation(e),
+    });
+    doc.show_equation(DisplayRole::Result, id, hn.as_deref(), &lhs, &rhs);
+    if let Some(f) = first_integral(e) {
+        let math = super::expr(&f);
+        let _ = writeln!(
+            doc.o,
+            "Intégrale première : cette équation dit que la dérivée par rapport au temps de \
+             ${math}$ est nulle ; cette quantité se conserve.\n"
+        );
+        doc.inline.push(super::Inline {
+            what: format!("first integral of {id}"),
+            latex: math,
+            value: Value::Scalar(f),
+        });
+    }
+    // Under each hypothesis stated so far, as the other results are.
+    if doc.under.is_none() {
+        eom_under_stated(doc, id, e);
+    }
+}
+
+/// The equation of motion `e` under each hypothesis stated so far: unchanged, identically
+/// satisfied (no « 0 = 0 » in a box), or boxed.
+fn eom_under_stated(doc: &mut Doc, id: &str, e: &crate::expr::Expr) {
+    let m = doc.m;
+    let stated: Vec<_> = m
+        .hypotheses
+        .iter()
+        .filter(|h| doc.is_stated(&h.name))
+        .collect();
+    for h in stated {
+        let eh = h.apply(e);
+        let hname = super::escape_text(&h.name);
+        if eh == *e {
+            let _ = writeln!(doc.o, "Sous l'hypothèse {hname}, elle est inchangée.\n");
+            continue;
+        }
+        // An equilibrium (or an imposed motion) that the equation admits: no « 0 = 0 » in a
+        // box.
+        if eh.is_zero() {
+            let _ = writeln!(
+                doc.o,
+                "Sous l'hypothèse {hname}, l'équation est identiquement vérifiée : \
+                 le mouvement que pose l'hypothèse en est une solution.\n"
+            );
+            continue;
+        }
+        let _ = writeln!(doc.o, "Sous l'hypothèse {hname} :");
+        let (lhs, rhs) = upright(split_equation(&eh));
+        doc.results.push((
+            id.to_string(),
+            Some(h.name.clone()),
+            Value::Scalar(eh.clone()),
+            doc.here.clone(),
+        ));
+        doc.show_equation(DisplayRole::Result, id, Some(&h.name), &lhs, &rhs);
+    }
 }
 
 /// Once, before the first unknown: the pivots of the PFD's solution that are not numbers,
