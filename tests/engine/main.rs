@@ -10,6 +10,7 @@ mod budget;
 mod chain;
 mod check;
 mod closures;
+mod compiled;
 mod corpus;
 mod derivation;
 mod eval;
