@@ -16,6 +16,7 @@ mod loop_law;
 mod method;
 mod omega;
 mod routes;
+mod sentences;
 mod setup;
 mod simulation;
 mod text;
