@@ -417,5 +417,8 @@ fn habits_of_other_tools_are_refused_with_the_fix() {
     assert!(!pi.contains('𝜋'), "quotes only what was typed: {pi}");
     // The quantity reader says the same of a derivative written as a function.
     let e = Quantity::parse("diff(theta1)").unwrap_err().to_string();
-    assert!(e.contains("unknown quantity `diff` (a time derivative is written dot(q)"), "{e}");
+    assert!(
+        e.contains("unknown quantity `diff` (a time derivative is written dot(q)"),
+        "{e}"
+    );
 }
