@@ -1,8 +1,9 @@
 //! The checks an expression's text passes before symbolica reads it (its characters, its
 //! functions, its number literals and powers, bounded), decimal literals turned into exact
-//! fractions, and symbolica's warnings caught while it reads, to be said in torseur's words.
+//! fractions, and symbolica's warnings caught while it reads, to be said in torseur's words; then symbolica's reading of the checked text into its tree.
 
-use super::names::names_in;
+use super::ExprError;
+use symbolica::atom::Atom;
 
 /// Longest expression text accepted (see [`super::MAX_INPUT_LEN`]).
 pub(super) const MAX_INPUT: usize = super::MAX_INPUT_LEN;
@@ -355,4 +356,65 @@ pub(crate) fn function_hint(word: &str) -> &'static str {
         }
         _ => "",
     }
+}
+
+/// Each name of `s` as (start, end, called), called when `(` or `[` follows it at once.
+pub(super) fn names_in(s: &str) -> Vec<(usize, usize, bool)> {
+    let b = s.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        if b[i].is_ascii_alphabetic() || b[i] == b'_' {
+            let start = i;
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                i += 1;
+            }
+            out.push((start, i, i < b.len() && (b[i] == b'(' || b[i] == b'[')));
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+pub(super) fn parse_atom(s: &str) -> Result<Atom, ExprError> {
+    check_chars(s).map_err(|reason| ExprError::Parse {
+        input: s.to_string(),
+        reason,
+    })?;
+    parse_checked(s)
+}
+
+/// symbolica's parse of a text whose characters and functions are checked.
+pub(super) fn parse_checked(s: &str) -> Result<Atom, ExprError> {
+    // Every text symbolica reads passes here (lexical scans included): the bound on number
+    // literals is checked first.
+    let exact = check_numbers(s)
+        .and_then(|()| exact_decimals(s))
+        .map_err(|reason| ExprError::Parse {
+            input: s.to_string(),
+            reason,
+        })?;
+    // symbolica's message draws a caret under the text on further lines: its first line
+    // says what and where, which is what an error message of ours quotes.
+    let (parsed, warnings) = caught(|| symbolica::try_parse!(&exact));
+    let atom = parsed.map_err(|e| ExprError::Parse {
+        input: s.to_string(),
+        reason: e
+            .to_string()
+            .lines()
+            .next()
+            .unwrap_or_default()
+            .trim_start_matches("Error at line 1, ")
+            .to_string(),
+    })?;
+    // symbolica simplifies as it reads: `a/(b - b)` becomes 0^-1, which it reports as a
+    // warning and turns into an infinity. Refused here, in our words.
+    if warnings.iter().any(|w| undefined(w)) {
+        return Err(ExprError::Unsupported {
+            input: s.to_string(),
+            reason: "division by zero: a divisor is equal to 0".to_string(),
+        });
+    }
+    Ok(atom)
 }

@@ -1,6 +1,6 @@
 //! Lexical scans of an expression's names, before (or without) parsing it.
 
-use super::lexical::FUNCTIONS;
+use super::lexical::{FUNCTIONS, parse_atom};
 
 /// The names an expression writes as themselves, outside the arguments of sin, cos, dot and
 /// ddot (`R*theta*x1 + L*sin(theta)*y1` gives `R`, `theta`, `x1`, `L`, `y1`), in order, each
@@ -64,26 +64,6 @@ pub fn bare_names(s: &str) -> Vec<String> {
     out
 }
 
-/// The functions of the expression syntax.
-/// Each name of `s` as (start, end, called), called when `(` or `[` follows it at once.
-pub(super) fn names_in(s: &str) -> Vec<(usize, usize, bool)> {
-    let b = s.as_bytes();
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < b.len() {
-        if b[i].is_ascii_alphabetic() || b[i] == b'_' {
-            let start = i;
-            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                i += 1;
-            }
-            out.push((start, i, i < b.len() && (b[i] == b'(' || b[i] == b'[')));
-        } else {
-            i += 1;
-        }
-    }
-    out
-}
-
 /// The names written below a division line in `s` (`l0 - m*g*sin(beta)/k` gives `k`;
 /// `V/(2*R*r)` gives `R`, `r`), in order, each once: the parameters a registry's
 /// [`super::RegistryBuilder::inverses`] declares for a spec. A text that does not parse has
@@ -128,7 +108,7 @@ pub fn divisors_in(s: &str) -> Vec<String> {
     }
     let mut out = Vec::new();
     if (s.contains('/') || s.contains('^'))
-        && let Ok(a) = super::parse::parse_atom(s)
+        && let Ok(a) = parse_atom(s)
     {
         walk(a.as_view(), &mut out);
     }

@@ -3,7 +3,7 @@
 //! of the parameters. symbolica parses the text; the tree is evaluated in f64.
 
 use super::ExprError;
-use super::parse::{check_chars_with, names_in, parse_checked};
+use super::lexical::{check_chars_with, names_in, parse_checked};
 use symbolica::atom::{AtomCore, AtomView, Symbol};
 use symbolica::domains::rational::Q;
 

@@ -4,61 +4,18 @@
 //! sin and cos of a sum or of a multiple angle expand first (angle-addition formulas), so
 //! `sin(2*theta)` and `2*sin(theta)*cos(theta)` have the same canonical form.
 
-pub(super) use super::lexical::check_chars_with;
-use super::lexical::{MAX_POWER, caught, check_chars, check_numbers, exact_decimals, undefined};
-pub(super) use super::names::names_in;
+use super::lexical::MAX_POWER;
+pub(super) use super::lexical::parse_atom;
 use super::time::{TIME, TIME_IN_PHASES, is_time, mentions_time};
 use super::{CoordId, Expr, ExprError, LinearAngle, Registry};
 use std::rc::Rc;
-use symbolica::atom::{Atom, AtomCore, AtomView, Symbol};
+use symbolica::atom::{AtomCore, AtomView, Symbol};
 use symbolica::domains::rational::{Q, Rational, RationalField};
 use symbolica::poly::polynomial::MultivariatePolynomial;
 
 /// Term products a power may take to expand (ten times [`super::MAX_EXPANDED_TERMS`]): six
 /// terms to the 25th take 2.9·10^6.
 const POWER_WORK: u128 = 10 * super::MAX_EXPANDED_TERMS;
-
-pub(super) fn parse_atom(s: &str) -> Result<Atom, ExprError> {
-    check_chars(s).map_err(|reason| ExprError::Parse {
-        input: s.to_string(),
-        reason,
-    })?;
-    parse_checked(s)
-}
-
-/// symbolica's parse of a text whose characters and functions are checked.
-pub(super) fn parse_checked(s: &str) -> Result<Atom, ExprError> {
-    // Every text symbolica reads passes here (lexical scans included): the bound on number
-    // literals is checked first.
-    let exact = check_numbers(s)
-        .and_then(|()| exact_decimals(s))
-        .map_err(|reason| ExprError::Parse {
-            input: s.to_string(),
-            reason,
-        })?;
-    // symbolica's message draws a caret under the text on further lines: its first line
-    // says what and where, which is what an error message of ours quotes.
-    let (parsed, warnings) = caught(|| symbolica::try_parse!(&exact));
-    let atom = parsed.map_err(|e| ExprError::Parse {
-        input: s.to_string(),
-        reason: e
-            .to_string()
-            .lines()
-            .next()
-            .unwrap_or_default()
-            .trim_start_matches("Error at line 1, ")
-            .to_string(),
-    })?;
-    // symbolica simplifies as it reads: `a/(b - b)` becomes 0^-1, which it reports as a
-    // warning and turns into an infinity. Refused here, in our words.
-    if warnings.iter().any(|w| undefined(w)) {
-        return Err(ExprError::Unsupported {
-            input: s.to_string(),
-            reason: "division by zero: a divisor is equal to 0".to_string(),
-        });
-    }
-    Ok(atom)
-}
 
 pub(super) fn parse_scalar(reg: &Rc<Registry>, s: &str) -> Result<Expr, ExprError> {
     parse_scalar_with(reg, s, &|_| None)

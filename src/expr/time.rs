@@ -60,10 +60,10 @@ pub fn pulsations_in(s: &str) -> Vec<String> {
         }
     }
     let mut out = Vec::new();
-    if super::parse::names_in(s)
+    if super::lexical::names_in(s)
         .iter()
         .any(|&(a, b, _)| &s[a..b] == TIME)
-        && let Ok(a) = super::parse::parse_checked(s)
+        && let Ok(a) = super::lexical::parse_checked(s)
     {
         walk(a.as_view(), &mut out);
     }
