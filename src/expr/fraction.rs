@@ -200,11 +200,7 @@ impl Registry {
         names: &dyn Fn(&str) -> Option<Expr>,
     ) -> Result<(Expr, Expr), ExprError> {
         let a = parse_atom(s)?;
-        let w = Walker {
-            reg: self,
-            input: s,
-            names,
-        };
+        let w = Walker::new(self, s, names);
         let (n, d) = w.fraction(a.as_view())?;
         match d.as_rational() {
             Some(r) if !r.is_zero() => Ok((n.div_constant(&d).unwrap_or(n), self.one())),

@@ -473,6 +473,20 @@ impl Expr {
         multinomial.min(monomials)
     }
 
+    /// The machine words of the largest coefficient (numerator and denominator together, at
+    /// least 1): what one product of two of its terms costs, in units of a small one.
+    pub(crate) fn coefficient_words(&self) -> u128 {
+        let digits = self
+            .p
+            .coefficients
+            .iter()
+            .map(|c| c.to_string().len())
+            .max()
+            .unwrap_or(1);
+        // 19 decimal digits fill a 64-bit word.
+        1 + digits as u128 / 19
+    }
+
     /// Whether each variable occurs, read in one pass over the terms (asking per variable
     /// reads every term once per variable).
     pub(crate) fn occurring(&self) -> Vec<bool> {

@@ -8,14 +8,17 @@ use super::lexical::MAX_POWER;
 pub(super) use super::lexical::parse_atom;
 use super::time::{TIME, TIME_IN_PHASES, is_time, mentions_time};
 use super::{CoordId, Expr, ExprError, LinearAngle, Registry};
+use std::cell::Cell;
 use std::rc::Rc;
 use symbolica::atom::{AtomCore, AtomView, Symbol};
 use symbolica::domains::rational::{Q, Rational, RationalField};
 use symbolica::poly::polynomial::MultivariatePolynomial;
 
-/// Term products a power may take to expand (ten times [`super::MAX_EXPANDED_TERMS`]): six
-/// terms to the 25th take 2.9·10^6.
-const POWER_WORK: u128 = 10 * super::MAX_EXPANDED_TERMS;
+/// The work one expression's text may cost to read (ten times [`super::MAX_EXPANDED_TERMS`]),
+/// counted over all its products: one unit per pair of terms multiplied, weighted by the machine
+/// words of their coefficients. Six terms to the 25th cost 2.9·10^6; a product of single
+/// terms costs nothing (its cost is linear in the text, which is bounded).
+const PARSE_WORK: u128 = 10 * super::MAX_EXPANDED_TERMS;
 
 pub(super) fn parse_scalar(reg: &Rc<Registry>, s: &str) -> Result<Expr, ExprError> {
     parse_scalar_with(reg, s, &|_| None)
@@ -28,12 +31,7 @@ pub(super) fn parse_scalar_with(
     names: &dyn Fn(&str) -> Option<Expr>,
 ) -> Result<Expr, ExprError> {
     let a = parse_atom(s)?;
-    Walker {
-        reg,
-        input: s,
-        names,
-    }
-    .scalar(a.as_view())
+    Walker::new(reg, s, names).scalar(a.as_view())
 }
 
 /// The sum of `parts`, added pairwise: adding n terms one by one to a growing sum is
@@ -58,9 +56,44 @@ pub(super) struct Walker<'a> {
     pub(super) input: &'a str,
     /// Values of names the registry does not know (none but in [`parse_scalar_with`]).
     pub(super) names: &'a dyn Fn(&str) -> Option<Expr>,
+    /// The work spent so far on products (see [`PARSE_WORK`]).
+    work: Cell<u128>,
 }
 
-impl Walker<'_> {
+impl<'a> Walker<'a> {
+    pub(super) fn new(
+        reg: &'a Rc<Registry>,
+        input: &'a str,
+        names: &'a dyn Fn(&str) -> Option<Expr>,
+    ) -> Self {
+        Walker {
+            reg,
+            input,
+            names,
+            work: Cell::new(0),
+        }
+    }
+
+    /// Counts the work of multiplying `a` by `b`, refused once the text's whole work passes
+    /// [`PARSE_WORK`]. The count weighs coefficient sizes: a 703-term polynomial with
+    /// 60-digit rational coefficients to the 5th power, found by the fuzzer, forms few terms
+    /// and still took 11 s.
+    fn charge(&self, a: &Expr, b: &Expr) -> Result<(), ExprError> {
+        if a.nterms() <= 1 && b.nterms() <= 1 {
+            return Ok(());
+        }
+        let cost = (a.nterms() as u128 * a.coefficient_words())
+            .saturating_mul(b.nterms() as u128 * b.coefficient_words());
+        let work = self.work.get().saturating_add(cost);
+        self.work.set(work);
+        if work > PARSE_WORK {
+            return Err(self.unsupported(&format!(
+                "its products would take over {PARSE_WORK} term operations to expand"
+            )));
+        }
+        Ok(())
+    }
+
     pub(super) fn unsupported(&self, reason: &str) -> ExprError {
         ExprError::Unsupported {
             input: self.input.to_string(),
@@ -90,6 +123,7 @@ impl Walker<'_> {
         if (a.nterms() as u128) * (b.nterms() as u128) > super::MAX_EXPANDED_TERMS {
             return Err(self.too_many_terms());
         }
+        self.charge(a, b)?;
         Ok(a * b)
     }
 
@@ -173,16 +207,11 @@ impl Walker<'_> {
                     if b.power_terms_bound(n as u32) > super::MAX_EXPANDED_TERMS {
                         return Err(self.too_many_terms());
                     }
-                    // The result may be small while the work to reach it is not: a 703-term
-                    // polynomial with large rational coefficients to the 5th power, found by
-                    // the fuzzer, ran 25 s. The term products are counted as they are done.
+                    // The result may be small while the work to reach it is not: each
+                    // product is charged before it is done (see `charge`).
                     let mut acc = reg.one();
-                    let mut work: u128 = 0;
                     for _ in 0..n {
-                        work += acc.nterms() as u128 * b.nterms() as u128;
-                        if work > POWER_WORK {
-                            return Err(self.too_many_terms());
-                        }
+                        self.charge(&acc, &b)?;
                         acc = &acc * &b;
                     }
                     return Ok(acc);
@@ -459,11 +488,7 @@ pub(super) fn cos_sin(
 /// Reads an angle `Σ nᵢ aᵢ + k π/2` (see [`Registry::parse_angle`]).
 pub(super) fn parse_angle(reg: &Rc<Registry>, s: &str) -> Result<LinearAngle, ExprError> {
     let a = parse_atom(s)?;
-    let w = Walker {
-        reg,
-        input: s,
-        names: &|_| None,
-    };
+    let w = Walker::new(reg, s, &|_| None);
     let (terms, quarter_turns) = w.linear_angle(a.as_view())?;
     let (cos, sin) = cos_sin(reg, &terms, quarter_turns);
     Ok(LinearAngle {

@@ -14,11 +14,7 @@ pub(super) fn parse_vector<K: Ord + Copy>(
     names: &dyn Fn(&str) -> Option<Expr>,
 ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
     let a = parse_atom(s)?;
-    let w = Walker {
-        reg,
-        input: s,
-        names,
-    };
+    let w = Walker::new(reg, s, names);
     let is_basis = |v: AtomView| match v {
         AtomView::Var(v) => basis_vector(v.get_symbol().get_stripped_name()),
         _ => None,
