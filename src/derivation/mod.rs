@@ -11,7 +11,9 @@ use crate::torsor::{self, Torsor};
 use crate::vector::Vector;
 
 mod actions;
+mod derivative;
 mod dynamics;
+mod energy;
 mod value;
 pub use dynamics::Shared;
 pub use value::Value;
@@ -180,6 +182,15 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             r.point = Some(point(p)?);
             r.solids = solids(&action.on)?;
         }
+        // The inner quantity's names, then the frame of the derivative.
+        Derivative { of, frame: f } => {
+            let inner = resolve(m, of)?;
+            r.basis = inner.basis;
+            r.reference = f
+                .as_deref()
+                .map(|f| derivative::frame(m, q, f))
+                .transpose()?;
+        }
         KineticMoment { point: p, motion }
         | DynamicMoment { point: p, motion }
         | KineticTorsor { motion, point: p }
@@ -236,6 +247,14 @@ pub enum StepKind {
     },
     /// A quantity projected on a basis vector (frame name, axis letter).
     Projected(QuantityKind, (String, char)),
+    /// The power side of the kinetic energy theorem applied to a system in its motion
+    /// relative to a frame: P(ext→E/R) + P_int(E).
+    Powers {
+        /// The isolated solid or set.
+        isolate: String,
+        /// The frame (the ground, galilean).
+        reference: String,
+    },
     /// The sum of the actions exterior to a system: its moment at a point (resultant when
     /// none), projected on a basis vector.
     External {
@@ -368,6 +387,10 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
             Found::Value(Value::Scalar(j))
         }
         InternalPower(_) => Found::Value(Value::Scalar(actions::internal_power(m, &r, &mut steps))),
+        Derivative { of, .. } => match derivative::derive(m, q, of, r.reference, b, &mut steps)? {
+            derivative::Derived::Scalar(e) => Found::Value(Value::Scalar(e)),
+            derivative::Derived::Vector(v) => Found::Vector(v),
+        },
         ActionResultant(action) | ActionMoment { action, .. } | ActionTorsor { action, .. } => {
             let t = actions::total(m, q, action, &r, &mut steps)?;
             match &q.kind {

@@ -91,6 +91,17 @@ pub(super) fn step_lhs(k: &StepKind) -> String {
             point(p)
         ),
         StepKind::Projected(q, (f, a)) => format!("{} \\cdot {}", quantity(q), basis_vector(*a, f)),
+        StepKind::Powers { isolate, reference } => format!(
+            "{} + {}",
+            quantity(&QuantityKind::Power {
+                action: crate::quantity::ActionRef {
+                    from: "ext".into(),
+                    on: isolate.clone(),
+                },
+                reference: reference.clone(),
+            }),
+            quantity(&QuantityKind::InternalPower(isolate.clone()))
+        ),
         StepKind::External {
             isolate,
             point: p,

@@ -8,6 +8,7 @@
 
 mod bilan;
 mod document;
+mod energy;
 mod expr;
 mod fault;
 mod figures;
@@ -425,6 +426,25 @@ pub fn quantity(k: &QuantityKind) -> String {
         EquivalentInertia(c) => format!("J_{{\\mathrm{{eq}}}}({})", name(c)),
         Unknown(n) => name(n),
         Eom(q) => format!("\\text{{Équation du mouvement en }} {}", name(q)),
+        Derivative { of, frame: r } => derivative(of, r.as_deref()),
+    }
+}
+
+/// [d/dt Q]_R of a vector, `\left[\frac{d}{dt}\overrightarrow{\sigma(A,2/0)}\right]_{\mathcal{R}_0}`;
+/// dQ/dt of a scalar, `\frac{dE_c(E/0)}{dt}`, a projection in parentheses.
+fn derivative(of: &crate::quantity::Quantity, r: Option<&str>) -> String {
+    let d = "\\mathrm{d}";
+    let inner = quantity(&of.kind);
+    match (r, &of.projection) {
+        (Some(r), _) => format!(
+            "\\left[\\frac{{{d}}}{{{d}t}}{inner}\\right]_{{{}}}",
+            frame(r)
+        ),
+        (None, Some((f, a))) => format!(
+            "\\frac{{{d}}}{{{d}t}}\\left({inner} \\cdot {}\\right)",
+            basis_vector(*a, f)
+        ),
+        (None, None) => format!("\\frac{{{d}{inner}}}{{{d}t}}"),
     }
 }
 

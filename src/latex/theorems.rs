@@ -25,6 +25,16 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         while k < steps.len() && matches!(steps[k].kind, StepKind::Action { .. }) {
             k += 1;
         }
+        // The kinetic energy theorem: its powers, its energy, then its power side.
+        if let Some(e) = energy_group(&steps[k..]).map(|e| e + k) {
+            let StepKind::Powers { isolate, .. } = &steps[e].kind else {
+                break;
+            };
+            external_bilan(doc, isolate, &solid(isolate), &steps[start..k]);
+            last_equality = super::energy::energy_theorem(doc, &steps[k..=e]);
+            k = e + 1;
+            continue;
+        }
         let (Some(dyn_step), Some(ext_step)) = (steps.get(k), steps.get(k + 1)) else {
             break;
         };
@@ -66,6 +76,14 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         k += 2;
     }
     pfd_result(doc, d, last_equality);
+}
+
+/// The index in `steps` of the power side of a kinetic energy theorem starting there, when
+/// one does (no action and no other theorem's side before it).
+fn energy_group(steps: &[Step]) -> Option<usize> {
+    let e = (steps.iter()).position(|s| matches!(s.kind, StepKind::Powers { .. }))?;
+    let other = |s: &Step| matches!(s.kind, StepKind::Action { .. } | StepKind::External { .. });
+    (!steps[..e].iter().any(other)).then_some(e)
 }
 
 /// One theorem of the PFD: its title (« Théorème du moment dynamique appliqué à … »), its
@@ -230,6 +248,9 @@ fn eom_result(
     if let Some((_, Value::Scalar(actions))) = last_equality
         && let Some(s) = eliminated(m, actions)
     {
+        let _ = writeln!(doc.o, "{s}");
+    }
+    if let Some(s) = super::energy::divided_by_rate(doc, q) {
         let _ = writeln!(doc.o, "{s}");
     }
     let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
@@ -458,6 +479,7 @@ fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Opti
                 "moment en ${}$ sur {on}",
                 point(m.point_name(t.point))
             )),
+            crate::wire::TheoremKind::Energy => g.2.push("énergie cinétique".to_string()),
         }
     }
     if held.is_empty() || groups.is_empty() {

@@ -312,6 +312,11 @@ pub enum TheoremKind {
     Resultant,
     /// Théorème du moment dynamique: δ(P,S/R0)·u = M(P,S̄→S)·u.
     Moment,
+    /// Théorème de l'énergie cinétique: dEc(E/R0)/dt = P(Ē→E/R0) + P_int(E), E in its motion
+    /// relative to the ground (galilean); a scalar equation, at no point and on no vector.
+    /// As the equation of motion of q (`eom`), it is q̇ times that equation once the unknowns
+    /// the other equations determine are replaced: divided by q̇.
+    Energy,
 }
 
 /// One scalar equation of the PFD.
@@ -325,8 +330,10 @@ pub struct TheoremSpec {
     /// Point of the moment theorem.
     #[serde(default)]
     pub point: Option<String>,
-    /// Basis vector it is projected on.
-    pub on: String,
+    /// Basis vector a resultant or moment theorem is projected on (none for the energy
+    /// theorem, a scalar equation).
+    #[serde(default)]
+    pub on: Option<String>,
     /// When this equation is the equation of motion of a coordinate (`theta2`): it is then
     /// `eom(theta2)`; otherwise it determines unknowns.
     #[serde(default)]

@@ -13,6 +13,8 @@ mod closures;
 mod compiled;
 mod corpus;
 mod derivation;
+mod derivative;
+mod energy;
 mod eval;
 mod figures;
 mod fourier;

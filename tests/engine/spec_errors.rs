@@ -570,3 +570,24 @@ fn the_time_enters_only_as_a_phase_of_a_parameter() {
     v["actions"][0]["resultant"] = "F0*sin(2*Omega*t)*x0".into();
     assert!(from_str(&v.to_string()).is_ok());
 }
+
+#[test]
+fn the_energy_theorem_takes_no_point_and_no_vector() {
+    // pfd[1] of the regulator, the moment at O2 on x2, made an energy theorem.
+    let mut v = base();
+    v["pfd"][1]["theorem"] = "energy".into();
+    let e = refused(v.clone());
+    assert_eq!(path_of(&e), "pfd[1].point", "{e}");
+    assert!(e.to_string().contains("written at no point"), "{e}");
+    v["pfd"][1].as_object_mut().unwrap().remove("point");
+    let e = refused(v.clone());
+    assert_eq!(path_of(&e), "pfd[1].on", "{e}");
+    assert!(e.to_string().contains("projected on no vector"), "{e}");
+    v["pfd"][1].as_object_mut().unwrap().remove("on");
+    assert!(from_str(&v.to_string()).is_ok());
+    // A moment theorem without its vector.
+    let mut v = base();
+    v["pfd"][0].as_object_mut().unwrap().remove("on");
+    let e = refused(v);
+    assert_eq!(path_of(&e), "pfd[0].on", "{e}");
+}
