@@ -91,11 +91,20 @@ fn the_first_spec_prints_what_the_readme_shows() {
 fn the_first_spec_agrees_with_the_pendulum_by_hand() {
     let spec = root().join("examples/pendule_simple.json");
     for (q, hand) in [
-        ("V(G,1/0)", "[l*cos(theta)*dot(theta), l*sin(theta)*dot(theta), 0]"),
+        (
+            "V(G,1/0)",
+            "[l*cos(theta)*dot(theta), l*sin(theta)*dot(theta), 0]",
+        ),
         ("delta(O0,1/0).z0", "m*l^2*ddot(theta)"),
         ("eom(theta)", "m*l^2*ddot(theta) + m*g*l*sin(theta)"),
-        ("X01", "m*l*cos(theta)*ddot(theta) - m*l*sin(theta)*dot(theta)^2"),
-        ("Y01", "m*g + m*l*sin(theta)*ddot(theta) + m*l*cos(theta)*dot(theta)^2"),
+        (
+            "X01",
+            "m*l*cos(theta)*ddot(theta) - m*l*sin(theta)*dot(theta)^2",
+        ),
+        (
+            "Y01",
+            "m*g + m*l*sin(theta)*ddot(theta) + m*l*cos(theta)*dot(theta)^2",
+        ),
     ] {
         let o = run(&["verify", spec.to_str().unwrap(), "-q", q, "-e", hand]);
         assert!(o.status.success(), "{q}: {}{}", stdout(&o), stderr(&o));
