@@ -236,14 +236,9 @@ fn fit(
 
 /// The value of a constant node at `params`, `None` if it has none.
 fn value(node: &Node, params: &[f64]) -> Option<f64> {
-    let env = expr::Env::<f64> {
-        params,
-        coords: &[],
-        rates: &[],
-        frames: &[],
-        time: 0.0,
-    };
-    expr::eval_scalar(node, &env).ok().filter(|v| v.is_finite())
+    super::checks::at(node, params, &[])
+        .ok()
+        .filter(|v| v.is_finite())
 }
 
 /// The value of parameter `p` that makes `node` equal `target`, when `node` is affine in `p`
