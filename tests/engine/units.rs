@@ -381,11 +381,12 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 21] = [
+const LIBRARY: [&str; 22] = [
     "bielle_manivelle",
     "bille_tube_tournant",
     "bloc_frottement_sec",
     "bras_robot_deux_axes",
+    "cylindre_gouttiere",
     "disque_plan_incline",
     "double_pendule",
     "masse_ressort_forcee",
