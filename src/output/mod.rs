@@ -194,6 +194,10 @@ pub fn manifest_json(m: &Mechanism, key: &crate::latex::AnswerKey) -> Json {
             if let Some(r) = &d.rhs {
                 j["rhs"] = value_json(m, r);
             }
+            if let Some(s) = &d.solid {
+                // Whose mass and centre the left side prints (a complementary term).
+                j["solid"] = json!(s);
+            }
             j
         })
         .collect();

@@ -32,6 +32,7 @@ mod parity_sections;
 mod pfd;
 mod power;
 mod printed;
+mod printed_names;
 mod properties;
 mod regulator;
 mod rolling;
