@@ -26,6 +26,7 @@ mod latex_safe;
 mod layers;
 mod library;
 mod links;
+mod massless;
 mod messages;
 mod parity;
 mod parity_sections;

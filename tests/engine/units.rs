@@ -381,13 +381,14 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 21] = [
+const LIBRARY: [&str; 22] = [
     "bielle_manivelle",
     "bille_tube_tournant",
     "bloc_frottement_sec",
     "bras_robot_deux_axes",
     "disque_plan_incline",
     "double_pendule",
+    "gyroscope_cardan",
     "masse_ressort_forcee",
     "pendule_arbre_tournant",
     "pendule_inverse_ressort",
