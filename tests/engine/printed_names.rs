@@ -93,12 +93,22 @@ fn label(what: &str) -> Result<(String, String, String), String> {
 
 /// Checks the left side of a display that names a solid's symbols; `Ok` for the others.
 pub(super) fn check(ctx: &Ctx, d: &Display) -> Result<(), String> {
+    let eqs = equations(&d.latex);
+    let Some((lhs, _)) = eqs.first() else {
+        return Ok(());
+    };
     let Some(solid) = &d.solid else {
+        // The reader finds the complementary terms itself: one printed without its solid
+        // recorded would escape the proof of its mass.
+        if parts(lhs).is_ok() {
+            return Err(format!(
+                "a complementary term printed without the solid whose term it is: {}",
+                d.latex
+            ));
+        }
         return Ok(());
     };
     let m = ctx.m;
-    let eqs = equations(&d.latex);
-    let lhs = &eqs.first().ok_or("a display without an equation")?.0;
     let (pa, pr, mass_toks, pg, pr2) = parts(lhs)?;
     let (la, lg, lr) = label(&d.what)?;
     // The spec's own data for the solid whose term it is.
@@ -207,6 +217,12 @@ fn a_complementary_term_printed_with_another_solids_mass_is_caught() {
         ..s3.clone()
     };
     assert!(check(&ctx, &other).is_err());
+    // And a complementary term recorded without its solid is refused, not skipped.
+    let unnamed = Display {
+        solid: None,
+        ..s3.clone()
+    };
+    assert!(check(&ctx, &unnamed).is_err());
     // The massless body: said so, never derived, never « masse ponctuelle ».
     assert!(key.tex.contains("est de masse négligeable"));
     assert!(!key.tex.contains("masse ponctuelle"), "{}", key.tex);
