@@ -32,24 +32,7 @@ pub(super) fn solids_torsor(
             reference: rn.clone(),
         };
         if body.massless {
-            let an = m.point_name(a).to_string();
-            let kind = if dynamic {
-                QuantityKind::DynamicTorsor {
-                    motion: mo,
-                    point: an,
-                }
-            } else {
-                QuantityKind::KineticTorsor {
-                    motion: mo,
-                    point: an,
-                }
-            };
-            let zero = Torsor {
-                point: a,
-                resultant: Vector::zero(),
-                moment: Vector::zero(),
-            };
-            steps.push(massless_step(kind, torsor_value(m, &zero, b)));
+            steps.push(massless_torsor(m, mo, a, b, dynamic));
             continue;
         }
         // Each solid of a set is taken where its torsor is simplest (the course's
@@ -91,26 +74,7 @@ pub(super) fn solids_torsor(
         let t = if p == a {
             t
         } else {
-            let moved = t.at(m, a);
-            let (pn, an) = (m.point_name(p).to_string(), m.point_name(a).to_string());
-            let kind = if dynamic {
-                QuantityKind::DynamicTorsor {
-                    motion: mo.clone(),
-                    point: an.clone(),
-                }
-            } else {
-                QuantityKind::KineticTorsor {
-                    motion: mo.clone(),
-                    point: an.clone(),
-                }
-            };
-            steps.push(Step {
-                label: kind.to_string(),
-                kind: StepKind::Quantity(kind),
-                theorem: format!("changement de point : M({an}) = M({pn}) + {an}{pn} ∧ R"),
-                value: torsor_value(m, &moved, b),
-            });
-            moved
+            moved_to(m, &t, a, mo, (b, dynamic), steps)
         };
         res_total = res_total.add(&t.resultant);
         mom_total = mom_total.add(&t.moment);
@@ -120,6 +84,52 @@ pub(super) fn solids_torsor(
         resultant: res_total,
         moment: mom_total,
     }
+}
+
+/// The torsor kind of `mo` at `point`: dynamic, or kinetic.
+fn torsor_kind(mo: Motion, point: String, dynamic: bool) -> QuantityKind {
+    if dynamic {
+        QuantityKind::DynamicTorsor { motion: mo, point }
+    } else {
+        QuantityKind::KineticTorsor { motion: mo, point }
+    }
+}
+
+/// The step that says the kinetic (or dynamic) torsor at `a` of a body of negligible mass,
+/// in its motion `mo`, is zero.
+fn massless_torsor(m: &Mechanism, mo: Motion, a: PointId, b: FrameId, dynamic: bool) -> Step {
+    let kind = torsor_kind(mo, m.point_name(a).to_string(), dynamic);
+    let zero = Torsor {
+        point: a,
+        resultant: Vector::zero(),
+        moment: Vector::zero(),
+    };
+    massless_step(kind, torsor_value(m, &zero, b))
+}
+
+/// The torsor `t` of one solid in its motion `mo`, moved to `a` by the change of point, the
+/// step recorded (values in `b`).
+fn moved_to(
+    m: &Mechanism,
+    t: &Torsor,
+    a: PointId,
+    mo: Motion,
+    (b, dynamic): (FrameId, bool),
+    steps: &mut Vec<Step>,
+) -> Torsor {
+    let moved = t.at(m, a);
+    let (pn, an) = (
+        m.point_name(t.point).to_string(),
+        m.point_name(a).to_string(),
+    );
+    let kind = torsor_kind(mo, an.clone(), dynamic);
+    steps.push(Step {
+        label: kind.to_string(),
+        kind: StepKind::Quantity(kind),
+        theorem: format!("changement de point : M({an}) = M({pn}) + {an}{pn} ∧ R"),
+        value: torsor_value(m, &moved, b),
+    });
+    moved
 }
 
 /// The step that says a quantity of a body of negligible mass is zero, with its value.
@@ -176,16 +186,11 @@ pub(super) fn moment_steps(
             reference: rn.clone(),
         };
         if body.massless {
+            let point = an.clone();
             let kind = if dynamic {
-                QuantityKind::DynamicMoment {
-                    point: an.clone(),
-                    motion: mo,
-                }
+                QuantityKind::DynamicMoment { point, motion: mo }
             } else {
-                QuantityKind::KineticMoment {
-                    point: an.clone(),
-                    motion: mo,
-                }
+                QuantityKind::KineticMoment { point, motion: mo }
             };
             steps.push(massless_step(kind, vec_value(m, &Vector::zero(), b)));
             continue;
@@ -199,27 +204,16 @@ pub(super) fn moment_steps(
             value: vec_value(m, &om, ib),
         });
         let ia = torsor::inertia_at(m, s, a);
-        let huygens = a != body.centre && body.inertia.is_some();
         steps.push(Step {
             kind: StepKind::Quantity(QuantityKind::Inertia {
                 point: an.clone(),
                 solid: sn.clone(),
             }),
             label: format!("I({an},{sn})"),
-            theorem: if huygens {
-                format!(
-                    "théorème de Huygens, de {g} en {an}",
-                    g = m.point_name(body.centre)
-                )
-            } else if body.inertia.is_none() {
-                "masse ponctuelle".into()
-            } else {
-                "opérateur d'inertie en G".into()
-            },
+            theorem: inertia_theorem(m, s, a),
             value: Value::Matrix(ia),
         });
         let sigma = torsor::kinetic_moment_solid(m, s, a, r);
-        let fixed = crate::kinematics::velocity(m, a, body.frame, r).is_zero(&m.frames);
         let sigma_kind = QuantityKind::KineticMoment {
             point: an.clone(),
             motion: mo.clone(),
@@ -227,16 +221,7 @@ pub(super) fn moment_steps(
         steps.push(Step {
             kind: StepKind::Quantity(sigma_kind.clone()),
             label: format!("sigma({an},{sn}/{rn})"),
-            theorem: if a == body.centre {
-                "σ(G, S/R0) = I_G(S)·Ω(S/R0)".into()
-            } else if fixed && point_velocity(m, a, r).is_zero(&m.frames) {
-                "point fixe dans le mouvement : σ(A, S/R0) = I_A(S)·Ω(S/R0)".into()
-            } else if fixed {
-                // The point of S at A has no velocity, A itself moves (a rolling contact).
-                "point de vitesse nulle : σ(A, S/R0) = I_A(S)·Ω(S/R0)".into()
-            } else {
-                "σ(A, S/R0) = I_A(S)·Ω(S/R0) + m AG ∧ V(A, S/R0)".into()
-            },
+            theorem: sigma_theorem(m, s, a, r).into(),
             value: vec_value(m, &sigma, b),
         });
         if !dynamic {
@@ -250,22 +235,8 @@ pub(super) fn moment_steps(
             theorem: "dérivation vectorielle (formule de Bour)".into(),
             value: vec_value(m, &d_sigma, b),
         });
-        let v_a = point_velocity(m, a, r);
         let mut delta = d_sigma;
-        if !v_a.is_zero(&m.frames) {
-            let mv_g = velocity(m, body.centre, body.frame, r).scale(&body.mass);
-            let extra = v_a.cross(&m.frames, &mv_g);
-            steps.push(Step {
-                kind: StepKind::Complementary {
-                    point: an.clone(),
-                    centre: m.point_name(body.centre).to_string(),
-                    solid: sn.clone(),
-                    reference: rn.clone(),
-                },
-                label: format!("V({an}/{rn}) ^ m V({}/{rn})", m.point_name(body.centre)),
-                theorem: "terme complémentaire V(A/R0) ∧ m V(G/R0)".into(),
-                value: vec_value(m, &extra, b),
-            });
+        if let Some(extra) = complementary(m, s, a, (r, b), steps) {
             delta = delta.add(&extra);
         }
         steps.push(Step {
@@ -280,4 +251,69 @@ pub(super) fn moment_steps(
         total = total.add(&delta);
     }
     total
+}
+
+/// The complementary term V(A/R) ∧ m V(G/R) of δ(A,S/R) of the solid `s`, with its own mass
+/// and centre, its step recorded (values in `b`); none where A is fixed in R.
+fn complementary(
+    m: &Mechanism,
+    s: BodyId,
+    a: PointId,
+    (r, b): (FrameId, FrameId),
+    steps: &mut Vec<Step>,
+) -> Option<Vector> {
+    let v_a = point_velocity(m, a, r);
+    if v_a.is_zero(&m.frames) {
+        return None;
+    }
+    let body = m.body(s);
+    let (an, rn) = (m.point_name(a), m.frame_name(r));
+    let g = m.point_name(body.centre);
+    let mv_g = velocity(m, body.centre, body.frame, r).scale(&body.mass);
+    let extra = v_a.cross(&m.frames, &mv_g);
+    steps.push(Step {
+        kind: StepKind::Complementary {
+            point: an.to_string(),
+            centre: g.to_string(),
+            solid: body.name.clone(),
+            reference: rn.to_string(),
+        },
+        label: format!("V({an}/{rn}) ^ m V({g}/{rn})"),
+        theorem: "terme complémentaire V(A/R0) ∧ m V(G/R0)".into(),
+        value: vec_value(m, &extra, b),
+    });
+    Some(extra)
+}
+
+/// How I(A,S) is found: by Huygens from G, as a point mass, or as given at G.
+fn inertia_theorem(m: &Mechanism, s: BodyId, a: PointId) -> String {
+    let body = m.body(s);
+    if a != body.centre && body.inertia.is_some() {
+        format!(
+            "théorème de Huygens, de {g} en {an}",
+            g = m.point_name(body.centre),
+            an = m.point_name(a)
+        )
+    } else if body.inertia.is_none() {
+        "masse ponctuelle".into()
+    } else {
+        "opérateur d'inertie en G".into()
+    }
+}
+
+/// The formula that gives σ(A,S/R): at the centre, at a point fixed in the motion, at a
+/// point of S of zero velocity (a rolling contact), or the general one.
+fn sigma_theorem(m: &Mechanism, s: BodyId, a: PointId, r: FrameId) -> &'static str {
+    let body = m.body(s);
+    let fixed = velocity(m, a, body.frame, r).is_zero(&m.frames);
+    if a == body.centre {
+        "σ(G, S/R0) = I_G(S)·Ω(S/R0)"
+    } else if fixed && point_velocity(m, a, r).is_zero(&m.frames) {
+        "point fixe dans le mouvement : σ(A, S/R0) = I_A(S)·Ω(S/R0)"
+    } else if fixed {
+        // The point of S at A has no velocity, A itself moves (a rolling contact).
+        "point de vitesse nulle : σ(A, S/R0) = I_A(S)·Ω(S/R0)"
+    } else {
+        "σ(A, S/R0) = I_A(S)·Ω(S/R0) + m AG ∧ V(A, S/R0)"
+    }
 }

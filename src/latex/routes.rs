@@ -523,6 +523,22 @@ fn kinetic_projections(
     total
 }
 
+/// « ($S_1$ et $S_2$ sont de masse négligeable) » for the members `light` of a set, or nothing.
+fn massless_note(m: &Mechanism, light: &[crate::mechanism::BodyId]) -> String {
+    if light.is_empty() {
+        return String::new();
+    }
+    let names: Vec<String> = light
+        .iter()
+        .map(|&s| format!("${}$", solid(&m.body(s).name)))
+        .collect();
+    let verb = if light.len() > 1 { "sont" } else { "est" };
+    format!(
+        " ({} {verb} de masse négligeable)",
+        super::method::french_list(&names)
+    )
+}
+
 /// The short route for a projection on an axis u of the kinetic or dynamic moment of a set:
 /// σ(A,E/R)·u as the sum of the solids' projections; δ(A,E/R)·u, at a point A fixed in R
 /// and u fixed in R, as d/dt(σ(A,E/R)·u). Taken only when it gives the engine's value.
@@ -553,19 +569,7 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
     if solids.is_empty() {
         return false;
     }
-    let light_note = if light.is_empty() {
-        String::new()
-    } else {
-        let names: Vec<String> = light
-            .iter()
-            .map(|&s| format!("${}$", solid(&m.body(s).name)))
-            .collect();
-        let verb = if light.len() > 1 { "sont" } else { "est" };
-        format!(
-            " ({} {verb} de masse négligeable)",
-            super::method::french_list(&names)
-        )
-    };
+    let light_note = massless_note(m, &light);
     let rf = r.reference.unwrap_or(m.frames.ground());
     let u = crate::vector::Vector::along(uf, ua, m.reg.one());
     let ul = basis_vector(ua.letter(), m.frame_name(uf));

@@ -379,24 +379,7 @@ fn solids(
     for ((i, s), node) in spec.solids.iter().enumerate().zip(&trees.solids) {
         let path = format!("solids[{i}]");
         let frame = node.frame;
-        // A body of negligible mass: no mass written (or 0), no centre needed; its point
-        // cloud is empty, so it adds nothing to any moment, resultant or energy.
-        let mass = match &s.mass {
-            Some(t) => names
-                .parse(t, Context::Constant)
-                .map_err(|m| spec_err(format!("{path}.mass"), m))?,
-            None => Node::Num(0.0),
-        };
-        let centre = match node.centre {
-            Some(c) => c,
-            None => {
-                massless_body(s, &mass, &path)?;
-                trees.frames[node.frame].origin
-            }
-        };
-        if s.massless || mass == Node::Num(0.0) {
-            massless_body(s, &mass, &path)?;
-        }
+        let (mass, centre) = mass_and_centre(s, names, trees, node, &path)?;
         let inertia = match (&s.inertia, node.inertia) {
             (None, _) | (_, None) => None,
             (Some(inr), Some((point, basis))) => {
@@ -458,6 +441,35 @@ fn solids(
     }
 
     Ok(solids)
+}
+
+/// A solid's mass and centre. A body of negligible mass: no mass written (or 0), no centre
+/// needed (its frame's origin stands for it); its point cloud is empty, so it adds nothing
+/// to any moment, resultant or energy.
+fn mass_and_centre(
+    s: &crate::wire::SolidSpec,
+    names: &Names,
+    trees: &Resolved,
+    node: &crate::resolve::SolidNode,
+    path: &str,
+) -> Result<(Node, usize), NumericError> {
+    let mass = match &s.mass {
+        Some(t) => names
+            .parse(t, Context::Constant)
+            .map_err(|m| spec_err(format!("{path}.mass"), m))?,
+        None => Node::Num(0.0),
+    };
+    let centre = match node.centre {
+        Some(c) => c,
+        None => {
+            massless_body(s, &mass, path)?;
+            trees.frames[node.frame].origin
+        }
+    };
+    if s.massless || mass == Node::Num(0.0) {
+        massless_body(s, &mass, path)?;
+    }
+    Ok((mass, centre))
 }
 
 /// A solid without a centre, or declared of negligible mass: it must be one (`massless`, or
