@@ -25,6 +25,7 @@ import os
 import shutil
 import subprocess
 import tempfile
+import threading
 from typing import Any, Dict, List, Optional, Sequence, Union
 
 from . import _torseur
@@ -62,14 +63,25 @@ class Mechanism:
     """A mechanism loaded from a spec; every method runs the engine exactly as the CLI does."""
 
     def __init__(self, loaded: "_torseur.Loaded"):
-        self._m = loaded
-        s = json.loads(loaded.summary())
+        self.__m = loaded
+        self._thread = threading.get_ident()
+        s = json.loads(self._m.summary())
         self.title: str = s["title"]
         self.parameters: List[str] = s["parameters"]
         self.coordinates: List[str] = s["coordinates"]
         self.hypotheses: List[str] = s["hypotheses"]
         self.quantities: List[str] = s["quantities"]
         self.scenarios: List[str] = s["scenarios"]
+
+    @property
+    def _m(self) -> "_torseur.Loaded":
+        """The engine's object, from the thread that loaded it only (symbolica's rule)."""
+        if threading.get_ident() != self._thread:
+            raise TorseurError(
+                "this mechanism was loaded by another thread: unlicensed symbolica allows one "
+                "thread at a time (use torseur from the thread that loaded it)"
+            )
+        return self.__m
 
     def __repr__(self) -> str:
         return f"<torseur.Mechanism {self.title!r}: coordinates {', '.join(self.coordinates)}>"

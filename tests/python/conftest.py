@@ -36,9 +36,10 @@ def pytest_sessionstart(session):
         r = run_cli(["derive", str(spec), "--json", str(target)])
         assert r.returncode == 0, f"torseur derive {spec.name}: {r.stderr}"
         cli[spec.stem] = json.loads(target.read_text())
-    tex = out / "regulateur_centrifuge.tex"
-    r = run_cli(["answer-key", "derivations/regulateur_centrifuge.json", "-o", str(tex)])
+    # On stdout (no -o): the figures keep their bare names, as from Python without a PDF.
+    r = run_cli(["answer-key", "derivations/regulateur_centrifuge.json"])
     assert r.returncode == 0, r.stderr
+    tex = r.stdout
     csv = out / "sans_frottement.csv"
     r = run_cli(
         ["simulate", "derivations/regulateur_centrifuge.json", "--scenario", "sans_frottement", "-o", str(csv)]
@@ -53,7 +54,7 @@ def pytest_sessionstart(session):
     )
     session.config._torseur = {
         "cli": cli,
-        "tex": tex.read_text(),
+        "tex": tex,
         "csv": csv.read_text(),
         "notebook": (r.returncode, r.stderr, executed),
     }
