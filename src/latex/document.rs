@@ -477,7 +477,12 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
 }
 
 /// A quantity as a heading: \\overrightarrow{\\delta(O_2,2/0)}\\cdot\\vec{x}_2 for a projection.
-pub(super) fn quantity_title(q: &Quantity) -> String {
+///
+/// ```
+/// let q = torseur::Quantity::parse("Omega(2/0)").unwrap();
+/// assert_eq!(torseur::latex::quantity_title(&q), "\\overrightarrow{\\Omega(2/0)}");
+/// ```
+pub fn quantity_title(q: &Quantity) -> String {
     if q.linear {
         let inner = Quantity {
             linear: false,

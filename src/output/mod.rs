@@ -7,7 +7,7 @@ pub use crate::atomic::{
     write_atomic, write_outputs,
 };
 pub use eval::{
-    Values, ValuesError, eval_value, numeric_point, numeric_point_for, solve_unknowns,
+    Values, ValuesError, eval_json, eval_value, numeric_point, numeric_point_for, solve_unknowns,
     try_eval_value,
 };
 
