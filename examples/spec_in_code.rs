@@ -78,16 +78,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             SolidSpec {
                 name: "1".into(),
                 frame: "1".into(),
-                mass: "M".into(),
-                centre: "A".into(),
+                mass: Some("M".into()),
+                massless: false,
+                centre: Some("A".into()),
                 inertia: None,
                 symmetries: vec![],
             },
             SolidSpec {
                 name: "2".into(),
                 frame: "2".into(),
-                mass: "m".into(),
-                centre: "G".into(),
+                mass: Some("m".into()),
+                massless: false,
+                centre: Some("G".into()),
                 inertia: Some(InertiaSpec {
                     point: "G".into(),
                     basis: "2".into(),

@@ -168,7 +168,8 @@ pub fn external_actions(m: &Mechanism, s: &[BodyId]) -> Vec<Action> {
         }
     }
     if let Some(g) = &m.dynamics.gravity {
-        for &b in s {
+        // A body of negligible mass has no weight: the bilan does not list it.
+        for &b in s.iter().filter(|&&b| !m.body(b).massless) {
             let body = m.body(b);
             out.push(Action {
                 from_label: "pes".to_string(),

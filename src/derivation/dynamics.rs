@@ -192,6 +192,17 @@ pub(super) fn derive(
                     ),
                 ));
             }
+            if with_steps {
+                // Each member of negligible mass: its kinetic energy is zero, said so.
+                for &s in solids.iter().filter(|&&s| m.body(s).massless) {
+                    let motion = crate::quantity::Motion {
+                        moving: m.body(s).name.clone(),
+                        reference: mo.reference.clone(),
+                    };
+                    let kind = QuantityKind::KineticEnergy(motion);
+                    steps.push(super::massless_step(kind, Value::Scalar(m.reg.zero())));
+                }
+            }
             Value::Scalar(kinetic_energy(m, &solids))
         }
         QuantityKind::Unknown(name) => {

@@ -25,7 +25,7 @@ mod theorems;
 
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_named,
-    answer_key_with,
+    answer_key_with, quantity_title,
 };
 pub use expr::{expr, expr_lines, fraction};
 pub use fault::text_at_fault;

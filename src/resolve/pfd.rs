@@ -96,7 +96,11 @@ impl Known<'_, '_> {
             return Ok(Side::Ground);
         }
         let why = if self.frames.contains_key(n) {
-            format!("`{n}` is a frame, not a solid: only the ground `{ground}` acts without one")
+            format!(
+                "`{n}` is a frame, not a solid: only the ground `{ground}` acts without one; a \
+                 body of negligible mass is a solid too, declared in `solids` as \
+                 `{{\"name\": \"{n}\", \"frame\": \"{n}\", \"massless\": true}}`"
+            )
         } else if self.sets.contains_key(n) {
             format!("`{n}` is a set: a link or an action joins two solids")
         } else {
@@ -456,7 +460,16 @@ pub(super) fn theorems(known: &Known) -> Result<Vec<TheoremNode>, Refusal> {
                 return Err(at(format!("{path}.isolate"), why));
             }
             None => (known.sets.get(t.isolate.as_str()).cloned()).ok_or_else(|| {
-                let why = format!("unknown solid or set `{}`", t.isolate);
+                let n = &t.isolate;
+                let why = if known.frames.contains_key(n.as_str()) {
+                    format!(
+                        "`{n}` is a frame, not a solid or a set: a body of negligible mass is \
+                         isolated as a solid, declared in `solids` as `{{\"name\": \"{n}\", \
+                         \"frame\": \"{n}\", \"massless\": true}}`"
+                    )
+                } else {
+                    format!("unknown solid or set `{n}`")
+                };
                 at(format!("{path}.isolate"), why)
             })?,
         };

@@ -591,9 +591,11 @@ pub fn check_derivation(
     let torsor = |resultant, moment| ExpectedDimension::Torsor { resultant, moment };
     for s in &d.steps {
         let expected = match &s.kind {
-            StepKind::Quantity(k) | StepKind::Projected(k, _) => of_kind(k),
+            StepKind::Quantity(k) | StepKind::Projected(k, _) | StepKind::Massless(k) => of_kind(k),
             StepKind::Derivative(k, _) => of_kind(k).map(|x| x / Dimension::TIME),
-            StepKind::Complementary(..) => ExpectedDimension::Components(Some(Dimension::MOMENT)),
+            StepKind::Complementary { .. } => {
+                ExpectedDimension::Components(Some(Dimension::MOMENT))
+            }
             StepKind::Action { .. } => torsor(Dimension::FORCE, Dimension::MOMENT),
             StepKind::Powers { .. } => ExpectedDimension::Components(Some(Dimension::POWER)),
             StepKind::External { point, .. } => {

@@ -697,10 +697,19 @@ pub struct SolidSpec {
     pub name: String,
     /// Frame attached to the solid.
     pub frame: String,
-    /// Mass expression.
-    pub mass: String,
-    /// Centre of inertia (a point).
-    pub centre: String,
+    /// Mass expression; absent for a body of negligible mass (`"massless": true`). A mass
+    /// of `0` declares a body of negligible mass too.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mass: Option<String>,
+    /// A body of negligible mass (« de masse négligeable »): a nacelle, a gimbal, a support
+    /// that carries links and actions but whose kinetic and dynamic torsors and kinetic
+    /// energy are zero, so that the PFD applied to it is the balance of the actions on it.
+    /// It has no `mass`, no `inertia` and no `symmetries`; its `centre` may be left out.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub massless: bool,
+    /// Centre of inertia (a point); may be left out for a body of negligible mass.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub centre: Option<String>,
     /// Inertia operator; absent for a point mass.
     #[serde(default)]
     pub inertia: Option<InertiaSpec>,

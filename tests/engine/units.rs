@@ -381,7 +381,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 22] = [
+const LIBRARY: [&str; 23] = [
     "bielle_manivelle",
     "bille_tube_tournant",
     "bloc_frottement_sec",
@@ -389,6 +389,7 @@ const LIBRARY: [&str; 22] = [
     "cylindre_gouttiere",
     "disque_plan_incline",
     "double_pendule",
+    "gyroscope_cardan",
     "masse_ressort_forcee",
     "pendule_arbre_tournant",
     "pendule_inverse_ressort",
