@@ -25,6 +25,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             param("M", "kg"),
             param("m", "kg"),
             param("l", "m"),
+            param("A", "kg m^2"),
+            param("B", "kg m^2"),
             param("J", "kg m^2"),
             param("g", "m/s^2"),
             param("F", "N"),
@@ -93,9 +95,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 inertia: Some(InertiaSpec {
                     point: "G".into(),
                     basis: "2".into(),
+                    // A real body's moments (J ≤ A + B): A and B do not enter the plane
+                    // motion about z0, but a body with A = B = 0 and J ≠ 0 does not exist, and
+                    // the float backend, which draws real bodies, refuses it.
                     matrix: [
-                        ["0".into(), "0".into(), "0".into()],
-                        ["0".into(), "0".into(), "0".into()],
+                        ["A".into(), "0".into(), "0".into()],
+                        ["0".into(), "B".into(), "0".into()],
                         ["0".into(), "0".into(), "J".into()],
                     ],
                 }),
