@@ -113,25 +113,7 @@ fn hypothesis<'a>(
     m: &'a Mechanism,
     name: Option<&str>,
 ) -> PyResult<Option<&'a crate::mechanism::Hypothesis>> {
-    match name {
-        None => Ok(None),
-        Some(n) => m
-            .hypotheses()
-            .iter()
-            .find(|h| h.name == n)
-            .map(Some)
-            .ok_or_else(|| {
-                let known: Vec<&str> = m.hypotheses().iter().map(|h| h.name.as_str()).collect();
-                error(format!(
-                    "hypothesis `{n}`: the spec has {}",
-                    if known.is_empty() {
-                        "none".to_string()
-                    } else {
-                        known.join(", ")
-                    }
-                ))
-            }),
-    }
+    crate::verify::hypothesis(m, name).map_err(error)
 }
 
 /// One derivation as the JSON of `derive --json`, with the value under `under` when given,

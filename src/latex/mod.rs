@@ -12,6 +12,7 @@ mod energy;
 mod expr;
 mod fault;
 mod figures;
+mod greek;
 mod hypotheses;
 mod loop_law;
 mod method;
@@ -37,6 +38,7 @@ use crate::derivation::Value;
 use crate::expr::Expr;
 use crate::mechanism::Mechanism;
 use crate::quantity::{ActionRef, Motion, QuantityKind};
+use greek::greek;
 use std::fmt::Write as _;
 
 const GREEK: &[&str] = &[
@@ -93,69 +95,6 @@ pub(crate) fn coordinate(reg: &crate::expr::Registry, q: crate::expr::CoordId) -
     match info.phase() {
         Some(w) => format!("{}\\,t", name(w)),
         None => name(&info.name),
-    }
-}
-
-/// The LaTeX name of a Greek letter, without its backslash.
-fn greek(c: char) -> Option<&'static str> {
-    const LOWER: [&str; 25] = [
-        "alpha",
-        "beta",
-        "gamma",
-        "delta",
-        "varepsilon",
-        "zeta",
-        "eta",
-        "theta",
-        "iota",
-        "kappa",
-        "lambda",
-        "mu",
-        "nu",
-        "xi",
-        "o",
-        "pi",
-        "rho",
-        "varsigma",
-        "sigma",
-        "tau",
-        "upsilon",
-        "varphi",
-        "chi",
-        "psi",
-        "omega",
-    ];
-    const UPPER: [Option<&str>; 25] = [
-        None,
-        None,
-        Some("Gamma"),
-        Some("Delta"),
-        None,
-        None,
-        None,
-        Some("Theta"),
-        None,
-        None,
-        Some("Lambda"),
-        None,
-        None,
-        Some("Xi"),
-        None,
-        Some("Pi"),
-        None,
-        None,
-        Some("Sigma"),
-        None,
-        Some("Upsilon"),
-        Some("Phi"),
-        None,
-        Some("Psi"),
-        Some("Omega"),
-    ];
-    match c {
-        'α'..='ω' if c != 'ο' => Some(LOWER[c as usize - 'α' as usize]),
-        'Α'..='Ω' => UPPER.get(c as usize - 'Α' as usize).copied().flatten(),
-        _ => None,
     }
 }
 

@@ -23,6 +23,7 @@
 //! Under a hypothesis, everything (derived values, solved unknowns, equations of motion and the
 //! text given) is taken under its substitutions.
 
+mod factor;
 mod motions;
 mod reader;
 
@@ -31,6 +32,7 @@ use crate::expr::{Expr, ExprError, Fraction, VarRole};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::pfd::{PfdError, Solution};
 use crate::quantity::{NotationError, Quantity, QuantityKind};
+pub use factor::Factor;
 use reader::{Reader, split_list};
 use std::fmt;
 
@@ -77,55 +79,6 @@ fn unknown_names(names: &[String], input: &str) -> String {
          the PFD of the spec",
         quoted.join(", ")
     )
-}
-
-/// A nonzero factor made of parameters, numerator / denominator, in lowest terms.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Factor {
-    /// Numerator (a polynomial in the parameters).
-    pub numerator: Expr,
-    /// Denominator (a polynomial in the parameters; 1 for a polynomial factor).
-    pub denominator: Expr,
-}
-
-impl Factor {
-    /// Whether the factor is exactly 1 (the equation as derived).
-    pub fn is_one(&self) -> bool {
-        self.numerator.is_one() && self.denominator.is_one()
-    }
-
-    /// Whether the factor is a number (no parameter).
-    pub fn is_number(&self) -> bool {
-        self.numerator.as_rational().is_some() && self.denominator.as_rational().is_some()
-    }
-}
-
-impl fmt::Display for Factor {
-    /// `m*l`, `1/(L*m)`, `(M + m)/m`, in the expression syntax.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let wrap = |e: &Expr| {
-            if e.nterms() > 1 || e.to_string().contains(['*', '/']) {
-                format!("({e})")
-            } else {
-                e.to_string()
-            }
-        };
-        if self.denominator.is_one() {
-            // A sum multiplies as a whole: eom = (A + m*a^2) × (lhs − rhs).
-            if self.numerator.nterms() > 1 {
-                write!(f, "({})", self.numerator)
-            } else {
-                write!(f, "{}", self.numerator)
-            }
-        } else {
-            let n = if self.numerator.nterms() > 1 {
-                format!("({})", self.numerator)
-            } else {
-                self.numerator.to_string()
-            };
-            write!(f, "{n}/{}", wrap(&self.denominator))
-        }
-    }
 }
 
 /// Which check decided a verdict.
@@ -466,8 +419,8 @@ fn parse_shaped(
     Ok(given)
 }
 
-/// The hypothesis of that name.
-fn hypothesis<'a>(
+/// The hypothesis of that name (also for the Python module's `derive`).
+pub(crate) fn hypothesis<'a>(
     m: &'a Mechanism,
     h: Option<&str>,
 ) -> Result<Option<&'a Hypothesis>, VerifyError> {
