@@ -26,12 +26,14 @@ use crate::wire::{LinkKind, TheoremKind};
 use std::collections::BTreeMap;
 
 mod energy;
+mod motion;
 
 pub use crate::mechanism::{Action, Dynamics, Small, Source, SpringPart, Theorem};
 pub use energy::{
     action_power, equivalent_inertia, internal_actions, internal_power, kinetic_energy, lagrange,
     potential_energy, power,
 };
+pub use motion::{CompiledEquations, EquationsOfMotion};
 
 impl Action {
     /// The torsor at its point.
@@ -146,6 +148,12 @@ pub enum PfdError {
         theorem: usize,
         /// The unknown left in it.
         unknown: String,
+    },
+    /// An equation of motion is not linear in the accelerations (no mass matrix).
+    #[error("the equation of motion of {coordinate} is not linear in the accelerations")]
+    NotLinearIn {
+        /// The coordinate whose equation it is.
+        coordinate: String,
     },
 }
 

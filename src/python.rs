@@ -161,6 +161,24 @@ impl Loaded {
         to_text(&derivation_json(&self.m, &d, h))
     }
 
+    /// The equations of motion as M(q) q̈ + h = Q: coordinates, then each entry's canonical
+    /// and presentation texts, as JSON.
+    fn equations_of_motion(&self) -> PyResult<String> {
+        let eq = crate::pfd::EquationsOfMotion::of(&self.m).map_err(error)?;
+        let texts = |e: &crate::expr::Expr| json!({"canonical": e.to_string(), "presentation": e.presentation().to_string()});
+        let mass: Vec<Vec<Json>> = eq
+            .mass
+            .iter()
+            .map(|r| r.iter().map(texts).collect())
+            .collect();
+        to_text(&json!({
+            "coordinates": eq.coordinates(),
+            "mass": mass,
+            "velocity_terms": eq.velocity_terms.iter().map(texts).collect::<Vec<_>>(),
+            "forces": eq.forces.iter().map(texts).collect::<Vec<_>>(),
+        }))
+    }
+
     /// `verify`: the verdict on a hand-written value (`quantity` given) or equation, as JSON.
     #[pyo3(signature = (quantity, expr, hypothesis=None))]
     fn verify(

@@ -150,6 +150,11 @@ class Mechanism:
         _torseur.write_files(files + [(os.path.abspath(pdf), pdf_bytes)])
         return tex
 
+    def equations_of_motion(self) -> "EquationsOfMotion":
+        """The equations of motion as M(q) q̈ + h(q, q̇, t) = Q(q, t): the mass matrix, the
+        terms that vanish at rest (Coriolis, centrifugal, viscous), the generalised forces."""
+        return EquationsOfMotion(self, json.loads(self._m().equations_of_motion()))
+
     def simulate(self, scenario: str) -> "Simulation":
         """Integrates a scenario of the spec; columns as numpy arrays when numpy is installed."""
         return Simulation(json.loads(self._m.simulate(scenario)))
@@ -236,6 +241,33 @@ class Result:
             k: sympy.Matrix([_to_sympy(c, names.coordinates) for c in self.canonical[k]])
             for k in ("resultant", "moment")
         }
+
+
+class EquationsOfMotion:
+    """M(q) q̈ + h(q, q̇, t) = Q(q, t), each entry exact: ``coordinates``, and ``mass``,
+    ``velocity_terms``, ``forces`` as the engine's presentation texts; ``to_sympy()`` gives
+    ``(M, h, Q)`` as sympy matrices."""
+
+    def __init__(self, mechanism: Mechanism, j: Dict[str, Any]):
+        self._mechanism = mechanism
+        self._j = j
+        self.coordinates: List[str] = j["coordinates"]
+        self.mass = [[e["presentation"] for e in row] for row in j["mass"]]
+        self.velocity_terms = [e["presentation"] for e in j["velocity_terms"]]
+        self.forces = [e["presentation"] for e in j["forces"]]
+
+    def __repr__(self) -> str:
+        return f"<torseur.EquationsOfMotion of {', '.join(self.coordinates)}>"
+
+    def to_sympy(self):
+        import sympy
+
+        names = _Names(self._mechanism).coordinates
+        read = lambda e: _to_sympy(e["canonical"], names)
+        mass = sympy.Matrix([[read(e) for e in row] for row in self._j["mass"]])
+        h = sympy.Matrix([read(e) for e in self._j["velocity_terms"]])
+        q = sympy.Matrix([read(e) for e in self._j["forces"]])
+        return mass, h, q
 
 
 class _Names:

@@ -37,7 +37,9 @@ pub(crate) use lexical::function_hint;
 pub use names::{bare_names, divisors_in};
 pub use number_text::evaluate_number;
 pub(crate) use present::num_den;
-pub use present::{Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT};
+pub use present::{
+    Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT, signed_sum,
+};
 pub use registry::{
     MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry,
     check_identifier,

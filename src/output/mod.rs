@@ -1,11 +1,13 @@
 //! Outputs: plain text and JSON of derived quantities, numeric evaluation, atomic files.
 
+mod display;
 mod eval;
 
 pub use crate::atomic::{
     OutputError, Sink, Target, distinct, forget_pending, register_pending, remove_pending, target,
     write_atomic, write_outputs,
 };
+pub use display::Shown;
 pub use eval::{
     Values, ValuesError, eval_json, eval_value, numeric_point, numeric_point_for, solve_unknowns,
     try_eval_value,

@@ -485,31 +485,18 @@ fn compile_dynamics(
     sol: &pfd::Solution,
     free: &[CoordId],
 ) -> Result<Compiled, String> {
-    let reg = &m.reg;
-    let n = free.len();
-    let mut exprs: Vec<Expr> = Vec::with_capacity(n * n + n);
-    let mut hs = Vec::with_capacity(n);
-    for &qi in free {
-        let e = &sol.eom[&reg.coord_info(qi).name];
-        let mut h = e.clone();
-        for &qj in free {
-            let mij = e.partial_rate(qj, 2);
-            if !mij.partial_rate(qj, 2).is_zero() {
-                return Err("an equation of motion is not linear in the accelerations".into());
-            }
-            let x = reg.ddot(qj);
-            h = &h - &(&mij * &x);
-            exprs.push(mij);
-        }
-        hs.push(h);
-    }
-    exprs.extend(hs);
+    let eq = pfd::EquationsOfMotion::over(m, sol, free)
+        .map_err(|_| "an equation of motion is not linear in the accelerations".to_string())?;
+    // M, then h − Q: M q̈ + (h − Q) = 0 over the free coordinates.
+    let mut exprs: Vec<Expr> = eq.mass.into_iter().flatten().collect();
+    exprs.extend(eq.velocity_terms.iter().zip(&eq.forces).map(|(h, q)| h - q));
     // Every coordinate imposed: nothing to solve for (the evaluator gets one dummy output).
     if exprs.is_empty() {
-        exprs.push(reg.zero());
+        exprs.push(m.reg.zero());
     }
     let refs: Vec<&Expr> = exprs.iter().collect();
-    reg.compile(&refs)
+    m.reg
+        .compile(&refs)
         .map_err(|e| format!("compiling the equations of motion: {e}"))
 }
 

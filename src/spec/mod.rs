@@ -1,5 +1,6 @@
 //! Problem specs: JSON wire types and their validation into a [`crate::mechanism::Mechanism`].
 
+mod builder;
 mod closures;
 mod dynamics;
 mod hypotheses;
@@ -10,6 +11,7 @@ mod validate;
 /// The wire types, also at [`crate::wire`] (the spec's data, used by every layer).
 pub use crate::wire;
 
+pub use builder::Builder;
 pub use locate::locate;
 pub use validate::build;
 

@@ -30,6 +30,7 @@ mod library;
 mod links;
 mod massless;
 mod messages;
+mod motion;
 mod parity;
 mod parity_sections;
 mod pfd;

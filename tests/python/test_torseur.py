@@ -120,6 +120,29 @@ def test_the_simple_pendulum_is_lagranges_equation_derived_in_sympy():
     assert "along the motions" in v.message and "not identically" in v.message, v.message
 
 
+def test_equations_of_motion_split_as_lagrange_and_rebuild_each_eom():
+    """M q̈ + h = Q: the pendulum's by hand (M = m l², h = 0, Q = −m g l sin θ); the double
+    pendulum's rebuilt in sympy, M q̈ + h − Q, equal to each eom(q) the engine derives."""
+    m = torseur.load(PENDULUM)
+    mass, l, g = sympy.symbols("m l g")
+    th = sympy.Function("theta")(t)
+    M, h, Q = m.equations_of_motion().to_sympy()
+    assert sympy.expand(M[0, 0] - mass * l**2) == 0
+    assert h[0] == 0
+    assert sympy.expand(Q[0] + mass * g * l * sympy.sin(th)) == 0
+    d = torseur.load(str(ROOT / "derivations" / "double_pendule.json"))
+    eq = d.equations_of_motion()
+    assert eq.coordinates == ["theta1", "theta2"]
+    M, h, Q = eq.to_sympy()
+    qdd = sympy.Matrix([sympy.Function(q)(t).diff(t, 2) for q in eq.coordinates])
+    rebuilt = M * qdd + h - Q
+    for i, q in enumerate(eq.coordinates):
+        assert is_zero(rebuilt[i] - d.derive(f"eom({q})").to_sympy()), q
+    # Q holds only the weight (g), h only the rates.
+    assert all(sympy.Symbol("g") in x.free_symbols for x in Q)
+    assert all(x.subs({sympy.Function(q)(t).diff(t): 0 for q in eq.coordinates}) == 0 for x in h)
+
+
 def test_to_sympy_follows_the_notation():
     m = torseur.load(SPEC)
     # Ω(2/0) in B1 = θ̇2 x⃗1 + θ̇1 z⃗1 (the rotation θ2 about x⃗1 after θ1 about z⃗0, by hand).

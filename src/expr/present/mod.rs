@@ -107,6 +107,47 @@ impl Expr {
         Presentation { form, reg }
     }
 
+    /// This expression times `unit` (a basis vector `x2`, an acceleration `ddot(q)`; `""` for
+    /// none) as one term of a sum, in the presentation form: whether it reads negative, and
+    /// its text without that sign (`m*l*x2`, `(a + b)*x2`, `x2` for a coefficient 1).
+    /// [`signed_sum`] joins such terms.
+    ///
+    /// ```
+    /// use torseur::expr::{Registry, signed_sum};
+    /// let reg = Registry::new(&["a".into(), "b".into()], &[]).unwrap();
+    /// let terms = [
+    ///     reg.parse("a + b").unwrap().times_text("x1"),
+    ///     reg.parse("-a").unwrap().times_text("y1"),
+    ///     reg.parse("1").unwrap().times_text("z1"),
+    /// ];
+    /// assert_eq!(signed_sum(&terms), "(a + b)*x1 - a*y1 + z1");
+    /// assert_eq!(signed_sum(&[]), "0");
+    /// ```
+    pub fn times_text(&self, unit: &str) -> (bool, String) {
+        let text = self.presentation().to_string();
+        // One term as written (a product, sin(θ2 − θ1) whole), whatever the expansion holds.
+        let mut depth = 0i32;
+        let single = !text.char_indices().any(|(i, c)| {
+            match c {
+                '(' => depth += 1,
+                ')' => depth -= 1,
+                _ => {}
+            }
+            depth == 0 && i > 0 && (text[i..].starts_with(" + ") || text[i..].starts_with(" - "))
+        });
+        let (minus, body) = match text.strip_prefix('-') {
+            Some(rest) if single => (true, rest.to_string()),
+            _ => (false, text),
+        };
+        let term = match (unit, body.as_str()) {
+            ("", _) => body,
+            (_, "1") => unit.to_string(),
+            _ if single => format!("{body}*{unit}"),
+            _ => format!("({body})*{unit}"),
+        };
+        (minus, term)
+    }
+
     /// The form the search chooses, before the exactness check of [`Expr::presentation`]
     /// (for the tests that require the check never to fail).
     #[doc(hidden)]
@@ -722,4 +763,19 @@ fn times_rates(coef: Form, kin: Kinematic) -> Product {
             Product { coef, factors }
         }
     }
+}
+
+/// Terms from [`Expr::times_text`] joined into one sum (`0` when there are none).
+pub fn signed_sum(terms: &[(bool, String)]) -> String {
+    let mut out = String::new();
+    for (minus, term) in terms {
+        out.push_str(match (out.is_empty(), minus) {
+            (true, false) => "",
+            (true, true) => "-",
+            (false, false) => " + ",
+            (false, true) => " - ",
+        });
+        out.push_str(term);
+    }
+    if out.is_empty() { "0".into() } else { out }
 }
