@@ -65,6 +65,7 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         last_equality = Some((dv, ev));
         k += 2;
     }
+    super::coulomb::law_steps(doc, &steps[k.min(steps.len())..]);
     pfd_result(doc, d, last_equality);
 }
 
@@ -130,6 +131,7 @@ fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]
         widths.push(doc.last_width());
     }
     doc.rows(&cells, &widths, 3);
+    super::coulomb::state_laws(doc, actions);
     let here = doc.here.clone();
     doc.bilans.insert(isolate.to_string(), here);
 }
@@ -232,6 +234,19 @@ fn eom_result(
     {
         let _ = writeln!(doc.o, "{s}");
     }
+    if let Some(k) = eom_factor(doc, q) {
+        let latex = super::expr(&k);
+        let _ = writeln!(
+            doc.o,
+            "Les inconnues éliminées sont des quotients par ${latex}$, supposé non nul : \
+             l'équation est multipliée par ce facteur."
+        );
+        doc.inline.push(super::Inline {
+            what: format!("factor of {id}"),
+            latex,
+            value: Value::Scalar(k),
+        });
+    }
     let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
     let (lhs, rhs) = upright(match last_equality {
         Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => (a.clone(), b.clone()),
@@ -295,6 +310,19 @@ fn eom_under_stated(doc: &mut Doc, id: &str, e: &crate::expr::Expr) {
     }
 }
 
+/// The product of pivots the equation of motion of `q` is multiplied by, where the unknowns
+/// it eliminates are quotients that do not divide out (under the hypothesis worked under).
+fn eom_factor(doc: &Doc, q: &str) -> Option<crate::expr::Expr> {
+    let m = doc.m;
+    if m.dynamics.theorems.iter().all(|t| t.eom.is_some()) {
+        return None;
+    }
+    let k = crate::pfd::solve(m).ok()?.eom_factors.remove(q)?;
+    let k = doc.under.map_or_else(|| k.clone(), |h| h.apply(&k));
+    // A hypothesis may make it a number (f2 = 0): nothing to say then.
+    k.as_rational().is_none().then_some(k)
+}
+
 /// Once, before the first unknown: the pivots of the PFD's solution that are not numbers,
 /// each stated nonzero (« elle suppose $L \neq 0$ »), each formula recorded for the proof.
 fn state_conditions(doc: &mut Doc) {
@@ -309,7 +337,15 @@ fn state_conditions(doc: &mut Doc) {
         return;
     }
     let mut said = Vec::new();
-    for c in &sol.conditions {
+    // Under the hypothesis worked under (1 + f1 f2 at the limit of sliding), numbers left out.
+    let conditions: Vec<crate::expr::Expr> = (sol.conditions.iter())
+        .map(|c| doc.under.map_or_else(|| c.clone(), |h| h.apply(c)))
+        .filter(|c| c.as_rational().is_none())
+        .collect();
+    if conditions.is_empty() {
+        return;
+    }
+    for c in &conditions {
         let latex = super::expr(c);
         said.push(format!("${latex}$"));
         doc.inline.push(super::Inline {
@@ -471,8 +507,10 @@ fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Opti
             format!("${}$ ({})", solid(s), what.join(", "))
         })
         .collect();
+    // Coulomb's laws are equations of the system too.
+    let laws = super::coulomb::laws_phrase(m).map_or(String::new(), |l| format!(", et {l}"));
     Some(format!(
-        "{} s'élimin{} avec les autres équations du PFD, obtenues en isolant {}.",
+        "{} s'élimin{} avec les autres équations du PFD, obtenues en isolant {}{laws}.",
         super::method::french_list(&held),
         if held.len() > 1 { "ent" } else { "e" },
         super::method::french_list(&isolated)

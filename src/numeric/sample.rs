@@ -277,8 +277,10 @@ pub(super) fn draw(
     // Coordinates a loop closure determines: moved onto the loop (after any rate a gear
     // drives, and the time, which the loop may read).
     super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
-    // Dry friction's signs, from the relative rates now drawn.
-    super::dynamics::set_signs(m, &mut vals)?;
+    // Dry friction's signs, from the relative rates now drawn (those the hypothesis sets, at
+    // the limit of sliding, kept).
+    let fixed: Vec<usize> = imposed.relations.iter().map(|(p, _)| *p).collect();
+    super::dynamics::set_signs(m, &mut vals, &fixed)?;
 
     // Inertia parameters: the geometry does not depend on them, so place it once.
     let st = state(m, &vals)?;

@@ -1,6 +1,7 @@
 //! Problem specs: JSON wire types and their validation into a [`crate::mechanism::Mechanism`].
 
 mod closures;
+mod coulomb;
 mod dynamics;
 mod hypotheses;
 mod locate;

@@ -60,8 +60,9 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     // Names, trees and references, and the PFD's unknowns named from this side's own reading
     // of which components each link transmits: resolved once for both sides.
     let resolved = crate::resolve::resolve(spec).map_err(refused)?;
-    let transmitted = |kind, a: usize, d: Option<usize>| {
-        crate::pfd::transmitted(kind, Axis::ALL[a], d.map(|d| Axis::ALL[d]))
+    let transmitted = |kind, a: usize, d: Option<usize>, s: Option<usize>| {
+        let axis = |k: usize| Axis::ALL[k];
+        crate::pfd::transmitted(kind, axis(a), d.map(axis), s.map(axis))
     };
     let unknowns = crate::resolve::unknowns(spec, &resolved, &transmitted).map_err(refused)?;
     let shared = (&resolved, &unknowns);
@@ -498,6 +499,7 @@ fn hypotheses(
             let sp = format!("{path}.symmetric_solids[{k}]");
             symmetric_solid(reg, &bodies[b], &sp, &mut subs, &mut effects)?;
         }
+        signs(spec, reg, h, &path)?;
         super::hypotheses::motions(reg, h, &path, &mut subs, &mut effects)?;
         let first_order = super::hypotheses::small_parameters(reg, h, &path)?;
         let subs = super::hypotheses::with_inverses(reg, subs, &first_order, &path)?;
@@ -511,6 +513,28 @@ fn hypotheses(
     }
 
     Ok(hypotheses)
+}
+
+/// A hypothesis that sets the sign ε of a link's dry friction (the limit of sliding, the
+/// impending motion's sign given) sets it to 1 or −1.
+fn signs(
+    spec: &SpecFile,
+    reg: &Rc<Registry>,
+    h: &crate::wire::HypothesisSpec,
+    path: &str,
+) -> Result<(), SpecError> {
+    for (p, text) in &h.relations {
+        if !(spec.links.iter()).any(|l| l.sign_parameter().as_deref() == Some(p.as_str())) {
+            continue;
+        }
+        let field = format!("{path}.relations.{p}");
+        let e = reg.parse(text).map_err(|e| at(&field, e.to_string()))?;
+        if e != reg.one() && e != -&reg.one() {
+            let why = format!("`{p}` is the sign of a sliding velocity: it is set to 1 or -1");
+            return Err(at(field, why));
+        }
+    }
+    Ok(())
 }
 
 /// The substitutions a solid's symmetries make (`sp`: the hypothesis' path to it): entries

@@ -591,6 +591,7 @@ pub fn check_derivation(
             StepKind::Derivative(k, _) => of_kind(k).map(|x| x / Dimension::TIME),
             StepKind::Complementary(..) => ExpectedDimension::Components(Some(Dimension::MOMENT)),
             StepKind::Action { .. } => torsor(Dimension::FORCE, Dimension::MOMENT),
+            StepKind::Coulomb { .. } => ExpectedDimension::Components(Some(Dimension::FORCE)),
             StepKind::External { point, .. } => {
                 ExpectedDimension::Components(Some(if point.is_some() {
                     Dimension::MOMENT
