@@ -35,7 +35,7 @@ const APPEARS: f64 = 1e-9;
 const SINGULAR: f64 = 1e-10;
 
 mod solve;
-pub(super) use solve::{action, eom, internal_power, power, set_signs, unknown};
+pub(super) use solve::{action, check_sliding, eom, internal_power, power, set_signs, unknown};
 
 /// What exerts or receives an action: a solid, or a frame that is not a solid (the ground).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -94,6 +94,8 @@ pub(super) struct LawInfo {
     pub unknowns: [usize; 2],
     /// The sliding direction: an axis 0..3 of the link's basis.
     pub tangent: usize,
+    /// The normal: another axis of the link's basis.
+    pub normal: usize,
 }
 
 /// A given action {T(from→on)} at a point.
@@ -385,6 +387,7 @@ fn law(
         sign: m.param_index[&sign],
         unknowns: [unknown(contact.tangent), unknown(contact.normal)],
         tangent: contact.tangent,
+        normal: contact.normal,
     })
 }
 
