@@ -96,12 +96,12 @@ fn body_frame(m: &NumericModel, b: Body) -> usize {
 
 /// Sets the sign parameter ε of every link with dry friction to the sign of its relative
 /// rate at the sample: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider, V(P,2/1)·t for a
-/// contact under Coulomb's law sliding along t (0 at rest); the parameters in `fixed` (a
-/// hypothesis gives the sign of the impending motion) are kept.
+/// contact under Coulomb's law sliding along t (0 at rest); a sign that `fixed` says is set
+/// otherwise (by a hypothesis: the impending motion's sign at the limit of sliding) is kept.
 pub(in crate::numeric) fn set_signs(
     m: &NumericModel,
     vals: &mut Values,
-    fixed: &[usize],
+    fixed: &dyn Fn(usize) -> bool,
 ) -> Result<(), NumericError> {
     let dry = |l: &LinkInfo| l.coulomb.is_some() || l.law.is_some();
     if !m.dynamics.links.iter().any(dry) {
@@ -114,7 +114,7 @@ pub(in crate::numeric) fn set_signs(
             (None, Some(law)) => (law.sign, law.tangent, true),
             (None, None) => continue,
         };
-        if fixed.contains(&eps) {
+        if fixed(eps) {
             continue;
         }
         let [fa, fb] = l.between.map(|b| body_frame(m, b));
