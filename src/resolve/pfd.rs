@@ -234,13 +234,15 @@ fn contact(
         LinkKind::Point | LinkKind::Plane | LinkKind::Line | LinkKind::Slider
     ) {
         let why = format!(
-            "a {} transmits no tangential force tied to a normal one: Coulomb's law on a              link's unknowns is declared on a contact (point, plane, line) or a slider",
+            "a {} transmits no tangential force tied to a normal one: Coulomb's law on a \
+             link's unknowns is declared on a contact (point, plane, line) or a slider",
             l.kind.course_name()
         );
         return Err(at(path, why));
     }
     if l.coulomb.is_some() {
-        let why = "the link already has dry friction given by its magnitude (`coulomb`):                    declare one or the other";
+        let why = "the link already has dry friction given by its magnitude (`coulomb`): \
+                   declare one or the other";
         return Err(at(path, why));
     }
     let slider = l.kind == LinkKind::Slider;
@@ -261,9 +263,11 @@ fn contact(
     }
     let Some(text) = given else {
         let why = if slider {
-            "a slider with Coulomb's law needs its `normal`, the direction of the normal              unknown N: another basis vector of its axis' basis"
+            "a slider with Coulomb's law needs its `normal`, the direction of the normal \
+             unknown N: another basis vector of its axis' basis"
         } else {
-            "a contact with Coulomb's law needs its sliding direction `tangent`, another basis              vector of its normal's basis"
+            "a contact with Coulomb's law needs its sliding direction `tangent`, another basis \
+             vector of its normal's basis"
         };
         return Err(at(path, why));
     };
