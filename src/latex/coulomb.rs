@@ -190,3 +190,32 @@ pub(super) fn laws_phrase(m: &Mechanism) -> Option<String> {
         )),
     }
 }
+
+/// Before an equation of motion whose eliminated unknowns are quotients that do not divide
+/// out (Coulomb's laws tie T to N, so the PFD's system no longer splits): the product of
+/// pivots it is multiplied by, stated nonzero and recorded for the proof.
+pub(super) fn eom_factor(doc: &mut Doc, id: &str, q: &str) {
+    let Some(k) = factor(doc, q) else {
+        return;
+    };
+    let latex = super::expr(&k);
+    let _ = writeln!(
+        doc.o,
+        "Les inconnues éliminées sont des quotients par ${latex}$, supposé non nul : \
+         l'équation est multipliée par ce facteur."
+    );
+    inline(doc, format!("factor of {id}"), latex, k);
+}
+
+/// The product of pivots the equation of motion of `q` is multiplied by, where the unknowns
+/// it eliminates are quotients that do not divide out (under the hypothesis worked under).
+fn factor(doc: &Doc, q: &str) -> Option<crate::expr::Expr> {
+    let m = doc.m;
+    if m.dynamics.theorems.iter().all(|t| t.eom.is_some()) {
+        return None;
+    }
+    let k = crate::pfd::solve(m).ok()?.eom_factors.remove(q)?;
+    let k = doc.under.map_or_else(|| k.clone(), |h| h.apply(&k));
+    // A hypothesis may make it a number (f2 = 0): nothing to say then.
+    k.as_rational().is_none().then_some(k)
+}
