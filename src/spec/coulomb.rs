@@ -119,3 +119,25 @@ fn coefficient(m: &Mechanism, spec: &SpecFile, path: &str, text: &str) -> Result
     }
     Ok(f)
 }
+
+/// A hypothesis that sets the sign ε of a link's dry friction (the limit of sliding, the
+/// impending motion's sign given) sets it to 1 or −1.
+pub(super) fn signs(
+    spec: &SpecFile,
+    reg: &std::rc::Rc<crate::expr::Registry>,
+    h: &crate::wire::HypothesisSpec,
+    path: &str,
+) -> Result<(), SpecError> {
+    for (p, text) in &h.relations {
+        if !(spec.links.iter()).any(|l| l.sign_parameter().as_deref() == Some(p.as_str())) {
+            continue;
+        }
+        let field = format!("{path}.relations.{p}");
+        let e = reg.parse(text).map_err(|e| at(&field, e.to_string()))?;
+        if e != reg.one() && e != -&reg.one() {
+            let why = format!("`{p}` is the sign of a sliding velocity: it is set to 1 or -1");
+            return Err(at(field, why));
+        }
+    }
+    Ok(())
+}

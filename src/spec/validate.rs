@@ -565,7 +565,7 @@ fn hypotheses(
             let sp = format!("{path}.symmetric_solids[{k}]");
             symmetric_solid(reg, &bodies[b], &sp, &mut subs, &mut effects)?;
         }
-        signs(spec, reg, h, &path)?;
+        super::coulomb::signs(spec, reg, h, &path)?;
         super::hypotheses::motions(reg, h, &path, &mut subs, &mut effects)?;
         let first_order = super::hypotheses::small_parameters(reg, h, &path)?;
         let subs = super::hypotheses::with_inverses(reg, subs, &first_order, &path)?;
@@ -579,28 +579,6 @@ fn hypotheses(
     }
 
     Ok(hypotheses)
-}
-
-/// A hypothesis that sets the sign ε of a link's dry friction (the limit of sliding, the
-/// impending motion's sign given) sets it to 1 or −1.
-fn signs(
-    spec: &SpecFile,
-    reg: &Rc<Registry>,
-    h: &crate::wire::HypothesisSpec,
-    path: &str,
-) -> Result<(), SpecError> {
-    for (p, text) in &h.relations {
-        if !(spec.links.iter()).any(|l| l.sign_parameter().as_deref() == Some(p.as_str())) {
-            continue;
-        }
-        let field = format!("{path}.relations.{p}");
-        let e = reg.parse(text).map_err(|e| at(&field, e.to_string()))?;
-        if e != reg.one() && e != -&reg.one() {
-            let why = format!("`{p}` is the sign of a sliding velocity: it is set to 1 or -1");
-            return Err(at(field, why));
-        }
-    }
-    Ok(())
 }
 
 /// The substitutions a solid's symmetries make (`sp`: the hypothesis' path to it): entries

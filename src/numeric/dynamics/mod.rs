@@ -39,7 +39,8 @@ const APPEARS: f64 = 1e-9;
 const SINGULAR: f64 = 1e-10;
 
 mod solve;
-pub(super) use solve::{action, check_sliding, eom, internal_power, power, set_signs, unknown};
+use solve::body_frame;
+pub(super) use solve::{action, eom, internal_power, power, set_signs, unknown};
 
 /// What exerts or receives an action: a solid, or a frame that is not a solid (the ground).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -439,4 +440,36 @@ fn given(
         moment,
         unknowns: used.into_iter().collect(),
     })
+}
+
+/// Each contact under Coulomb's law slides along its tangent at one of the states `vals` at
+/// least, and never across it (along the normal's and the tangent's third axis): its sliding
+/// velocity V(P,2/1), from this backend's kinematics, refused at the link's place otherwise.
+pub(in crate::numeric) fn check_sliding(
+    m: &NumericModel,
+    vals: &[Values],
+) -> Result<(), NumericError> {
+    for (i, l) in m.dynamics.links.iter().enumerate() {
+        let Some(law) = &l.law else { continue };
+        let [fa, fb] = l.between.map(|b| body_frame(m, b));
+        let (mut along, mut across, mut size) = (0.0_f64, 0.0_f64, 0.0_f64);
+        for v in vals {
+            let st = kin::state(m, v)?;
+            let rb = st.rot0(l.basis);
+            let w = kin::point_motion(&st, l.point, fb, fa)[0];
+            along = along.max(w.dot(&rb.column(law.tangent)).abs());
+            across = across.max(w.dot(&rb.column(3 - law.tangent - law.normal)).abs());
+            size = size.max(w.norm());
+        }
+        let path = format!("links[{i}].contact_friction");
+        if along <= 1e-9 * size.max(1.0) {
+            let why = "the sliding velocity along the tangent is zero: nothing slides";
+            return Err(spec_err(path, why));
+        }
+        if across > 1e-9 * size.max(1.0) {
+            let why = "the sliding velocity has a component across the tangent";
+            return Err(spec_err(path, why));
+        }
+    }
+    Ok(())
 }

@@ -87,7 +87,7 @@ fn eval_err(what: String) -> impl Fn(String) -> NumericError {
     }
 }
 
-fn body_frame(m: &NumericModel, b: Body) -> usize {
+pub(super) fn body_frame(m: &NumericModel, b: Body) -> usize {
     match b {
         Body::Solid(s) => m.solids[s].frame,
         Body::Frame(f) => f,
@@ -125,38 +125,6 @@ pub(in crate::numeric) fn set_signs(
             kin::omega(&st, fb, fa).dot(&u)
         };
         vals.params[eps] = if rate == 0.0 { 0.0 } else { rate.signum() };
-    }
-    Ok(())
-}
-
-/// Each contact under Coulomb's law slides along its tangent at one of the states `vals` at
-/// least, and never across it (along the normal's and the tangent's third axis): its sliding
-/// velocity V(P,2/1), from this backend's kinematics, refused at the link's place otherwise.
-pub(in crate::numeric) fn check_sliding(
-    m: &NumericModel,
-    vals: &[Values],
-) -> Result<(), NumericError> {
-    for (i, l) in m.dynamics.links.iter().enumerate() {
-        let Some(law) = &l.law else { continue };
-        let [fa, fb] = l.between.map(|b| body_frame(m, b));
-        let (mut along, mut across, mut size) = (0.0_f64, 0.0_f64, 0.0_f64);
-        for v in vals {
-            let st = kin::state(m, v)?;
-            let rb = st.rot0(l.basis);
-            let w = kin::point_motion(&st, l.point, fb, fa)[0];
-            along = along.max(w.dot(&rb.column(law.tangent)).abs());
-            across = across.max(w.dot(&rb.column(3 - law.tangent - law.normal)).abs());
-            size = size.max(w.norm());
-        }
-        let path = format!("links[{i}].contact_friction");
-        if along <= 1e-9 * size.max(1.0) {
-            let why = "the sliding velocity along the tangent is zero: nothing slides";
-            return Err(super::spec_err(path, why));
-        }
-        if across > 1e-9 * size.max(1.0) {
-            let why = "the sliding velocity has a component across the tangent";
-            return Err(super::spec_err(path, why));
-        }
     }
     Ok(())
 }
