@@ -6,7 +6,7 @@ use crate::derivation::{ResolveError, Value, derive_values, resolve};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::numeric::{NumericError, NumericModel, Sample};
 use crate::output::{Values, ValuesError, numeric_point};
-use crate::quantity::Quantity;
+use crate::quantity::{Quantity, QuantityKind};
 use crate::units::{DimensionError, Dimensions, check_value};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -299,8 +299,26 @@ pub fn check(m: &Mechanism, samples: usize, seed: u64) -> Result<CheckReport, Ch
     }
     let skipped =
         |h: Option<&Hypothesis>| h.is_some_and(|h| not_compared.iter().any(|(n, _)| *n == h.name));
+    // An equation of motion the PFD's solve left multiplied by pivots (1 − f1 f2 εA εB):
+    // compared as the residual the float backend computes, divided by them.
+    let factors = match m
+        .quantities
+        .iter()
+        .any(|q| matches!(q.kind, QuantityKind::Eom(_)))
+    {
+        true => crate::pfd::solve(m)
+            .map(|s| s.eom_factors)
+            .unwrap_or_default(),
+        false => BTreeMap::new(),
+    };
     for (q, d) in m.quantities.iter().zip(derived) {
-        let v = d.value;
+        let v = match (&q.kind, d.value) {
+            (QuantityKind::Eom(c), Value::Scalar(e)) if factors.contains_key(c) => {
+                let f = crate::expr::Fraction::new(e.clone(), factors[c].clone());
+                f.map_or(Value::Scalar(e), Value::Quotient)
+            }
+            (_, v) => v,
+        };
         let under: Vec<(Option<&Hypothesis>, Value)> = std::iter::once((None, v.clone()))
             .chain(m.hypotheses.iter().map(|h| (Some(h), v.under(h))))
             .collect();

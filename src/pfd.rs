@@ -88,6 +88,10 @@ pub struct Solution {
     /// The pivots that are not numbers (L), each a polynomial in the parameters: the
     /// solution holds where none of them is zero.
     pub conditions: Vec<Expr>,
+    /// Coordinate name → the product of pivots its equation of motion stays multiplied by,
+    /// where they do not divide out (1 − f1 f2 εA εB for a ladder with friction at both
+    /// ends): `eom` is that factor times the residual. Absent when it is 1.
+    pub eom_factors: BTreeMap<String, Expr>,
 }
 
 /// Why the PFD cannot be solved as declared. `theorem` is the index of a declared equation
@@ -373,7 +377,8 @@ pub fn solve(m: &Mechanism) -> Result<Solution, PfdError> {
     solve_with_residuals(m, &mut torsor::Cache::default()).map(|(s, _)| s)
 }
 
-/// [`solve`], also returning each declared theorem's residual (in the spec's order).
+/// [`solve`], also returning each declared theorem's residual (in the spec's order), then
+/// each Coulomb law's (T + f N ε, in the order of `Dynamics::laws`).
 pub fn solve_with_residuals(
     m: &Mechanism,
     cache: &mut torsor::Cache,
@@ -394,6 +399,14 @@ pub fn solve_with_residuals(
         } else {
             rows.push((i, r));
         }
+    }
+    // Coulomb's laws on contacts' unknowns, T + f N ε = 0: equations of the system too, after
+    // the theorems (their residuals follow the theorems' in the same order).
+    let theorems = m.dynamics.theorems.len();
+    for (k, law) in m.dynamics.laws.iter().enumerate() {
+        let r = law.residual();
+        residuals.push(r.clone());
+        rows.push((theorems + k, r));
     }
     let mut cols: Vec<VarId> = Vec::new();
     for (_, r) in &rows {
@@ -477,12 +490,21 @@ pub fn solve_with_residuals(
         unknowns.insert(names[v].clone(), value.clone());
     }
     let mut eom = BTreeMap::new();
+    let mut eom_factors = BTreeMap::new();
     for (i, mut r) in eoms {
+        // r stays `factor` times the residual with the unknowns eliminated so far.
+        let mut factor = m.reg.one();
         for (v, value) in &solved {
+            if r.derivative(*v).is_zero() {
+                continue;
+            }
             r = eliminate(&r, *v, value);
             // The equation was multiplied by the pivot: divide it back when it goes.
             if !value.is_whole() {
-                r = r.exact_div(&value.den).unwrap_or(r);
+                match r.exact_div(&value.den) {
+                    Some(q) => r = q,
+                    None => factor = &factor * &value.den,
+                }
             }
         }
         let left = unknowns_in(m, &r);
@@ -497,13 +519,18 @@ pub fn solve_with_residuals(
         if th.kind == TheoremKind::Energy {
             r = energy::per_rate(m, &r, q).ok_or(PfdError::NotRateTimes { theorem: i })?;
         }
-        eom.insert(m.reg.coord_info(q).name.clone(), r);
+        let name = m.reg.coord_info(q).name.clone();
+        if factor != m.reg.one() {
+            eom_factors.insert(name.clone(), factor);
+        }
+        eom.insert(name, r);
     }
     Ok((
         Solution {
             unknowns,
             eom,
             conditions,
+            eom_factors,
         },
         residuals,
     ))
@@ -538,8 +565,19 @@ fn check_linear(m: &Mechanism, r: &Expr) -> Result<(), (String, String)> {
 }
 
 /// Which of the six components (X, Y, Z, L, M, N in the link's basis) a perfect link
-/// transmits, given its axis (or normal) `a` and, for a line contact, its direction `d`.
-pub fn transmitted(k: LinkKind, a: Axis, d: Option<Axis>) -> [bool; 6] {
+/// transmits, given its axis (or normal) `a` and, for a line contact, its direction `d`; with
+/// Coulomb's law on its unknowns, also the tangential force along its sliding direction
+/// `sliding`.
+pub fn transmitted(k: LinkKind, a: Axis, d: Option<Axis>, sliding: Option<Axis>) -> [bool; 6] {
+    let mut t = perfect(k, a, d);
+    if let Some(s) = sliding {
+        t[s.index()] = true;
+    }
+    t
+}
+
+/// What a perfect link transmits (see [`transmitted`]).
+fn perfect(k: LinkKind, a: Axis, d: Option<Axis>) -> [bool; 6] {
     let i = a.index();
     let mut t = [true; 6];
     match k {

@@ -224,8 +224,12 @@ pub(super) fn derive(
                 Some(v) if with_steps => determining(m, residuals, v),
                 _ => Vec::new(),
             };
-            for i in cited {
+            let theorems = m.dynamics.theorems.len();
+            for &i in cited.iter().filter(|&&i| i < theorems) {
                 theorem_steps(m, &m.dynamics.theorems[i], &mut shared.centre, &mut steps);
+            }
+            for &i in cited.iter().filter(|&&i| i >= theorems) {
+                steps.push(law_step(m, &m.dynamics.laws[i - theorems]));
             }
             if v.is_whole() {
                 Value::Scalar(v.num)
@@ -262,17 +266,57 @@ pub(super) fn derive(
     })
 }
 
+/// Coulomb's law of a contact as a step: T = −f N ε, its value the equation's right side.
+fn law_step(m: &Mechanism, law: &crate::mechanism::CoulombLaw) -> Step {
+    let l = &m.spec.links[law.link];
+    Step {
+        label: format!("Coulomb({})", l.name),
+        kind: StepKind::Coulomb {
+            link: l.name.clone(),
+            tangential: law.unknowns[0].clone(),
+        },
+        theorem: format!("Loi de Coulomb, contact {} (glissement)", l.name),
+        value: Value::Scalar(law.friction()),
+    }
+}
+
 /// The equations without `eom` that determine the unknown `v`: one that holds it (the one
 /// with the fewest unknowns that works), and, for each other unknown it holds, those that
 /// determine that one (X_A + X_B = … needs the moment that gives X_B), in the spec's order.
 fn determining(m: &Mechanism, residuals: &[Expr], v: VarId) -> Vec<usize> {
+    // The theorems without eom, then Coulomb's laws (whose residuals follow them).
+    let theorems = &m.dynamics.theorems;
     let rows: Vec<(usize, Vec<VarId>)> = (0..residuals.len())
-        .filter(|&i| m.dynamics.theorems[i].eom.is_none())
+        .filter(|&i| theorems.get(i).is_none_or(|t| t.eom.is_none()))
         .map(|i| (i, unknowns_in(m, &residuals[i])))
         .collect();
-    let mut cited = block(&rows, v, &mut Vec::new()).unwrap_or_default();
+    // A system that no such chain solves (every equation holds two unknowns around a loop,
+    // as Coulomb's laws make it): the equations that share unknowns with it, all together.
+    let mut cited = block(&rows, v, &mut Vec::new()).unwrap_or_else(|| coupled(&rows, v));
     cited.sort_unstable();
     cited
+}
+
+/// The rows linked to `v` through the unknowns they share.
+fn coupled(rows: &[(usize, Vec<VarId>)], v: VarId) -> Vec<usize> {
+    let mut reached = vec![v];
+    let mut out: Vec<usize> = Vec::new();
+    let mut grew = true;
+    while grew {
+        grew = false;
+        for (i, us) in rows {
+            if !out.contains(i) && us.iter().any(|u| reached.contains(u)) {
+                out.push(*i);
+                for u in us {
+                    if !reached.contains(u) {
+                        reached.push(*u);
+                    }
+                }
+                grew = true;
+            }
+        }
+    }
+    out
 }
 
 /// A set of rows, none in `used`, that determines `v` (see [`determining`]).

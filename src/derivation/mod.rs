@@ -281,6 +281,13 @@ pub enum StepKind {
         /// Projection vector (frame name, axis letter).
         on: (String, char),
     },
+    /// Coulomb's law of a contact while it slides, T = −f N ε: its value is −f N ε.
+    Coulomb {
+        /// The link's name.
+        link: String,
+        /// Its tangential unknown T, the left side.
+        tangential: String,
+    },
 }
 
 /// One step of a derivation.

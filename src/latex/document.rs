@@ -112,6 +112,8 @@ pub(super) struct Doc<'m> {
     /// Whether the conditions of the PFD's solution (its pivots that are not numbers,
     /// L ≠ 0) are stated.
     pub(super) conditions_stated: bool,
+    /// The links whose Coulomb's law is stated (positions in the spec's `links`).
+    pub(super) laws_stated: Vec<usize>,
 }
 
 impl<'m> Doc<'m> {
@@ -355,6 +357,14 @@ impl<'m> Doc<'m> {
         self.record(role, what, body, v1, Some(v2.clone()), boxed_display);
     }
 
+    /// A law `lhs = b` (Coulomb's T = −f N ε), not boxed: recorded as the equality of the
+    /// unknown `a` that `lhs` names and `b`, and remembered.
+    pub(super) fn show_law(&mut self, what: &str, lhs: &str, a: &Value, b: &Value) {
+        let body = super::value_within(self.m, self.style, lhs, b, None, super::LINE);
+        self.record(DisplayRole::Step, what, body, a, Some(b.clone()), false);
+        self.remember(lhs, b);
+    }
+
     /// An equation `a = b`, boxed, the shorter side on the left.
     pub(super) fn show_equation(
         &mut self,
@@ -589,6 +599,7 @@ impl<'m> Doc<'m> {
             under: None,
             results: Vec::new(),
             conditions_stated: false,
+            laws_stated: Vec::new(),
         }
     }
 }

@@ -428,7 +428,7 @@ pub fn link_text(l: &LinkSpec) -> String {
     if l.friction.is_some() {
         t.push_str(", avec frottement visqueux");
     }
-    if l.coulomb.is_some() {
+    if l.coulomb.is_some() || l.contact_friction.is_some() {
         t.push_str(", avec frottement sec");
     }
     if l.spring.is_some() {

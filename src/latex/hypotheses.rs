@@ -261,7 +261,14 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
                         tex(format!("sign of {}", l.name), &sign)
                     )
                 });
-                viscous.into_iter().chain(dry)
+                let contact = l.contact_friction.as_ref().map(|c| {
+                    format!(
+                        "la liaison {} (frottement sec de coefficient ${}$, loi de Coulomb)",
+                        escape_text(&l.name),
+                        tex(format!("coefficient of {}", l.name), &c.coefficient)
+                    )
+                });
+                viscous.into_iter().chain(dry).chain(contact)
             })
             .collect();
         parts.push(if lossy.is_empty() {

@@ -105,6 +105,7 @@ pub(super) fn step_lhs(k: &StepKind) -> String {
             point(p)
         ),
         StepKind::Projected(q, (f, a)) => format!("{} \\cdot {}", quantity(q), basis_vector(*a, f)),
+        StepKind::Coulomb { tangential, .. } => super::name(tangential),
         StepKind::Powers { isolate, reference } => format!(
             "{} + {}",
             quantity(&QuantityKind::Power {

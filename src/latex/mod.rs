@@ -7,6 +7,7 @@
 //! loaded).
 
 mod bilan;
+mod coulomb;
 mod document;
 mod energy;
 mod expr;
@@ -56,14 +57,19 @@ const GREEK: &[&str] = &[
 /// assert_eq!(torseur::latex::name("phi"), "\\varphi");
 /// assert_eq!(torseur::latex::name("A2"), "A_{2}");
 /// assert_eq!(torseur::latex::name("lambda"), "\\lambda");
+/// assert_eq!(torseur::latex::name("epsilonA"), "\\varepsilon_{A}");
 /// ```
 pub fn name(n: &str) -> String {
     let safe: String = n
         .chars()
         .filter(|c| c.is_ascii_alphanumeric() || *c == '_')
         .collect();
+    // The sign of a link named by a letter under dry friction: `epsilonA` → ε_A.
+    let sign =
+        (safe.strip_prefix("epsilon")).filter(|r| r.starts_with(|c: char| c.is_ascii_uppercase()));
     let (head, sub) = match safe.split_once('_') {
         Some((h, s)) => (h.to_string(), s.replace('_', "")),
+        None if sign.is_some() => ("epsilon".to_string(), sign.unwrap_or_default().to_string()),
         None => {
             let cut = safe
                 .char_indices()

@@ -101,6 +101,7 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         last_equality = Some((dv, ev));
         k += 2;
     }
+    super::coulomb::law_steps(doc, &steps[k.min(steps.len())..]);
     pfd_result(doc, d, last_equality);
 }
 
@@ -224,6 +225,7 @@ fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]
         widths.push(doc.last_width());
     }
     doc.rows(&cells, &widths, 3);
+    super::coulomb::state_laws(doc, actions);
     let here = doc.here.clone();
     doc.bilans.insert(isolate.to_string(), here);
 }
@@ -326,6 +328,7 @@ fn eom_result(
     {
         let _ = writeln!(doc.o, "{s}");
     }
+    super::coulomb::eom_factor(doc, id, q);
     if let Some(s) = super::energy::divided_by_rate(doc, q) {
         let _ = writeln!(doc.o, "{s}");
     }
@@ -406,7 +409,15 @@ fn state_conditions(doc: &mut Doc) {
         return;
     }
     let mut said = Vec::new();
-    for c in &sol.conditions {
+    // Under the hypothesis worked under (1 + f1 f2 at the limit of sliding), numbers left out.
+    let conditions: Vec<crate::expr::Expr> = (sol.conditions.iter())
+        .map(|c| doc.under.map_or_else(|| c.clone(), |h| h.apply(c)))
+        .filter(|c| c.as_rational().is_none())
+        .collect();
+    if conditions.is_empty() {
+        return;
+    }
+    for c in &conditions {
         let latex = super::expr(c);
         said.push(format!("${latex}$"));
         doc.inline.push(super::Inline {
@@ -569,8 +580,10 @@ fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Opti
             format!("${}$ ({})", solid(s), what.join(", "))
         })
         .collect();
+    // Coulomb's laws are equations of the system too.
+    let laws = super::coulomb::laws_phrase(m).map_or(String::new(), |l| format!(", et {l}"));
     Some(format!(
-        "{} s'élimin{} avec les autres équations du PFD, obtenues en isolant {}.",
+        "{} s'élimin{} avec les autres équations du PFD, obtenues en isolant {}{laws}.",
         super::method::french_list(&held),
         if held.len() > 1 { "ent" } else { "e" },
         super::method::french_list(&isolated)

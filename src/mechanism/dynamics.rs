@@ -61,16 +61,51 @@ pub struct Action {
     pub spring: Option<SpringPart>,
 }
 
-/// Dry (Coulomb) friction in a link: its action holds −C ε along the axis, where the
-/// parameter `sign` stands for ε = sgn(`rate`), ±1.
+/// Dry (Coulomb) friction in a link: its action holds −C ε along the axis (or, with Coulomb's
+/// law on its unknowns, T = −f N ε), where the parameter `sign` stands for ε = sgn(`rate`),
+/// ±1.
 #[derive(Debug, Clone)]
 pub struct DryFriction {
     /// The sign's parameter (`epsilon01`).
     pub sign: String,
-    /// The relative rate whose sign it is: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider.
+    /// The relative rate whose sign it is: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider,
+    /// V(P,2/1)·t for a contact sliding along t.
     pub rate: Expr,
-    /// The friction's magnitude C (a torque or a force).
+    /// The friction's magnitude: C (a torque or a force), or f N with N the normal unknown.
     pub magnitude: Expr,
+}
+
+/// Coulomb's law on a contact's unknowns, one more equation of the PFD: while the contact
+/// slides, its tangential unknown T = −f N ε, with N its normal unknown and ε the sign of the
+/// sliding velocity V(P ∈ on/from)·t.
+#[derive(Debug, Clone)]
+pub struct CoulombLaw {
+    /// The link's position in the spec's `links`.
+    pub link: usize,
+    /// The tangential unknown T and the normal unknown N, by name.
+    pub unknowns: [String; 2],
+    /// T and N as expressions.
+    pub values: [Expr; 2],
+    /// The friction coefficient f.
+    pub coefficient: Expr,
+    /// The sign ε (the parameter `epsilon` + the link's name).
+    pub sign: Expr,
+    /// The sliding direction t and the normal n, each a basis vector (frame, axis).
+    pub directions: [(FrameId, Axis); 2],
+    /// The sliding velocity along t, V(P ∈ on/from)·t, whose sign ε is.
+    pub rate: Expr,
+}
+
+impl CoulombLaw {
+    /// −f N ε, what T equals while the contact slides.
+    pub fn friction(&self) -> Expr {
+        -&(&(&self.coefficient * &self.values[1]) * &self.sign)
+    }
+
+    /// T + f N ε, the law as an equation of the PFD (= 0).
+    pub fn residual(&self) -> Expr {
+        &self.values[0] - &self.friction()
+    }
 }
 
 /// One scalar equation of the PFD, as declared.
@@ -103,6 +138,8 @@ pub struct Dynamics {
     pub small: Vec<Small>,
     /// The links with dry friction, in the spec's order.
     pub dry: Vec<DryFriction>,
+    /// Coulomb's laws on contacts' unknowns, in the spec's order of the links.
+    pub laws: Vec<CoulombLaw>,
 }
 
 /// A coordinate declared small, and the equilibrium value it moves around.

@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 use std::rc::Rc;
 
 mod dynamics;
-pub use dynamics::{Action, DryFriction, Dynamics, Small, Source, SpringPart, Theorem};
+pub use dynamics::{Action, CoulombLaw, DryFriction, Dynamics, Small, Source, SpringPart, Theorem};
 
 /// Typed index of a solid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]

@@ -336,7 +336,26 @@ impl NumericModel {
         model.dynamics = dynamics::build(spec, &model, &trees, unknowns)?;
         model::mark_positive(&mut model);
         model.uses_time = model.writes_time();
+        model.check_laws()?;
         Ok(model)
+    }
+
+    /// Coulomb's laws: each contact slides along its tangent and never across it, at three
+    /// samples of its own (not checked when the mechanism cannot be sampled: `check` says so).
+    fn check_laws(&self) -> Result<(), NumericError> {
+        use rand::SeedableRng;
+        if self.dynamics.links.iter().all(|l| l.law.is_none()) {
+            return Ok(());
+        }
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(37);
+        let mut vals = Vec::new();
+        for _ in 0..3 {
+            let Ok(s) = self.sample(&mut rng) else {
+                return Ok(());
+            };
+            vals.push(kin::values(self, &s)?);
+        }
+        dynamics::check_sliding(self, &vals)
     }
 
     /// Whether the spec writes the time t (a forcing F0 cos(Ω t), a frame turned by Ω t):

@@ -596,6 +596,7 @@ pub(super) fn mark_positive(model: &mut NumericModel) {
         l.friction
             .iter()
             .chain(l.coulomb.iter().map(|c| &c.0))
+            .chain(l.law.iter().map(|c| &c.coefficient))
             .chain(l.spring.iter().map(|s| &s.stiffness))
     })) {
         expr::params_in(node, &mut positive);
@@ -676,7 +677,28 @@ fn held_motions(
         if used.contains(&i) {
             return Err(spec_err(&field, format!("`{p}` is defined by itself")));
         }
+        // The sign of a dry friction's sliding velocity, at the limit of sliding: ±1.
+        let sign = (spec.links.iter()).any(|l| l.sign_parameter().as_deref() == Some(p.as_str()));
+        let unit = used.is_empty()
+            && expr::eval_scalar(&node, &no_values()).is_ok_and(|x: f64| x.abs() == 1.0);
+        if sign && !unit {
+            return Err(spec_err(
+                &field,
+                format!("the sign `{p}` is set to 1 or -1"),
+            ));
+        }
         relations.push((i, node));
     }
     Ok((motions, relations))
+}
+
+/// An environment without values: for a constant written with numbers only.
+fn no_values() -> expr::Env<'static, f64> {
+    expr::Env {
+        params: &[],
+        coords: &[],
+        rates: &[],
+        frames: &[],
+        time: 0.0,
+    }
 }

@@ -321,7 +321,7 @@ pub(super) fn draw(
     // drives, and the time, which the loop may read).
     super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
     // Dry friction's signs, from the relative rates now drawn, but for a sign the hypothesis
-    // sets (« the block slides down »: `epsilon02 = 1`), which the exact side reads as given.
+    // sets (« the block slides down »: `epsilon02 = 1`, or the limit of sliding), which the exact side reads as given.
     let set_by_hypothesis = |p: usize| imposed.relations.iter().any(|(q, _)| *q == p);
     super::dynamics::set_signs(m, &mut vals, &set_by_hypothesis)?;
 

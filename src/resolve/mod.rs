@@ -25,7 +25,7 @@ use crate::expr::{RESERVED, check_identifier};
 use crate::quantity::check_name;
 use crate::wire::SpecFile;
 pub use constraints::{ClosureNode, RollingNode};
-pub use pfd::{ActionNode, LinkNode, Side, TheoremNode, Unknowns, unknowns, with_signs};
+pub use pfd::{ActionNode, Contact, LinkNode, Side, TheoremNode, Unknowns, unknowns, with_signs};
 use pfd::{Known, actions, links, theorems};
 use std::collections::{BTreeMap, HashSet};
 

@@ -36,6 +36,19 @@ pub struct LinkNode<'a> {
     pub direction: Option<usize>,
     /// The coordinate its spring measures (index in `coordinates`).
     pub spring: Option<usize>,
+    /// Coulomb's law on its unknowns (`contact_friction`): the axes of its sliding direction
+    /// and of its normal in the basis of its axis.
+    pub contact: Option<Contact>,
+}
+
+/// The directions of Coulomb's law on a link's unknowns, as axes 0, 1, 2 of the basis of the
+/// link's axis: a contact's normal is its axis, a slider's sliding direction is its axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Contact {
+    /// The sliding direction t, along which the tangential unknown T lies.
+    pub tangent: usize,
+    /// The normal n, along which the normal unknown N lies.
+    pub normal: usize,
 }
 
 impl LinkNode<'_> {
@@ -192,6 +205,7 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
                 find(known.coords, "coordinate", path, &s.coordinate)
             })
             .transpose()?;
+        let contact = contact(known, &path, l, axis)?;
         out.push(LinkNode {
             name: &l.name,
             from,
@@ -200,9 +214,93 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
             axis,
             direction,
             spring,
+            contact,
         });
     }
     Ok(out)
+}
+
+/// The directions of Coulomb's law on a link's unknowns: a contact (point, plane, line) names
+/// its sliding direction, another basis vector of its normal's basis; a slider names its
+/// normal, another basis vector of its axis' basis. Refused on any other link, beside dry
+/// friction given by its magnitude, or with a direction that is not such a vector.
+fn contact(
+    known: &Known,
+    path: &str,
+    l: &LinkSpec,
+    axis: (usize, usize),
+) -> Result<Option<Contact>, Refusal> {
+    let Some(c) = &l.contact_friction else {
+        return Ok(None);
+    };
+    let path = format!("{path}.contact_friction");
+    if !matches!(
+        l.kind,
+        LinkKind::Point | LinkKind::Plane | LinkKind::Line | LinkKind::Slider
+    ) {
+        let why = format!(
+            "a {} transmits no tangential force tied to a normal one: Coulomb's law on a \
+             link's unknowns is declared on a contact (point, plane, line) or a slider",
+            l.kind.course_name()
+        );
+        return Err(at(path, why));
+    }
+    if l.coulomb.is_some() {
+        let why = "the link already has dry friction given by its magnitude (`coulomb`): \
+                   declare one or the other";
+        return Err(at(path, why));
+    }
+    let slider = l.kind == LinkKind::Slider;
+    let (wanted, other) = if slider {
+        ("normal", "tangent")
+    } else {
+        ("tangent", "normal")
+    };
+    let given = if slider { &c.normal } else { &c.tangent };
+    let stray = if slider { &c.tangent } else { &c.normal };
+    if stray.is_some() {
+        let why = if slider {
+            "a slider slides along its axis: give its `normal` only"
+        } else {
+            "a contact's normal is its axis: give its sliding direction `tangent` only"
+        };
+        return Err(at(format!("{path}.{other}"), why));
+    }
+    let Some(text) = given else {
+        let why = if slider {
+            "a slider with Coulomb's law needs its `normal`, the direction of the normal \
+             unknown N: another basis vector of its axis' basis"
+        } else {
+            "a contact with Coulomb's law needs its sliding direction `tangent`, another basis \
+             vector of its normal's basis"
+        };
+        return Err(at(path, why));
+    };
+    let field = format!("{path}.{wanted}");
+    let Some((f, k)) = known.basis_vector(text) else {
+        return Err(at(
+            field,
+            format!("`{text}` is not a basis vector such as x0"),
+        ));
+    };
+    if f != axis.0 || k == axis.1 {
+        let why = format!(
+            "`{text}` is not another basis vector of the basis of the link's axis `{}`",
+            l.axis.as_deref().unwrap_or_default()
+        );
+        return Err(at(field, why));
+    }
+    Ok(Some(if slider {
+        Contact {
+            tangent: axis.1,
+            normal: k,
+        }
+    } else {
+        Contact {
+            tangent: k,
+            normal: axis.1,
+        }
+    }))
 }
 
 /// A link's axis (or normal), which every kind but a ball and a fixed link needs, and a line
@@ -308,14 +406,15 @@ pub struct Unknowns {
 /// The PFD's unknowns, named and checked here: each an identifier, not a word of the syntax,
 /// not a basis vector, a parameter, a coordinate or an alias, and declared once. Which
 /// components a link transmits is the reader's own convention, `transmitted(kind, axis,
-/// direction)` (axes 0, 1, 2), which each side applies with its own code.
+/// direction, sliding)` (axes 0, 1, 2; `sliding` the direction of Coulomb's law's tangential
+/// unknown, which the link then transmits too), which each side applies with its own code.
 ///
 /// ```
 /// let text = std::fs::read_to_string("derivations/regulateur_centrifuge.json").unwrap();
 /// let spec = torseur::spec::parse_spec(&text).unwrap();
 /// let r = torseur::resolve::resolve(&spec).unwrap();
 /// // A reader for which every link transmits only its resultant's component along x.
-/// let x_only = |_, _, _| [true, false, false, false, false, false];
+/// let x_only = |_, _, _, _| [true, false, false, false, false, false];
 /// let unknowns = torseur::resolve::unknowns(&spec, &r, &x_only).unwrap();
 /// assert_eq!(unknowns.names[0], "X01");
 /// assert_eq!(unknowns.links[0], [(0, 0)]);
@@ -323,7 +422,7 @@ pub struct Unknowns {
 pub fn unknowns(
     spec: &SpecFile,
     r: &Resolved,
-    transmitted: &dyn Fn(LinkKind, usize, Option<usize>) -> [bool; 6],
+    transmitted: &dyn Fn(LinkKind, usize, Option<usize>, Option<usize>) -> [bool; 6],
 ) -> Result<Unknowns, Refusal> {
     let mut out = Unknowns::default();
     let add = |path: String, n: String, names: &mut Vec<String>| -> Result<usize, Refusal> {
@@ -343,18 +442,36 @@ pub fn unknowns(
         Err(at(path, why))
     };
     for ((i, l), node) in spec.links.iter().enumerate().zip(&r.links) {
-        let t = transmitted(l.kind, node.axis.1, node.direction);
+        let sliding = node.contact.map(|c| c.tangent);
+        let t = transmitted(l.kind, node.axis.1, node.direction, sliding);
         // A link named by its centre (`A`) gives X_A, as the course writes it; `01` gives X01.
         let sep = if l.name.starts_with(|c: char| c.is_ascii_alphabetic()) {
             "_"
         } else {
             ""
         };
+        // Coulomb's law names its T and N as the statement does (T_A, N_A), if it names them.
+        let named = node
+            .contact
+            .zip((l.contact_friction.as_ref()).and_then(|c| c.unknowns.as_ref()));
         let mut components = Vec::new();
         for (k, letter) in ["X", "Y", "Z", "L", "M", "N"].iter().enumerate() {
             if t[k] {
-                let n = format!("{letter}{sep}{}", l.name);
-                components.push((k, add(format!("links[{i}].name"), n, &mut out.names)?));
+                let (n, path) = match named {
+                    Some((c, u)) if k == c.tangent => (
+                        u.tangential.clone(),
+                        format!("links[{i}].contact_friction.unknowns.T"),
+                    ),
+                    Some((c, u)) if k == c.normal => (
+                        u.normal.clone(),
+                        format!("links[{i}].contact_friction.unknowns.N"),
+                    ),
+                    _ => (
+                        format!("{letter}{sep}{}", l.name),
+                        format!("links[{i}].name"),
+                    ),
+                };
+                components.push((k, add(path, n, &mut out.names)?));
             }
         }
         out.links.push(components);
@@ -381,7 +498,7 @@ pub fn unknowns(
 /// assert_eq!(signed.parameters.len(), spec.parameters.len() + 1);
 /// ```
 pub fn with_signs(spec: &SpecFile) -> Result<Cow<'_, SpecFile>, Refusal> {
-    if spec.links.iter().all(|l| l.coulomb.is_none()) {
+    if spec.links.iter().all(|l| l.sign_parameter().is_none()) {
         return Ok(Cow::Borrowed(spec));
     }
     let mut out = spec.clone();
@@ -398,7 +515,12 @@ pub fn with_signs(spec: &SpecFile) -> Result<Cow<'_, SpecFile>, Refusal> {
                 "`{name}` is the sign of this link's relative rate under dry friction: give the \
                  parameter of that name another name"
             );
-            return Err(at(format!("links[{i}].coulomb"), why));
+            let field = if l.coulomb.is_some() {
+                "coulomb"
+            } else {
+                "contact_friction"
+            };
+            return Err(at(format!("links[{i}].{field}"), why));
         }
         check_identifier(&name).map_err(|m| {
             let why = format!("the sign of its relative rate under dry friction is named {m}");

@@ -83,6 +83,8 @@ const STICK_TIME: f64 = 1e-3;
 pub(super) struct Dry {
     var: usize,
     motion: Compiled,
+    /// Whether the relative acceleration is affine in the sign (a given magnitude).
+    affine: bool,
 }
 
 impl Plan {
@@ -197,22 +199,8 @@ impl Plan {
             }
         }
         for k in sticking {
-            let mut relative = [0.0; 2];
-            for (eps, r) in [0.0, 1.0].into_iter().zip(relative.iter_mut()) {
-                point[self.dry[k].var] = eps;
-                self.accelerations(m, t, y, &mut point, &mut out)?;
-                self.dry[k].motion.evaluate(&point, &mut motion);
-                *r = motion[1];
-            }
-            // The friction that brings the residual rate r to 0 in STICK_TIME: a(ε) = −r/τ.
-            self.dry[k].motion.evaluate(&point, &mut motion);
-            let target = -motion[0] / STICK_TIME;
-            let slope = relative[0] - relative[1];
-            point[self.dry[k].var] = if slope == 0.0 {
-                0.0
-            } else {
-                ((relative[0] - target) / slope).clamp(-1.0, 1.0)
-            };
+            let eps = self.holding(m, (t, y), k, &mut point, &mut out)?;
+            point[self.dry[k].var] = eps;
         }
         let acc = self.accelerations(m, t, y, &mut point, &mut out)?;
         let mut driven_rates = vec![0.0; self.driven_rates.outputs()];
@@ -237,6 +225,65 @@ impl Plan {
             recorded,
             driven_rates,
         })
+    }
+
+    /// The sign ε ∈ [−1, 1] of the stuck link `k` (Karnopp): the friction that brings its
+    /// residual relative rate r to 0 in STICK_TIME, a(ε) = −r/τ, as far as |ε| ≤ 1 allows.
+    /// a(ε) is affine when the friction's magnitude is given; when it is f N with N an unknown
+    /// that the friction changes, it is not: secant steps from the affine guess then reach it.
+    fn holding(
+        &mut self,
+        m: &Mechanism,
+        ty: (f64, &[f64]),
+        k: usize,
+        point: &mut [f64],
+        out: &mut [f64],
+    ) -> Result<f64, String> {
+        let r0 = self.relative(m, ty, k, 0.0, point, out)?;
+        let (mut e1, mut r1) = (1.0, self.relative(m, ty, k, 1.0, point, out)?);
+        let mut motion = [0.0; 2];
+        self.dry[k].motion.evaluate(point, &mut motion);
+        let target = -motion[0] / STICK_TIME;
+        if r0 == r1 {
+            return Ok(0.0);
+        }
+        let mut eps = ((r0 - target) / (r0 - r1)).clamp(-1.0, 1.0);
+        if self.dry[k].affine {
+            return Ok(eps);
+        }
+        let scale = r0.abs().max(r1.abs()).max(target.abs());
+        for _ in 0..12 {
+            let r = self.relative(m, ty, k, eps, point, out)?;
+            if (r - target).abs() <= 1e-12 * scale || r == r1 {
+                break;
+            }
+            // The secant through the last two points (ε, a(ε)).
+            let (e0, a0) = (e1, r1);
+            (e1, r1) = (eps, r);
+            let next = (e1 - (r1 - target) * (e1 - e0) / (r1 - a0)).clamp(-1.0, 1.0);
+            if next == e1 {
+                break;
+            }
+            eps = next;
+        }
+        Ok(eps)
+    }
+
+    /// The relative acceleration of the dry link `k` when its sign is `eps`.
+    fn relative(
+        &mut self,
+        m: &Mechanism,
+        (t, y): (f64, &[f64]),
+        k: usize,
+        eps: f64,
+        point: &mut [f64],
+        out: &mut [f64],
+    ) -> Result<f64, String> {
+        point[self.dry[k].var] = eps;
+        self.accelerations(m, t, y, point, out)?;
+        let mut motion = [0.0; 2];
+        self.dry[k].motion.evaluate(point, &mut motion);
+        Ok(motion[1])
     }
 
     /// Solves M q̈ + h = 0 at `point` for the free accelerations and writes them in it.
@@ -582,6 +629,7 @@ fn dry_links(m: &Mechanism) -> Result<Vec<Dry>, String> {
         dry.push(Dry {
             var: var.index(),
             motion,
+            affine: crate::pfd::unknowns_in(m, &d.magnitude).is_empty(),
         });
     }
     Ok(dry)

@@ -30,7 +30,7 @@ fn vector(m: &Mechanism, path: &str, text: &str) -> Result<(Vector, FrameId), Sp
     Ok((v, basis.unwrap_or(m.frames.ground())))
 }
 
-fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecError> {
+pub(super) fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecError> {
     let e = reg.parse(text).map_err(|e| expr_err(path, e))?;
     if !e.is_time_independent() {
         return Err(at(path, "a constant is expected (parameters only)"));
@@ -38,7 +38,7 @@ fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecErro
     Ok(e)
 }
 
-fn frame_of_side(m: &Mechanism, s: &Source) -> FrameId {
+pub(super) fn frame_of_side(m: &Mechanism, s: &Source) -> FrameId {
     match s {
         Source::Body(b) => m.body(*b).frame,
         Source::Outside => m.frames.ground(),
@@ -46,7 +46,7 @@ fn frame_of_side(m: &Mechanism, s: &Source) -> FrameId {
 }
 
 /// The side of a link or an action, as resolved.
-fn source(s: Side) -> Source {
+pub(super) fn source(s: Side) -> Source {
     match s {
         Side::Ground => Source::Outside,
         Side::Solid(b) => Source::Body(BodyId(b)),
@@ -68,6 +68,17 @@ pub(super) fn build(
         // Its unknowns: the components this side's own transmissibility gave, as named.
         let comps = (unknowns.links[i].iter()).map(|&(k, u)| (k, unknowns.names[u].as_str()));
         let action = link(m, (&spec.links[i], &path), node, comps, &mut d.dry)?;
+        if let Some(c) = node.contact {
+            let law = super::coulomb::law(m, (spec, i), node, c, &unknowns.links[i], unknowns)?;
+            d.dry.push(DryFriction {
+                sign: spec.links[i]
+                    .sign_parameter()
+                    .expect("a link with friction"),
+                rate: law.rate.clone(),
+                magnitude: &law.coefficient * &law.values[1],
+            });
+            d.laws.push(law);
+        }
         d.actions.push(action);
     }
     for (i, node) in resolved.actions.iter().enumerate() {
@@ -149,6 +160,9 @@ fn link<'u>(
         let (push, friction) = coulomb(m, (l, path), c, rate())?;
         along(u.scale(&push).neg());
         dry.push(friction);
+        description.push_str(", avec frottement sec");
+    }
+    if l.contact_friction.is_some() {
         description.push_str(", avec frottement sec");
     }
     let spring = match &l.spring {

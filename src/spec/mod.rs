@@ -2,6 +2,7 @@
 
 mod builder;
 mod closures;
+mod coulomb;
 mod dynamics;
 mod hypotheses;
 mod locate;

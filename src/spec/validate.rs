@@ -60,8 +60,9 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     // Names, trees and references, and the PFD's unknowns named from this side's own reading
     // of which components each link transmits: resolved once for both sides.
     let resolved = crate::resolve::resolve(spec).map_err(refused)?;
-    let transmitted = |kind, a: usize, d: Option<usize>| {
-        crate::pfd::transmitted(kind, Axis::ALL[a], d.map(|d| Axis::ALL[d]))
+    let transmitted = |kind, a: usize, d: Option<usize>, s: Option<usize>| {
+        let axis = |k: usize| Axis::ALL[k];
+        crate::pfd::transmitted(kind, axis(a), d.map(axis), s.map(axis))
     };
     let unknowns = crate::resolve::unknowns(spec, &resolved, &transmitted).map_err(refused)?;
     let shared = (&resolved, &unknowns);
@@ -564,6 +565,7 @@ fn hypotheses(
             let sp = format!("{path}.symmetric_solids[{k}]");
             symmetric_solid(reg, &bodies[b], &sp, &mut subs, &mut effects)?;
         }
+        super::coulomb::signs(spec, reg, h, &path)?;
         super::hypotheses::motions(reg, h, &path, &mut subs, &mut effects)?;
         let first_order = super::hypotheses::small_parameters(reg, h, &path)?;
         let subs = super::hypotheses::with_inverses(reg, subs, &first_order, &path)?;

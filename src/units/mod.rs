@@ -597,6 +597,7 @@ pub fn check_derivation(
                 ExpectedDimension::Components(Some(Dimension::MOMENT))
             }
             StepKind::Action { .. } => torsor(Dimension::FORCE, Dimension::MOMENT),
+            StepKind::Coulomb { .. } => ExpectedDimension::Components(Some(Dimension::FORCE)),
             StepKind::Powers { .. } => ExpectedDimension::Components(Some(Dimension::POWER)),
             StepKind::External { point, .. } => {
                 ExpectedDimension::Components(Some(if point.is_some() {

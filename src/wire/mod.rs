@@ -4,7 +4,9 @@ use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
+mod coulomb;
 mod texts;
+pub use coulomb::{ContactFrictionSpec, ContactUnknowns};
 pub(crate) use texts::free_texts;
 
 /// A whole problem as written in `derivations/*.json`.
@@ -197,6 +199,15 @@ pub struct LinkSpec {
     /// stays below C).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coulomb: Option<String>,
+    /// Coulomb's law on the link's own unknowns, for a contact (point, plane, line) or a
+    /// slider: the link also transmits the tangential component T along the sliding
+    /// direction, tied to its normal unknown N by T = −f N ε while it slides, ε the sign of
+    /// the sliding velocity V(P ∈ second/first)·t, a parameter named by
+    /// [`LinkSpec::sign_parameter`] (`epsilonA`) of value ±1, as for `coulomb`. A hypothesis
+    /// that sets ε (`"relations": {"epsilonA": "1"}`), with an equilibrium, states the limit
+    /// of sliding, the impending motion's sign given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_friction: Option<ContactFrictionSpec>,
     /// Torsion (pivot) or linear (slider) spring: -k (q - q0) along the axis.
     #[serde(default)]
     pub spring: Option<SpringSpec>,
@@ -236,9 +247,8 @@ impl LinkSpec {
     /// assert_eq!(link.sign_parameter().as_deref(), Some("epsilon01"));
     /// ```
     pub fn sign_parameter(&self) -> Option<String> {
-        self.coulomb
-            .as_ref()
-            .map(|_| format!("epsilon{}", self.name))
+        (self.coulomb.is_some() || self.contact_friction.is_some())
+            .then(|| format!("epsilon{}", self.name))
     }
 }
 

@@ -124,3 +124,41 @@ fn simulate_refuses_a_rate_law_that_divides_by_zero_at_its_start_naming_its_path
     );
     assert!(!csv.exists());
 }
+
+#[test]
+fn a_coulomb_law_on_a_link_without_a_contact_exits_2_naming_its_path() {
+    // The ladder's floor contact turned into a ball joint, which transmits no tangential force
+    // tied to a normal one: refused by derive, check and answer-key alike.
+    let d = tmp();
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("derivations/echelle_frottement.json"),
+    )
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["links"][0]["kind"] = "ball".into();
+    let p = d.path().join("spec.json");
+    std::fs::write(&p, v.to_string()).unwrap();
+    let tex = d.path().join("k.tex");
+    let p = p.to_str().unwrap();
+    for args in [
+        vec!["derive", p, "-q", "N_A"],
+        vec!["check", p],
+        vec!["answer-key", p, "-o", tex.to_str().unwrap()],
+    ] {
+        let line = refused(&run(&args));
+        assert!(
+            line.starts_with("torseur: error: at links[0].contact_friction (line "),
+            "{args:?}: {line}"
+        );
+        assert!(
+            line.ends_with(
+                "a liaison sphérique (rotule) transmits no tangential force tied to a normal \
+                 one: Coulomb's law on a link's unknowns is declared on a contact (point, plane, \
+                 line) or a slider"
+            ),
+            "{args:?}: {line}"
+        );
+    }
+    assert!(!tex.exists());
+}

@@ -12,6 +12,7 @@ mod check;
 mod closures;
 mod compiled;
 mod corpus;
+mod coulomb;
 mod derivation;
 mod derivative;
 mod energy;

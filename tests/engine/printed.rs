@@ -829,6 +829,29 @@ fn every_printed_formula_is_the_engines_value() {
                     let zero = ctx.scalar(&t[ne + 1..]).map(|z| z.is_zero());
                     ctx.scalar(&t[..ne]).map(|g| &g == e && zero == Ok(true))
                 }
+                // A condition |a| ≤ |b| (Coulomb's |T| ≤ f |N|), recorded as a² − b² (≤ 0),
+                // the same condition: each |…| is read as (…) and both sides squared.
+                Value::Scalar(e) if t.contains(&Tok::Cmd("leq".into())) => {
+                    let le = t.iter().position(|x| *x == Tok::Cmd("leq".into())).unwrap();
+                    let bars = |s: &[Tok]| -> Vec<Tok> {
+                        let mut out = s.to_vec();
+                        for k in 1..out.len() {
+                            if out[k] == Tok::Sym('|') {
+                                out[k] = match &out[k - 1] {
+                                    Tok::Cmd(c) if c == "left" => Tok::Sym('('),
+                                    Tok::Cmd(c) if c == "right" => Tok::Sym(')'),
+                                    _ => Tok::Sym('|'),
+                                };
+                            }
+                        }
+                        out
+                    };
+                    let sides = (ctx.scalar(&bars(&t[..le])), ctx.scalar(&bars(&t[le + 1..])));
+                    match sides {
+                        (Ok(a), Ok(b)) => Ok(&(&(&a * &a) - &(&b * &b)) == e),
+                        (Err(x), _) | (_, Err(x)) => Err(x),
+                    }
+                }
                 Value::Scalar(e) => {
                     let rhs = match t.iter().position(|x| *x == Tok::Sym('=')) {
                         Some(eq) => &t[eq + 1..],

@@ -389,6 +389,16 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         }
         // The gear train's tooth force.
         "T" | "N" => one(d(1, 1, -2)),
+        // A contact's tangential and normal forces under Coulomb's law, as the spec names them.
+        u if m.spec().links.iter().any(|l| {
+            (l.contact_friction
+                .as_ref()
+                .and_then(|c| c.unknowns.as_ref()))
+            .is_some_and(|n| n.tangential == u || n.normal == u)
+        }) =>
+        {
+            one(d(1, 1, -2))
+        }
         u if u.starts_with('X') || u.starts_with('Y') || u.starts_with('Z') => one(d(1, 1, -2)),
         u if u.starts_with('L') || u.starts_with('M') || u.starts_with('N') => one(d(1, 2, -2)),
         // A motor's torque, the wheel's guide's couple.
@@ -397,7 +407,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 23] = [
+const LIBRARY: [&str; 24] = [
     "bielle_manivelle",
     "bille_tube_tournant",
     "bloc_frottement_sec",
@@ -405,6 +415,7 @@ const LIBRARY: [&str; 23] = [
     "cylindre_gouttiere",
     "disque_plan_incline",
     "double_pendule",
+    "echelle_frottement",
     "gyroscope_cardan",
     "masse_ressort_forcee",
     "pendule_arbre_tournant",

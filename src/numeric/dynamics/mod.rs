@@ -39,6 +39,7 @@ const APPEARS: f64 = 1e-9;
 const SINGULAR: f64 = 1e-10;
 
 mod solve;
+use solve::body_frame;
 pub(super) use solve::{action, eom, internal_power, power, set_signs, unknown};
 
 /// What exerts or receives an action: a solid, or a frame that is not a solid (the ground).
@@ -83,6 +84,23 @@ pub(super) struct LinkInfo {
     pub coulomb: Option<(Node, usize)>,
     /// Spring.
     pub spring: Option<SpringInfo>,
+    /// Coulomb's law on its own unknowns.
+    pub law: Option<LawInfo>,
+}
+
+/// Coulomb's law on a contact's unknowns, T + f ε N = 0 while it slides along `tangent`.
+#[derive(Debug, Clone)]
+pub(super) struct LawInfo {
+    /// The friction coefficient f.
+    pub coefficient: Node,
+    /// The index of the parameter ε, set at each sample to the sign of the sliding velocity.
+    pub sign: usize,
+    /// The indices of the unknowns T and N.
+    pub unknowns: [usize; 2],
+    /// The sliding direction: an axis 0..3 of the link's basis.
+    pub tangent: usize,
+    /// The normal: another axis of the link's basis.
+    pub normal: usize,
 }
 
 /// A given action {T(from→on)} at a point.
@@ -133,9 +151,24 @@ pub(super) struct Dynamics {
     unknown_index: BTreeMap<String, usize>,
 }
 
-/// Components a link transmits (0..3 resultant, 3..6 moment, in its basis), `a` the axis and
-/// `d` a line contact's direction.
-pub(super) fn transmitted(kind: LinkKind, a: usize, d: Option<usize>) -> [bool; 6] {
+/// Components a link transmits (0..3 resultant, 3..6 moment, in its basis), `a` the axis,
+/// `d` a line contact's direction, and `sliding` the direction of the tangential force that
+/// Coulomb's law ties to the normal one (a contact's or a slider's friction).
+pub(super) fn transmitted(
+    kind: LinkKind,
+    a: usize,
+    d: Option<usize>,
+    sliding: Option<usize>,
+) -> [bool; 6] {
+    let mut t = perfect(kind, a, d);
+    if let Some(k) = sliding {
+        t[k] = true;
+    }
+    t
+}
+
+/// Components a perfect link transmits (see [`transmitted`]).
+fn perfect(kind: LinkKind, a: usize, d: Option<usize>) -> [bool; 6] {
     let d = d.unwrap_or((a + 1) % 3);
     let mut t = [false; 6];
     let (b, c) = ((a + 1) % 3, (a + 2) % 3);
@@ -191,8 +224,12 @@ pub(super) fn build(
     };
     for (i, (l, node)) in spec.links.iter().zip(&trees.links).enumerate() {
         let path = format!("links[{i}]");
-        d.links
-            .push(link(m, (l, &path), node, unknowns.links[i].clone())?);
+        d.links.push(link(
+            (spec, m),
+            (l, &path),
+            node,
+            unknowns.links[i].clone(),
+        )?);
     }
     for (i, (a, node)) in spec.actions.iter().zip(&trees.actions).enumerate() {
         // Its own unknowns, the only ones its expressions may name.
@@ -251,7 +288,7 @@ fn gravity(spec: &SpecFile, m: &NumericModel) -> Result<Option<Node>, NumericErr
 /// unknowns' indices), its viscous friction, dry friction and spring read with this backend's
 /// parser.
 fn link(
-    m: &NumericModel,
+    (spec, m): (&SpecFile, &NumericModel),
     (l, path): (&LinkSpec, &str),
     node: &LinkNode,
     components: Vec<(usize, usize)>,
@@ -267,6 +304,10 @@ fn link(
         .transpose()?;
     let coulomb = match (&l.coulomb, l.sign_parameter()) {
         (Some(c), Some(sign)) => Some((constant(c, "coulomb")?, m.param_index[&sign])),
+        _ => None,
+    };
+    let law = match (&l.contact_friction, node.contact) {
+        (Some(_), Some(contact)) => Some(law((spec, m), (l, path), contact, &components)?),
         _ => None,
     };
     let spring = match &l.spring {
@@ -294,6 +335,67 @@ fn link(
         friction,
         coulomb,
         spring,
+        law,
+    })
+}
+
+/// Coulomb's law of a contact, read with this backend's parser: the coefficient a constant of
+/// pure numbers (each parameter an angle, of unit `1` or `rad`, or of no unit given), not a
+/// negative number; T and N the unknowns of the components along the sliding direction and
+/// the normal.
+fn law(
+    (spec, m): (&SpecFile, &NumericModel),
+    (l, path): (&LinkSpec, &str),
+    contact: crate::resolve::Contact,
+    components: &[(usize, usize)],
+) -> Result<LawInfo, NumericError> {
+    let c = l
+        .contact_friction
+        .as_ref()
+        .expect("a link with Coulomb's law");
+    let field = format!("{path}.contact_friction.coefficient");
+    let coefficient =
+        (m.names().parse(&c.coefficient, Context::Constant)).map_err(|e| spec_err(&field, e))?;
+    let mut used = BTreeSet::new();
+    expr::params_in(&coefficient, &mut used);
+    for p in &used {
+        let name = &m.params[*p].name;
+        let Some(given) = spec.parameters.iter().find(|q| &q.name == name) else {
+            continue;
+        };
+        let pure = given.kind == crate::wire::ParameterKind::Angle
+            || given
+                .unit
+                .as_deref()
+                .is_none_or(|u| matches!(u.trim(), "1" | "rad"));
+        if !pure {
+            let why = format!("a friction coefficient is a pure number: `{name}` has a unit");
+            return Err(spec_err(field, why));
+        }
+    }
+    if used.is_empty() {
+        let env = Env {
+            params: &[],
+            coords: &[],
+            rates: &[],
+            frames: &[],
+            time: 0.0,
+        };
+        if expr::eval_scalar(&coefficient, &env).is_ok_and(|f: f64| f < 0.0) {
+            return Err(spec_err(field, "a friction coefficient is not negative"));
+        }
+    }
+    let unknown = |axis: usize| {
+        let found = components.iter().find(|(k, _)| *k == axis);
+        found.map(|(_, u)| *u).expect("the link transmits T and N")
+    };
+    let sign = l.sign_parameter().expect("a link with friction");
+    Ok(LawInfo {
+        coefficient,
+        sign: m.param_index[&sign],
+        unknowns: [unknown(contact.tangent), unknown(contact.normal)],
+        tangent: contact.tangent,
+        normal: contact.normal,
     })
 }
 
@@ -338,4 +440,36 @@ fn given(
         moment,
         unknowns: used.into_iter().collect(),
     })
+}
+
+/// Each contact under Coulomb's law slides along its tangent at one of the states `vals` at
+/// least, and never across it (along the normal's and the tangent's third axis): its sliding
+/// velocity V(P,2/1), from this backend's kinematics, refused at the link's place otherwise.
+pub(in crate::numeric) fn check_sliding(
+    m: &NumericModel,
+    vals: &[Values],
+) -> Result<(), NumericError> {
+    for (i, l) in m.dynamics.links.iter().enumerate() {
+        let Some(law) = &l.law else { continue };
+        let [fa, fb] = l.between.map(|b| body_frame(m, b));
+        let (mut along, mut across, mut size) = (0.0_f64, 0.0_f64, 0.0_f64);
+        for v in vals {
+            let st = kin::state(m, v)?;
+            let rb = st.rot0(l.basis);
+            let w = kin::point_motion(&st, l.point, fb, fa)[0];
+            along = along.max(w.dot(&rb.column(law.tangent)).abs());
+            across = across.max(w.dot(&rb.column(3 - law.tangent - law.normal)).abs());
+            size = size.max(w.norm());
+        }
+        let path = format!("links[{i}].contact_friction");
+        if along <= 1e-9 * size.max(1.0) {
+            let why = "the sliding velocity along the tangent is zero: nothing slides";
+            return Err(spec_err(path, why));
+        }
+        if across > 1e-9 * size.max(1.0) {
+            let why = "the sliding velocity has a component across the tangent";
+            return Err(spec_err(path, why));
+        }
+    }
+    Ok(())
 }

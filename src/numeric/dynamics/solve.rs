@@ -87,7 +87,7 @@ fn eval_err(what: String) -> impl Fn(String) -> NumericError {
     }
 }
 
-fn body_frame(m: &NumericModel, b: Body) -> usize {
+pub(super) fn body_frame(m: &NumericModel, b: Body) -> usize {
     match b {
         Body::Solid(s) => m.solids[s].frame,
         Body::Frame(f) => f,
@@ -95,30 +95,36 @@ fn body_frame(m: &NumericModel, b: Body) -> usize {
 }
 
 /// Sets the sign parameter ε of every link with dry friction to the sign of its relative
-/// rate at the sample: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider (0 at rest); a sign
-/// that `fixed` says is set otherwise (by a hypothesis) is kept.
+/// rate at the sample: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider, V(P,2/1)·t for a
+/// contact under Coulomb's law sliding along t (0 at rest); a sign that `fixed` says is set
+/// otherwise (by a hypothesis: the impending motion's sign at the limit of sliding) is kept.
 pub(in crate::numeric) fn set_signs(
     m: &NumericModel,
     vals: &mut Values,
     fixed: &dyn Fn(usize) -> bool,
 ) -> Result<(), NumericError> {
-    if m.dynamics.links.iter().all(|l| l.coulomb.is_none()) {
+    let dry = |l: &LinkInfo| l.coulomb.is_some() || l.law.is_some();
+    if !m.dynamics.links.iter().any(dry) {
         return Ok(());
     }
     let st = kin::state(m, vals)?;
     for l in &m.dynamics.links {
-        let Some((_, eps)) = &l.coulomb else { continue };
-        if fixed(*eps) {
+        let (eps, axis, slides) = match (&l.coulomb, &l.law) {
+            (Some((_, eps)), _) => (*eps, l.axis, l.kind == LinkKind::Slider),
+            (None, Some(law)) => (law.sign, law.tangent, true),
+            (None, None) => continue,
+        };
+        if fixed(eps) {
             continue;
         }
         let [fa, fb] = l.between.map(|b| body_frame(m, b));
-        let u = st.rot0(l.basis).column(l.axis).into_owned();
-        let rate = if l.kind == LinkKind::Slider {
+        let u = st.rot0(l.basis).column(axis).into_owned();
+        let rate = if slides {
             kin::point_motion(&st, l.point, fb, fa)[0].dot(&u)
         } else {
             kin::omega(&st, fb, fa).dot(&u)
         };
-        vals.params[*eps] = if rate == 0.0 { 0.0 } else { rate.signum() };
+        vals.params[eps] = if rate == 0.0 { 0.0 } else { rate.signum() };
     }
     Ok(())
 }
@@ -562,8 +568,17 @@ fn solve(
         }
         residuals.push(r);
     }
-    let rows: Vec<usize> = (0..dy.theorems.len())
-        .filter(|i| dy.theorems[*i].eom.is_none())
+    // Coulomb's laws, T + f ε N = 0, after the theorems: equations of the system too.
+    for l in &dy.links {
+        let Some(law) = &l.law else { continue };
+        let f = constant(&law.coefficient, vals, || "a friction coefficient".into())?;
+        let mut r = Lin::constant(0.0, 0.0, n);
+        r.a[law.unknowns[0]] = 1.0;
+        r.a[law.unknowns[1]] = f * vals.params[law.sign];
+        residuals.push(r);
+    }
+    let rows: Vec<usize> = (0..residuals.len())
+        .filter(|i| dy.theorems.get(*i).is_none_or(|t| t.eom.is_none()))
         .collect();
     let cols: Vec<usize> = (0..n)
         .filter(|k| rows.iter().any(|i| residuals[*i].a[*k] != 0.0))
