@@ -263,10 +263,7 @@ fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
 fn word(path: &str, n: &str) -> Result<(), Refusal> {
     check_identifier(n).map_err(|m| at(path, m))?;
     if RESERVED.contains(&n) {
-        return Err(at(
-            path,
-            format!("`{n}` is reserved by the expression syntax"),
-        ));
+        return Err(at(path, crate::expr::reserved_word(n)));
     }
     Ok(())
 }

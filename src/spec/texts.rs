@@ -66,8 +66,9 @@ pub(super) fn free_text_limit(path: &str) -> (usize, &'static str) {
 
 pub(crate) use crate::wire::free_texts;
 
-/// The parameters the spec divides by (`l0 - m*g*sin(beta)/k`, a rate `V/R`), in every
-/// expression it gives: the texts of [`expression_texts`], the aliases and the hypotheses.
+/// The parameters the spec divides by (`l0 - m*g*sin(beta)/k`, a rate `V/R`), and π
+/// (`P0/(2*pi*N)`), in every expression it gives: the texts of [`expression_texts`], the
+/// aliases and the hypotheses.
 /// A divisor that is an alias brings the parameters of its value, and a hypothesis relation
 /// that sets a divisor brings those of the value it gives (k = k2 divides by k2 too).
 pub(super) fn divisors(spec: &SpecFile, params: &[String]) -> Vec<String> {
@@ -107,7 +108,7 @@ pub(super) fn divisors(spec: &SpecFile, params: &[String]) -> Vec<String> {
     }
     let mut out: Vec<String> = Vec::new();
     for n in found {
-        if params.contains(&n) && !out.contains(&n) {
+        if (params.contains(&n) || n == crate::expr::PI) && !out.contains(&n) {
             out.push(n);
         }
     }
