@@ -11,6 +11,7 @@ mod document;
 mod expr;
 mod fault;
 mod figures;
+mod helical;
 mod hypotheses;
 mod loop_law;
 mod method;
