@@ -10,7 +10,7 @@ use nalgebra::{Matrix3, Vector3};
 use std::collections::BTreeMap;
 
 /// The value of a node whose names are parameters (and coordinates, at `coords`).
-fn at(node: &Node, params: &[f64], coords: &[f64]) -> Result<f64, String> {
+pub(super) fn at(node: &Node, params: &[f64], coords: &[f64]) -> Result<f64, String> {
     let env = expr::Env::<f64> {
         params,
         coords,

@@ -1,5 +1,5 @@
 //! Motion through the frame chain with dual numbers: positions, velocities and accelerations
-//! of points, and Ω, in every frame (the quantities are evaluated in [`super::quantities`]).
+//! of points, and Ω, in every frame (the quantities are evaluated from them in `quantities.rs`).
 
 use super::expr::{self, Env};
 use super::la::{mat_parts, parts};

@@ -12,13 +12,6 @@ use std::collections::{BTreeMap, BTreeSet};
 /// Base points of a random cloud, before symmetry operations.
 const CLOUD_POINTS: usize = 6;
 
-/// An entry of an inertia matrix as written: a number, or ± a parameter.
-#[derive(Debug, Clone, Copy)]
-enum Entry {
-    Number(f64),
-    Param(usize, f64),
-}
-
 /// `P` or `-P`: the parameter and the sign.
 fn bare_param(node: &Node) -> Option<(usize, f64)> {
     match node {
@@ -189,34 +182,84 @@ fn random_cloud(rng: &mut impl Rng, mass: f64) -> Vec<(f64, Vector3<f64>)> {
     pts
 }
 
-/// Matches a cloud's matrix against the written entries: parameter values, or `None` when a
-/// number or a repeated parameter does not fit.
-fn fit(pattern: &[[Entry; 3]; 3], mat: &Matrix3<f64>) -> Option<BTreeMap<usize, f64>> {
+/// Matches a cloud's matrix against the written entries: the values of the parameters read
+/// off the body (`cloud`), or `None` when an entry does not fit. An entry holding one such
+/// parameter not yet known is solved for it, linearly (`A2 + m*l^2`, `-E2`, `J - m*a^2`
+/// through an alias); one holding none must equal the cloud's; one holding several waits for
+/// the others to fix all but one.
+fn fit(
+    entries: &[[Node; 3]; 3],
+    cloud: &BTreeSet<usize>,
+    params: &[f64],
+    mat: &Matrix3<f64>,
+) -> Option<BTreeMap<usize, f64>> {
     let size = mat.amax();
     let tol = 1e-9 * size.max(f64::MIN_POSITIVE);
+    let mut scratch = params.to_vec();
     let mut out: BTreeMap<usize, f64> = BTreeMap::new();
-    for r in 0..3 {
-        for c in 0..3 {
-            match pattern[r][c] {
-                Entry::Number(x) => {
-                    if (mat[(r, c)] - x).abs() > tol {
+    let mut pending: Vec<(usize, usize)> =
+        (0..3).flat_map(|r| (0..3).map(move |c| (r, c))).collect();
+    while !pending.is_empty() {
+        let before = pending.len();
+        let mut left = Vec::new();
+        for (r, c) in pending {
+            let node = &entries[r][c];
+            let mut used = BTreeSet::new();
+            expr::params_in(node, &mut used);
+            let unknown: Vec<usize> = used
+                .into_iter()
+                .filter(|p| cloud.contains(p) && !out.contains_key(p))
+                .collect();
+            let target = mat[(r, c)];
+            match unknown.as_slice() {
+                [] => {
+                    let v = value(node, &scratch)?;
+                    if (v - target).abs() > tol {
                         return None;
                     }
                 }
-                Entry::Param(p, sign) => {
-                    let v = sign * mat[(r, c)];
-                    if let Some(old) = out.get(&p) {
-                        if (old - v).abs() > tol {
-                            return None;
-                        }
-                    } else {
-                        out.insert(p, v);
-                    }
+                [p] => {
+                    let v = solve_linear(node, *p, &mut scratch, target, size)?;
+                    scratch[*p] = v;
+                    out.insert(*p, v);
                 }
+                _ => left.push((r, c)),
             }
         }
+        if left.len() == before {
+            return None;
+        }
+        pending = left;
     }
     Some(out)
+}
+
+/// The value of a constant node at `params`, `None` if it has none.
+fn value(node: &Node, params: &[f64]) -> Option<f64> {
+    super::checks::at(node, params, &[])
+        .ok()
+        .filter(|v| v.is_finite())
+}
+
+/// The value of parameter `p` that makes `node` equal `target`, when `node` is affine in `p`
+/// (read at p = 0, 1, 2; `None` if it is not, or does not depend on it).
+fn solve_linear(node: &Node, p: usize, params: &mut [f64], target: f64, size: f64) -> Option<f64> {
+    let mut at = |x: f64| {
+        params[p] = x;
+        value(node, params)
+    };
+    let (f0, f1, f2) = (at(0.0)?, at(1.0)?, at(2.0)?);
+    let slope = f1 - f0;
+    let scale = f0
+        .abs()
+        .max(f1.abs())
+        .max(f2.abs())
+        .max(size)
+        .max(f64::MIN_POSITIVE);
+    if slope.abs() <= 1e-12 * scale || (f2 - f0 - 2.0 * slope).abs() > 1e-9 * scale {
+        return None;
+    }
+    Some((target - f0) / slope)
 }
 
 fn fail(msg: String) -> NumericError {
@@ -277,13 +320,22 @@ pub(super) fn draw(
     // Coordinates a loop closure determines: moved onto the loop (after any rate a gear
     // drives, and the time, which the loop may read).
     super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
-    // Dry friction's signs, from the relative rates now drawn.
-    super::dynamics::set_signs(m, &mut vals)?;
+    // Dry friction's signs, from the relative rates now drawn, but for a sign the hypothesis
+    // sets (« the block slides down »: `epsilon02 = 1`), which the exact side reads as given.
+    let set_by_hypothesis = |p: usize| imposed.relations.iter().any(|(q, _)| *q == p);
+    super::dynamics::set_signs(m, &mut vals, &set_by_hypothesis)?;
 
     // Inertia parameters: the geometry does not depend on them, so place it once.
     let st = state(m, &vals)?;
     for s in 0..m.solids.len() {
-        fit_inertia(m, &st, rng, s, imposed.symmetric.contains(&s), &mut vals)?;
+        fit_inertia(
+            m,
+            &st,
+            rng,
+            (s, &from_cloud),
+            imposed.symmetric.contains(&s),
+            &mut vals,
+        )?;
     }
     // Every solid must now be realisable.
     for s in 0..m.solids.len() {
@@ -361,39 +413,51 @@ impl FirstUse {
     }
 }
 
-/// The parameters read off a random body, each with its solid: the inertia entries written
-/// `P` or `-P`. Such a parameter must appear nowhere else.
+/// The parameters read off a random body, each with its solid: those its inertia entries
+/// hold and nothing else does (no other solid, no mass, no position, no action...). An entry
+/// written `P` or `-P` must be one of them.
 fn cloud_parameters(m: &NumericModel) -> Result<BTreeMap<usize, usize>, NumericError> {
     let mut elsewhere = FirstUse::outside_solids(m);
-    let mut from_cloud: BTreeMap<usize, usize> = BTreeMap::new();
-    for (s, solid) in m.solids.iter().enumerate() {
+    for solid in &m.solids {
         elsewhere.note(&solid.mass, &|| format!("the mass of solid {}", solid.name));
+    }
+    // The solids whose inertia entries hold each parameter, and where, for the messages.
+    let mut holders: BTreeMap<usize, BTreeMap<usize, String>> = BTreeMap::new();
+    let mut bare: BTreeMap<usize, usize> = BTreeMap::new();
+    for (s, solid) in m.solids.iter().enumerate() {
         let Some(inr) = &solid.inertia else { continue };
         for r in 0..3 {
             for c in 0..3 {
-                match bare_param(&inr.matrix[r][c]) {
-                    Some((p, _)) => {
-                        if let Some(other) = from_cloud.insert(p, s)
-                            && other != s
-                        {
-                            return Err(fail(format!(
-                                "parameter `{}` is an inertia entry of solids {} and {}",
-                                m.params[p].name, m.solids[other].name, solid.name
-                            )));
-                        }
-                    }
-                    None => elsewhere.note(&inr.matrix[r][c], &|| {
+                let node = &inr.matrix[r][c];
+                let mut used = BTreeSet::new();
+                expr::params_in(node, &mut used);
+                for p in used {
+                    holders.entry(p).or_default().entry(s).or_insert_with(|| {
                         format!(
                             "the inertia entry [{r}][{c}] `{}` of solid {}",
                             inr.text[r][c], solid.name
                         )
-                    }),
+                    });
+                }
+                if let Some((p, _)) = bare_param(node)
+                    && let Some(other) = bare.insert(p, s)
+                    && other != s
+                {
+                    return Err(fail(format!(
+                        "parameter `{}` is an inertia entry of solids {} and {}",
+                        m.params[p].name, m.solids[other].name, solid.name
+                    )));
                 }
             }
         }
     }
-    for (p, s) in &from_cloud {
-        if let Some(place) = elsewhere.0.get(p) {
+    // A parameter written alone in an entry must be read off its body: used nowhere else.
+    for (p, s) in &bare {
+        let other_solid = holders[p]
+            .iter()
+            .find(|(t, _)| *t != s)
+            .map(|(_, w)| w.clone());
+        if let Some(place) = elsewhere.0.get(p).cloned().or(other_solid) {
             return Err(fail(format!(
                 "parameter `{}` is an inertia entry of solid {}, read off a random body, but \
                  it also appears in {place}",
@@ -401,7 +465,11 @@ fn cloud_parameters(m: &NumericModel) -> Result<BTreeMap<usize, usize>, NumericE
             )));
         }
     }
-    Ok(from_cloud)
+    Ok(holders
+        .into_iter()
+        .filter(|(p, solids)| solids.len() == 1 && !elsewhere.0.contains_key(p))
+        .map(|(p, solids)| (p, *solids.keys().next().unwrap_or(&0)))
+        .collect())
 }
 
 /// Random values of the parameters not read off a random body (0 for those).
@@ -519,36 +587,6 @@ fn drive_rates(m: &NumericModel, vals: &mut Values) -> Result<(), NumericError> 
     Ok(())
 }
 
-/// The inertia matrix of solid `s` as written: numbers at the drawn parameters, and the
-/// entries `P` or `-P`; `None` when it has no such entry.
-fn inertia_pattern(
-    solid: &SolidInfo,
-    inr: &InertiaInfo,
-    vals: &Values,
-) -> Result<Option<[[Entry; 3]; 3]>, NumericError> {
-    let mut pattern = [[Entry::Number(0.0); 3]; 3];
-    let mut free = false;
-    for (r, row) in pattern.iter_mut().enumerate() {
-        for (c, entry) in row.iter_mut().enumerate() {
-            *entry = match bare_param(&inr.matrix[r][c]) {
-                Some((p, sign)) => {
-                    free = true;
-                    Entry::Param(p, sign)
-                }
-                None => Entry::Number(
-                    expr::eval_scalar(&inr.matrix[r][c], &vals.constants()).map_err(|e| {
-                        fail(format!(
-                            "inertia entry [{r}][{c}] `{}` of solid {}: {e}",
-                            inr.text[r][c], solid.name
-                        ))
-                    })?,
-                ),
-            };
-        }
-    }
-    Ok(free.then_some(pattern))
-}
-
 /// The symmetry operations (bits over [`OPS`]) a solid's declared symmetries force.
 fn forced_ops(
     m: &NumericModel,
@@ -580,7 +618,7 @@ fn fit_inertia(
     m: &NumericModel,
     st: &State,
     rng: &mut impl Rng,
-    s: usize,
+    (s, from_cloud): (usize, &BTreeMap<usize, usize>),
     symmetric: bool,
     vals: &mut Values,
 ) -> Result<(), NumericError> {
@@ -597,10 +635,15 @@ fn fit_inertia(
             solid.name
         )));
     }
-    let Some(pattern) = inertia_pattern(solid, inr, vals)? else {
+    let cloud: BTreeSet<usize> = from_cloud
+        .iter()
+        .filter(|(_, t)| **t == s)
+        .map(|(p, _)| *p)
+        .collect();
+    if cloud.is_empty() {
         // Fully written in terms of other parameters: checked like any body.
         return Ok(());
-    };
+    }
     let forced = if symmetric {
         forced_ops(m, solid, inr)?
     } else {
@@ -609,8 +652,12 @@ fn fit_inertia(
     // QG in the inertia basis.
     let qg = st.rot0(inr.basis).transpose() * (st.pos0(solid.centre) - st.pos0(inr.point));
     let base = random_cloud(rng, mass);
+    // Flattened along all three axes, the body is its centre: every entry 0, which fits any
+    // linear relation between them and tests nothing. Never drawn.
+    let point = (6..9).fold(0usize, |acc, k| acc | 1 << k);
+    debug_assert!((6..9).all(|k| matches!(OPS[k], Op::Flatten(_))));
     let mut masks: Vec<usize> = (0..1usize << OPS.len())
-        .filter(|mk| mk & forced == forced)
+        .filter(|mk| mk & forced == forced && mk & point != point)
         .collect();
     masks.sort_by_key(|mk| {
         let c: u32 = (0..OPS.len())
@@ -620,13 +667,20 @@ fn fit_inertia(
         (c, *mk)
     });
     let found = masks.iter().find_map(|mk| {
-        let cloud = symmetrize(&base, *mk);
-        fit(&pattern, &cloud_inertia(&cloud, &qg))
+        let body = symmetrize(&base, *mk);
+        fit(
+            &inr.matrix,
+            &cloud,
+            &vals.params,
+            &cloud_inertia(&body, &qg),
+        )
     });
     let Some(assigned) = found else {
         return Err(fail(format!(
-            "no random body fits the inertia matrix {:?} of solid {} (numbers and repeated \
-             parameters must follow from mirror planes, axes of revolution or flatness)",
+            "no random body fits the inertia matrix {:?} of solid {} (an entry is a \
+             parameter of its own, or linear in one such as `A + m*a^2`; numbers and \
+             repeated parameters must follow from mirror planes, axes of revolution or \
+             flatness)",
             inr.text, solid.name
         )));
     };

@@ -454,12 +454,48 @@ fn sampling_follows_the_written_matrix() {
         let i = matrix(&m, "I(O0,disc) in B1", &s);
         close(&i.concat(), &[a, 0.0, 0.0, 0.0, a, 0.0, 0.0, 0.0, c], TOL);
     }
-    let bad = ROTOR.replace(r#"["0","A","0"]"#, r#"["0","2*A","0"]"#);
+    // B = 2 A is a flat body of revolution about y (a disc in the plane (x, z): A = C = Σ x²,
+    // B = 2 Σ x²): read off such a cloud.
+    let flat = ROTOR.replace(r#"["0","A","0"]"#, r#"["0","2*A","0"]"#);
+    let m = model(&flat);
+    let s = m
+        .sample(&mut ChaCha8Rng::seed_from_u64(0))
+        .expect("a flat disc");
+    let (a, c) = (s.parameters["A"], s.parameters["C"]);
+    let i = matrix(&m, "I(O0,disc) in B1", &s);
+    close(
+        &i.concat(),
+        &[a, 0.0, 0.0, 0.0, 2.0 * a, 0.0, 0.0, 0.0, c],
+        TOL,
+    );
+    // B = 3 A forces a ratio no symmetry gives: refused, naming the matrix.
+    let bad = ROTOR.replace(r#"["0","A","0"]"#, r#"["0","3*A","0"]"#);
     let m = model(&bad);
     let e = m
         .sample(&mut ChaCha8Rng::seed_from_u64(0))
-        .expect_err("2*A cannot be read off a cloud");
-    assert!(e.to_string().contains("`2*A`"), "{e}");
+        .expect_err("B = 3 A cannot be read off a cloud");
+    assert!(e.to_string().contains("\"3*A\""), "{e}");
+    // An entry linear in a parameter of its own is solved for it: C + m a² read off the body
+    // gives C = Jz − m a², so the written entry equals the body's.
+    let sum = ROTOR.replace(r#"["0","0","C"]"#, r#"["0","0","C + m*a^2"]"#);
+    let m = model(&sum);
+    for seed in 0..5 {
+        let s = m
+            .sample(&mut ChaCha8Rng::seed_from_u64(seed))
+            .expect("sample");
+        let (a, c, mass, arm) = (
+            s.parameters["A"],
+            s.parameters["C"],
+            s.parameters["m"],
+            s.parameters["a"],
+        );
+        let i = matrix(&m, "I(O0,disc) in B1", &s);
+        close(
+            &i.concat(),
+            &[a, 0.0, 0.0, 0.0, a, 0.0, 0.0, 0.0, c + mass * arm * arm],
+            TOL,
+        );
+    }
 }
 
 #[test]

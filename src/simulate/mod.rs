@@ -26,7 +26,8 @@ mod tests;
 pub use error::SimError;
 pub use law::{LawError, TimeLaw};
 pub use ode::{MAX_OUTPUT_POINTS, Options, Output, Stats, Trajectory, integrate};
-pub use plot::{FONT_DEJAVU_SANS, Figure, Panel, Series, plot};
+pub use plot::{Figure, Panel, Series, plot};
+pub use raster::FONT_DEJAVU_SANS;
 pub use table::{NumberFormat, Table, write_atomic};
 
 use crate::expr::Expr;

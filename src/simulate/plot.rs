@@ -2,7 +2,7 @@
 //! written as SVG and PNG.
 //!
 //! Text is laid out (both backends) and rasterised (PNG) with the DejaVu Sans font embedded in
-//! the program ([`FONT_DEJAVU_SANS`], through plotters' `ab_glyph` feature), so nothing depends
+//! the program ([`super::FONT_DEJAVU_SANS`], through plotters' `ab_glyph` feature), so nothing depends
 //! on the fonts or font libraries of the machine. The SVG names the generic family
 //! `sans-serif` in its `<text>` elements and lets the viewer pick the face. The same figure
 //! always gives byte-identical SVG and PNG files.
@@ -22,16 +22,8 @@ use plotters::prelude::{
 use plotters::style::{FontStyle, RGBAColor, TextStyle, register_font};
 
 use super::SimError;
-use super::raster::{self, Raster};
+use super::raster::{self, FONT_DEJAVU_SANS, Raster};
 use super::table::write_atomic;
-
-/// DejaVu Sans 2.37 (Bitstream Vera licence with public-domain DejaVu changes; see
-/// `assets/fonts/LICENSE-DejaVu.txt`), used for every text of the charts. It covers Latin,
-/// Greek (θ, ω, Ω) and the usual symbols (·, ², −).
-pub const FONT_DEJAVU_SANS: &[u8] = include_bytes!(concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/assets/fonts/DejaVuSans.ttf"
-));
 
 /// The family name under which the font is registered, and that the SVG names.
 const FAMILY: &str = "sans-serif";

@@ -15,7 +15,13 @@ use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
 };
 
-use super::plot::FONT_DEJAVU_SANS;
+/// DejaVu Sans 2.37 (Bitstream Vera licence with public-domain DejaVu changes; see
+/// `assets/fonts/LICENSE-DejaVu.txt`), used for every text of the charts. It covers Latin,
+/// Greek (θ, ω, Ω) and the usual symbols (·, ², −).
+pub const FONT_DEJAVU_SANS: &[u8] = include_bytes!(concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/assets/fonts/DejaVuSans.ttf"
+));
 
 type Inner<'a> = BitMapBackend<'a, RGBPixel>;
 type Error<'a> = DrawingErrorKind<<Inner<'a> as DrawingBackend>::ErrorType>;

@@ -8,6 +8,7 @@ mod budget;
 mod corpus;
 mod hostile;
 mod messages;
+mod readme;
 
 fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_torseur"))

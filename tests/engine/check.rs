@@ -145,3 +145,73 @@ fn the_whole_regulator_passes_check_under_every_hypothesis() {
     );
     assert!(r.passed(), "{r}");
 }
+
+/// The pendulum on a cart with the inertia of its pendulum written as the course often does:
+/// entries that are sums (`C2 + m*l^2/3`), or read through an alias. `matrix[2][2]` is given.
+fn cart_with_inertia(aliases: serde_json::Value, c: &str) -> torseur::mechanism::Mechanism {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/pendule_sur_chariot.json"
+    );
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    v["aliases"] = aliases;
+    v["solids"][1]["inertia"]["matrix"] =
+        serde_json::json!([["A2 + m*l^2", "0", "0"], ["0", "B2", "0"], ["0", "0", c]]);
+    torseur::spec::from_str(&v.to_string()).expect("the spec loads")
+}
+
+/// The float backend samples what the exact side accepts: inertia entries that are sums of
+/// parameters, or hold an alias. Each such entry is linear in one parameter found nowhere
+/// else, which the backend solves for from its random body. `check` then passes, and still
+/// catches a wrong value: σ(G,2/0)·z0 = C_G θ̇ by the definition (Ω(2/0) = θ̇ z0 and G the
+/// centre), with C_G the written entry, against C2 θ̇ which forgets the m l²/3.
+#[test]
+fn inertia_entries_that_are_sums_or_aliases_are_sampled_and_checked() {
+    for (m, c_g) in [
+        (
+            cart_with_inertia(serde_json::json!([]), "C2 + m*l^2/3"),
+            "(C2 + m*l^2/3)*dot(theta)",
+        ),
+        (
+            cart_with_inertia(
+                serde_json::json!([{"name": "J", "value": "C2 + 4*m*l^2/3"}]),
+                "J - m*l^2",
+            ),
+            "(C2 + m*l^2/3)*dot(theta)",
+        ),
+    ] {
+        let r = torseur::check::check(&m, 10, 3).unwrap();
+        assert!(r.passed(), "{r}");
+        let right = Value::Scalar(ex(&m, c_g));
+        assert!(worst(&m, "sigma(G,2/0).z0", &right) <= TOLERANCE);
+        let wrong = Value::Scalar(ex(&m, "C2*dot(theta)"));
+        assert!(worst(&m, "sigma(G,2/0).z0", &wrong) > 1e-3);
+    }
+}
+
+/// A hypothesis that fixes the sign of dry friction (« the block slides down »,
+/// `epsilon02 = 1`) is read as given by both sides: the float backend keeps the sign instead
+/// of drawing it from its sampled rate, so a true result is never a MISMATCH (before, eom(x)
+/// and the power of the actions were reported MISMATCH under H1 at every sample whose drawn
+/// rate was negative).
+#[test]
+fn a_hypothesis_that_fixes_a_friction_sign_is_sampled_with_it() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/bloc_frottement_sec.json"
+    );
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    v["hypotheses"] = serde_json::json!([
+        {"name": "H1", "text": "Le bloc descend la pente.", "relations": {"epsilon02": "1"}}
+    ]);
+    let m = torseur::spec::from_str(&v.to_string()).expect("the spec loads");
+    let r = torseur::check::check(&m, 20, 1).unwrap();
+    assert!(r.passed(), "{r}");
+    assert!(
+        r.rows
+            .iter()
+            .any(|row| row.hypothesis.as_deref() == Some("H1"))
+    );
+}

@@ -95,10 +95,12 @@ fn body_frame(m: &NumericModel, b: Body) -> usize {
 }
 
 /// Sets the sign parameter ε of every link with dry friction to the sign of its relative
-/// rate at the sample: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider (0 at rest).
+/// rate at the sample: Ω(2/1)·u for a pivot, V(A,2/1)·u for a slider (0 at rest); a sign
+/// that `fixed` says is set otherwise (by a hypothesis) is kept.
 pub(in crate::numeric) fn set_signs(
     m: &NumericModel,
     vals: &mut Values,
+    fixed: &dyn Fn(usize) -> bool,
 ) -> Result<(), NumericError> {
     if m.dynamics.links.iter().all(|l| l.coulomb.is_none()) {
         return Ok(());
@@ -106,6 +108,9 @@ pub(in crate::numeric) fn set_signs(
     let st = kin::state(m, vals)?;
     for l in &m.dynamics.links {
         let Some((_, eps)) = &l.coulomb else { continue };
+        if fixed(*eps) {
+            continue;
+        }
         let [fa, fb] = l.between.map(|b| body_frame(m, b));
         let u = st.rot0(l.basis).column(l.axis).into_owned();
         let rate = if l.kind == LinkKind::Slider {
