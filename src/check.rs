@@ -90,6 +90,31 @@ impl CheckReport {
             .collect()
     }
 
+    /// The report of `torseur check --json`: each quantity's worst relative error against
+    /// the float backend and whether it is within [`TOLERANCE`], each dimension.
+    pub fn to_json(&self) -> serde_json::Value {
+        let rows: Vec<serde_json::Value> = self
+            .rows
+            .iter()
+            .map(|x| {
+                serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
+                    "worst_relative_error": x.worst, "sample": x.sample,
+                    "ok": x.worst <= TOLERANCE})
+            })
+            .collect();
+        let dims: Vec<serde_json::Value> = self
+            .dimensions
+            .iter()
+            .map(|x| {
+                serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
+                    "ok": x.error.is_none(),
+                    "error": x.error.as_ref().map(|e| e.to_string())})
+            })
+            .collect();
+        serde_json::json!({"samples": self.samples, "seed": self.seed, "tolerance": TOLERANCE,
+            "passed": self.passed(), "quantities": rows, "dimensions": dims})
+    }
+
     /// Whether every quantity agrees within [`TOLERANCE`] and has its dimension.
     pub fn passed(&self) -> bool {
         self.failures().is_empty() && self.dimension_failures().is_empty()

@@ -65,6 +65,8 @@ pub mod numeric;
 pub mod output;
 pub mod pfd;
 pub mod point;
+#[cfg(feature = "python")]
+mod python;
 pub mod quantity;
 pub mod resolve;
 pub mod simulate;

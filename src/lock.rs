@@ -37,6 +37,16 @@ pub enum LockError {
         /// What is wrong, and the fix.
         reason: String,
     },
+    /// Another process of the user holds the lock ([`ProcessLock::try_acquire`] only).
+    #[error(
+        "another process of this user is using torseur{}: unlicensed symbolica allows one \
+         process at a time; let it finish, or set SYMBOLICA_LICENSE",
+        .holder.map(|p| format!(" (pid {p})")).unwrap_or_default()
+    )]
+    Held {
+        /// The holder's process id, as the lock file says (a hint).
+        holder: Option<i32>,
+    },
     /// The system refused.
     #[error("cannot use the lock {path}: {source}")]
     Io {
@@ -132,6 +142,34 @@ impl ProcessLock {
     /// assert_eq!(std::fs::read_to_string(dir.path().join("victim")).unwrap(), "keep");
     /// ```
     pub fn acquire_in(dir: &Path, mut waiting: impl FnMut()) -> Result<ProcessLock, LockError> {
+        Self::take(dir, Some(&mut waiting))
+    }
+
+    /// Takes the user's lock if it is free, else fails at once with [`LockError::Held`]: for
+    /// a caller that must not wait (an interactive Python session).
+    pub fn try_acquire() -> Result<ProcessLock, LockError> {
+        Self::try_acquire_in(&lock_dir())
+    }
+
+    /// [`ProcessLock::try_acquire`] with the lock in `dir`: for tests.
+    ///
+    /// ```
+    /// use torseur::lock::{LockError, ProcessLock};
+    /// let dir = tempfile::tempdir().unwrap();
+    /// let first = ProcessLock::try_acquire_in(dir.path()).unwrap();
+    /// // A second holder in this process is refused at once, naming the holder.
+    /// let e = ProcessLock::try_acquire_in(dir.path()).unwrap_err();
+    /// assert!(matches!(e, LockError::Held { holder: Some(p) } if p == std::process::id() as i32));
+    /// drop(first);
+    /// assert!(ProcessLock::try_acquire_in(dir.path()).is_ok());
+    /// ```
+    pub fn try_acquire_in(dir: &Path) -> Result<ProcessLock, LockError> {
+        Self::take(dir, None)
+    }
+
+    /// Takes the lock in `dir`: waits for it when `waiting` is given (calling it once), else
+    /// fails with [`LockError::Held`].
+    fn take(dir: &Path, waiting: Option<&mut dyn FnMut()>) -> Result<ProcessLock, LockError> {
         safe_dir(dir)?;
         let path = dir.join("lock");
         let shown = path.display().to_string();
@@ -165,6 +203,12 @@ impl ProcessLock {
             });
         }
         if !FileExt::try_lock_exclusive(&file).map_err(io)? {
+            let Some(waiting) = waiting else {
+                let mut held = Vec::new();
+                let _ = (&mut file).take(64).read_to_end(&mut held);
+                let holder = String::from_utf8_lossy(&held).trim().parse().ok();
+                return Err(LockError::Held { holder });
+            };
             waiting();
             FileExt::lock_exclusive(&file).map_err(io)?;
         }

@@ -89,6 +89,15 @@ pub enum QuantityKind {
     /// J_eq(q): the inertia (or mass, for a length) equivalent to the whole mechanism brought
     /// back to coordinate q, Ec(all/0) = ½ J_eq q̇², when every other rate is driven by q̇.
     EquivalentInertia(String),
+    /// d/dt(Q): the time derivative of the scalar quantity `of` (`d/dt(Ec(E/0))`), or, with a
+    /// `frame`, [d/dt Q]_R of the vector quantity `of` in the frame R
+    /// (`d/dt(sigma(A,2/0))|0`). `of` is Ω, V, Rc, σ or Ec (or a projection of a vector among
+    /// them, for a scalar): their values hold rates, never accelerations, so their
+    /// derivatives hold no third derivative.
+    Derivative {
+        of: Box<Quantity>,
+        frame: Option<String>,
+    },
 }
 
 /// A requested quantity: a kind, an optional basis to express it in, an optional projection.
@@ -131,6 +140,18 @@ impl Quantity {
     /// assert!(Quantity::parse("M(A,0/1)").is_err());
     /// // Found by the fuzzer: a long name of multi-byte characters is an error, not a panic.
     /// assert!(Quantity::parse("Omega(߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰߰/0)").is_err());
+    /// // Time derivatives: of a scalar, d/dt(Q); of a vector, in a frame, d/dt(Q)|R.
+    /// for q in ["d/dt(Ec(E/0))", "d/dt(sigma(A,2/0))|0", "d/dt(V(G,2/0))|1.x1",
+    ///           "d/dt(Omega(2/0))|0 in B2", "d/dt(sigma(O,1/0).z0)"] {
+    ///     assert_eq!(Quantity::parse(q).unwrap().to_string(), q);
+    /// }
+    /// assert!(Quantity::parse("d/dt(Ec(E/0))").unwrap().is_scalar());
+    /// // Near misses say the spelling.
+    /// let e = Quantity::parse("dEc(E/0)/dt").unwrap_err();
+    /// assert!(e.reason.contains("d/dt(Ec(E/0))"), "{e}");
+    /// let e = Quantity::parse("d/dt(sigma(A,2/0))").unwrap_err();
+    /// assert!(e.reason.contains("d/dt(sigma(A,2/0))|0"), "{e}");
+    /// assert!(Quantity::parse("d/dt(delta(A,2/0))|0").is_err());
     /// ```
     pub fn parse(input: &str) -> Result<Quantity, NotationError> {
         let err = |reason: &str| NotationError {
@@ -153,8 +174,30 @@ impl Quantity {
             q.linear = true;
             return Ok(q);
         }
+        // `d/dt(sigma(A,2/0) in B1)|0`: the basis belongs after the derivative.
+        if s.starts_with("d/dt")
+            && let Some((_, tail)) = s.rsplit_once(" in ")
+            && tail.contains([')', '|'])
+        {
+            return Err(err(
+                "the basis is written after the derivative: d/dt(sigma(A,2/0))|0 in B1",
+            ));
+        }
         let (body, basis) = split_basis(&s).map_err(|r| err(&r))?;
         let body = body.replace(' ', "");
+        if let Some(rest) = body.strip_prefix("d/dt") {
+            let (kind, projection) = derivative(rest).map_err(|r| err(&r))?;
+            check_written(&kind, basis.is_some(), projection.is_some()).map_err(err)?;
+            return Ok(Quantity {
+                kind,
+                basis,
+                projection,
+                linear: false,
+            });
+        }
+        if let Some(hint) = derivative_hint(&body) {
+            return Err(err(&hint));
+        }
         let (core, projection) = split_projection(&body).map_err(|r| err(&r))?;
         let kind = if !core.contains('(') && crate::expr::check_identifier(core).is_ok() {
             QuantityKind::Unknown(core.to_string())
@@ -213,6 +256,9 @@ impl QuantityKind {
 
     /// Whether the kind is a scalar by itself (no projection needed).
     pub fn is_scalar_kind(&self) -> bool {
+        if let QuantityKind::Derivative { frame, .. } = self {
+            return frame.is_none();
+        }
         matches!(
             self,
             QuantityKind::KineticEnergy(_)
@@ -245,7 +291,8 @@ impl QuantityKind {
             | ActionTorsor { .. }
             | Power { .. }
             | InternalPower(_)
-            | EquivalentInertia(_) => None,
+            | EquivalentInertia(_)
+            | Derivative { .. } => None,
         }
     }
 }
@@ -274,6 +321,13 @@ impl fmt::Display for QuantityKind {
             Power { action, reference } => write!(f, "P({action}/{reference})"),
             InternalPower(set) => write!(f, "Pint({set})"),
             EquivalentInertia(q) => write!(f, "J_eq({q})"),
+            Derivative { of, frame } => {
+                write!(f, "d/dt({of})")?;
+                match frame {
+                    Some(r) => write!(f, "|{r}"),
+                    None => Ok(()),
+                }
+            }
         }
     }
 }
@@ -507,4 +561,169 @@ fn check_written(kind: &QuantityKind, basis: bool, projection: bool) -> Result<(
         return Err("a projection is a scalar: it takes no basis");
     }
     Ok(())
+}
+
+/// The kinds whose time derivative may be asked: their values hold rates, never
+/// accelerations or unknowns, so their derivatives hold no third derivative.
+const DERIVABLE: &str = "Omega, V, Rc, sigma or Ec (or a projection of one of the vectors)";
+
+/// The end of the parenthesis group opening at byte 0 of `s`: the index of its `)`.
+fn closing(s: &str) -> Option<usize> {
+    let mut depth = 0usize;
+    for (i, c) in s.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth = depth.checked_sub(1)?;
+                if depth == 0 {
+                    return Some(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// `d/dt(Q)` or `d/dt(Q)|R`, after its `d/dt`, with an optional projection `.x2` after the
+/// frame: the kind and the projection.
+fn derivative(rest: &str) -> Result<(QuantityKind, Option<Projection>), String> {
+    let form = "the derivative of a quantity is written d/dt(Q): d/dt(Ec(E/0)) for a scalar, \
+                d/dt(sigma(A,2/0))|0 for [d/dt σ(A,2/0)]_R0";
+    if !rest.starts_with('(') {
+        return Err(form.to_string());
+    }
+    let close = closing(rest).ok_or("unbalanced parentheses in d/dt(...)")?;
+    let inner = &rest[1..close];
+    let of = Quantity::parse(inner).map_err(|e| format!("in d/dt({inner}): {}", e.reason))?;
+    if of.basis.is_some() {
+        return Err(format!(
+            "the basis is written after the derivative: d/dt({})|0 in B{}",
+            of.kind,
+            of.basis.as_deref().unwrap_or("")
+        ));
+    }
+    if of.linear {
+        return Err("lin(...) is written around the derivative: lin(d/dt(Q))".to_string());
+    }
+    let third = "its derivative would hold the third derivatives of the coordinates, \
+                 which the engine does not have";
+    match &of.kind {
+        QuantityKind::Omega(_)
+        | QuantityKind::Velocity { .. }
+        | QuantityKind::KineticResultant(_)
+        | QuantityKind::KineticMoment { .. }
+        | QuantityKind::KineticEnergy(_) => {}
+        QuantityKind::Acceleration { .. }
+        | QuantityKind::DynamicResultant(_)
+        | QuantityKind::DynamicMoment { .. }
+        | QuantityKind::Derivative { .. } => {
+            return Err(format!(
+                "d/dt takes {DERIVABLE}: `{}` holds accelerations, so {third}",
+                of.kind
+            ));
+        }
+        k => {
+            return Err(format!(
+                "d/dt takes {DERIVABLE}, not `{k}` (its value may hold accelerations or \
+                 unknowns of the PFD, whose derivatives the engine does not have)"
+            ));
+        }
+    }
+    let after = &rest[close + 1..];
+    let scalar = of.is_scalar();
+    let Some(framed) = after.strip_prefix('|') else {
+        return match after {
+            "" if scalar => Ok((
+                QuantityKind::Derivative {
+                    of: Box::new(of),
+                    frame: None,
+                },
+                None,
+            )),
+            "" => Err(format!(
+                "`{of}` is a vector: its derivative is taken in a frame, d/dt({of})|0 for the \
+                 derivative in R0"
+            )),
+            a if a.starts_with('_') => Err(format!(
+                "the frame follows a bar: d/dt({of})|{}",
+                a.trim_start_matches(['_', '{', 'R']).trim_end_matches('}')
+            )),
+            a if scalar => Err(format!(
+                "`{of}` is a scalar: d/dt({of}) takes nothing after it (`{a}`)"
+            )),
+            a => Err(format!(
+                "after d/dt({of}) comes its frame, |0, then a projection .x0 if any, not `{a}`"
+            )),
+        };
+    };
+    if scalar {
+        return Err(format!(
+            "`{of}` is a scalar: its derivative takes no frame, write d/dt({of})"
+        ));
+    }
+    let (frame, projected) = match framed.split_once('.') {
+        Some((f, p)) => (f, Some(p)),
+        None => (framed, None),
+    };
+    check_name(frame).map_err(|e| format!("the frame of the derivative: {e}"))?;
+    let projection = match projected {
+        None => None,
+        Some(p) => {
+            // The same rule as after a closing parenthesis: `.x2`.
+            let (_, proj) = split_projection(&format!(").{p}"))?;
+            proj
+        }
+    };
+    Ok((
+        QuantityKind::Derivative {
+            of: Box::new(of),
+            frame: Some(frame.to_string()),
+        },
+        projection,
+    ))
+}
+
+/// What a near miss of the derivative's notation should have been, when `body` (spaces
+/// removed) is one: `dEc(E/0)/dt`, `[d/dt sigma(A,2/0)]_0`, `dot(Ec(E/0))`, `diff(...)`.
+fn derivative_hint(body: &str) -> Option<String> {
+    let form = |q: &str| {
+        let vector = !q.starts_with("Ec(") && !q.contains(").");
+        if vector {
+            format!("write d/dt({q})|0 for its derivative in R0 (the frame after the bar)")
+        } else {
+            format!("write d/dt({q}) for its time derivative")
+        }
+    };
+    if let Some(inner) = body.strip_prefix("[d/dt").or(body.strip_prefix("[d")) {
+        let q = inner
+            .split(']')
+            .next()
+            .unwrap_or("")
+            .trim_start_matches('(');
+        let q = q.strip_suffix("/dt").unwrap_or(q);
+        return Some(form(if q.is_empty() { "sigma(A,2/0)" } else { q }));
+    }
+    for head in ["dot(", "ddot(", "ddt(", "diff(", "derivative(", "d("] {
+        if let Some(inner) = body.strip_prefix(head).and_then(|r| r.strip_suffix(')'))
+            && inner.contains('(')
+        {
+            let q = inner.split(",t").next().unwrap_or(inner);
+            let why = match head {
+                "dot(" => "dot(q) is the rate of a coordinate; ",
+                "ddot(" => {
+                    "ddot(q) is the second derivative of a coordinate (a quantity has \
+                            a first derivative only); "
+                }
+                _ => "",
+            };
+            return Some(format!("{why}{}", form(q)));
+        }
+    }
+    // dEc(E/0)/dt, dsigma(A,2/0)/dt: the course's dX/dt.
+    let q = body.strip_prefix('d')?.strip_suffix("/dt")?;
+    let name = q.split('(').next()?;
+    ["Ec", "sigma", "V", "Omega", "Rc"]
+        .contains(&name)
+        .then(|| form(q))
 }

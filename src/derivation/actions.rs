@@ -35,7 +35,7 @@ pub(super) fn total(
 }
 
 /// The step of one action's torsor at its own point, as the bilan writes it.
-fn action_step(m: &Mechanism, act: &crate::pfd::Action) -> Step {
+pub(super) fn action_step(m: &Mechanism, act: &crate::pfd::Action) -> Step {
     Step {
         label: format!("T({}->{})", act.from_label, act.on_label),
         kind: StepKind::Action {

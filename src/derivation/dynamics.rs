@@ -105,9 +105,13 @@ pub(super) fn bilan_line(a: &Action) -> String {
 }
 
 /// The steps of one theorem: each exterior action's torsor, the dynamic side, the actions'
-/// side.
+/// side (for the kinetic energy theorem, see [`super::energy::theorem_steps`]).
 fn theorem_steps(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache, steps: &mut Vec<Step>) {
     let (dynamic, parts) = theorem_sides(m, th, cache);
+    if th.kind == TheoremKind::Energy {
+        super::energy::theorem_steps(m, th, dynamic, &parts, steps);
+        return;
+    }
     for (a, _) in &parts {
         steps.push(Step {
             label: format!("T({}->{})", a.from_label, a.on_label),
@@ -138,6 +142,7 @@ fn theorem_steps(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache, steps: 
             "Théorème du moment dynamique".to_string(),
             format!(" en {}", m.point_name(th.point)),
         ),
+        TheoremKind::Energy => unreachable!("written by energy::theorem_steps"),
     };
     steps.push(Step {
         label: dq.to_string(),
@@ -154,8 +159,8 @@ fn theorem_steps(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache, steps: 
         kind: StepKind::External {
             isolate: th.isolate.clone(),
             point: match th.kind {
-                TheoremKind::Resultant => None,
                 TheoremKind::Moment => Some(m.point_name(th.point).to_string()),
+                _ => None,
             },
             on,
         },
@@ -186,6 +191,17 @@ pub(super) fn derive(
                         m.frame_name(m.frames.ground())
                     ),
                 ));
+            }
+            if with_steps {
+                // Each member of negligible mass: its kinetic energy is zero, said so.
+                for &s in solids.iter().filter(|&&s| m.body(s).massless) {
+                    let motion = crate::quantity::Motion {
+                        moving: m.body(s).name.clone(),
+                        reference: mo.reference.clone(),
+                    };
+                    let kind = QuantityKind::KineticEnergy(motion);
+                    steps.push(super::massless_step(kind, Value::Scalar(m.reg.zero())));
+                }
             }
             Value::Scalar(kinetic_energy(m, &solids))
         }

@@ -3,7 +3,7 @@
 
 use crate::frame::{Axis, FrameId};
 
-use crate::kinematics::{acceleration, omega, point_velocity, velocity};
+use crate::kinematics::{acceleration, omega, velocity};
 use crate::mechanism::{BodyId, Mechanism};
 use crate::point::PointId;
 use crate::quantity::{Motion, Quantity, QuantityKind};
@@ -11,9 +11,14 @@ use crate::torsor::{self, Torsor};
 use crate::vector::Vector;
 
 mod actions;
+mod derivative;
 mod dynamics;
+mod energy;
+mod moments;
 mod value;
 pub use dynamics::Shared;
+pub(crate) use moments::massless_step;
+use moments::{moment_steps, solids_torsor, torsor_value};
 pub use value::Value;
 
 /// A quantity that cannot be derived: it names what the spec does not have, or its PFD
@@ -180,6 +185,15 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             r.point = Some(point(p)?);
             r.solids = solids(&action.on)?;
         }
+        // The inner quantity's names, then the frame of the derivative.
+        Derivative { of, frame: f } => {
+            let inner = resolve(m, of)?;
+            r.basis = inner.basis;
+            r.reference = f
+                .as_deref()
+                .map(|f| derivative::frame(m, q, f))
+                .transpose()?;
+        }
         KineticMoment { point: p, motion }
         | DynamicMoment { point: p, motion }
         | KineticTorsor { motion, point: p }
@@ -223,8 +237,21 @@ pub enum StepKind {
     Quantity(QuantityKind),
     /// The derivative of a quantity in a frame: [d/dt σ(A,S/R)]_R.
     Derivative(QuantityKind, String),
-    /// The complementary term V(A/R) ∧ m V(G/R) of δ: (point A, centre G, frame R).
-    Complementary(String, String, String),
+    /// The complementary term V(A/R) ∧ m V(G/R) of δ(A,S/R), of one solid S: its mass m and
+    /// its centre G.
+    Complementary {
+        /// The point A of the dynamic moment.
+        point: String,
+        /// The centre of inertia G of the solid.
+        centre: String,
+        /// The solid S whose term it is (its mass is m).
+        solid: String,
+        /// The reference frame R.
+        reference: String,
+    },
+    /// A quantity of a body of negligible mass (its σ, δ, kinetic or dynamic torsor,
+    /// resultants, inertia operator, kinetic energy): zero, said so without computing it.
+    Massless(QuantityKind),
     /// An action torsor {T(from→on)} at a point.
     Action {
         /// What exerts it (`0`, `pes`, `moteur`).
@@ -236,6 +263,14 @@ pub enum StepKind {
     },
     /// A quantity projected on a basis vector (frame name, axis letter).
     Projected(QuantityKind, (String, char)),
+    /// The power side of the kinetic energy theorem applied to a system in its motion
+    /// relative to a frame: P(ext→E/R) + P_int(E).
+    Powers {
+        /// The isolated solid or set.
+        isolate: String,
+        /// The frame (the ground, galilean).
+        reference: String,
+    },
     /// The sum of the actions exterior to a system: its moment at a point (resultant when
     /// none), projected on a basis vector.
     External {
@@ -368,6 +403,10 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
             Found::Value(Value::Scalar(j))
         }
         InternalPower(_) => Found::Value(Value::Scalar(actions::internal_power(m, &r, &mut steps))),
+        Derivative { of, .. } => match derivative::derive(m, q, of, r.reference, b, &mut steps)? {
+            derivative::Derived::Scalar(e) => Found::Value(Value::Scalar(e)),
+            derivative::Derived::Vector(v) => Found::Vector(v),
+        },
         ActionResultant(action) | ActionMoment { action, .. } | ActionTorsor { action, .. } => {
             let t = actions::total(m, q, action, &r, &mut steps)?;
             match &q.kind {
@@ -397,6 +436,10 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
         Inertia { .. } => {
             let s = r.solids[0];
             let a = r.point.unwrap_or(m.body(s).centre);
+            let ia = torsor::inertia_at(m, s, a).in_basis(&m.frames, b);
+            if m.body(s).massless {
+                steps.push(massless_step(q.kind.clone(), Value::Matrix(ia.clone())));
+            }
             if let Some(ig) = torsor::inertia_at_centre(m, s) {
                 steps.push(Step {
                     kind: StepKind::Quantity(QuantityKind::Inertia {
@@ -408,11 +451,20 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
                     value: Value::Matrix(ig),
                 });
             }
-            let ia = torsor::inertia_at(m, s, a).in_basis(&m.frames, b);
             Found::Value(Value::Matrix(ia))
         }
-        KineticResultant(_) => Found::Vector(torsor::kinetic_resultant(m, &r.solids, reference)),
-        DynamicResultant(_) => Found::Vector(torsor::dynamic_resultant(m, &r.solids, reference)),
+        KineticResultant(_) | DynamicResultant(_) => {
+            let v = if matches!(q.kind, DynamicResultant(_)) {
+                torsor::dynamic_resultant(m, &r.solids, reference)
+            } else {
+                torsor::kinetic_resultant(m, &r.solids, reference)
+            };
+            if r.solids.iter().all(|&s| m.body(s).massless) {
+                let kind = q.kind.clone();
+                steps.push(massless_step(kind, vec_value(m, &v, b)));
+            }
+            Found::Vector(v)
+        }
         KineticMoment { .. } | DynamicMoment { .. } => {
             let a = r.point.unwrap_or(m.points.origin());
             let dynamic = matches!(q.kind, DynamicMoment { .. });
@@ -447,217 +499,6 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
         steps,
         value,
     })
-}
-
-/// The kinetic (or, `dynamic`, the dynamic) torsor at `a` of the solids `solids` in their
-/// motion relative to `reference`, each solid's resultant and moment recorded as a step.
-fn solids_torsor(
-    m: &Mechanism,
-    solids: &[BodyId],
-    a: PointId,
-    reference: FrameId,
-    b: FrameId,
-    dynamic: bool,
-    steps: &mut Vec<Step>,
-) -> Torsor {
-    let rn = m.frame_name(reference).to_string();
-    let set = solids.len() > 1;
-    let mut res_total = Vector::zero();
-    let mut mom_total = Vector::zero();
-    for &s in solids {
-        let body = m.body(s);
-        let mo = Motion {
-            moving: body.name.clone(),
-            reference: rn.clone(),
-        };
-        // Each solid of a set is taken where its torsor is simplest (the course's
-        // method): at A if A is its frame origin or its centre, else at its frame
-        // origin when that point is fixed in the reference frame; then moved to A.
-        let origin = m.origin(body.frame);
-        let p = if !set || a == origin || a == body.centre {
-            a
-        } else if point_velocity(m, origin, reference).is_zero(&m.frames) {
-            origin
-        } else {
-            a
-        };
-        let res = if dynamic {
-            acceleration(m, body.centre, body.frame, reference).scale(&body.mass)
-        } else {
-            velocity(m, body.centre, body.frame, reference).scale(&body.mass)
-        };
-        steps.push(Step {
-            kind: StepKind::Quantity(if dynamic {
-                QuantityKind::DynamicResultant(mo.clone())
-            } else {
-                QuantityKind::KineticResultant(mo.clone())
-            }),
-            label: format!("{}({mo})", if dynamic { "Rd" } else { "Rc" }),
-            theorem: if dynamic {
-                "Rd = m Γ(G, S/R0)".into()
-            } else {
-                "Rc = m V(G, S/R0)".into()
-            },
-            value: vec_value(m, &res, b),
-        });
-        let mom = moment_steps(m, &[s], p, reference, b, dynamic, steps);
-        let t = Torsor {
-            point: p,
-            resultant: res,
-            moment: mom,
-        };
-        let t = if p == a {
-            t
-        } else {
-            let moved = t.at(m, a);
-            let (pn, an) = (m.point_name(p).to_string(), m.point_name(a).to_string());
-            let kind = if dynamic {
-                QuantityKind::DynamicTorsor {
-                    motion: mo.clone(),
-                    point: an.clone(),
-                }
-            } else {
-                QuantityKind::KineticTorsor {
-                    motion: mo.clone(),
-                    point: an.clone(),
-                }
-            };
-            steps.push(Step {
-                label: kind.to_string(),
-                kind: StepKind::Quantity(kind),
-                theorem: format!("changement de point : M({an}) = M({pn}) + {an}{pn} ∧ R"),
-                value: torsor_value(m, &moved, b),
-            });
-            moved
-        };
-        res_total = res_total.add(&t.resultant);
-        mom_total = mom_total.add(&t.moment);
-    }
-    Torsor {
-        point: a,
-        resultant: res_total,
-        moment: mom_total,
-    }
-}
-
-fn torsor_value(m: &Mechanism, t: &Torsor, b: FrameId) -> Value {
-    Value::Torsor {
-        point: t.point,
-        basis: b,
-        resultant: t.resultant.express_in(&m.frames, b),
-        moment: t.moment.express_in(&m.frames, b),
-    }
-}
-
-/// The steps of σ(A) or δ(A) for each solid, and their sum.
-fn moment_steps(
-    m: &Mechanism,
-    solids: &[BodyId],
-    a: PointId,
-    r: FrameId,
-    b: FrameId,
-    dynamic: bool,
-    steps: &mut Vec<Step>,
-) -> Vector {
-    let rn = m.frame_name(r).to_string();
-    let an = m.point_name(a).to_string();
-    let mut total = Vector::zero();
-    for &s in solids {
-        let body = m.body(s);
-        let sn = &body.name;
-        let om = omega(m, body.frame, r);
-        let ib = torsor::inertia_basis(m, s);
-        let mo = Motion {
-            moving: sn.clone(),
-            reference: rn.clone(),
-        };
-        steps.push(Step {
-            kind: StepKind::Quantity(QuantityKind::Omega(mo.clone())),
-            label: format!("Omega({sn}/{rn})"),
-            theorem: "composition des vecteurs rotation".into(),
-            value: vec_value(m, &om, ib),
-        });
-        let ia = torsor::inertia_at(m, s, a);
-        let huygens = a != body.centre && body.inertia.is_some();
-        steps.push(Step {
-            kind: StepKind::Quantity(QuantityKind::Inertia {
-                point: an.clone(),
-                solid: sn.clone(),
-            }),
-            label: format!("I({an},{sn})"),
-            theorem: if huygens {
-                format!(
-                    "théorème de Huygens, de {g} en {an}",
-                    g = m.point_name(body.centre)
-                )
-            } else if body.inertia.is_none() {
-                "masse ponctuelle".into()
-            } else {
-                "opérateur d'inertie en G".into()
-            },
-            value: Value::Matrix(ia),
-        });
-        let sigma = torsor::kinetic_moment_solid(m, s, a, r);
-        let fixed = crate::kinematics::velocity(m, a, body.frame, r).is_zero(&m.frames);
-        let sigma_kind = QuantityKind::KineticMoment {
-            point: an.clone(),
-            motion: mo.clone(),
-        };
-        steps.push(Step {
-            kind: StepKind::Quantity(sigma_kind.clone()),
-            label: format!("sigma({an},{sn}/{rn})"),
-            theorem: if a == body.centre {
-                "σ(G, S/R0) = I_G(S)·Ω(S/R0)".into()
-            } else if fixed && point_velocity(m, a, r).is_zero(&m.frames) {
-                "point fixe dans le mouvement : σ(A, S/R0) = I_A(S)·Ω(S/R0)".into()
-            } else if fixed {
-                // The point of S at A has no velocity, A itself moves (a rolling contact).
-                "point de vitesse nulle : σ(A, S/R0) = I_A(S)·Ω(S/R0)".into()
-            } else {
-                "σ(A, S/R0) = I_A(S)·Ω(S/R0) + m AG ∧ V(A, S/R0)".into()
-            },
-            value: vec_value(m, &sigma, b),
-        });
-        if !dynamic {
-            total = total.add(&sigma);
-            continue;
-        }
-        let d_sigma = sigma.derivative_in(&m.frames, r);
-        steps.push(Step {
-            kind: StepKind::Derivative(sigma_kind, rn.clone()),
-            label: format!("d/dt sigma({an},{sn}/{rn})|{rn}"),
-            theorem: "dérivation vectorielle (formule de Bour)".into(),
-            value: vec_value(m, &d_sigma, b),
-        });
-        let v_a = point_velocity(m, a, r);
-        let mut delta = d_sigma;
-        if !v_a.is_zero(&m.frames) {
-            let mv_g = velocity(m, body.centre, body.frame, r).scale(&body.mass);
-            let extra = v_a.cross(&m.frames, &mv_g);
-            steps.push(Step {
-                kind: StepKind::Complementary(
-                    an.clone(),
-                    m.point_name(body.centre).to_string(),
-                    rn.clone(),
-                ),
-                label: format!("V({an}/{rn}) ^ m V({}/{rn})", m.point_name(body.centre)),
-                theorem: "terme complémentaire V(A/R0) ∧ m V(G/R0)".into(),
-                value: vec_value(m, &extra, b),
-            });
-            delta = delta.add(&extra);
-        }
-        steps.push(Step {
-            kind: StepKind::Quantity(QuantityKind::DynamicMoment {
-                point: an.clone(),
-                motion: mo.clone(),
-            }),
-            label: format!("delta({an},{sn}/{rn})"),
-            theorem: "δ(A, S/R0) = d/dt σ(A, S/R0)|R0 + V(A/R0) ∧ m V(G/R0)".into(),
-            value: vec_value(m, &delta, b),
-        });
-        total = total.add(&delta);
-    }
-    total
 }
 
 /// Values only, by the fastest exact route: kinetic and dynamic moments and torsors by

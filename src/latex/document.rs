@@ -71,6 +71,10 @@ pub struct Display {
     pub value: Value,
     /// For an equality `a = b` (a theorem, an equation of motion): the value of `b`.
     pub rhs: Option<Value>,
+    /// The solid whose own symbols the left side prints, where the writer chose them from
+    /// the mechanism: a complementary term V(A/R) ∧ m V(G/R) of δ(A,S/R) prints the mass m
+    /// and the centre G of this solid S. A reader checks the printed symbols against it.
+    pub solid: Option<String>,
 }
 
 /// A formula inside the text (`$…$`) that shows a value: a point's position
@@ -192,7 +196,16 @@ impl<'m> Doc<'m> {
             latex: body,
             value: v.clone(),
             rhs,
+            solid: None,
         });
+    }
+
+    /// Notes that the last display's left side prints the symbols of `solid` (its mass, its
+    /// centre), for a reader to check them.
+    pub(super) fn names_solid(&mut self, solid: &str) {
+        if let Some(d) = self.displays.last_mut() {
+            d.solid = Some(solid.to_string());
+        }
     }
 
     /// What `write` adds to the document, taken out of it (to be placed in a cell of
@@ -306,6 +319,19 @@ impl<'m> Doc<'m> {
             d.hypothesis = hyp.map(str::to_string);
         }
         self.remember(lhs, v);
+    }
+
+    /// An equality written as `body` (`… &= 0`), its left side's value `l` and its right
+    /// side's `r`, recorded for the proof.
+    pub(super) fn record_equality(
+        &mut self,
+        role: DisplayRole,
+        what: &str,
+        body: String,
+        l: &Value,
+        r: Value,
+    ) {
+        self.record(role, what, body, l, Some(r), false);
     }
 
     /// Two scalars, each on its own line: `l1 = v1` and `l2 = v2` (the two sides of a
@@ -451,7 +477,12 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
 }
 
 /// A quantity as a heading: \\overrightarrow{\\delta(O_2,2/0)}\\cdot\\vec{x}_2 for a projection.
-pub(super) fn quantity_title(q: &Quantity) -> String {
+///
+/// ```
+/// let q = torseur::Quantity::parse("Omega(2/0)").unwrap();
+/// assert_eq!(torseur::latex::quantity_title(&q), "\\overrightarrow{\\Omega(2/0)}");
+/// ```
+pub fn quantity_title(q: &Quantity) -> String {
     if q.linear {
         let inner = Quantity {
             linear: false,

@@ -25,12 +25,20 @@ pub(super) fn solid(n: &str) -> String {
     }
 }
 
-/// The mass of a solid in LaTeX (`m_{2}`), or `m` for a set.
+/// The mass of a solid in LaTeX (`m_{2}`), as a factor (a sum in parentheses), or `m` for a
+/// set.
 pub(super) fn mass_of(m: &Mechanism, s: &str) -> String {
     m.bodies
         .iter()
         .find(|b| b.name == s)
-        .map(|b| super::expr(&b.mass))
+        .map(|b| {
+            let t = super::expr(&b.mass);
+            if t.contains(" + ") || t.contains(" - ") {
+                format!("\\left({t}\\right)")
+            } else {
+                t
+            }
+        })
         .unwrap_or_else(|| "m".to_string())
 }
 
@@ -77,13 +85,19 @@ pub(super) fn step_lhs(k: &StepKind) -> String {
             quantity(q),
             frame(r)
         ),
-        StepKind::Complementary(a, g, r) => format!(
+        StepKind::Complementary {
+            point: a,
+            centre: g,
+            reference: r,
+            ..
+        } => format!(
             "\\overrightarrow{{V({}/{})}} \\wedge m\\,\\overrightarrow{{V({}/{})}}",
             point(a),
             frame(r),
             point(g),
             frame(r)
         ),
+        StepKind::Massless(q) => quantity(q),
         StepKind::Action { from, on, point: p } => format!(
             "\\left\\{{\\mathcal{{T}}({} \\rightarrow {})\\right\\}}_{{{}}}",
             action_side(from),
@@ -91,6 +105,17 @@ pub(super) fn step_lhs(k: &StepKind) -> String {
             point(p)
         ),
         StepKind::Projected(q, (f, a)) => format!("{} \\cdot {}", quantity(q), basis_vector(*a, f)),
+        StepKind::Powers { isolate, reference } => format!(
+            "{} + {}",
+            quantity(&QuantityKind::Power {
+                action: crate::quantity::ActionRef {
+                    from: "ext".into(),
+                    on: isolate.clone(),
+                },
+                reference: reference.clone(),
+            }),
+            quantity(&QuantityKind::InternalPower(isolate.clone()))
+        ),
         StepKind::External {
             isolate,
             point: p,
@@ -134,6 +159,10 @@ fn steps(doc: &mut Doc, d: &Derivation, result_lhs: &str) -> bool {
     let n = d.steps.len();
     let mut i = 0;
     while i < n {
+        if let Some(next) = run.massless(doc, i) {
+            i = next;
+            continue;
+        }
         if run.dynamic_moment_as_derivative(doc, i) {
             i += 2;
             continue;
@@ -197,17 +226,12 @@ fn skipped_for_point_mass(m: &Mechanism, d: &Derivation, i: usize) -> bool {
 }
 
 /// The left side of a step as displayed: V(A/R) ∧ m2 V(G2/R) with the mass of the solid
-/// whose centre G is (each solid of a set has its own term).
+/// whose term it is (each solid of a set has its own term, and two solids may share their
+/// centre of inertia: the mass is never looked up by the point).
 fn displayed_lhs(m: &Mechanism, k: &StepKind) -> String {
     match k {
-        StepKind::Complementary(_, g, _) => {
-            match m.bodies.iter().find(|b| m.point_name(b.centre) == g) {
-                Some(b) => step_lhs(k).replace(
-                    "\\wedge m\\,",
-                    &format!("\\wedge {}\\,", mass_of(m, &b.name)),
-                ),
-                None => step_lhs(k),
-            }
+        StepKind::Complementary { solid, .. } => {
+            step_lhs(k).replace("\\wedge m\\,", &format!("\\wedge {}\\,", mass_of(m, solid)))
         }
         _ => step_lhs(k),
     }
@@ -352,6 +376,90 @@ impl StepRun<'_> {
         let _ = writeln!(doc.o, "{}", sentence(m, s));
         let boxed = self.is_element(&lhs, &s.value);
         doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, boxed);
+        if let StepKind::Complementary { solid, .. } = &s.kind {
+            doc.names_solid(solid);
+        }
+    }
+
+    /// The steps from `i` that say a quantity of a body of negligible mass is zero, in one
+    /// sentence (« $S_1$ et $S_2$ sont de masse négligeable : leurs moments dynamiques sont
+    /// nuls. »), nothing derived for them; when they are the whole derivation of a quantity
+    /// of such bodies, the result's box shows the zero. Returns the step after them, if any.
+    fn massless(&mut self, doc: &mut Doc, i: usize) -> Option<usize> {
+        let steps = &self.d.steps;
+        let kinds: Vec<&QuantityKind> = steps[i..]
+            .iter()
+            .map_while(|s| match &s.kind {
+                StepKind::Massless(k) => Some(k),
+                _ => None,
+            })
+            .collect();
+        let first = kinds.first()?;
+        self.flush(doc);
+        let names: Vec<String> = kinds
+            .iter()
+            .filter_map(|k| massless_solid(k))
+            .map(|n| format!("${}$", solid(&n)))
+            .collect();
+        let (noun, feminine) = massless_noun(first);
+        let _ = writeln!(
+            doc.o,
+            "{}\n",
+            massless_sentence(&french_list(&names), names.len() > 1, noun, feminine)
+        );
+        Some(i + kinds.len())
+    }
+}
+
+/// The solid a quantity of a body of negligible mass is of.
+fn massless_solid(k: &QuantityKind) -> Option<String> {
+    match k {
+        QuantityKind::Inertia { solid, .. } => Some(solid.clone()),
+        _ => k.motion().map(|mo| mo.moving.clone()),
+    }
+}
+
+/// The noun of a quantity that a zero mass makes zero, and whether it is feminine.
+fn massless_noun(k: &QuantityKind) -> (&'static str, bool) {
+    use QuantityKind::*;
+    match k {
+        KineticMoment { .. } => ("moment cinétique", false),
+        DynamicMoment { .. } => ("moment dynamique", false),
+        KineticTorsor { .. } => ("torseur cinétique", false),
+        DynamicTorsor { .. } => ("torseur dynamique", false),
+        KineticResultant(_) => ("résultante cinétique", true),
+        DynamicResultant(_) => ("résultante dynamique", true),
+        KineticEnergy(_) => ("énergie cinétique", true),
+        _ => ("opérateur d'inertie", false),
+    }
+}
+
+/// « $S_1$ est de masse négligeable : son moment dynamique est nul. », or for several
+/// solids « … sont de masse négligeable : leurs moments dynamiques sont nuls. »
+pub(super) fn massless_sentence(who: &str, several: bool, noun: &str, feminine: bool) -> String {
+    let e = if feminine { "le" } else { "" };
+    if several {
+        let plural: Vec<String> = noun.split(' ').map(plural_word).collect();
+        format!(
+            "{who} sont de masse négligeable : leurs {} sont nul{e}s.",
+            plural.join(" ")
+        )
+    } else {
+        let its = if feminine && !noun.starts_with(['é', 'e']) {
+            "sa"
+        } else {
+            "son"
+        };
+        format!("{who} est de masse négligeable : {its} {noun} est nul{e}.")
+    }
+}
+
+/// The plural of a word of these nouns (« moment » → « moments », « d'inertie » kept).
+fn plural_word(w: &str) -> String {
+    if w.starts_with("d'") {
+        w.to_string()
+    } else {
+        format!("{w}s")
     }
 }
 

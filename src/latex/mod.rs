@@ -8,9 +8,11 @@
 
 mod bilan;
 mod document;
+mod energy;
 mod expr;
 mod fault;
 mod figures;
+mod greek;
 mod helical;
 mod hypotheses;
 mod loop_law;
@@ -25,7 +27,7 @@ mod theorems;
 
 pub use document::{
     AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_named,
-    answer_key_with,
+    answer_key_with, quantity_title,
 };
 pub use expr::{expr, expr_lines, fraction};
 pub use fault::text_at_fault;
@@ -37,6 +39,7 @@ use crate::derivation::Value;
 use crate::expr::Expr;
 use crate::mechanism::Mechanism;
 use crate::quantity::{ActionRef, Motion, QuantityKind};
+use greek::greek;
 use std::fmt::Write as _;
 
 const GREEK: &[&str] = &[
@@ -93,69 +96,6 @@ pub(crate) fn coordinate(reg: &crate::expr::Registry, q: crate::expr::CoordId) -
     match info.phase() {
         Some(w) => format!("{}\\,t", name(w)),
         None => name(&info.name),
-    }
-}
-
-/// The LaTeX name of a Greek letter, without its backslash.
-fn greek(c: char) -> Option<&'static str> {
-    const LOWER: [&str; 25] = [
-        "alpha",
-        "beta",
-        "gamma",
-        "delta",
-        "varepsilon",
-        "zeta",
-        "eta",
-        "theta",
-        "iota",
-        "kappa",
-        "lambda",
-        "mu",
-        "nu",
-        "xi",
-        "o",
-        "pi",
-        "rho",
-        "varsigma",
-        "sigma",
-        "tau",
-        "upsilon",
-        "varphi",
-        "chi",
-        "psi",
-        "omega",
-    ];
-    const UPPER: [Option<&str>; 25] = [
-        None,
-        None,
-        Some("Gamma"),
-        Some("Delta"),
-        None,
-        None,
-        None,
-        Some("Theta"),
-        None,
-        None,
-        Some("Lambda"),
-        None,
-        None,
-        Some("Xi"),
-        None,
-        Some("Pi"),
-        None,
-        None,
-        Some("Sigma"),
-        None,
-        Some("Upsilon"),
-        Some("Phi"),
-        None,
-        Some("Psi"),
-        Some("Omega"),
-    ];
-    match c {
-        'α'..='ω' if c != 'ο' => Some(LOWER[c as usize - 'α' as usize]),
-        'Α'..='Ω' => UPPER.get(c as usize - 'Α' as usize).copied().flatten(),
-        _ => None,
     }
 }
 
@@ -426,6 +366,25 @@ pub fn quantity(k: &QuantityKind) -> String {
         EquivalentInertia(c) => format!("J_{{\\mathrm{{eq}}}}({})", name(c)),
         Unknown(n) => name(n),
         Eom(q) => format!("\\text{{Équation du mouvement en }} {}", name(q)),
+        Derivative { of, frame: r } => derivative(of, r.as_deref()),
+    }
+}
+
+/// [d/dt Q]_R of a vector, `\left[\frac{d}{dt}\overrightarrow{\sigma(A,2/0)}\right]_{\mathcal{R}_0}`;
+/// dQ/dt of a scalar, `\frac{dE_c(E/0)}{dt}`, a projection in parentheses.
+fn derivative(of: &crate::quantity::Quantity, r: Option<&str>) -> String {
+    let d = "\\mathrm{d}";
+    let inner = quantity(&of.kind);
+    match (r, &of.projection) {
+        (Some(r), _) => format!(
+            "\\left[\\frac{{{d}}}{{{d}t}}{inner}\\right]_{{{}}}",
+            frame(r)
+        ),
+        (None, Some((f, a))) => format!(
+            "\\frac{{{d}}}{{{d}t}}\\left({inner} \\cdot {}\\right)",
+            basis_vector(*a, f)
+        ),
+        (None, None) => format!("\\frac{{{d}{inner}}}{{{d}t}}"),
     }
 }
 

@@ -107,6 +107,10 @@ impl<'d> ProjectedMoment<'d> {
         let (Some((uf, ua)), [s], Some(pa)) = (r.projection, r.solids.as_slice(), r.point) else {
             return None;
         };
+        // A body of negligible mass has nothing to derive: its steps say so.
+        if m.body(*s).massless {
+            return None;
+        }
         let rf = r.reference.unwrap_or(m.frames.ground());
         let fixed_axis = omega(m, uf, rf).is_zero(&m.frames);
         // δ(A) = dσ(A)/dt + V(A/R) ∧ m V(G): a point A at rest in R suffices.
@@ -519,6 +523,22 @@ fn kinetic_projections(
     total
 }
 
+/// « ($S_1$ et $S_2$ sont de masse négligeable) » for the members `light` of a set, or nothing.
+fn massless_note(m: &Mechanism, light: &[crate::mechanism::BodyId]) -> String {
+    if light.is_empty() {
+        return String::new();
+    }
+    let names: Vec<String> = light
+        .iter()
+        .map(|&s| format!("${}$", solid(&m.body(s).name)))
+        .collect();
+    let verb = if light.len() > 1 { "sont" } else { "est" };
+    format!(
+        " ({} {verb} de masse négligeable)",
+        super::method::french_list(&names)
+    )
+}
+
 /// The short route for a projection on an axis u of the kinetic or dynamic moment of a set:
 /// σ(A,E/R)·u as the sum of the solids' projections; δ(A,E/R)·u, at a point A fixed in R
 /// and u fixed in R, as d/dt(σ(A,E/R)·u). Taken only when it gives the engine's value.
@@ -543,6 +563,13 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
     let Value::Scalar(result) = &d.value else {
         return false;
     };
+    // The members of negligible mass add nothing: the sum is over the others, the sentence
+    // names them.
+    let (light, solids): (Vec<_>, Vec<_>) = r.solids.iter().partition(|&&s| m.body(s).massless);
+    if solids.is_empty() {
+        return false;
+    }
+    let light_note = massless_note(m, &light);
     let rf = r.reference.unwrap_or(m.frames.ground());
     let u = crate::vector::Vector::along(uf, ua, m.reg.one());
     let ul = basis_vector(ua.letter(), m.frame_name(uf));
@@ -552,12 +579,11 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
     });
     let sum = crate::expr::Expr::sum(
         &m.reg,
-        r.solids
+        solids
             .iter()
             .map(|&s| crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, &u)),
     );
-    let members: Vec<String> = r
-        .solids
+    let members: Vec<String> = solids
         .iter()
         .map(|&s| {
             quantity(&QuantityKind::KineticMoment {
@@ -575,11 +601,11 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
         }
         let _ = writeln!(
             doc.o,
-            "Le moment cinétique de ${}$ est la somme de ceux de ses solides, ${sigma_e} = {}$ ; en projection sur ${ul}$ :\n",
+            "Le moment cinétique de ${}$ est la somme de ceux de ses solides, ${sigma_e} = {}${light_note} ; en projection sur ${ul}$ :\n",
             solid(&mo.moving),
             members.join(" + ")
         );
-        kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);
+        kinetic_projections(doc, &solids, pa, rf, &u, &ul, &mo.reference);
         return true;
     }
     let fixed = point_velocity(m, pa, rf).is_zero(&m.frames) && omega(m, uf, rf).is_zero(&m.frames);
@@ -589,7 +615,7 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
     let lhs = format!("{sigma_e} \\cdot {ul}");
     let _ = writeln!(
         doc.o,
-        "${}$ est fixe dans ${}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_e}\\cdot {ul}\\right)$.\n",
+        "${}$ est fixe dans ${}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_e}\\cdot {ul}\\right)${light_note}.\n",
         point(a),
         frame(&mo.reference),
         quantity(&q.kind)
@@ -604,7 +630,7 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
             );
         }
         None => {
-            kinetic_projections(doc, &r.solids, pa, rf, &u, &ul, &mo.reference);
+            kinetic_projections(doc, &solids, pa, rf, &u, &ul, &mo.reference);
             show_scalar(
                 doc,
                 &format!("sigma({a},{mo})"),

@@ -28,7 +28,11 @@ pub(super) fn sentence(m: &Mechanism, s: &Step) -> String {
             frame(r),
             frame(r)
         ),
-        StepKind::Complementary(a, _, r) => format!(
+        StepKind::Complementary {
+            point: a,
+            reference: r,
+            ..
+        } => format!(
             "${}$ n'est pas fixe dans ${}$ : terme complémentaire",
             point(a),
             frame(r)

@@ -204,6 +204,16 @@ pub(super) fn solids(doc: &mut Doc) {
     let mut cells = Vec::new();
     let mut widths = Vec::new();
     for b in &m.bodies {
+        if b.massless {
+            // No mass, centre or operator to state: a line of its own, in the spec's order.
+            cells.push(format!(
+                "Le solide ${}$ est de masse négligeable : ses torseurs cinétique et dynamique \
+                 sont nuls.\n\n",
+                super::method::solid(&b.name)
+            ));
+            widths.push(super::LINE);
+            continue;
+        }
         let mass = super::expr(&b.mass);
         let intro = format!(
             "Solide ${}$ : masse ${mass}$, centre d'inertie ${}$",

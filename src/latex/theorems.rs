@@ -25,6 +25,16 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         while k < steps.len() && matches!(steps[k].kind, StepKind::Action { .. }) {
             k += 1;
         }
+        // The kinetic energy theorem: its powers, its energy, then its power side.
+        if let Some(e) = energy_group(&steps[k..]).map(|e| e + k) {
+            let StepKind::Powers { isolate, .. } = &steps[e].kind else {
+                break;
+            };
+            external_bilan(doc, isolate, &solid(isolate), &steps[start..k]);
+            last_equality = super::energy::energy_theorem(doc, &steps[k..=e]);
+            k = e + 1;
+            continue;
+        }
         let (Some(dyn_step), Some(ext_step)) = (steps.get(k), steps.get(k + 1)) else {
             break;
         };
@@ -38,8 +48,34 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         };
         let iso_name = solid(isolate);
         external_bilan(doc, isolate, &iso_name, &steps[start..k]);
+        let (massless, massive) = members_by_mass(doc.m, isolate);
+        if massive.is_empty() {
+            // Of negligible mass: the dynamic torsor is zero, the theorem is the balance of
+            // the actions.
+            let title = theorem_title(&iso_name, at.as_deref(), f, *a);
+            let ev = shown_value(doc, &ext_step.value);
+            let el = step_lhs(&ext_step.kind);
+            let iso = (isolate.as_str(), massless.as_slice());
+            massless_theorem(doc, &ext_step.label, iso, &title, (&el, &ev));
+            last_equality = Some((Value::Scalar(doc.m.reg.zero()), ev));
+            k += 2;
+            continue;
+        }
+        let mut title = theorem_title(&iso_name, at.as_deref(), f, *a);
+        if !massless.is_empty() {
+            // The members of negligible mass add nothing to the dynamic side.
+            let _ = write!(
+                title,
+                " ({} {} de masse négligeable : seul{} {} contribue{} au côté dynamique)",
+                solids_list(&massless),
+                if massless.len() > 1 { "sont" } else { "est" },
+                if massive.len() > 1 { "s" } else { "" },
+                solids_list(&massive),
+                if massive.len() > 1 { "nt" } else { "" },
+            );
+        }
         let theorem = Theorem {
-            title: theorem_title(&iso_name, at.as_deref(), f, *a),
+            title,
             dynamic: (step_lhs(&dyn_step.kind), shown_value(doc, &dyn_step.value)),
             external: (step_lhs(&ext_step.kind), shown_value(doc, &ext_step.value)),
         };
@@ -66,6 +102,64 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         k += 2;
     }
     pfd_result(doc, d, last_equality);
+}
+
+/// The index in `steps` of the power side of a kinetic energy theorem starting there, when
+/// one does (no action and no other theorem's side before it).
+fn energy_group(steps: &[Step]) -> Option<usize> {
+    let e = (steps.iter()).position(|s| matches!(s.kind, StepKind::Powers { .. }))?;
+    let other = |s: &Step| matches!(s.kind, StepKind::Action { .. } | StepKind::External { .. });
+    (!steps[..e].iter().any(other)).then_some(e)
+}
+
+/// The members of the isolated system `isolate` (a solid or a set), by name: those of
+/// negligible mass, then the others.
+fn members_by_mass(m: &crate::mechanism::Mechanism, isolate: &str) -> (Vec<String>, Vec<String>) {
+    let mut out = (Vec::new(), Vec::new());
+    for s in m.solids_of(isolate).unwrap_or_default() {
+        let b = m.body(s);
+        if b.massless {
+            out.0.push(b.name.clone());
+        } else {
+            out.1.push(b.name.clone());
+        }
+    }
+    out
+}
+
+/// « $S_1$ et $S_2$ ».
+fn solids_list(names: &[String]) -> String {
+    let items: Vec<String> = names.iter().map(|n| format!("${}$", solid(n))).collect();
+    super::method::french_list(&items)
+}
+
+/// The theorem `title` applied to a system of negligible mass (`isolate`, its solids
+/// `members`): its dynamic torsor is zero, so the theorem is the balance of the external
+/// actions, « $\overrightarrow{M(O,\bar{2}\rightarrow 2)}\cdot\vec{x}_2 = 0$ », shown
+/// with their value `ev` (left side `el`).
+fn massless_theorem(
+    doc: &mut Doc,
+    what: &str,
+    (isolate, members): (&str, &[String]),
+    title: &str,
+    (el, ev): (&str, &Value),
+) {
+    let m = doc.m;
+    let dynamic = format!(
+        "\\left\\{{\\mathcal{{D}}({}/{})\\right\\}} = \\left\\{{0\\right\\}}",
+        super::escape_ident(isolate),
+        super::escape_ident(m.frame_name(m.frames.ground()))
+    );
+    let verb = if members.len() > 1 { "sont" } else { "est" };
+    let _ = writeln!(
+        doc.o,
+        "{} {verb} de masse négligeable : ${dynamic}$. {title}, ${el} = 0$ :",
+        solids_list(members)
+    );
+    let Value::Scalar(e) = ev else { return };
+    let zero = Value::Scalar(m.reg.zero());
+    let body = format!("{} &= 0", super::expr(e));
+    doc.record_equality(DisplayRole::Step, what, body, ev, zero);
 }
 
 /// One theorem of the PFD: its title (« Théorème du moment dynamique appliqué à … »), its
@@ -230,6 +324,9 @@ fn eom_result(
     if let Some((_, Value::Scalar(actions))) = last_equality
         && let Some(s) = eliminated(m, actions)
     {
+        let _ = writeln!(doc.o, "{s}");
+    }
+    if let Some(s) = super::energy::divided_by_rate(doc, q) {
         let _ = writeln!(doc.o, "{s}");
     }
     let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
@@ -458,6 +555,7 @@ fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Opti
                 "moment en ${}$ sur {on}",
                 point(m.point_name(t.point))
             )),
+            crate::wire::TheoremKind::Energy => g.2.push("énergie cinétique".to_string()),
         }
     }
     if held.is_empty() || groups.is_empty() {
@@ -621,7 +719,15 @@ pub(super) fn kinetic_energy_sentence(
     let QuantityKind::KineticEnergy(mo) = &d.quantity.kind else {
         return None;
     };
-    let solids = m.solids_of(&mo.moving)?;
+    // The members of negligible mass were said to have no kinetic energy (their steps).
+    let solids: Vec<_> = m
+        .solids_of(&mo.moving)?
+        .into_iter()
+        .filter(|&s| !m.body(s).massless)
+        .collect();
+    if solids.is_empty() {
+        return None;
+    }
     let terms: Vec<String> = solids
         .iter()
         .map(|&s| {

@@ -82,9 +82,9 @@ pub struct Theorem {
     pub solids: Vec<BodyId>,
     /// Resultant or moment theorem.
     pub kind: TheoremKind,
-    /// Point of the moment theorem (unused for the resultant).
+    /// Point of the moment theorem (unused for the resultant and the energy theorem).
     pub point: PointId,
-    /// Projection vector.
+    /// Projection vector (the ground's x, unused, for the energy theorem).
     pub on: (FrameId, Axis),
     /// The coordinate whose equation of motion this is, if any.
     pub eom: Option<CoordId>,

@@ -24,9 +24,14 @@ pub struct Body {
     pub name: String,
     /// Frame attached to the solid.
     pub frame: FrameId,
-    /// Mass.
+    /// Mass (zero for a body of negligible mass).
     pub mass: Expr,
-    /// Centre of inertia G.
+    /// Whether the body is of negligible mass (« de masse négligeable »): its kinetic and
+    /// dynamic torsors and its kinetic energy are zero, and the answer key says so instead of
+    /// deriving them.
+    pub massless: bool,
+    /// Centre of inertia G (for a body of negligible mass, the origin of its frame unless the
+    /// spec names one: a zero mass makes the choice immaterial).
     pub centre: PointId,
     /// Inertia operator as given (at some point, in some basis); none for a point mass.
     pub inertia: Option<Inertia>,

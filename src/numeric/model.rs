@@ -380,10 +380,7 @@ fn solids(
     for ((i, s), node) in spec.solids.iter().enumerate().zip(&trees.solids) {
         let path = format!("solids[{i}]");
         let frame = node.frame;
-        let mass = names
-            .parse(&s.mass, Context::Constant)
-            .map_err(|m| spec_err(format!("{path}.mass"), m))?;
-        let centre = node.centre;
+        let (mass, centre) = mass_and_centre(s, names, trees, node, &path)?;
         let inertia = match (&s.inertia, node.inertia) {
             (None, _) | (_, None) => None,
             (Some(inr), Some((point, basis))) => {
@@ -445,6 +442,72 @@ fn solids(
     }
 
     Ok(solids)
+}
+
+/// A solid's mass and centre. A body of negligible mass: no mass written (or 0), no centre
+/// needed (its frame's origin stands for it); its point cloud is empty, so it adds nothing
+/// to any moment, resultant or energy.
+fn mass_and_centre(
+    s: &crate::wire::SolidSpec,
+    names: &Names,
+    trees: &Resolved,
+    node: &crate::resolve::SolidNode,
+    path: &str,
+) -> Result<(Node, usize), NumericError> {
+    let mass = match &s.mass {
+        Some(t) => names
+            .parse(t, Context::Constant)
+            .map_err(|m| spec_err(format!("{path}.mass"), m))?,
+        None => Node::Num(0.0),
+    };
+    let centre = match node.centre {
+        Some(c) => c,
+        None => {
+            massless_body(s, &mass, path)?;
+            trees.frames[node.frame].origin
+        }
+    };
+    if s.massless || mass == Node::Num(0.0) {
+        massless_body(s, &mass, path)?;
+    }
+    Ok((mass, centre))
+}
+
+/// A solid without a centre, or declared of negligible mass: it must be one (`massless`, or
+/// no mass, or a mass of 0) and then have no inertia operator and no symmetries.
+fn massless_body(s: &crate::wire::SolidSpec, mass: &Node, path: &str) -> Result<(), NumericError> {
+    let zero = *mass == Node::Num(0.0);
+    if s.mass.is_none() && !s.massless {
+        return Err(spec_err(
+            format!("{path}.mass"),
+            "missing: a solid has a mass, or is declared `\"massless\": true`",
+        ));
+    }
+    if !(s.massless || zero) {
+        return Err(spec_err(
+            format!("{path}.centre"),
+            "missing: a solid with a mass has a centre of inertia",
+        ));
+    }
+    if s.massless && !zero {
+        return Err(spec_err(
+            format!("{path}.mass"),
+            "a solid declared `\"massless\": true` has no mass",
+        ));
+    }
+    if s.inertia.is_some() {
+        return Err(spec_err(
+            format!("{path}.inertia"),
+            "a body of negligible mass has no inertia operator",
+        ));
+    }
+    if !s.symmetries.is_empty() {
+        return Err(spec_err(
+            format!("{path}.symmetries[0]"),
+            "a body of negligible mass has no symmetry to declare",
+        ));
+    }
+    Ok(())
 }
 
 /// The hypotheses: the solids whose symmetries they use, the rates they hold constant, the

@@ -5,11 +5,12 @@
 use super::cloud::{kinetic, kinetic_energy};
 use super::expr::{self, Env, Node};
 use super::kin::{State, Values, omega, point_motion, state, values};
-use super::la::{point_inertia, rows};
+use super::la::{parts, point_inertia, rows};
 use super::model::Context;
 use super::{NumValue, NumericError, NumericModel, Sample, cloud, dynamics};
 use crate::quantity::{ActionRef, Motion, Quantity, QuantityKind};
 use nalgebra::{Matrix3, Vector3};
+use num_dual::Dual2_64;
 use std::collections::BTreeMap;
 
 /// I(P, S) = Σ mₖ (|PPₖ|² Id − PPₖ PPₖᵀ), ground components.
@@ -162,6 +163,7 @@ impl At<'_> {
             } => Raw::Scalar(self.power(a, reference)?),
             K::EquivalentInertia(c) => Raw::Scalar(self.equivalent_inertia(c)?),
             K::InternalPower(set) => Raw::Scalar(self.internal_power(set)?),
+            K::Derivative { of, frame } => self.derivative(of, frame.as_deref())?,
         })
     }
 
@@ -316,6 +318,145 @@ pub(super) fn evaluate_expression(
         });
     }
     Ok(x)
+}
+
+/// A vector as a function of time at the sample: its value and its time derivative in the
+/// ground frame, both in ground components.
+type Moving = [Vector3<f64>; 2];
+
+/// Value, first and second time derivatives of a dual matrix.
+fn mat3(m: &Matrix3<Dual2_64>) -> [Matrix3<f64>; 3] {
+    [m.map(|x| x.re), m.map(|x| x.v1), m.map(|x| x.v2)]
+}
+
+/// The vector of a skew matrix W (W x = w ∧ x).
+fn vee(w: &Matrix3<f64>) -> Vector3<f64> {
+    Vector3::new(
+        0.5 * (w[(2, 1)] - w[(1, 2)]),
+        0.5 * (w[(0, 2)] - w[(2, 0)]),
+        0.5 * (w[(1, 0)] - w[(0, 1)]),
+    )
+}
+
+/// The time derivatives of the quantities, from the dual parts of the motion (positions to
+/// their second derivatives): d/dt of a scalar, and of a vector the derivative of its
+/// components in the frame asked, nothing of the exact side's rules (no Bour formula).
+impl At<'_> {
+    /// d/dt(Q) of a scalar, or [d/dt Q]_r of a vector (ground components): with c = R_rᵀ u
+    /// the components in r, ċ = Ṙ_rᵀ u + R_rᵀ u̇, written back in the ground's basis.
+    fn derivative(&self, of: &Quantity, frame: Option<&str>) -> Result<Raw, NumericError> {
+        let Some(r) = frame else {
+            return Ok(Raw::Scalar(self.scalar_rate(of)?));
+        };
+        let f = self.m.body_frame(r, self.q)?;
+        let [u, du] = self.moving(&of.kind)?;
+        let [rr, dr, _] = mat3(&self.st.rot[f]);
+        let dc = dr.transpose() * u + rr.transpose() * du;
+        Ok(Raw::Vector(rr * dc))
+    }
+
+    /// d/dt of a scalar: Ec = Σ ½ mₖ |vₖ|² gives Σ mₖ vₖ·Γₖ; a projection u·e gives
+    /// u̇·e + u·ė, e the basis vector turning with its frame.
+    fn scalar_rate(&self, of: &Quantity) -> Result<f64, NumericError> {
+        let (m, st, vals) = (self.m, &self.st, &self.vals);
+        match (&of.kind, &of.projection) {
+            (QuantityKind::KineticEnergy(mo), None) => {
+                let solids = m.solids_of(&mo.moving)?;
+                let j = m.body_frame(&mo.reference, self.q)?;
+                let mut rate = 0.0;
+                for s in &solids {
+                    let f = m.solids[*s].frame;
+                    for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
+                        let [_, v, g] = parts(&st.track(f, &u, j));
+                        rate += mk * v.dot(&g);
+                    }
+                }
+                Ok(rate)
+            }
+            (k, Some((frame, axis))) => {
+                let [u, du] = self.moving(k)?;
+                let [rr, dr, _] = mat3(&st.rot[m.frame(frame)?]);
+                let a = ['x', 'y', 'z'].iter().position(|c| c == axis).unwrap_or(0);
+                Ok(du.dot(&rr.column(a)) + u.dot(&dr.column(a)))
+            }
+            _ => Err(self.not_derivable(of)),
+        }
+    }
+
+    fn not_derivable(&self, of: &Quantity) -> NumericError {
+        NumericError::Quantity {
+            quantity: self.q.to_string(),
+            message: format!("the float backend has no derivative of `{of}`"),
+        }
+    }
+
+    /// A vector given in j's components (x, its derivative dx of those components), in the
+    /// ground's: R_j x and Ṙ_j x + R_j dx.
+    fn in_ground(&self, j: usize, x: Vector3<f64>, dx: Vector3<f64>) -> Moving {
+        let [rj, drj, _] = mat3(&self.st.rot[j]);
+        [rj * x, drj * x + rj * dx]
+    }
+
+    /// Ω(i/j), V(P, i/j), Rc(S/j), σ(A, S/j) as functions of time, each from its definition.
+    fn moving(&self, k: &QuantityKind) -> Result<Moving, NumericError> {
+        let (m, st, vals) = (self.m, &self.st, &self.vals);
+        match k {
+            // R = R_jᵀ R_i: Ω(i/j) in j is the vector of W = Ṙ Rᵀ, and Ẇ = R̈ Rᵀ + Ṙ Ṙᵀ.
+            QuantityKind::Omega(mo) => {
+                let (i, j) = self.frames(mo)?;
+                let [r, dr, ddr] = mat3(&(st.rot[j].transpose() * st.rot[i]));
+                let w = dr * r.transpose();
+                let dw = ddr * r.transpose() + dr * dr.transpose();
+                Ok(self.in_ground(j, vee(&w), vee(&dw)))
+            }
+            // The point P(t) has local coordinates u(t) in i; the material point of i there
+            // moves in j as B + A u (A = R_jᵀ R_i, B = R_jᵀ (O_i − O_j)): V = Ḃ + Ȧ u, whose
+            // derivative, P moving on, is B̈ + Ä u + Ȧ u̇.
+            QuantityKind::Velocity { point, motion } => {
+                let (i, j) = self.frames(motion)?;
+                let p = st.pos[m.point(point)?];
+                let u = parts(&(st.rot[i].transpose() * (p - st.origin(i))));
+                let [_, da, dda] = mat3(&(st.rot[j].transpose() * st.rot[i]));
+                let b = parts(&(st.rot[j].transpose() * (st.origin(i) - st.origin(j))));
+                let v = b[1] + da * u[0];
+                let dv = b[2] + dda * u[0] + da * u[1];
+                Ok(self.in_ground(j, v, dv))
+            }
+            QuantityKind::KineticResultant(mo) => {
+                let j = m.body_frame(&mo.reference, self.q)?;
+                let (mut x, mut dx) = (Vector3::zeros(), Vector3::zeros());
+                for s in &m.solids_of(&mo.moving)? {
+                    let f = m.solids[*s].frame;
+                    for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
+                        let [_, v, g] = parts(&st.track(f, &u, j));
+                        x += v * mk;
+                        dx += g * mk;
+                    }
+                }
+                Ok(self.in_ground(j, x, dx))
+            }
+            // σ(A) = Σ mₖ (rₖ − a) ∧ vₖ in j, A(t) at a: its derivative is
+            // Σ mₖ [(vₖ − ȧ) ∧ vₖ + (rₖ − a) ∧ Γₖ].
+            QuantityKind::KineticMoment { point, motion } => {
+                let j = m.body_frame(&motion.reference, self.q)?;
+                let a = parts(&(st.rot[j].transpose() * (st.pos[m.point(point)?] - st.origin(j))));
+                let (mut x, mut dx) = (Vector3::zeros(), Vector3::zeros());
+                for s in &m.solids_of(&motion.moving)? {
+                    let f = m.solids[*s].frame;
+                    for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
+                        let [r, v, g] = parts(&st.track(f, &u, j));
+                        x += (r - a[0]).cross(&v) * mk;
+                        dx += ((v - a[1]).cross(&v) + (r - a[0]).cross(&g)) * mk;
+                    }
+                }
+                Ok(self.in_ground(j, x, dx))
+            }
+            _ => Err(NumericError::Quantity {
+                quantity: self.q.to_string(),
+                message: format!("the float backend has no derivative of `{k}`"),
+            }),
+        }
+    }
 }
 
 /// Names of the spec, looked up for a quantity.

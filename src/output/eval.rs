@@ -552,6 +552,40 @@ pub fn try_eval_value(
     Ok(j)
 }
 
+/// The report of `torseur eval`: each derived value at `values` (the `--at` file), the
+/// unknowns the values do not give solved for, as `{"quantities": [...]}`.
+///
+/// ```
+/// use torseur::{derivation::derive_values, output::{Values, eval_json}, quantity::Quantity};
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json")?;
+/// let ds = derive_values(&m, &[Quantity::parse("Omega(2/0) in B1")?])?;
+/// let mut v = Values::parse(r#"{"coordinates": {"theta1": [0, 2, 0], "theta2": [0, 3, 0]}}"#)?;
+/// let j = eval_json(&m, &mut v, &ds)?;
+/// // Ω(2/0) = θ̇2 x⃗1 + θ̇1 z⃗1 (by hand: the rotation θ2 about x⃗1 after θ1 about z⃗0).
+/// assert_eq!(j["quantities"][0]["value"], serde_json::json!([3.0, 0.0, 2.0]));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn eval_json(
+    m: &Mechanism,
+    values: &mut Values,
+    ds: &[crate::derivation::Derivation],
+) -> Result<Json, ValuesError> {
+    // An action holds its links' unknowns: those without a value are solved for.
+    let solved = ds
+        .iter()
+        .map(|d| solve_unknowns(m, &d.value, values))
+        .collect::<Result<Vec<_>, _>>()?;
+    // Only the parameters and coordinates the results hold are demanded.
+    let exprs: Vec<&Expr> = solved.iter().flat_map(|v| v.exprs()).collect();
+    let point = numeric_point_for(m, values, &exprs)?;
+    let items = ds
+        .iter()
+        .zip(&solved)
+        .map(|(d, v)| try_eval_value(m, &d.quantity.to_string(), v, &point))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(json!({ "quantities": items }))
+}
+
 /// Whether a JSON value holds a `null` (serde_json's number for NaN and the infinities).
 fn has_null(j: &Json) -> bool {
     match j {

@@ -7,7 +7,7 @@ pub use crate::atomic::{
     write_atomic, write_outputs,
 };
 pub use eval::{
-    Values, ValuesError, eval_value, numeric_point, numeric_point_for, solve_unknowns,
+    Values, ValuesError, eval_json, eval_value, numeric_point, numeric_point_for, solve_unknowns,
     try_eval_value,
 };
 
@@ -193,6 +193,10 @@ pub fn manifest_json(m: &Mechanism, key: &crate::latex::AnswerKey) -> Json {
                    "latex": d.latex, "value": value_json(m, &d.value)});
             if let Some(r) = &d.rhs {
                 j["rhs"] = value_json(m, r);
+            }
+            if let Some(s) = &d.solid {
+                // Whose mass and centre the left side prints (a complementary term).
+                j["solid"] = json!(s);
             }
             j
         })

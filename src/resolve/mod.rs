@@ -79,8 +79,9 @@ pub struct SolidNode<'a> {
     pub name: &'a str,
     /// The position of its frame.
     pub frame: usize,
-    /// The position of its centre of mass.
-    pub centre: usize,
+    /// The position of its centre of mass, when the spec gives one (a body of negligible
+    /// mass may have none).
+    pub centre: Option<usize>,
     /// The positions of its inertia operator's point and basis, when it has one.
     pub inertia: Option<(usize, usize)>,
 }
@@ -597,7 +598,10 @@ fn solids<'a>(
         solids.push(SolidNode {
             name: &s.name,
             frame: find(frames, "frame", format!("{path}.frame"), &s.frame)?,
-            centre: find(points, "point", format!("{path}.centre"), &s.centre)?,
+            centre: match &s.centre {
+                Some(c) => Some(find(points, "point", format!("{path}.centre"), c)?),
+                None => None,
+            },
             inertia,
         });
     }

@@ -67,7 +67,8 @@ pub struct TheoremNode {
     pub isolate: Vec<usize>,
     /// The position of its point (None for a resultant theorem written at none).
     pub point: Option<usize>,
-    /// The basis vector it is projected on: (the position of its frame, its axis 0, 1 or 2).
+    /// The basis vector it is projected on: (the position of its frame, its axis 0, 1 or 2);
+    /// the ground's first vector, unused, for the energy theorem.
     pub on: (usize, usize),
     /// The coordinate whose equation of motion it is (index in `coordinates`).
     pub eom: Option<usize>,
@@ -97,7 +98,11 @@ impl Known<'_, '_> {
             return Ok(Side::Ground);
         }
         let why = if self.frames.contains_key(n) {
-            format!("`{n}` is a frame, not a solid: only the ground `{ground}` acts without one")
+            format!(
+                "`{n}` is a frame, not a solid: only the ground `{ground}` acts without one; a \
+                 body of negligible mass is a solid too, declared in `solids` as \
+                 `{{\"name\": \"{n}\", \"frame\": \"{n}\", \"massless\": true}}`"
+            )
         } else if self.sets.contains_key(n) {
             format!("`{n}` is a set: a link or an action joins two solids")
         } else {
@@ -488,22 +493,49 @@ pub(super) fn theorems(known: &Known) -> Result<Vec<TheoremNode>, Refusal> {
                 return Err(at(format!("{path}.isolate"), why));
             }
             None => (known.sets.get(t.isolate.as_str()).cloned()).ok_or_else(|| {
-                let why = format!("unknown solid or set `{}`", t.isolate);
+                let n = &t.isolate;
+                let why = if known.frames.contains_key(n.as_str()) {
+                    format!(
+                        "`{n}` is a frame, not a solid or a set: a body of negligible mass is \
+                         isolated as a solid, declared in `solids` as `{{\"name\": \"{n}\", \
+                         \"frame\": \"{n}\", \"massless\": true}}`"
+                    )
+                } else {
+                    format!("unknown solid or set `{n}`")
+                };
                 at(format!("{path}.isolate"), why)
             })?,
         };
         let point = match (&t.point, t.theorem) {
+            (Some(_), TheoremKind::Energy) => {
+                let why = "the kinetic energy theorem is written at no point";
+                return Err(at(format!("{path}.point"), why));
+            }
             (Some(p), _) => Some(known.point(format!("{path}.point"), p)?),
-            (None, TheoremKind::Resultant) => None,
+            (None, TheoremKind::Resultant | TheoremKind::Energy) => None,
             (None, TheoremKind::Moment) => {
                 let why = "the moment theorem is written at a point";
                 return Err(at(format!("{path}.point"), why));
             }
         };
-        let on = known.basis_vector(&t.on).ok_or_else(|| {
-            let why = format!("`{}` is not a basis vector such as z0", t.on);
-            at(format!("{path}.on"), why)
-        })?;
+        let on = match (&t.on, t.theorem) {
+            (Some(_), TheoremKind::Energy) => {
+                let why = "the kinetic energy theorem is a scalar equation: it is projected on \
+                           no vector (remove `on`)";
+                return Err(at(format!("{path}.on"), why));
+            }
+            // Unused: the ground's first vector.
+            (None, TheoremKind::Energy) => (0, 0),
+            (None, _) => {
+                let why = "a resultant or moment theorem is projected on a basis vector: \
+                           `\"on\": \"z0\"`";
+                return Err(at(format!("{path}.on"), why));
+            }
+            (Some(on), _) => known.basis_vector(on).ok_or_else(|| {
+                let why = format!("`{on}` is not a basis vector such as z0");
+                at(format!("{path}.on"), why)
+            })?,
+        };
         let eom = match &t.eom {
             None => None,
             Some(q) => {

@@ -135,11 +135,20 @@ pub fn read(path: impl AsRef<Path>) -> Result<String, SpecError> {
 pub fn from_str(text: &str) -> Result<Mechanism, SpecError> {
     build(&parse_spec(text)?).map_err(|e| match e {
         SpecError::Invalid { path, message, .. } => SpecError::Invalid {
-            location: locate(text, &path),
+            location: located(text, &path),
             path,
             message,
         },
         other => other,
+    })
+}
+
+/// Where the value at `path` is in `text`; for a value left out (a solid's `mass`), where the
+/// object that should hold it is.
+fn located(text: &str, path: &str) -> Option<(usize, usize)> {
+    locate(text, path).or_else(|| {
+        let parent = path.rsplit_once('.')?.0;
+        locate(text, parent)
     })
 }
 

@@ -15,7 +15,9 @@ pub(super) fn expression_texts(spec: &SpecFile) -> Vec<(String, &str)> {
         }
     }
     for (i, s) in spec.solids.iter().enumerate() {
-        out.push((format!("solids[{i}].mass"), &s.mass));
+        if let Some(mass) = &s.mass {
+            out.push((format!("solids[{i}].mass"), mass));
+        }
         if let Some(inr) = &s.inertia {
             for (r, row) in inr.matrix.iter().enumerate() {
                 for (c, cell) in row.iter().enumerate() {

@@ -357,17 +357,22 @@ fn bodies(
     for ((i, s), node) in spec.solids.iter().enumerate().zip(&resolved.solids) {
         let path = format!("solids[{i}]");
         let frame = FrameId(node.frame);
-        let mass = reg
-            .parse(&s.mass)
-            .map_err(|e| expr_err(&format!("{path}.mass"), e))
-            .and_then(|e| bounded(&format!("{path}.mass"), e))?;
-        if !mass.is_time_independent() {
-            return Err(at(
-                format!("{path}.mass"),
-                "a mass is constant (parameters only)",
-            ));
+        let (mass, massless) = solid_mass(reg, s, &path)?;
+        if massless {
+            massless_has_nothing_else(s, &path)?;
         }
-        let centre = PointId(node.centre);
+        // A body of negligible mass needs no centre: its frame's origin stands for it (every
+        // term it enters is multiplied by its zero mass).
+        let centre = match node.centre {
+            Some(c) => PointId(c),
+            None if massless => PointId(resolved.frames[node.frame].origin),
+            None => {
+                return Err(at(
+                    format!("{path}.centre"),
+                    "missing: a solid with a mass has a centre of inertia (a point)",
+                ));
+            }
+        };
         let inertia = match (&s.inertia, node.inertia) {
             (Some(given), Some((point, basis))) => Some(inertia(
                 reg,
@@ -406,6 +411,7 @@ fn bodies(
             name: s.name.clone(),
             frame,
             mass,
+            massless,
             centre,
             inertia,
             symmetries,
@@ -413,6 +419,66 @@ fn bodies(
     }
 
     Ok(bodies)
+}
+
+/// A solid's mass, and whether it is negligible: declared `"massless": true` (no mass, or a
+/// mass of 0), or a mass that is zero. A solid that is not massless gives its mass.
+fn solid_mass(
+    reg: &Rc<Registry>,
+    s: &crate::wire::SolidSpec,
+    path: &str,
+) -> Result<(crate::expr::Expr, bool), SpecError> {
+    let mp = format!("{path}.mass");
+    let Some(text) = &s.mass else {
+        if s.massless {
+            return Ok((reg.zero(), true));
+        }
+        return Err(at(
+            mp,
+            "missing: give the solid's mass, or declare a body of negligible mass with \
+             `\"massless\": true`",
+        ));
+    };
+    let mass = reg
+        .parse(text)
+        .map_err(|e| expr_err(&mp, e))
+        .and_then(|e| bounded(&mp, e))?;
+    if !mass.is_time_independent() {
+        return Err(at(mp, "a mass is constant (parameters only)"));
+    }
+    if s.massless && !mass.is_zero() {
+        return Err(at(
+            mp,
+            format!(
+                "the solid is declared `\"massless\": true` but its mass is `{text}`: remove \
+                 `mass`, or `massless` if the solid has this mass"
+            ),
+        ));
+    }
+    let massless = mass.is_zero();
+    Ok((mass, massless))
+}
+
+/// A body of negligible mass has no inertia operator and no symmetries to declare.
+fn massless_has_nothing_else(s: &crate::wire::SolidSpec, path: &str) -> Result<(), SpecError> {
+    let why = if s.massless {
+        "the solid is declared `\"massless\": true`"
+    } else {
+        "a mass of 0 makes the solid a body of negligible mass"
+    };
+    if s.inertia.is_some() {
+        return Err(at(
+            format!("{path}.inertia"),
+            format!("{why}: it has no inertia operator (remove `inertia`, or give its mass)"),
+        ));
+    }
+    if !s.symmetries.is_empty() {
+        return Err(at(
+            format!("{path}.symmetries[0]"),
+            format!("{why}: it has no symmetry to declare (remove `symmetries`)"),
+        ));
+    }
+    Ok(())
 }
 
 /// A solid's inertia operator at `point` in `basis` (`frame` the solid's): constant

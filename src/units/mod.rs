@@ -407,6 +407,8 @@ pub fn expected_dimension(m: &Mechanism, dims: &Dimensions, q: &Quantity) -> Exp
             moment: Dimension::MOMENT,
         },
         Unknown(name) => Components(dims.scalar(name)),
+        // d/dt(Q): Q's dimension over a time.
+        Derivative { of, .. } => expected_dimension(m, dims, of).map(|x| x / Dimension::TIME),
         Eom(c) => Components(m.reg.coord(c).and_then(|q| {
             m.dynamics
                 .theorems
@@ -415,6 +417,8 @@ pub fn expected_dimension(m: &Mechanism, dims: &Dimensions, q: &Quantity) -> Exp
                 .map(|t| match t.kind {
                     TheoremKind::Resultant => Dimension::FORCE,
                     TheoremKind::Moment => Dimension::MOMENT,
+                    // A power over the coordinate's rate.
+                    TheoremKind::Energy => Dimension::POWER / dims.coordinate(q) * Dimension::TIME,
                 })
         })),
     }
@@ -591,10 +595,13 @@ pub fn check_derivation(
     let torsor = |resultant, moment| ExpectedDimension::Torsor { resultant, moment };
     for s in &d.steps {
         let expected = match &s.kind {
-            StepKind::Quantity(k) | StepKind::Projected(k, _) => of_kind(k),
+            StepKind::Quantity(k) | StepKind::Projected(k, _) | StepKind::Massless(k) => of_kind(k),
             StepKind::Derivative(k, _) => of_kind(k).map(|x| x / Dimension::TIME),
-            StepKind::Complementary(..) => ExpectedDimension::Components(Some(Dimension::MOMENT)),
+            StepKind::Complementary { .. } => {
+                ExpectedDimension::Components(Some(Dimension::MOMENT))
+            }
             StepKind::Action { .. } => torsor(Dimension::FORCE, Dimension::MOMENT),
+            StepKind::Powers { .. } => ExpectedDimension::Components(Some(Dimension::POWER)),
             StepKind::External { point, .. } => {
                 ExpectedDimension::Components(Some(if point.is_some() {
                     Dimension::MOMENT

@@ -3,7 +3,7 @@
 //! « does L01 + a F = −J ω θ̇2 cos θ2 hold? ». The decision is the canonical form's zero test,
 //! never sampling.
 //!
-//! Three checks, each reported by [`Check`]:
+//! Four checks, each reported by [`Check`]:
 //!
 //! - **a value** (`-q Q -e EXPR`): given − derived = 0, component by component;
 //! - **an equation of motion** (`-q eom(q) -e "lhs = rhs"`): with G = lhs − rhs, the engine's
@@ -14,11 +14,17 @@
 //!   equation holds when lhs − rhs is identically zero once every quantity written in it
 //!   (`delta(O2,2/0).x2`, `eom(theta)`) is replaced by its derived value and every unknown of
 //!   the PFD (`X01`, `C_m`) by its solved value ([`crate::pfd::solve`]); failing that, when it
-//!   is one of the engine's equations of motion up to such a factor k.
+//!   is one of the engine's equations of motion up to such a factor k;
+//! - **along the motions** (a relation, or a scalar value, that is neither): lhs − rhs is a
+//!   combination Σ cᵢ eom(qᵢ) of the equations of motion, its coefficients holding coordinates
+//!   and rates (the kinetic energy theorem, Σ q̇ᵢ eom(qᵢ)); see `motions`. Where that cannot
+//!   be decided the answer is [`VerifyError::OutOfReach`], never « NOT equivalent ».
 //!
 //! Under a hypothesis, everything (derived values, solved unknowns, equations of motion and the
 //! text given) is taken under its substitutions.
 
+mod factor;
+mod motions;
 mod reader;
 
 use crate::derivation::{Value, derive_values};
@@ -26,6 +32,7 @@ use crate::expr::{Expr, ExprError, Fraction, VarRole};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::pfd::{PfdError, Solution};
 use crate::quantity::{NotationError, Quantity, QuantityKind};
+pub use factor::Factor;
 use reader::{Reader, split_list};
 use std::fmt;
 
@@ -58,6 +65,10 @@ pub enum VerifyError {
     /// The PFD, needed for an unknown or an equation of motion, cannot be solved.
     #[error("the spec's pfd: {0}")]
     Pfd(#[from] PfdError),
+    /// The question is out of the checks' reach: neither « equivalent » nor « not
+    /// equivalent » can be said, for the reason given.
+    #[error("out of reach: {0}")]
+    OutOfReach(String),
 }
 
 fn unknown_names(names: &[String], input: &str) -> String {
@@ -68,55 +79,6 @@ fn unknown_names(names: &[String], input: &str) -> String {
          the PFD of the spec",
         quoted.join(", ")
     )
-}
-
-/// A nonzero factor made of parameters, numerator / denominator, in lowest terms.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Factor {
-    /// Numerator (a polynomial in the parameters).
-    pub numerator: Expr,
-    /// Denominator (a polynomial in the parameters; 1 for a polynomial factor).
-    pub denominator: Expr,
-}
-
-impl Factor {
-    /// Whether the factor is exactly 1 (the equation as derived).
-    pub fn is_one(&self) -> bool {
-        self.numerator.is_one() && self.denominator.is_one()
-    }
-
-    /// Whether the factor is a number (no parameter).
-    pub fn is_number(&self) -> bool {
-        self.numerator.as_rational().is_some() && self.denominator.as_rational().is_some()
-    }
-}
-
-impl fmt::Display for Factor {
-    /// `m*l`, `1/(L*m)`, `(M + m)/m`, in the expression syntax.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let wrap = |e: &Expr| {
-            if e.nterms() > 1 || e.to_string().contains(['*', '/']) {
-                format!("({e})")
-            } else {
-                e.to_string()
-            }
-        };
-        if self.denominator.is_one() {
-            // A sum multiplies as a whole: eom = (A + m*a^2) × (lhs − rhs).
-            if self.numerator.nterms() > 1 {
-                write!(f, "({})", self.numerator)
-            } else {
-                write!(f, "{}", self.numerator)
-            }
-        } else {
-            let n = if self.numerator.nterms() > 1 {
-                format!("({})", self.numerator)
-            } else {
-                self.numerator.to_string()
-            };
-            write!(f, "{n}/{}", wrap(&self.denominator))
-        }
-    }
 }
 
 /// Which check decided a verdict.
@@ -133,6 +95,13 @@ pub enum Check {
     /// An equation `lhs = rhs` as a relation: it holds when lhs − rhs, every quantity replaced
     /// by its derived value and every unknown by its solved value, is identically zero.
     Relation,
+    /// Not an identity, but zero along every motion: lhs − rhs (or given − derived) is
+    /// Σ cᵢ eom(qᵢ), each coordinate with its coefficient cᵢ, which may hold the coordinates
+    /// and the rates (the kinetic energy theorem is Σ q̇ᵢ eom(qᵢ)).
+    AlongMotions {
+        /// (coordinate, cᵢ), the nonzero coefficients in the order of the coordinates' names.
+        combination: Vec<(String, Factor)>,
+    },
 }
 
 /// The verdict: equivalent or not, which check decided, and the simplified difference.
@@ -243,6 +212,23 @@ impl fmt::Display for Verdict {
                 Check::EquationOfMotion { coordinate } => {
                     self.write_equivalent_eom(f, &subject, &under, coordinate)
                 }
+                Check::AlongMotions { combination } => {
+                    let sides = match self.equation {
+                        Some(_) => "lhs − rhs",
+                        None => "given − derived",
+                    };
+                    let sum: Vec<String> = combination
+                        .iter()
+                        .map(|(q, c)| format!("{c} × eom({q})"))
+                        .collect();
+                    write!(
+                        f,
+                        "{subject}: equivalent along the motions (not identically): {sides} = \
+                         {}{}",
+                        sum.join(" + "),
+                        self.replaced()
+                    )
+                }
             };
         }
         self.write_not_equivalent(f, &subject)?;
@@ -337,6 +323,7 @@ impl Verdict {
                  motion times a nonzero factor made of parameters; lhs − rhs =",
                 self.replaced()
             )?,
+            Check::AlongMotions { .. } => writeln!(f, "{subject}: NOT equivalent")?,
         }
         Ok(())
     }
@@ -432,8 +419,8 @@ fn parse_shaped(
     Ok(given)
 }
 
-/// The hypothesis of that name.
-fn hypothesis<'a>(
+/// The hypothesis of that name (also for the Python module's `derive`).
+pub(crate) fn hypothesis<'a>(
     m: &'a Mechanism,
     h: Option<&str>,
 ) -> Result<Option<&'a Hypothesis>, VerifyError> {
@@ -521,12 +508,28 @@ pub fn verify(
         .zip(derived.fractions())
         .map(|((n, den), d)| &(n * &d.den) - &(den * &d.num))
         .collect();
-    let denominators = given.into_iter().map(|(_, den)| den).collect();
+    let denominators: Vec<Expr> = given.into_iter().map(|(_, den)| den).collect();
+    // A scalar that differs from the derived one but not along the motions (dEc/dt written
+    // as the power of the actions): given − derived, over d·D, is a combination of the
+    // equations of motion.
+    let mut check = Check::Value;
+    let mut difference: Vec<Expr> = difference;
+    if let ([diff], [den], [d]) = (
+        difference.as_slice(),
+        denominators.as_slice(),
+        derived.fractions().as_slice(),
+    ) && !diff.is_zero()
+        && let motions::Along::Combination(combination) =
+            motions::along_motions(&mut reader, diff, &(den * &d.den))?
+    {
+        check = Check::AlongMotions { combination };
+        difference = vec![m.reg.zero()];
+    }
     Ok(Verdict {
         quantity: q.to_string(),
         equation: None,
         hypothesis: hypothesis_name.map(str::to_string),
-        check: Check::Value,
+        check,
         derived,
         difference,
         factor: None,
@@ -674,6 +677,18 @@ fn relation(
             }
         }
     }
+    // Not an identity nor an equation of motion: zero along the motions?
+    if let motions::Along::Combination(combination) = motions::along_motions(&mut reader, &e, &den)?
+    {
+        let zero = m.reg.zero();
+        return Ok(verdict(
+            Check::AlongMotions { combination },
+            zero.clone(),
+            zero,
+            None,
+            reader.substituted,
+        ));
+    }
     let zero = m.reg.zero();
     Ok(verdict(Check::Relation, zero, e, None, reader.substituted))
 }
@@ -682,9 +697,9 @@ fn relation(
 /// unknowns of the PFD (`X01`, `C_m`) and expressions of the spec's names: it holds when
 /// lhs − rhs, every quantity replaced by its derived value and every unknown by its solved
 /// value, is identically zero, or else when it is an equation of motion of the spec up to a
-/// nonzero factor made of parameters (the verdict's [`Check`] says which). An equation that
-/// holds only along the motions after an equation of motion has eliminated an acceleration is
-/// not recognised, unless it is itself one equation of motion up to such a factor.
+/// nonzero factor made of parameters, or else when it holds along every motion, a combination
+/// of the equations of motion with coefficients that may hold coordinates and rates
+/// (the verdict's [`Check`] says which).
 ///
 /// ```
 /// use torseur::{spec, verify::{verify_equation, Check}};
@@ -698,6 +713,10 @@ fn relation(
 /// assert_eq!(v.check, Check::EquationOfMotion { coordinate: "theta2".into() });
 /// assert_eq!(v.factor.unwrap().to_string(), "1/2");
 /// assert!(!verify_equation(&m, "C_m = 0", None).unwrap().is_equivalent());
+/// // The kinetic energy theorem: θ̇2 times the equation of motion of θ2.
+/// let v = verify_equation(&m, "d/dt(Ec(E/0)) = P(ext->E/0) + Pint(E)", None).unwrap();
+/// assert!(v.is_equivalent());
+/// assert!(matches!(v.check, Check::AlongMotions { .. }));
 /// ```
 pub fn verify_equation(
     m: &Mechanism,

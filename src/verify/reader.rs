@@ -68,7 +68,7 @@ impl<'a> Reader<'a> {
             .m
             .reg
             .parse_fraction_with(&out, &lookup)
-            .map_err(|err| users_text(err, text))?;
+            .map_err(|err| users_text(err, text, &placeholders))?;
         if !d.is_one() && self.hypothesis.is_some_and(|h| !h.first_order.is_empty()) {
             return Err(VerifyError::Shape(format!(
                 "`{text}` divides by `{d}`: a fraction is not compared at first order in small \
@@ -114,7 +114,7 @@ impl<'a> Reader<'a> {
             .m
             .reg
             .parse_vector_with(&out, &bv, &lookup)
-            .map_err(|err| users_text(err, text))?;
+            .map_err(|err| users_text(err, text, &placeholders))?;
         let mut v = crate::vector::Vector::zero();
         for (f, c) in parts {
             let mut done = Vec::with_capacity(3);
@@ -141,7 +141,7 @@ impl<'a> Reader<'a> {
         &mut self,
         text: &str,
         allowed: &dyn Fn(&str) -> bool,
-    ) -> Result<(String, Vec<(String, Expr)>), VerifyError> {
+    ) -> Result<(String, Vec<Placeholder>), VerifyError> {
         let reg = self.m.reg.clone();
         // The time is known where the spec writes it: a phase Ω t then exists.
         let timed = reg.coordinates().iter().any(|c| c.phase().is_some());
@@ -156,7 +156,7 @@ impl<'a> Reader<'a> {
         let prefix = placeholder_prefix(&reg, text);
         let b = text.as_bytes();
         let mut out = String::with_capacity(text.len());
-        let mut placeholders: Vec<(String, Expr)> = Vec::new();
+        let mut placeholders: Vec<Placeholder> = Vec::new();
         let mut unknown: Vec<String> = Vec::new();
         let mut i = 0;
         while i < b.len() {
@@ -186,7 +186,21 @@ impl<'a> Reader<'a> {
             while j < b.len() && b[j].is_ascii_whitespace() {
                 j += 1;
             }
+            // d/dt(Q), d/dt(Q)|R.x0: the time derivative of a quantity.
+            if let Some(end) = derivative_end(text, start, i)? {
+                let notation = &text[start..end];
+                let q = Quantity::parse(notation)?;
+                let value = self.quantity_value(&q, notation)?;
+                let name = format!("{prefix}{}", placeholders.len());
+                out.push_str(&name);
+                placeholders.push(Placeholder::new(name, notation, value));
+                i = end;
+                continue;
+            }
             let call = j < b.len() && b[j] == b'(';
+            if call && matches!(word, "dot" | "ddot") {
+                rate_of_a_coordinate(text, start, j)?;
+            }
             if !call || SYNTAX_FUNCTIONS.contains(&word) {
                 if !call && !known(word) && !unknown.iter().any(|u| u == word) {
                     unknown.push(word.to_string());
@@ -203,7 +217,7 @@ impl<'a> Reader<'a> {
             let value = self.quantity_value(&q, notation)?;
             let name = format!("{prefix}{}", placeholders.len());
             out.push_str(&name);
-            placeholders.push((name, value));
+            placeholders.push(Placeholder::new(name, notation, value));
             i = end;
         }
         if !unknown.is_empty() {
@@ -282,24 +296,98 @@ impl<'a> Reader<'a> {
     }
 }
 
-/// The value a placeholder name stands for.
-fn placeholder(placeholders: &[(String, Expr)], n: &str) -> Option<Expr> {
-    placeholders
-        .iter()
-        .find(|(p, _)| p == n)
-        .map(|(_, e)| e.clone())
+/// A quantity of the user's text replaced by a name for the parser: the name, the notation
+/// typed, its value.
+struct Placeholder {
+    name: String,
+    notation: String,
+    value: Expr,
 }
 
-/// A parse error about the user's text, not the one with placeholders.
-fn users_text(err: ExprError, text: &str) -> ExprError {
+impl Placeholder {
+    fn new(name: String, notation: &str, value: Expr) -> Placeholder {
+        Placeholder {
+            name,
+            notation: notation.to_string(),
+            value,
+        }
+    }
+}
+
+/// The value a placeholder name stands for.
+fn placeholder(placeholders: &[Placeholder], n: &str) -> Option<Expr> {
+    placeholders
+        .iter()
+        .find(|p| p.name == n)
+        .map(|p| p.value.clone())
+}
+
+/// `dot(Q)` or `ddot(Q)` (the word from byte `start`, its parenthesis at byte `open`) whose
+/// argument is a quantity, not a coordinate: refused with the notation of a quantity's
+/// derivative, before the parser would name the placeholder that stands for Q.
+fn rate_of_a_coordinate(text: &str, start: usize, open: usize) -> Result<(), VerifyError> {
+    let mut depth = 0usize;
+    let Some(close) = text[open..].char_indices().find_map(|(k, c)| {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(open + k);
+                }
+            }
+            _ => {}
+        }
+        None
+    }) else {
+        // Unbalanced: the parser says so.
+        return Ok(());
+    };
+    let inner = text[open + 1..close].trim();
+    if !inner.contains('(') {
+        return Ok(());
+    }
+    let word = &text[start..open].trim_end();
+    let what = match *word {
+        "dot" => "the rate of a coordinate",
+        _ => "the second derivative of a coordinate",
+    };
+    let vector = !inner.starts_with("Ec(") && !inner.contains(").");
+    let written = if vector {
+        format!("d/dt({inner})|0 for its derivative in R0 (the frame after the bar)")
+    } else {
+        format!("d/dt({inner})")
+    };
+    let once = if *word == "dot" {
+        ""
+    } else {
+        ", a first derivative only"
+    };
+    Err(VerifyError::Shape(format!(
+        "`{}`: {word}(q) is {what}; the time derivative of a quantity is written \
+         {written}{once}",
+        &text[start..=close]
+    )))
+}
+
+/// A parse error about the user's text, not the one with placeholders: each placeholder
+/// named in the reason is written back as the notation it stands for.
+fn users_text(err: ExprError, text: &str, placeholders: &[Placeholder]) -> ExprError {
+    let back = |mut reason: String| {
+        // The longest names first (qty10 before qty1).
+        for p in placeholders.iter().rev() {
+            reason = reason.replace(&p.name, &p.notation);
+        }
+        reason
+    };
     match err {
         ExprError::Parse { reason, .. } => ExprError::Parse {
             input: text.to_string(),
-            reason,
+            reason: back(reason),
         },
         ExprError::Unsupported { reason, .. } => ExprError::Unsupported {
             input: text.to_string(),
-            reason,
+            reason: back(reason),
         },
         other => other,
     }
@@ -345,6 +433,46 @@ fn placeholder_prefix(reg: &Registry, text: &str) -> String {
         prefix.push('_');
     }
     prefix
+}
+
+/// The end of a derivative `d/dt(Q)`, `d/dt(Q)|R` or `d/dt(Q)|R.x2` whose word `d` spans
+/// `start..word_end` of `text`; none when the word does not start one.
+fn derivative_end(text: &str, start: usize, word_end: usize) -> Result<Option<usize>, VerifyError> {
+    let rest = &text[word_end..];
+    let trimmed = rest.trim_start();
+    if &text[start..word_end] != "d" || !trimmed.starts_with('/') {
+        return Ok(None);
+    }
+    let after_bar = trimmed[1..].trim_start();
+    let Some(dt) = after_bar.strip_prefix("dt") else {
+        return Ok(None);
+    };
+    let paren = dt.trim_start();
+    if !paren.starts_with('(') {
+        return Ok(None);
+    }
+    let open = text.len() - paren.len();
+    let mut end = quantity_end(text, open)?;
+    let b = text.as_bytes();
+    if b.get(end) == Some(&b'|') {
+        end += 1;
+        while end < b.len() && (b[end].is_ascii_alphanumeric() || b[end] == b'_') {
+            end += 1;
+        }
+        // A projection `.x2` after the frame.
+        if b.get(end) == Some(&b'.')
+            && b.get(end + 1)
+                .is_some_and(|a| matches!(a, b'x' | b'y' | b'z'))
+            && b.get(end + 2)
+                .is_some_and(|a| a.is_ascii_alphanumeric() || *a == b'_')
+        {
+            end += 2;
+            while end < b.len() && (b[end].is_ascii_alphanumeric() || b[end] == b'_') {
+                end += 1;
+            }
+        }
+    }
+    Ok(Some(end))
 }
 
 /// The end of a quantity `name(...)` whose opening parenthesis is at byte `open` of `text`,

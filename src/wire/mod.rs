@@ -331,6 +331,11 @@ pub enum TheoremKind {
     Resultant,
     /// Théorème du moment dynamique: δ(P,S/R0)·u = M(P,S̄→S)·u.
     Moment,
+    /// Théorème de l'énergie cinétique: dEc(E/R0)/dt = P(Ē→E/R0) + P_int(E), E in its motion
+    /// relative to the ground (galilean); a scalar equation, at no point and on no vector.
+    /// As the equation of motion of q (`eom`), it is q̇ times that equation once the unknowns
+    /// the other equations determine are replaced: divided by q̇.
+    Energy,
 }
 
 /// One scalar equation of the PFD.
@@ -344,8 +349,10 @@ pub struct TheoremSpec {
     /// Point of the moment theorem.
     #[serde(default)]
     pub point: Option<String>,
-    /// Basis vector it is projected on.
-    pub on: String,
+    /// Basis vector a resultant or moment theorem is projected on (none for the energy
+    /// theorem, a scalar equation).
+    #[serde(default)]
+    pub on: Option<String>,
     /// When this equation is the equation of motion of a coordinate (`theta2`): it is then
     /// `eom(theta2)`; otherwise it determines unknowns.
     #[serde(default)]
@@ -709,10 +716,19 @@ pub struct SolidSpec {
     pub name: String,
     /// Frame attached to the solid.
     pub frame: String,
-    /// Mass expression.
-    pub mass: String,
-    /// Centre of inertia (a point).
-    pub centre: String,
+    /// Mass expression; absent for a body of negligible mass (`"massless": true`). A mass
+    /// of `0` declares a body of negligible mass too.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mass: Option<String>,
+    /// A body of negligible mass (« de masse négligeable »): a nacelle, a gimbal, a support
+    /// that carries links and actions but whose kinetic and dynamic torsors and kinetic
+    /// energy are zero, so that the PFD applied to it is the balance of the actions on it.
+    /// It has no `mass`, no `inertia` and no `symmetries`; its `centre` may be left out.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub massless: bool,
+    /// Centre of inertia (a point); may be left out for a body of negligible mass.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub centre: Option<String>,
     /// Inertia operator; absent for a point mass.
     #[serde(default)]
     pub inertia: Option<InertiaSpec>,

@@ -11,7 +11,7 @@ use torseur::expr::Expr;
 use torseur::mechanism::Mechanism;
 
 #[derive(Debug, Clone, PartialEq)]
-enum Tok {
+pub(super) enum Tok {
     /// `\name`, or `\,` `\\` `\{` (one non-letter character).
     Cmd(String),
     Letter(char),
@@ -19,7 +19,7 @@ enum Tok {
     Sym(char),
 }
 
-fn tokenize(s: &str) -> Vec<Tok> {
+pub(super) fn tokenize(s: &str) -> Vec<Tok> {
     let cs: Vec<char> = s.chars().collect();
     let mut out = Vec::new();
     let mut i = 0;
@@ -356,7 +356,7 @@ impl Reader<'_> {
 
 /// The equations of an `align*` body: (left side, right side) as tokens; `&\phantom{=}`
 /// rows continue the previous right side. Rows inside environments are kept whole.
-fn equations(body: &str) -> Vec<(Vec<Tok>, Vec<Tok>)> {
+pub(super) fn equations(body: &str) -> Vec<(Vec<Tok>, Vec<Tok>)> {
     let toks = tokenize(body);
     let mut rows: Vec<Vec<Tok>> = vec![vec![]];
     let mut env = 0;
@@ -410,14 +410,14 @@ fn equations(body: &str) -> Vec<(Vec<Tok>, Vec<Tok>)> {
     eqs
 }
 
-struct Ctx<'a> {
-    m: &'a Mechanism,
+pub(super) struct Ctx<'a> {
+    pub(super) m: &'a Mechanism,
     names: HashMap<String, String>,
     vectors: HashMap<String, (char, String)>,
 }
 
 impl Ctx<'_> {
-    fn new(m: &Mechanism) -> Ctx<'_> {
+    pub(super) fn new(m: &Mechanism) -> Ctx<'_> {
         let mut names = HashMap::new();
         let ids = m
             .reg()
@@ -501,7 +501,7 @@ impl Ctx<'_> {
             .map_err(|e| format!("{text}: {e}"))
     }
 
-    fn scalar(&self, t: &[Tok]) -> Result<Expr, String> {
+    pub(super) fn scalar(&self, t: &[Tok]) -> Result<Expr, String> {
         let (e, seen) = self.read(t, &|_, _| "0")?;
         if !seen.is_empty() {
             return Err(format!("a scalar printed with basis vectors {seen:?}"));
@@ -872,6 +872,8 @@ fn every_printed_formula_is_the_engines_value() {
                 Some(r) => prove_equality(&ctx, &d.latex, &d.value, r),
                 None => prove(&ctx, &d.latex, &d.value),
             };
+            // The left side's own symbols (a solid's mass and centre), read back too.
+            let proof = proof.and_then(|()| super::printed_names::check(&ctx, d));
             if let Err(e) = proof {
                 panic!(
                     "{}: {} ({:?}, under {:?}) is printed wrong: {e}\n{}",

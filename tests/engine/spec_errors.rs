@@ -511,10 +511,17 @@ fn every_error_message_is_bounded_and_names_its_path() {
 #[test]
 fn a_json_or_syntax_error_says_its_place_once_on_one_line() {
     let mut v = base();
+    v["solids"][1].as_object_mut().unwrap().remove("frame");
+    let missing = refused(v).to_string();
+    assert_eq!(missing.matches("line").count(), 1, "{missing}");
+    assert!(missing.contains("missing field `frame`"), "{missing}");
+    // A mass left out (it may be, for a body of negligible mass) is placed at its solid.
+    let mut v = base();
     v["solids"][1].as_object_mut().unwrap().remove("mass");
     let missing = refused(v).to_string();
     assert_eq!(missing.matches("line").count(), 1, "{missing}");
-    assert!(missing.contains("missing field `mass`"), "{missing}");
+    assert!(missing.starts_with("at solids[1].mass (line"), "{missing}");
+    assert!(missing.contains("\"massless\": true"), "{missing}");
 
     let text = base().to_string();
     let broken = text.replacen("\"ground\"", "\"ground\" \"", 1);
@@ -569,4 +576,117 @@ fn the_time_enters_only_as_a_phase_of_a_parameter() {
     let mut v = forced();
     v["actions"][0]["resultant"] = "F0*sin(2*Omega*t)*x0".into();
     assert!(from_str(&v.to_string()).is_ok());
+}
+
+#[test]
+fn the_energy_theorem_takes_no_point_and_no_vector() {
+    // pfd[1] of the regulator, the moment at O2 on x2, made an energy theorem.
+    let mut v = base();
+    v["pfd"][1]["theorem"] = "energy".into();
+    let e = refused(v.clone());
+    assert_eq!(path_of(&e), "pfd[1].point", "{e}");
+    assert!(e.to_string().contains("written at no point"), "{e}");
+    v["pfd"][1].as_object_mut().unwrap().remove("point");
+    let e = refused(v.clone());
+    assert_eq!(path_of(&e), "pfd[1].on", "{e}");
+    assert!(e.to_string().contains("projected on no vector"), "{e}");
+    v["pfd"][1].as_object_mut().unwrap().remove("on");
+    assert!(from_str(&v.to_string()).is_ok());
+    // A moment theorem without its vector.
+    let mut v = base();
+    v["pfd"][0].as_object_mut().unwrap().remove("on");
+    let e = refused(v);
+    assert_eq!(path_of(&e), "pfd[0].on", "{e}");
+}
+
+/// The gyroscope in a massless Cardan suspension, as JSON to edit.
+fn gyroscope() -> serde_json::Value {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/gyroscope_cardan.json"
+    ))
+    .unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+/// A body of negligible mass is `"massless": true` (or a mass of 0); what contradicts it, and
+/// a solid that gives neither its mass nor `massless`, is refused at its place, saying how
+/// to write it.
+#[test]
+fn a_massless_body_is_declared_without_mass_inertia_or_symmetries() {
+    type Edit<'a> = &'a dyn Fn(&mut serde_json::Value);
+    let cases: [(Edit, &str, &str); 7] = [
+        (
+            &|v| v["solids"][1]["massless"] = false.into(),
+            "solids[1].mass",
+            "\"massless\": true",
+        ),
+        (
+            &|v| v["solids"][1]["mass"] = "m".into(),
+            "solids[1].mass",
+            "remove `mass`",
+        ),
+        (
+            &|v| v["solids"][1]["inertia"] = v["solids"][2]["inertia"].clone(),
+            "solids[1].inertia",
+            "no inertia operator",
+        ),
+        (
+            &|v| {
+                v["solids"][1]["symmetries"] =
+                    serde_json::json!([{"kind": "revolution", "axis": "z2"}])
+            },
+            "solids[1].symmetries[0]",
+            "no symmetry",
+        ),
+        (
+            &|v| {
+                v["solids"][2]["mass"] = "0".into();
+            },
+            "solids[2].inertia",
+            "a mass of 0",
+        ),
+        (
+            &|v| {
+                v["solids"][2].as_object_mut().unwrap().remove("centre");
+            },
+            "solids[2].centre",
+            "centre of inertia",
+        ),
+        (
+            &|v| {
+                v["solids"].as_array_mut().unwrap().remove(1);
+                v["sets"] = serde_json::json!({"E": ["3"], "T": ["1", "3"]});
+            },
+            "links[1].between[1]",
+            "{\"name\": \"2\", \"frame\": \"2\", \"massless\": true}",
+        ),
+    ];
+    for (edit, path, says) in cases {
+        let mut v = gyroscope();
+        edit(&mut v);
+        let e = refused(v);
+        assert_eq!(path_of(&e), path, "{e}");
+        assert!(e.to_string().contains(says), "{e}");
+    }
+    // A mass of 0 (with or without `massless`) is a body of negligible mass, like `massless`.
+    for mass in ["0", "0*m"] {
+        let mut v = gyroscope();
+        v["solids"][0]["mass"] = mass.into();
+        v["solids"][1]["massless"] = false.into();
+        v["solids"][1]["mass"] = mass.into();
+        let m = from_str(&v.to_string()).unwrap();
+        assert!(m.bodies()[0].massless && m.bodies()[1].massless);
+        assert!(m.bodies()[0].mass.is_zero());
+    }
+    // Isolating a frame that is not a solid says how to declare it.
+    let mut v = gyroscope();
+    v["pfd"][0]["isolate"] = "2".into();
+    v["solids"].as_array_mut().unwrap().remove(1);
+    v["sets"] = serde_json::json!({"E": ["3"], "T": ["1", "3"]});
+    v["links"].as_array_mut().unwrap().truncate(1);
+    v["actions"] = serde_json::json!([]);
+    let e = refused(v);
+    assert_eq!(path_of(&e), "pfd[0].isolate", "{e}");
+    assert!(e.to_string().contains("\"massless\": true"), "{e}");
 }

@@ -337,6 +337,12 @@ fn unknowns_take_the_dimension_of_their_place_in_the_actions() {
 fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     let q = q.strip_prefix("lin(").unwrap_or(q);
     let one = |x| (x, None);
+    // d/dt(Q): Q's dimension per second.
+    if let Some(inner) = q.strip_prefix("d/dt(") {
+        let (main, moment) = by_hand(m, inner);
+        let per_second = |x: Dimension| d(x.mass, x.length, x.time - 1);
+        return (per_second(main), moment.map(per_second));
+    }
     let head: String = q
         .chars()
         .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '{')
@@ -364,10 +370,20 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         "M" => one(d(1, 2, -2)),
         "eom" => {
             // A force for the resultant theorem that gives it, a moment for the moment
-            // theorem (the disc on the incline takes x's equation from the moment at I).
+            // theorem (the disc on the incline takes x's equation from the moment at I); the
+            // energy theorem divided by q̇ is a power over a rate: a moment for an angle, a
+            // force for a length.
+            use torseur::spec::wire::TheoremKind;
             let c = &q[4..q.find(')').unwrap()];
+            let angle = m
+                .spec()
+                .coordinates
+                .iter()
+                .any(|x| x.name == c && x.kind == torseur::expr::CoordinateKind::Angle);
             let moment = m.spec().pfd.iter().any(|t| {
-                t.eom.as_deref() == Some(c) && t.theorem == torseur::spec::wire::TheoremKind::Moment
+                t.eom.as_deref() == Some(c)
+                    && (t.theorem == TheoremKind::Moment
+                        || (t.theorem == TheoremKind::Energy && angle))
             });
             one(if moment { d(1, 2, -2) } else { d(1, 1, -2) })
         }
@@ -381,13 +397,15 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 21] = [
+const LIBRARY: [&str; 23] = [
     "bielle_manivelle",
     "bille_tube_tournant",
     "bloc_frottement_sec",
     "bras_robot_deux_axes",
+    "cylindre_gouttiere",
     "disque_plan_incline",
     "double_pendule",
+    "gyroscope_cardan",
     "masse_ressort_forcee",
     "pendule_arbre_tournant",
     "pendule_inverse_ressort",

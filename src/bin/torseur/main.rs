@@ -480,22 +480,7 @@ fn prepare_eval(a: EvalArgs) -> Result<Job, Failure> {
         let mut values = output::Values::parse(&text).map_err(bad_input)?;
         let qs = quantities(&m, &qs)?;
         let ds = values_only(&m, &qs)?;
-        // An action holds its links' unknowns: those without a value are solved for.
-        let solved = ds
-            .iter()
-            .map(|d| output::solve_unknowns(&m, &d.value, &mut values))
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(bad_input)?;
-        // Only the parameters and coordinates the results hold are demanded.
-        let exprs: Vec<&torseur::expr::Expr> = solved.iter().flat_map(|v| v.exprs()).collect();
-        let point = output::numeric_point_for(&m, &values, &exprs).map_err(bad_input)?;
-        let items: Vec<serde_json::Value> = ds
-            .iter()
-            .zip(&solved)
-            .map(|(d, v)| output::try_eval_value(&m, &d.quantity.to_string(), v, &point))
-            .collect::<Result<_, _>>()
-            .map_err(bad_input)?;
-        let j = serde_json::json!({ "quantities": items });
+        let j = output::eval_json(&m, &mut values, &ds).map_err(bad_input)?;
         let text = serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n";
         write(&[(io.target(text_out), text.as_bytes())], out)
     }))
@@ -574,7 +559,7 @@ fn prepare_check(a: CheckArgs) -> Result<Job, Failure> {
         let m = load(&io)?;
         let r = torseur::check::check(&m, samples.clamp(1, 100_000), seed).map_err(bad_input)?;
         let text = if json {
-            check_json(&r).map_err(bad_input)? + "\n"
+            serde_json::to_string_pretty(&r.to_json()).map_err(bad_input)? + "\n"
         } else {
             format!("{r}\n")
         };
@@ -587,32 +572,6 @@ fn prepare_check(a: CheckArgs) -> Result<Job, Failure> {
             Err(check_failure(&r))
         }
     }))
-}
-
-/// `check --json`'s report.
-fn check_json(r: &torseur::check::CheckReport) -> serde_json::Result<String> {
-    let rows: Vec<serde_json::Value> = r
-        .rows
-        .iter()
-        .map(|x| {
-            serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
-                    "worst_relative_error": x.worst, "sample": x.sample,
-                    "ok": x.worst <= torseur::check::TOLERANCE})
-        })
-        .collect();
-    let dims: Vec<serde_json::Value> = r
-        .dimensions
-        .iter()
-        .map(|x| {
-            serde_json::json!({"id": x.quantity, "hypothesis": x.hypothesis,
-                    "ok": x.error.is_none(),
-                    "error": x.error.as_ref().map(|e| e.to_string())})
-        })
-        .collect();
-    let j = serde_json::json!({"samples": r.samples, "seed": r.seed,
-            "tolerance": torseur::check::TOLERANCE, "passed": r.passed(), "quantities": rows,
-            "dimensions": dims});
-    serde_json::to_string_pretty(&j)
 }
 
 /// The exit-1 message of a failed check.

@@ -15,7 +15,11 @@
 //!   the expression's structure), and their coefficients are read exactly with dual numbers;
 //! - every action {T(a→b)} comes with its reaction {T(b→a)} = −{T(a→b)}; isolating S keeps the
 //!   ones received by a member of S from a non-member, plus gravity on every member;
-//! - each declared equation is a residual, dynamic side minus actions, affine in the unknowns.
+//! - each declared equation is a residual, dynamic side minus actions, affine in the unknowns;
+//!   the kinetic energy theorem's is Σ mₖ vₖ·Γₖ over the clouds minus the power of every
+//!   action on a member (each at its point, in its receiver's motion relative to the ground;
+//!   an action between two members and its reaction make the inter-efforts' power), the
+//!   weight of every point mass included; as an equation of motion it is divided by q̇.
 //!
 //! The equations without `eom` are solved with nalgebra's LU for the unknowns that appear in
 //! them; an `eom` equation's residual, with those values substituted, is the equation of
@@ -106,8 +110,10 @@ pub(super) struct ActionInfo {
 struct TheoremInfo {
     /// The isolated solids.
     solids: Vec<usize>,
-    /// Moment theorem (else resultant theorem).
+    /// Moment theorem (else resultant theorem, or the energy theorem).
     moment: bool,
+    /// The kinetic energy theorem: dEc/dt − P(ext) − P_int, no point and no vector.
+    energy: bool,
     /// Point of the moment theorem (the ground origin for a resultant theorem).
     point: usize,
     /// Basis vector projected on: frame, axis.
@@ -209,6 +215,7 @@ pub(super) fn build(
         d.theorems.push(TheoremInfo {
             solids: node.isolate.clone(),
             moment: t.theorem == TheoremKind::Moment,
+            energy: t.theorem == TheoremKind::Energy,
             point: node.point.unwrap_or(0),
             on: node.on,
             eom: node.eom,

@@ -299,6 +299,9 @@ fn residual(
     g: &Vector3<f64>,
     t: &TheoremInfo,
 ) -> Result<(Lin<f64>, f64), NumericError> {
+    if t.energy {
+        return energy_residual(m, st, vals, terms, g, t);
+    }
     let n = m.dynamics.unknowns.len();
     let member = |b: Body| matches!(b, Body::Solid(s) if t.solids.contains(&s));
     let p = st.pos0(t.point);
@@ -343,6 +346,49 @@ fn residual(
     let mut r = actions.neg();
     r.c += dynamic.dot(&u);
     Ok((r, size))
+}
+
+/// The kinetic energy theorem's residual, dEc(E/R0)/dt − P(ext→E/R0) − P_int(E), and the
+/// size of its terms: Σ mₖ vₖ·Γₖ over the clouds of the members (velocities relative to the
+/// ground), the weight of every point mass, and every action received by a member at its
+/// point, R·V(P∈S/R0) + M(P)·Ω(S/R0) (an action between two members and its reaction sum to
+/// {T(i→j)} ⊗ {V(j/i)}).
+fn energy_residual(
+    m: &NumericModel,
+    st: &State,
+    vals: &Values,
+    terms: &[Term],
+    g: &Vector3<f64>,
+    t: &TheoremInfo,
+) -> Result<(Lin<f64>, f64), NumericError> {
+    let member = |b: Body| matches!(b, Body::Solid(s) if t.solids.contains(&s));
+    let mut rate = 0.0;
+    let mut sum = PowerSum::new(m.dynamics.unknowns.len());
+    for s in &t.solids {
+        let f = m.solids[*s].frame;
+        for (mk, u) in cloud::solid_cloud(m, st, vals, *s)? {
+            let path = st.track(f, &u, 0);
+            let (v, a) = (path.map(|x| x.v1), path.map(|x| x.v2));
+            rate += mk * v.dot(&a);
+            let weight = (g * mk).dot(&v);
+            sum.size = sum.size.max(weight.abs());
+            sum.c += weight;
+        }
+    }
+    for term in terms.iter().filter(|x| member(x.on)) {
+        let f = body_frame(m, term.on);
+        let v = kin::velocity_at(st, f, &term.point, 0);
+        let w = kin::omega(st, f, 0);
+        sum.add(&term.resultant, &term.moment, &v, &w);
+    }
+    let size = sum.size.max(rate.abs());
+    Ok((
+        Lin {
+            c: rate - sum.c,
+            a: sum.a.iter().map(|x| -x).collect(),
+        },
+        size,
+    ))
 }
 
 /// The torsor at the point `p` of the actions `from` exerts on the solids `on` (named
@@ -496,6 +542,10 @@ pub(in crate::numeric) fn eom(
             ))
         })?;
         x += a * v;
+    }
+    // The energy theorem is q̇ times the equation of motion.
+    if dy.theorems[i].energy {
+        x /= vals.coords[*c][1];
     }
     Ok(x)
 }
