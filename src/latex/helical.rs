@@ -84,8 +84,9 @@ fn statement(doc: &mut Doc, l: &LinkSpec) -> String {
 }
 
 /// The screw motion of each helical link that determines a coordinate: the relation, the
-/// two factors with the coordinates, and the relation they give (which reads 0 once the
-/// solved rate stands for the dependent one).
+/// two factors with the coordinates, and the relation they give as the course writes it,
+/// V(P,2/1)·u = p/(2π) Ω(2/1)·u with the factors put in (λ̇ = −p θ̇/(2π)): both sides are the
+/// velocity once the solved rate stands for the dependent one.
 pub(super) fn kinematics(doc: &mut Doc, laws: &[HelicalLaw]) {
     let m = doc.m;
     let title = if laws.len() == 1 {
@@ -107,7 +108,7 @@ pub(super) fn kinematics(doc: &mut Doc, laws: &[HelicalLaw]) {
         ];
         for ((lhs, shown), value) in [(v, &law.velocity), (w, &law.rotation)]
             .into_iter()
-            .zip(values)
+            .zip(values.clone())
         {
             let body = format!("{lhs} &= {}", lines(shown));
             doc.record(
@@ -120,12 +121,13 @@ pub(super) fn kinematics(doc: &mut Doc, laws: &[HelicalLaw]) {
             );
         }
         let _ = writeln!(doc.o, "soit :");
+        let velocity = Value::Scalar(values[0].clone());
         doc.record(
             DisplayRole::Step,
             "helical relation",
-            format!("0 &= {}", lines(&law.row)),
-            &Value::Scalar(m.reg.zero()),
-            None,
+            format!("{} &= {}", law.velocity.join(" "), lines(&law.screw)),
+            &velocity,
+            Some(velocity.clone()),
             false,
         );
     }

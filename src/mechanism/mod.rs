@@ -134,8 +134,9 @@ pub struct LoopLaw {
 }
 
 /// A helical link's relation V(P ∈ b/a)·u = p/(2π) Ω(b/a)·u as the answer key writes it:
-/// the link, its point, frames and axis, and in LaTeX lines the two sides' factors and the
-/// relation, the dependent rate as a symbol (the relation reads 0 in the mechanism).
+/// the link, its point, frames and axis, and in LaTeX lines the two factors and the right
+/// side p/(2π) Ω(b/a)·u, the dependent rate as a symbol (in the mechanism, where it reads its
+/// solved rate, the right side is the velocity V(P ∈ b/a)·u).
 #[derive(Debug, Clone)]
 pub struct HelicalLaw {
     /// Its index in the spec's `links`.
@@ -150,8 +151,8 @@ pub struct HelicalLaw {
     pub velocity: Vec<String>,
     /// Ω(b/a)·u.
     pub rotation: Vec<String>,
-    /// V(P ∈ b/a)·u − p/(2π) Ω(b/a)·u.
-    pub row: Vec<String>,
+    /// p/(2π) Ω(b/a)·u.
+    pub screw: Vec<String>,
 }
 
 /// A rolling condition V(I,2/0) = 0⃗ as the answer key writes it: the velocity, its point and

@@ -52,7 +52,10 @@ pub(super) fn helices(
         let path = format!("links[{}].pitch", h.link);
         let text = spec.links[h.link].pitch.as_deref().unwrap_or("");
         let pitch =
-            (names.parse(text, Context::Constant)).map_err(|e| super::model::spec_err(path, e))?;
+            (names.parse(text, Context::Constant)).map_err(|e| super::model::spec_err(&path, e))?;
+        if !holds_parameter(&pitch) {
+            return Err(super::model::spec_err(path, pure_pitch(text)));
+        }
         out.push(Helix {
             link: h.link,
             point: h.point,
@@ -63,6 +66,31 @@ pub(super) fn helices(
         });
     }
     Ok(out)
+}
+
+/// Whether `node` holds a parameter: a pitch is a length per turn, and a bare number (π
+/// included) has no unit.
+fn holds_parameter(node: &Node) -> bool {
+    match node {
+        Node::Param(_) => true,
+        Node::Num(_) | Node::Coord(_) | Node::Rate(..) | Node::Basis(..) | Node::Unknown(_) => {
+            false
+        }
+        Node::Time => false,
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => holds_parameter(a),
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            holds_parameter(a) || holds_parameter(b)
+        }
+    }
+}
+
+/// The refusal of a pitch written as a bare number, worded as the exact side's.
+fn pure_pitch(text: &str) -> String {
+    let shown: String = text.chars().take(40).collect();
+    format!(
+        "the pitch `{shown}` is a pure number, not a length (m per turn): name a parameter \
+         of unit m"
+    )
 }
 
 /// The helical links that determine a coordinate (their relations join the loop's rows).

@@ -245,7 +245,8 @@ fn helical_row(m: &Mechanism, h: &HelixNode, lead: &str) -> Result<(HelicalLaw, 
     let u = Vector::along(axis.0, axis.1, m.reg.one());
     let v = crate::kinematics::velocity(m, p, fb, fa).dot(&m.frames, &u);
     let w = crate::kinematics::omega(m, fb, fa).dot(&m.frames, &u);
-    let row = &v - &(&k * &w);
+    let screw = &k * &w;
+    let row = &v - &screw;
     if row.is_zero() {
         let why = "the link's relation holds whatever the rates: name no coordinate it determines";
         return Err(at(format!("{path}.dependent"), why));
@@ -258,7 +259,7 @@ fn helical_row(m: &Mechanism, h: &HelixNode, lead: &str) -> Result<(HelicalLaw, 
         axis,
         velocity: lines(&v),
         rotation: lines(&w),
-        row: lines(&row),
+        screw: lines(&screw),
     };
     Ok((law, row))
 }

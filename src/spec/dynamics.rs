@@ -240,7 +240,7 @@ fn pitch(
                 u => format!("in {u}"),
             };
             let why = format!(
-                "the pitch `{}` is {unit}, not a length (m per turn)",
+                "the pitch `{}` is {unit}, not a length (m per turn): name a parameter of unit m",
                 crate::excerpt::excerpt(text)
             );
             return Err(at(at_pitch, why));

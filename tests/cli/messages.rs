@@ -162,7 +162,9 @@ fn a_helical_link_without_its_pitch_or_with_a_mass_for_one_exits_2_at_its_place(
         "{line}"
     );
     assert!(
-        line.ends_with("the pitch `M` is in kg, not a length (m per turn)"),
+        line.ends_with(
+            "the pitch `M` is in kg, not a length (m per turn): name a parameter of unit m"
+        ),
         "{line}"
     );
 }

@@ -275,7 +275,7 @@ fn a_helical_link_written_wrong_is_refused_with_its_place() {
     use serde_json::json;
     // (the edit, the exact side's message, whether the float backend refuses it too: it
     // reads no units, so it takes a pitch of the wrong dimension)
-    let cases: [(&'static Edit, &str, bool); 9] = [
+    let cases: [(&'static Edit, &str, bool); 11] = [
         (
             &|v| remove(v, "pitch"),
             "links[2].pitch: a helical link needs its pitch",
@@ -300,6 +300,18 @@ fn a_helical_link_written_wrong_is_refused_with_its_place() {
             &|v| v["links"][2]["pitch"] = json!("M"),
             "links[2].pitch: the pitch `M` is in kg, not a length",
             false,
+        ),
+        // A bare number has no unit: both sides refuse it (π too), and say what to type.
+        (
+            &|v| v["links"][2]["pitch"] = json!("2"),
+            "links[2].pitch: the pitch `2` is a pure number, not a length (m per turn): name a \
+             parameter of unit m",
+            true,
+        ),
+        (
+            &|v| v["links"][2]["pitch"] = json!("2*pi"),
+            "links[2].pitch: the pitch `2*pi` is a pure number, not a length (m per turn)",
+            true,
         ),
         (
             &|v| v["links"][2]["pitch"] = json!("p*lambda"),
@@ -333,6 +345,30 @@ fn a_helical_link_written_wrong_is_refused_with_its_place() {
         assert!(e.contains(why), "want {want}\ngot {e}");
         assert_eq!(float_refused, float, "float backend on: {want}");
     }
+}
+
+#[test]
+fn a_pitch_without_unit_is_refused_by_the_float_backend_in_the_same_words() {
+    let text = std::fs::read_to_string(format!(
+        "{}/derivations/verin_a_vis.json",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["links"][2]["pitch"] = serde_json::json!("3/2");
+    let wire: torseur::spec::wire::SpecFile = serde_json::from_value(v).unwrap();
+    let e = torseur::numeric::NumericModel::new(&wire)
+        .map(|_| ())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("links[2].pitch"), "{e}");
+    assert!(
+        e.contains(
+            "the pitch `3/2` is a pure number, not a length (m per turn): name a parameter of \
+             unit m"
+        ),
+        "{e}"
+    );
 }
 
 #[test]

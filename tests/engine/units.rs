@@ -397,7 +397,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 23] = [
+const LIBRARY: [&str; 24] = [
     "bielle_manivelle",
     "bille_tube_tournant",
     "bloc_frottement_sec",
@@ -421,6 +421,7 @@ const LIBRARY: [&str; 23] = [
     "toupie",
     "train_engrenages",
     "treuil",
+    "verin_a_vis",
 ];
 
 #[test]
