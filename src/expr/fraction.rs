@@ -202,6 +202,8 @@ impl Registry {
         let a = parse_atom(s)?;
         let w = Walker::new(self, s, names);
         let (n, d) = w.fraction(a.as_view())?;
+        w.numbers_bounded(&n)?;
+        w.numbers_bounded(&d)?;
         match d.as_rational() {
             Some(r) if !r.is_zero() => Ok((n.div_constant(&d).unwrap_or(n), self.one())),
             _ => Ok((n, d)),

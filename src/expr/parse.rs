@@ -4,8 +4,8 @@
 //! sin and cos of a sum or of a multiple angle expand first (angle-addition formulas), so
 //! `sin(2*theta)` and `2*sin(theta)*cos(theta)` have the same canonical form.
 
-use super::lexical::MAX_POWER;
 pub(super) use super::lexical::parse_atom;
+use super::lexical::{MAX_NUMBER_DIGITS, MAX_POWER};
 use super::time::{TIME, TIME_IN_PHASES, is_time, mentions_time};
 use super::{CoordId, Expr, ExprError, LinearAngle, Registry};
 use std::cell::Cell;
@@ -31,7 +31,10 @@ pub(super) fn parse_scalar_with(
     names: &dyn Fn(&str) -> Option<Expr>,
 ) -> Result<Expr, ExprError> {
     let a = parse_atom(s)?;
-    Walker::new(reg, s, names).scalar(a.as_view())
+    let walker = Walker::new(reg, s, names);
+    let e = walker.scalar(a.as_view())?;
+    walker.numbers_bounded(&e)?;
+    Ok(e)
 }
 
 /// The sum of `parts`, added pairwise: adding n terms one by one to a growing sum is
@@ -89,6 +92,29 @@ impl<'a> Walker<'a> {
         if work > PARSE_WORK {
             return Err(self.unsupported(&format!(
                 "its products would take over {PARSE_WORK} term operations to expand"
+            )));
+        }
+        Ok(())
+    }
+
+    /// What parses must print to a text that parses back, and a printed number is a literal
+    /// like any typed one: a number the text computes (777777777777777777777^26) may have at
+    /// most the digits of a typed number, in its numerator and in its denominator.
+    pub(super) fn numbers_bounded(&self, e: &Expr) -> Result<(), ExprError> {
+        let longest =
+            e.p.coefficients
+                .iter()
+                .flat_map(|c| {
+                    c.to_string()
+                        .split('/')
+                        .map(|part| part.bytes().filter(u8::is_ascii_digit).count())
+                        .collect::<Vec<_>>()
+                })
+                .max()
+                .unwrap_or(0);
+        if longest > MAX_NUMBER_DIGITS {
+            return Err(self.unsupported(&format!(
+                "it computes a number of {longest} digits: a number has at most {MAX_NUMBER_DIGITS}"
             )));
         }
         Ok(())

@@ -21,6 +21,9 @@ pub(super) fn parse_vector<K: Ord + Copy>(
     };
     let mut out: Vec<(K, [Expr; 3])> = Vec::new();
     w.vector(a.as_view(), &is_basis, &mut out)?;
+    for e in out.iter().flat_map(|(_, c)| c) {
+        w.numbers_bounded(e)?;
+    }
     Ok(out)
 }
 

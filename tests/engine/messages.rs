@@ -354,6 +354,21 @@ fn number_literals_are_bounded_in_every_expression_text() {
             .ends_with("a number of 101 digits: a number has at most 100"),
         "{e}"
     );
+    // A number the text computes is bounded as a typed one: what parses prints to a text that
+    // parses back (found by the fuzzer: the 544 digits of 6·777777777777777777777²⁶ printed
+    // as one literal the parser then refused).
+    let e = verify(&m, "C_m", "-6*(777777777777777777777)^26", None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.ends_with("it computes a number of 544 digits: a number has at most 100"),
+        "{e}"
+    );
+    let big = format!("10^{}", 99);
+    let text = verify(&m, "C_m", &big, None)
+        .map(|_| ())
+        .map_err(|e| e.to_string());
+    assert!(text.is_ok(), "10^99 has 100 digits: {text:?}");
     // A million digits are refused at once, not read for minutes.
     let start = std::time::Instant::now();
     let mut v = base();
