@@ -54,7 +54,6 @@ fn the_fourier_form_agrees_with_the_canonical_form_on_every_quantity() {
             unknowns: (m.reg().unknowns().iter().enumerate())
                 .map(|(k, n)| (n.clone(), 0.7 + 0.13 * k as f64))
                 .collect(),
-            ..Default::default()
         };
         let point = numeric_point(&m, &values).unwrap();
         // A time coordinate's drawn value, or Ω t for a phase.
