@@ -21,7 +21,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // What is shown reads back to the same vector (the spec's own reader).
     let d = derive(&m, &Quantity::parse("V(G2,2/0)")?)?;
     let text = d.value.display(&m).to_string();
-    let axis = |n: &str| Some((m.frames().find(&n[1..])?, "xyz".find(&n[..1])?));
+    let axis = |n: &str| Some((m.frames().find(n.get(1..)?)?, "xyz".find(n.get(..1)?)?));
     let read = m.reg().parse_vector(&text, &axis)?;
     let torseur::Value::Vector { basis, components } = &d.value else {
         unreachable!()

@@ -582,7 +582,9 @@ fn perfect(k: LinkKind, a: Axis, d: Option<Axis>) -> [bool; 6] {
     let mut t = [true; 6];
     match k {
         LinkKind::Fixed => {}
-        LinkKind::Pivot => t[3 + i] = false,
+        // A helical link's axial moment is no unknown of its own: −p/(2π) times the axial
+        // resultant (added with the torsor, `spec::dynamics`).
+        LinkKind::Pivot | LinkKind::Helical => t[3 + i] = false,
         LinkKind::Slider => t[i] = false,
         LinkKind::PivotSlider => {
             t[i] = false;

@@ -32,12 +32,7 @@ pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String
     }
     for c in s.chars() {
         if !(c.is_ascii_alphanumeric() || " \t\n+-*/^()._,[]".contains(c)) {
-            let hint = match c {
-                '\'' | '’' | '′' => " (a time derivative is written dot(q), ddot(q))",
-                'π' => " (write pi, inside an angle: sin(theta + pi/2))",
-                'θ' | 'φ' | 'ψ' | 'ω' | 'α' | 'β' => " (names are ASCII: theta, phi, psi…)",
-                _ => "",
-            };
+            let hint = super::words::char_hint(c);
             return Err(format!("character `{c}` is not allowed{hint}"));
         }
     }

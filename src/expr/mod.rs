@@ -28,6 +28,7 @@ mod reduce;
 mod registry;
 mod time;
 mod vector_text;
+mod words;
 
 pub use builder::RegistryBuilder;
 pub use flat::FlatEval;
@@ -41,10 +42,10 @@ pub use present::{
     Angle, Cost, Factor, Form, Leaf, Presentation, Product, SEARCH_LIMIT, signed_sum,
 };
 pub use registry::{
-    MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, RESERVED, Registry,
-    check_identifier,
+    MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, Registry,
 };
 pub use time::pulsations_in;
+pub use words::{PI, RESERVED, char_hint, check_identifier, reserved_word};
 
 use crate::excerpt::{bounded, excerpt};
 use std::collections::HashMap;

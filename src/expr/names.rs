@@ -71,6 +71,7 @@ pub fn bare_names(s: &str) -> Vec<String> {
 ///
 /// ```
 /// assert_eq!(torseur::expr::divisors_in("l0 - m*g*sin(beta)/k + V/(2*R*r)"), ["k", "R", "r"]);
+/// assert_eq!(torseur::expr::divisors_in("p*dot(theta)/(2*pi)"), ["pi"]);
 /// assert!(torseur::expr::divisors_in("m*L^2/12").is_empty());
 /// ```
 pub fn divisors_in(s: &str) -> Vec<String> {
@@ -78,7 +79,8 @@ pub fn divisors_in(s: &str) -> Vec<String> {
     fn names(v: AtomView, out: &mut Vec<String>) {
         match v {
             AtomView::Var(x) => {
-                let n = x.get_symbol().get_stripped_name().to_string();
+                // π, as typed (symbolica reads `pi` as its own constant).
+                let n = super::words::typed_name(x.get_symbol());
                 if !out.contains(&n) {
                     out.push(n);
                 }

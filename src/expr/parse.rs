@@ -168,7 +168,14 @@ impl<'a> Walker<'a> {
         match v {
             AtomView::Num(_) => Ok(reg.constant(self.number(v)?)),
             AtomView::Var(var) => {
+                // π: `pi` as typed, which symbolica reads as its own constant.
+                if var.get_symbol() == Symbol::PI {
+                    return Ok(reg.pi());
+                }
                 let name = var.get_symbol().get_stripped_name().to_string();
+                if name == super::PI {
+                    return Ok(reg.pi());
+                }
                 if let Some(p) = reg.param(&name) {
                     return Ok(p);
                 }
@@ -189,9 +196,6 @@ impl<'a> Walker<'a> {
                 }
                 if name == TIME {
                     return Err(self.unsupported(TIME_IN_PHASES));
-                }
-                if var.get_symbol() == Symbol::PI || name == "pi" {
-                    return Err(self.unsupported(PI_OUTSIDE_ANGLES));
                 }
                 Err(ExprError::UnknownName {
                     name,
@@ -281,8 +285,8 @@ impl<'a> Walker<'a> {
                 let AtomView::Var(qv) = arg else {
                     return Err(self.unsupported(&format!("{name}() takes a coordinate name")));
                 };
-                let qsym = qv.get_symbol();
-                let qn = qsym.get_stripped_name();
+                let qn = super::words::typed_name(qv.get_symbol());
+                let qn = qn.as_str();
                 let q = reg.coord(qn).ok_or_else(|| {
                     self.unsupported(&format!("{name}({qn}): `{qn}` is not a coordinate"))
                 })?;
@@ -384,7 +388,7 @@ impl<'a> Walker<'a> {
                         _ if is_time(f) => {}
                         _ if mentions_time(f) => return Err(self.unsupported(TIME_IN_PHASES)),
                         AtomView::Var(v) if pulsation.is_none() => {
-                            pulsation = Some(v.get_symbol().get_stripped_name().to_string())
+                            pulsation = Some(super::words::typed_name(v.get_symbol()))
                         }
                         _ => match self.linear(f).ok().and_then(|l| l.as_constant()) {
                             Some(c) => k = &k * &c,
@@ -480,14 +484,9 @@ impl Linear {
 }
 
 /// Why a constant angle is refused.
-/// Why `pi` is refused outside an angle, and what to write instead.
-const PI_OUTSIDE_ANGLES: &str = "`pi` is read only inside an angle (sin(theta + pi/2)); \
-                                  elsewhere declare a parameter for the number (e.g. `k`, with \
-                                  the value 3.14159… in the values)";
-
 const NOT_QUARTER_TURNS: &str = "a constant angle written with numbers must be a multiple of \
-     pi/2 (the only ones whose cos and sin are exact rationals): declare any other constant \
-     angle as a parameter with \"kind\": \"angle\"";
+     pi/2 (the only ones whose cos and sin are exact rationals: sin(pi/3) is not): declare any \
+     other constant angle as a parameter with \"kind\": \"angle\"";
 
 /// (cos a, sin a) of a = Σ nᵢ aᵢ + k π/2.
 pub(super) fn cos_sin(

@@ -25,9 +25,11 @@ pub struct Registry {
     pub(super) vars: Arc<Vec<PolyVariable>>,
     pub(super) roles: Vec<VarRole>,
     pub(super) role_index: HashMap<VarRole, usize>,
-    /// Parameters, then unknowns.
+    /// Parameters, then unknowns, then `pi`, the constant π (see [`Registry::pi`]).
     pub(super) parameters: Vec<String>,
     pub(super) n_params: usize,
+    /// The slot of π: the last of `parameters`.
+    pub(super) pi: ParamId,
     pub(super) param_var: HashMap<String, usize>,
     /// The time coordinates, then the constant angle parameters.
     pub(super) coords: Vec<CoordInfo>,
@@ -72,26 +74,6 @@ pub(super) fn rate_symbol(order: u8) -> Symbol {
     }
 }
 
-/// A name usable in expressions (parameters, coordinates): an ASCII letter, then letters,
-/// digits or `_`, at most 32 characters. (`21` would read as a number.)
-///
-/// ```
-/// assert!(torseur::expr::check_identifier("theta1").is_ok());
-/// assert!(torseur::expr::check_identifier("21").is_err());
-/// assert!(torseur::expr::check_identifier("m-1").is_err());
-/// ```
-pub fn check_identifier(n: &str) -> Result<(), String> {
-    let mut chars = n.chars();
-    let first_ok = chars.next().is_some_and(|c| c.is_ascii_alphabetic());
-    if !first_ok || n.len() > 32 || !n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
-        return Err(format!(
-            "`{n}` is not a valid name for an expression: a letter, then letters, digits or `_` \
-             (at most 32 characters)"
-        ));
-    }
-    Ok(())
-}
-
 /// Longest expression text the parser accepts: 16 MiB, which holds every derived result of
 /// the chains up to 8 links (the longest, an equation of motion of chain 8, prints to 3.5 MB)
 /// and sympy's printed equations of the same size; beyond it a text is refused, naming the
@@ -112,9 +94,6 @@ pub const MAX_EXPANDED_TERMS: u128 = 500_000;
 /// Largest degree in one variable of the expressions a spec gives (positions, masses, inertia
 /// entries, rates): mechanics multiplies them a few times, staying within [`MAX_INPUT_DEGREE`].
 pub const MAX_SPEC_DEGREE: u32 = 32;
-
-/// Names reserved by the expression syntax.
-pub const RESERVED: &[&str] = &["sin", "cos", "dot", "ddot", "dddot", "pi", "t"];
 
 impl Registry {
     /// Declares parameters and coordinates (none with an imposed rate): the short form of
@@ -183,9 +162,7 @@ impl Registry {
         let mut check = |n: &str| -> Result<(), ExprError> {
             check_identifier(n).map_err(ExprError::Declaration)?;
             if RESERVED.contains(&n) {
-                return Err(ExprError::Declaration(format!(
-                    "`{n}` is reserved by the expression syntax"
-                )));
+                return Err(ExprError::Declaration(reserved_word(n)));
             }
             if seen.insert(n.to_string(), ()).is_some() {
                 return Err(ExprError::Declaration(format!("`{n}` is declared twice")));
@@ -301,36 +278,51 @@ impl Registry {
         }
         let mut param_var = HashMap::new();
         let n_params = parameters.len();
-        let parameters: Vec<String> = parameters.iter().chain(unknowns).cloned().collect();
+        let mut parameters: Vec<String> = parameters.iter().chain(unknowns).cloned().collect();
         for (i, p) in parameters.iter().enumerate() {
             check(p)?;
             vars.push(PolyVariable::Symbol(symbolica::symbol!(p.as_str())));
             roles.push(VarRole::Parameter(ParamId(i)));
             param_var.insert(p.clone(), vars.len() - 1);
         }
+        // π, a positive constant of no dimension: a variable of its own, after every declared
+        // scalar (so that no other variable moves), read from `pi` and printed `pi`.
+        let pi = ParamId(parameters.len());
+        parameters.push(PI.to_string());
+        vars.push(PolyVariable::Symbol(Symbol::PI));
+        roles.push(VarRole::Parameter(pi));
+        let pi_var = vars.len() - 1;
         let mut inverse_pairs = Vec::new();
         for name in &inverses {
-            let Some(&v) = param_var
-                .get(name)
-                .filter(|_| parameters[..n_params].contains(name))
-            else {
+            let found = match name.as_str() {
+                PI => Some((pi, pi_var)),
+                _ => param_var
+                    .get(name)
+                    .filter(|_| parameters[..n_params].contains(name))
+                    .map(|&v| {
+                        (
+                            ParamId(
+                                parameters
+                                    .iter()
+                                    .position(|x| x == name)
+                                    .unwrap_or_default(),
+                            ),
+                            v,
+                        )
+                    }),
+            };
+            let Some((p, v)) = found else {
                 return Err(ExprError::Declaration(format!(
                     "cannot divide by `{name}`: a text may divide only by parameters (not by a \
                      coordinate, a rate or an unknown)"
                 )));
             };
-            let p = ParamId(
-                parameters
-                    .iter()
-                    .position(|x| x == name)
-                    .unwrap_or_default(),
-            );
+            if inverse_pairs.iter().any(|&(q, _, _)| q == p) {
+                continue;
+            }
             vars.push(PolyVariable::Function(
                 inverse_symbol(),
-                symbolica::function!(
-                    inverse_symbol(),
-                    Atom::var(symbolica::symbol!(name.as_str()))
-                ),
+                symbolica::function!(inverse_symbol(), vars[v].to_atom()),
             ));
             roles.push(VarRole::Inverse(p));
             inverse_pairs.push((p, v, vars.len() - 1));
@@ -386,6 +378,7 @@ impl Registry {
             roles,
             parameters,
             n_params,
+            pi,
             param_var,
             coords: infos,
             n_coords,
@@ -405,6 +398,7 @@ impl Registry {
                 role_index: reg.role_index.clone(),
                 parameters: reg.parameters.clone(),
                 n_params: reg.n_params,
+                pi: reg.pi,
                 param_var: reg.param_var.clone(),
                 coords: reg.coords.clone(),
                 n_coords: reg.n_coords,
@@ -474,17 +468,20 @@ impl Registry {
 
     /// The unknowns of the PFD, in declaration order.
     pub fn unknowns(&self) -> &[String] {
-        &self.parameters[self.n_params..]
+        &self.parameters[self.n_params..self.pi.0]
     }
 
-    /// Name of a parameter or unknown.
+    /// Name of a parameter or unknown (`pi` for π).
     pub fn scalar_name(&self, i: ParamId) -> &str {
         &self.parameters[i.0]
     }
 
-    /// A parameter or an unknown of the PFD by name.
+    /// A parameter or an unknown of the PFD by name (never π, which no statement sets).
     pub fn param_id(&self, name: &str) -> Option<ParamId> {
-        self.parameters.iter().position(|p| p == name).map(ParamId)
+        self.parameters[..self.pi.0]
+            .iter()
+            .position(|p| p == name)
+            .map(ParamId)
     }
 
     /// Whether variable `i` may enter a factor between two equations
@@ -505,12 +502,18 @@ impl Registry {
         if self.is_unknown(p) {
             return u32::MAX;
         }
-        self.display_ranks.get(p.0).copied().unwrap_or(u32::MAX - 1)
+        // π before every parameter, as a number is (2 π R); the others keep their order.
+        if self.is_pi(p) {
+            return 0;
+        }
+        (self.display_ranks.get(p.0).copied())
+            .unwrap_or(u32::MAX - 1)
+            .saturating_add(1)
     }
 
     /// Whether a parameter slot holds an unknown of the PFD.
     pub fn is_unknown(&self, i: ParamId) -> bool {
-        i.0 >= self.n_params
+        i.0 >= self.n_params && i != self.pi
     }
 
     /// The time coordinates, in declaration order (not the constant angle parameters).

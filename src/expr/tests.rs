@@ -472,7 +472,7 @@ fn fused_products_and_the_one_pass_reduction_match_float_trigonometry() {
                 VarRole::Cos(_) => qb.cos(),
                 VarRole::Sin(_) => qb.sin(),
                 VarRole::Value(_) => x,
-                VarRole::Parameter(p) => [m, l, k][p.index()],
+                VarRole::Parameter(p) => [m, l, k].get(p.index()).copied().unwrap_or(0.0),
                 _ => 0.0,
             })
             .collect();

@@ -45,7 +45,7 @@ pub fn pulsations_in(s: &str) -> Vec<String> {
             AtomView::Mul(m) if m.iter().any(|f| is_time(f)) => {
                 for f in m.iter() {
                     if let AtomView::Var(x) = f {
-                        let n = x.get_symbol().get_stripped_name().to_string();
+                        let n = super::words::typed_name(x.get_symbol());
                         if n != TIME && !out.contains(&n) {
                             out.push(n);
                         }

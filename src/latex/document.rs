@@ -570,6 +570,7 @@ pub fn answer_key_named(
     title_block(&mut doc);
     super::setup::parametrage(&mut doc);
     super::loop_law::loop_law(&mut doc);
+    super::helical::links(&mut doc);
     super::setup::solids(&mut doc);
     super::hypotheses::model_hypotheses(&mut doc);
     let figures = questions(&mut doc, prefix)?;

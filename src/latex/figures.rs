@@ -377,7 +377,7 @@ fn num(x: f64) -> String {
 }
 
 /// A basis vector of the spec (`z0`) in LaTeX (`\vec{z}_{0}`).
-fn spec_vector(s: &str) -> String {
+pub(super) fn spec_vector(s: &str) -> String {
     if let Some(v) = super::named_vector(s) {
         return v;
     }
@@ -417,6 +417,16 @@ pub fn link_text(l: &LinkSpec) -> String {
             None => format!("linéaire rectiligne de normale ${a}$ en ${p}$"),
         },
         (LinkKind::Point, Some(a)) => format!("ponctuelle de normale $({p}, {a})$"),
+        // The pitch by its name when it is one (a longer pitch is written with the relation).
+        (LinkKind::Helical, Some(a)) => match l.pitch.as_deref().map(str::trim) {
+            Some(n) if crate::expr::check_identifier(n).is_ok() => {
+                format!(
+                    "hélicoïdale d'axe $({p}, {a})$ et de pas ${}$",
+                    super::name(n)
+                )
+            }
+            _ => format!("hélicoïdale d'axe $({p}, {a})$"),
+        },
         (kind, None) => {
             let n = kind.course_name();
             format!(
@@ -471,9 +481,13 @@ pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
     let forest = Forest::of(nodes.len(), &edges);
     let row = forest.rows();
     let o = draw_link_graph(&nodes, &edges, &forest, &row);
-    // The deepest level, the node and the labels' overhang on both sides.
-    let deepest = forest.depth.iter().copied().max().unwrap_or(0) as f64;
-    Some((o, deepest * LEVEL + 1.6))
+    // The deepest level, the node and the labels' overhang on both sides, and the label
+    // beside a vertical edge of the deepest level.
+    let deepest = forest.depth.iter().copied().max().unwrap_or(0);
+    let beside = (edges.keys())
+        .any(|&(a, b)| forest.depth[a] == forest.depth[b] && forest.depth[a] == deepest);
+    let extra = if beside { 3.6 } else { 0.0 };
+    Some((o, deepest as f64 * LEVEL + 1.6 + extra))
 }
 
 /// Edges between two nodes (by index, the smaller first), with the texts of their links.
@@ -603,6 +617,17 @@ fn draw_link_graph(nodes: &[String], edges: &Edges, forest: &Forest, row: &[f64]
         } else {
             (*a, *b)
         };
+        // Two solids of one level joined by a link that closes a loop (a screw and its
+        // nut, each on the frame): the edge is vertical, its label beside it, to the right.
+        if forest.depth[a] == forest.depth[b] {
+            let _ = writeln!(
+                o,
+                "\\draw (n{a}) -- (n{b}) node[midway, right, align=left, text width=3.4cm, \
+                 font=\\footnotesize\\hyphenpenalty10000\\relax] {{{}}};",
+                texts.join("\\\\ ")
+            );
+            continue;
+        }
         // Above a rising or level edge, below a falling one: never between two branches.
         let side = if row[b] > row[a] { "below" } else { "above" };
         let _ = writeln!(

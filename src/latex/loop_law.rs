@@ -1,5 +1,6 @@
-//! The loop law (« loi entrée-sortie ») and the rolling conditions (« roulement sans
-//! glissement ») after the paramétrage of a mechanism with dependent coordinates.
+//! The loop law (« loi entrée-sortie »), the rolling conditions (« roulement sans
+//! glissement ») and the helical links' screw motions after the paramétrage of a mechanism
+//! with dependent coordinates.
 
 use super::document::{DisplayRole, Doc, Inline};
 use crate::derivation::Value;
@@ -24,6 +25,9 @@ pub(super) fn loop_law(doc: &mut Doc) {
     if !law.rolling.is_empty() {
         rolling(doc, &law.rolling);
     }
+    if !law.helical.is_empty() {
+        super::helical::kinematics(doc, &law.helical);
+    }
     let condition = match m.reg.parse(&law.determinant) {
         // A condition on the coordinates only: a length R ≠ 0 goes without saying.
         Ok(d) if !d.is_time_independent() => {
@@ -39,9 +43,11 @@ pub(super) fn loop_law(doc: &mut Doc) {
         _ => String::new(),
     };
     let _ = writeln!(doc.o, "D'où{condition} :");
+    let helical = (law.helical.iter()).filter_map(|h| m.spec.links[h.link].dependent.as_ref());
     let dependent = (m.spec.closures.iter().map(|c| &c.dependent))
         .chain(m.spec.rolling.iter().map(|r| &r.dependent))
-        .flatten();
+        .flatten()
+        .chain(helical);
     for q in dependent.filter_map(|n| m.reg.coord(n)) {
         let rate = m.reg.dot(q);
         let body = format!(

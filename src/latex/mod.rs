@@ -14,6 +14,7 @@ mod expr;
 mod fault;
 mod figures;
 mod greek;
+mod helical;
 mod hypotheses;
 mod loop_law;
 mod method;

@@ -129,6 +129,30 @@ pub struct LoopLaw {
     pub determinant: String,
     /// Each rolling condition of the spec, in its order.
     pub rolling: Vec<RollingLaw>,
+    /// Each helical link that determines a coordinate, in the order of the links.
+    pub helical: Vec<HelicalLaw>,
+}
+
+/// A helical link's relation V(P ∈ b/a)·u = p/(2π) Ω(b/a)·u as the answer key writes it:
+/// the link, its point, frames and axis, and in LaTeX lines the two factors and the right
+/// side p/(2π) Ω(b/a)·u, the dependent rate as a symbol (in the mechanism, where it reads its
+/// solved rate, the right side is the velocity V(P ∈ b/a)·u).
+#[derive(Debug, Clone)]
+pub struct HelicalLaw {
+    /// Its index in the spec's `links`.
+    pub link: usize,
+    /// Its point, on the axis.
+    pub point: PointId,
+    /// The frames of its first solid (a) and of its second (b): the motion b/a.
+    pub motion: [FrameId; 2],
+    /// Its axis u.
+    pub axis: (FrameId, crate::frame::Axis),
+    /// V(P ∈ b/a)·u.
+    pub velocity: Vec<String>,
+    /// Ω(b/a)·u.
+    pub rotation: Vec<String>,
+    /// p/(2π) Ω(b/a)·u.
+    pub screw: Vec<String>,
 }
 
 /// A rolling condition V(I,2/0) = 0⃗ as the answer key writes it: the velocity, its point and

@@ -23,6 +23,119 @@ pub(super) struct Closure {
 /// its components along `on`), and the coordinates whose rates it determines.
 pub(super) type Rolling = crate::resolve::RollingNode;
 
+/// A helical link: the screw motion of its second solid's frame `b` on its first's `a`,
+/// V(P ∈ b/a)·u = p/(2π) Ω(b/a)·u, and the coordinate whose rate it determines.
+#[derive(Debug, Clone)]
+pub(super) struct Helix {
+    /// Its index in the spec's `links`.
+    link: usize,
+    point: usize,
+    /// Frames a and b.
+    motion: [usize; 2],
+    /// The axis u: (frame, axis).
+    axis: (usize, usize),
+    /// The pitch p, read with this backend's parser.
+    pitch: Node,
+    dependent: Option<usize>,
+}
+
+/// Reads the spec's helical links, their pitches with the float backend's own parser, on
+/// their resolved references.
+pub(super) fn helices(
+    spec: &SpecFile,
+    m: &NumericModel,
+    trees: &Resolved,
+) -> Result<Vec<Helix>, NumericError> {
+    let names = m.names();
+    let mut out = Vec::with_capacity(trees.helices.len());
+    for h in &trees.helices {
+        let path = format!("links[{}].pitch", h.link);
+        let text = spec.links[h.link].pitch.as_deref().unwrap_or("");
+        let pitch =
+            (names.parse(text, Context::Constant)).map_err(|e| super::model::spec_err(&path, e))?;
+        if !holds_parameter(&pitch) {
+            return Err(super::model::spec_err(path, pure_pitch(text)));
+        }
+        out.push(Helix {
+            link: h.link,
+            point: h.point,
+            motion: h.motion,
+            axis: h.axis,
+            pitch,
+            dependent: h.dependent,
+        });
+    }
+    Ok(out)
+}
+
+/// Whether `node` holds a parameter: a pitch is a length per turn, and a bare number (π
+/// included) has no unit.
+fn holds_parameter(node: &Node) -> bool {
+    match node {
+        Node::Param(_) => true,
+        Node::Num(_) | Node::Coord(_) | Node::Rate(..) | Node::Basis(..) | Node::Unknown(_) => {
+            false
+        }
+        Node::Time => false,
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => holds_parameter(a),
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            holds_parameter(a) || holds_parameter(b)
+        }
+    }
+}
+
+/// The refusal of a pitch written as a bare number, worded as the exact side's.
+fn pure_pitch(text: &str) -> String {
+    let shown: String = text.chars().take(40).collect();
+    format!(
+        "the pitch `{shown}` is a pure number, not a length (m per turn): name a parameter \
+         of unit m"
+    )
+}
+
+/// The helical links that determine a coordinate (their relations join the loop's rows).
+fn determining(m: &NumericModel) -> impl Iterator<Item = &Helix> {
+    m.helices.iter().filter(|h| h.dependent.is_some())
+}
+
+/// The axial part of a skew matrix (ω of W = [ω]×), from its antisymmetric part.
+fn vee(w: &nalgebra::Matrix3<f64>) -> Vector3<f64> {
+    0.5 * Vector3::new(
+        w[(2, 1)] - w[(1, 2)],
+        w[(0, 2)] - w[(2, 0)],
+        w[(1, 0)] - w[(0, 1)],
+    )
+}
+
+/// Ω(f/0) and its time derivative in ground components: W = Ṙ Rᵀ = [Ω]×, Ẇ = R̈ Rᵀ + Ṙ Ṙᵀ.
+fn spin(st: &State, f: usize) -> [Vector3<f64>; 2] {
+    let r = st.rot[f];
+    let (r0, r1, r2) = (r.map(|x| x.re), r.map(|x| x.v1), r.map(|x| x.v2));
+    [
+        vee(&(r1 * r0.transpose())),
+        vee(&(r2 * r0.transpose() + r1 * r1.transpose())),
+    ]
+}
+
+/// A helical link's relation V(P ∈ b/a)·u − p/(2π) Ω(b/a)·u and its time derivative.
+fn helix_row(st: &State, v: &Values, h: &Helix) -> Result<[f64; 2], NumericError> {
+    let p = expr::eval_scalar(&h.pitch, &v.constants()).map_err(|e| NumericError::Evaluation {
+        what: format!("the pitch of links[{}]", h.link),
+        message: e,
+    })?;
+    let k = p / (2.0 * std::f64::consts::PI);
+    let [a, b] = h.motion;
+    let ([va, aa], [vb, ab]) = (carried(st, h.point, a), carried(st, h.point, b));
+    let ([wa, dwa], [wb, dwb]) = (spin(st, a), spin(st, b));
+    let u = st.rot[h.axis.0].column(h.axis.1).map(|x| x.re);
+    let du = st.rot[h.axis.0].column(h.axis.1).map(|x| x.v1);
+    let (vr, ar, wr, dwr) = (vb - va, ab - aa, wb - wa, dwb - dwa);
+    Ok([
+        vr.dot(&u) - k * wr.dot(&u),
+        ar.dot(&u) + vr.dot(&du) - k * (dwr.dot(&u) + wr.dot(&du)),
+    ])
+}
+
 /// Newton iterations before a loop is declared open.
 const NEWTON_STEPS: usize = 60;
 /// Largest residual of a closed loop, relative to its lengths.
@@ -61,7 +174,8 @@ fn carried(st: &State, p: usize, f: usize) -> [Vector3<f64>; 2] {
     [od + w * rel, odd + dw * rel + w * (pd - od)]
 }
 
-/// Each rolling condition's scalar relations and their time derivatives.
+/// Each rolling condition's scalar relations and their time derivatives, then each helical
+/// link's that determines a coordinate.
 fn rolling_rows(m: &NumericModel, v: &Values) -> Result<[Vec<f64>; 2], NumericError> {
     let st = state(m, v)?;
     let mut rows = [Vec::new(), Vec::new()];
@@ -80,6 +194,11 @@ fn rolling_rows(m: &NumericModel, v: &Values) -> Result<[Vec<f64>; 2], NumericEr
                 rows[1].push(du.dot(&c) + u.dot(&dc));
             }
         }
+    }
+    for h in determining(m) {
+        let [c, dc] = helix_row(&st, v, h)?;
+        rows[0].push(c);
+        rows[1].push(dc);
     }
     Ok(rows)
 }
@@ -131,11 +250,20 @@ fn stacked(m: &NumericModel, v: &Values, k: usize) -> Result<DVector<f64>, Numer
                 .collect::<Vec<_>>()
         })
         .collect();
-    if k > 0 && !m.rolling.is_empty() {
+    if k > 0 && (!m.rolling.is_empty() || determining(m).next().is_some()) {
         let [r1, r2] = rolling_rows(m, v)?;
         out.extend(if k == 1 { r1 } else { r2 });
     }
     Ok(DVector::from_vec(out))
+}
+
+/// The coordinates the closures, the rolling conditions and the helical links determine, in
+/// the order of their rows.
+fn dependents(m: &NumericModel) -> Vec<usize> {
+    (m.closures.iter().flat_map(|c| c.dependent.clone()))
+        .chain(m.rolling.iter().flat_map(|r| r.dependent.clone()))
+        .chain(determining(m).filter_map(|h| h.dependent))
+        .collect()
 }
 
 /// ∂(loop)/∂q_d for each dependent coordinate: the first derivative in t when only q_d moves,
@@ -161,7 +289,7 @@ fn least_squares(j: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
 /// Moves the dependent coordinates of `v` onto the loops: their values (Newton from those
 /// drawn), rates and accelerations. Err with the reason when a loop does not close.
 pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
-    if m.closures.is_empty() && m.rolling.is_empty() {
+    if m.closures.is_empty() && m.rolling.is_empty() && determining(m).next().is_none() {
         return Ok(());
     }
     let looped: Vec<usize> = m
@@ -169,11 +297,7 @@ pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
         .iter()
         .flat_map(|c| c.dependent.clone())
         .collect();
-    let dep: Vec<usize> = looped
-        .iter()
-        .copied()
-        .chain(m.rolling.iter().flat_map(|r| r.dependent.clone()))
-        .collect();
+    let dep = dependents(m);
     let scale = v.params.iter().map(|p| p.abs()).fold(1.0_f64, f64::max);
     let err = |e: NumericError| e.to_string();
     let at_rest = |v: &Values| Values {
@@ -238,7 +362,8 @@ pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
 /// varied): each closure's nonzero ground components as many as its dependent coordinates,
 /// none without a coordinate, and their derivative invertible in the dependent rates.
 pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
-    if m.closures.is_empty() && m.rolling.is_empty() {
+    screw_motions_hold(m)?;
+    if m.closures.is_empty() && m.rolling.is_empty() && determining(m).next().is_none() {
         return Ok(());
     }
     let configs: Vec<Values> = (0..3)
@@ -256,29 +381,94 @@ pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
     for v in &configs {
         at.push(loops(m, v)?);
     }
-    let rank_needed = closure_relations(m, &at)? + rolling_relations(m, &configs)?;
-    let dep: Vec<usize> = m
-        .closures
-        .iter()
-        .flat_map(|c| c.dependent.clone())
-        .chain(m.rolling.iter().flat_map(|r| r.dependent.clone()))
-        .collect();
+    let rank_needed = closure_relations(m, &at)?
+        + rolling_relations(m, &configs)?
+        + helix_relations(m, &configs)?;
+    let dep = dependents(m);
     let full = configs.iter().any(|v| {
         jacobian(m, v, &dep).is_ok_and(|j| j.rank(1e-9 * j.amax().max(1e-300)) == rank_needed)
     });
     if !full {
         let place = match (m.closures.is_empty(), m.rolling.is_empty()) {
-            (false, true) => "closures",
-            (true, false) => "rolling",
-            _ => "closures and rolling",
+            (false, true) => "closures".to_string(),
+            (true, false) => "rolling".to_string(),
+            (true, true) => determining(m)
+                .next()
+                .map(|h| format!("links[{}].dependent", h.link))
+                .unwrap_or_default(),
+            _ => "closures and rolling".to_string(),
         };
         return Err(super::model::spec_err(
             place,
-            "the closures and rolling conditions do not determine their dependent coordinates: \
-             their relations are redundant",
+            "the closures, rolling conditions and helical links do not determine their \
+             dependent coordinates: their relations are redundant",
         ));
     }
     Ok(())
+}
+
+/// Three configurations with every rate drawn (parameters fixed), where the relations are read.
+fn moving_configs(m: &NumericModel) -> Vec<Values> {
+    (0..3)
+        .map(|c| Values {
+            params: (0..m.params.len())
+                .map(|i| 0.6 + 0.29 * (i % 5) as f64)
+                .collect(),
+            coords: (0..m.coords.len())
+                .map(|j| {
+                    let x = 0.3 + 0.41 * j as f64 + 0.77 * c as f64;
+                    [x, 0.9 - 0.37 * x, 0.5 * x - 0.2]
+                })
+                .collect(),
+            time: 0.0,
+        })
+        .collect()
+}
+
+/// A helical link that determines no coordinate: the positions must follow its screw motion,
+/// its relation zero whatever the rates (checked at three moving configurations).
+fn screw_motions_hold(m: &NumericModel) -> Result<(), NumericError> {
+    let free: Vec<&Helix> = m.helices.iter().filter(|h| h.dependent.is_none()).collect();
+    if free.is_empty() {
+        return Ok(());
+    }
+    for v in moving_configs(m) {
+        let st = state(m, &v)?;
+        for h in &free {
+            let [c, _] = helix_row(&st, &v, h)?;
+            let scale = v.params.iter().fold(1.0_f64, |a, p| a.max(p.abs()));
+            if c.abs() > 1e-9 * scale {
+                return Err(super::model::spec_err(
+                    format!("links[{}].dependent", h.link),
+                    "the positions do not follow the screw motion V(P,2/1)·u = p/(2π) \
+                     Ω(2/1)·u: name the coordinate whose rate the link determines",
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Each helical link that determines a coordinate: its relation must hold a rate. Returns
+/// their count (one relation each).
+fn helix_relations(m: &NumericModel, configs: &[Values]) -> Result<usize, NumericError> {
+    let all: Vec<usize> = (0..m.coords.len()).collect();
+    let jacobians: Vec<DMatrix<f64>> = (configs.iter())
+        .filter_map(|v| jacobian(m, v, &all).ok())
+        .collect();
+    let first = (jacobians.first().map_or(0, |j| j.nrows())).saturating_sub(determining(m).count());
+    for (n, h) in determining(m).enumerate() {
+        let holds = jacobians
+            .iter()
+            .any(|j| j.row(first + n).amax() > 1e-12 * j.amax().max(1e-300));
+        if !holds {
+            return Err(super::model::spec_err(
+                format!("links[{}].dependent", h.link),
+                "the link's relation holds whatever the rates: name no coordinate it determines",
+            ));
+        }
+    }
+    Ok(determining(m).count())
 }
 
 /// The closures' scalar relations, counted from their values `at` the configurations: each

@@ -290,6 +290,8 @@ pub struct NumericModel {
     closures: Vec<closure::Closure>,
     /// Rolling conditions, solved numerically at each sample.
     rolling: Vec<closure::Rolling>,
+    /// Helical links: the screw motions that determine coordinates, solved with the loops.
+    helices: Vec<closure::Helix>,
 }
 
 impl NumericModel {
@@ -332,6 +334,7 @@ impl NumericModel {
         let mut model = model::build(spec, &trees)?;
         model.closures = closure::build(spec, &model, &trees)?;
         model.rolling = trees.rolling.clone();
+        model.helices = closure::helices(spec, &model, &trees)?;
         closure::check_shape(&model)?;
         model.dynamics = dynamics::build(spec, &model, &trees, unknowns)?;
         model::mark_positive(&mut model);
@@ -495,7 +498,9 @@ impl NumericModel {
         for _ in 0..100 {
             match sample::draw(self, rng, h) {
                 Err(NumericError::Sampling(m))
-                    if !(self.closures.is_empty() && self.rolling.is_empty())
+                    if !(self.closures.is_empty()
+                        && self.rolling.is_empty()
+                        && self.helices.is_empty())
                         && m.starts_with("closures:") =>
                 {
                     last = Some(m);

@@ -223,6 +223,7 @@ pub(super) fn build(spec: &SpecFile, trees: &Resolved) -> Result<NumericModel, N
         dynamics: Default::default(),
         closures: Vec::new(),
         rolling: Vec::new(),
+        helices: Vec::new(),
     })
 }
 

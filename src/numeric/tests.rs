@@ -695,7 +695,8 @@ fn pi_in_angles_and_positions() {
     let e = spec_error(r#"{"title": "t", "parameters": [{"name": "L"}, {"name": "pi"}]}"#);
     assert_eq!(
         e.to_string(),
-        "spec, at parameters[1].name: `pi` is reserved by the expression syntax"
+        "spec, at parameters[1].name: `pi` is reserved by the expression syntax: it is the \
+         constant π"
     );
     let e = spec_error(r#"{"title": "t", "coordinates": [{"name": "pi", "kind": "angle"}]}"#);
     assert!(e.to_string().contains("coordinates[0].name"), "{e}");

@@ -315,6 +315,11 @@ fn point_where(
 /// Every name of the values file is a parameter, a coordinate or an unknown of the PFD.
 fn check_names(reg: &Registry, values: &Values) -> Result<(), ValuesError> {
     for p in values.parameters.keys() {
+        if p == crate::expr::PI {
+            return Err(ValuesError(
+                "`pi` is the constant π, which the values do not give".to_string(),
+            ));
+        }
         if !reg.parameters().contains(p) {
             return Err(ValuesError(format!("unknown parameter `{p}`")));
         }
@@ -415,6 +420,15 @@ fn variable_value(
         VarRole::Parameter(k) if reg.is_unknown(k) => {
             let name = reg.scalar_name(k);
             values.unknowns.get(name).copied().unwrap_or(f64::NAN)
+        }
+        // π, which no values file gives, and 1/π.
+        VarRole::Parameter(k) | VarRole::Inverse(k) if reg.constant_value(k).is_some() => {
+            let c = reg.constant_value(k).unwrap_or(f64::NAN);
+            if matches!(reg.role(i), VarRole::Inverse(_)) {
+                1.0 / c
+            } else {
+                c
+            }
         }
         VarRole::Parameter(k) => {
             let name = reg.scalar_name(k);

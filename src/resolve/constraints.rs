@@ -1,11 +1,12 @@
-//! The loop closures' and rolling conditions' references, resolved once for both sides: the
-//! coordinates each determines (each once, none with a rate of its own, every other rate
-//! free), a rolling condition's velocity V(I,2/0) read as a point and two frames, and the
-//! directions it is zero along.
+//! The loop closures', rolling conditions' and helical links' references, resolved once for
+//! both sides: the coordinates each determines (each once, none with a rate of its own, every
+//! other rate free), a rolling condition's velocity V(I,2/0) read as a point and two frames,
+//! and the directions it is zero along; a helical link's point, frames and axis.
 
-use super::pfd::Known;
+use super::pfd::{Known, LinkNode, Side};
 use super::{Refusal, at, find};
 use crate::quantity::{Quantity, QuantityKind};
+use crate::wire::LinkKind;
 
 /// A loop closure's references, in the order of the spec's `closures`.
 #[derive(Debug, Clone)]
@@ -28,6 +29,23 @@ pub struct RollingNode {
     pub on: Vec<(usize, usize)>,
     /// The coordinates whose rates it determines (indices in `coordinates`).
     pub dependent: Vec<usize>,
+}
+
+/// A helical link's references, in the order of the spec's `links` (helical ones only).
+#[derive(Debug, Clone)]
+pub struct HelixNode {
+    /// Its index in `links`.
+    pub link: usize,
+    /// The position of its point, on its axis.
+    pub point: usize,
+    /// The positions of the frames of its first and second solids (the ground's for the
+    /// ground): the relation holds in the motion of the second with respect to the first.
+    pub motion: [usize; 2],
+    /// Its axis: (the position of its frame, its axis 0, 1 or 2).
+    pub axis: (usize, usize),
+    /// The coordinate whose rate it determines (index in `coordinates`); none when the
+    /// positions satisfy its relation already.
+    pub dependent: Option<usize>,
 }
 
 /// The coordinates a closure or a rolling condition at `at` determines: at least one, each
@@ -113,10 +131,55 @@ fn rolling(known: &Known, i: usize, taken: &mut Vec<usize>) -> Result<RollingNod
     })
 }
 
-/// The closures and the rolling conditions, and the coordinates' rates: with either, no
-/// coordinate has a given rate (the ones they determine get theirs from them, the others are
-/// free).
-pub(super) fn constraints(known: &Known) -> Result<(Vec<ClosureNode>, Vec<RollingNode>), Refusal> {
+/// The helical links: their points, frames and axes as resolved with the links, and the
+/// coordinate each determines, once and without a rate of its own.
+fn helices(
+    known: &Known,
+    links: &[LinkNode],
+    taken: &mut Vec<usize>,
+) -> Result<Vec<HelixNode>, Refusal> {
+    let spec = known.spec;
+    let frame = |s: Side| match s {
+        Side::Ground => 0,
+        Side::Solid(k) => known.solids[k].frame,
+    };
+    let mut out = Vec::new();
+    for (i, (l, node)) in spec.links.iter().zip(links).enumerate() {
+        if l.kind != LinkKind::Helical {
+            continue;
+        }
+        if let (Some(k), Some(d)) = (node.dependent, &l.dependent) {
+            let path = format!("links[{i}].dependent");
+            if spec.coordinates[k].rate.is_some() {
+                let why = format!(
+                    "`{d}` has a rate of its own (coordinates[{k}].rate): the helical link \
+                     determines it"
+                );
+                return Err(at(path, why));
+            }
+            if taken.contains(&k) {
+                return Err(at(path, format!("`{d}` is determined twice")));
+            }
+            taken.push(k);
+        }
+        out.push(HelixNode {
+            link: i,
+            point: node.point,
+            motion: node.sides().map(frame),
+            axis: node.axis,
+            dependent: node.dependent,
+        });
+    }
+    Ok(out)
+}
+
+/// What [`constraints`] resolves: the closures, the rolling conditions, the helical links.
+pub(super) type Constraints = (Vec<ClosureNode>, Vec<RollingNode>, Vec<HelixNode>);
+
+/// The closures, the rolling conditions and the helical links, and the coordinates' rates:
+/// with any of them determining a rate, no coordinate has a given rate (the ones they
+/// determine get theirs from them, the others are free).
+pub(super) fn constraints(known: &Known, links: &[LinkNode]) -> Result<Constraints, Refusal> {
     let spec = known.spec;
     let mut taken = Vec::new();
     let mut closures = Vec::with_capacity(spec.closures.len());
@@ -128,15 +191,19 @@ pub(super) fn constraints(known: &Known) -> Result<(Vec<ClosureNode>, Vec<Rollin
     let rolling = (0..spec.rolling.len())
         .map(|i| rolling(known, i, &mut taken))
         .collect::<Result<Vec<_>, _>>()?;
+    let helices = helices(known, links, &mut taken)?;
     // The loop's derivative is solved for the dependent rates in terms of free rates.
     if !taken.is_empty()
         && let Some(i) = spec.coordinates.iter().position(|c| c.rate.is_some())
     {
-        return Err(at(
-            format!("coordinates[{i}].rate"),
+        let why = if spec.closures.is_empty() && spec.rolling.is_empty() {
+            "a mechanism with a helical link that determines a coordinate takes free rates only \
+             for now (drive the screw by a torque rather than impose its rate)"
+        } else {
             "a mechanism with a loop closure or a rolling condition takes free rates only for \
-             now (drive the crank by a torque rather than impose its rate)",
-        ));
+             now (drive the crank by a torque rather than impose its rate)"
+        };
+        return Err(at(format!("coordinates[{i}].rate"), why));
     }
-    Ok((closures, rolling))
+    Ok((closures, rolling, helices))
 }

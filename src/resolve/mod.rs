@@ -24,7 +24,7 @@
 use crate::expr::{RESERVED, check_identifier};
 use crate::quantity::check_name;
 use crate::wire::SpecFile;
-pub use constraints::{ClosureNode, RollingNode};
+pub use constraints::{ClosureNode, HelixNode, RollingNode};
 pub use pfd::{ActionNode, Contact, LinkNode, Side, TheoremNode, Unknowns, unknowns, with_signs};
 use pfd::{Known, actions, links, theorems};
 use std::collections::{BTreeMap, HashSet};
@@ -143,6 +143,8 @@ pub struct Resolved<'a> {
     pub closures: Vec<ClosureNode>,
     /// The rolling conditions' references.
     pub rolling: Vec<RollingNode>,
+    /// The helical links' references.
+    pub helices: Vec<HelixNode>,
     frame_by_name: BTreeMap<&'a str, usize>,
     point_by_name: BTreeMap<&'a str, usize>,
 }
@@ -264,10 +266,7 @@ fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
 fn word(path: &str, n: &str) -> Result<(), Refusal> {
     check_identifier(n).map_err(|m| at(path, m))?;
     if RESERVED.contains(&n) {
-        return Err(at(
-            path,
-            format!("`{n}` is reserved by the expression syntax"),
-        ));
+        return Err(at(path, crate::expr::reserved_word(n)));
     }
     Ok(())
 }
@@ -464,7 +463,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     };
     let (links, actions) = (links(&known)?, actions(&known)?);
     let theorems = theorems(&known)?;
-    let (closures, rolling) = constraints::constraints(&known)?;
+    let (closures, rolling, helices) = constraints::constraints(&known, &links)?;
     Ok(Resolved {
         names: Names {
             vectors,
@@ -480,6 +479,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
         theorems,
         closures,
         rolling,
+        helices,
         frame_by_name,
         point_by_name,
     })

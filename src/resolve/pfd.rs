@@ -36,6 +36,8 @@ pub struct LinkNode<'a> {
     pub direction: Option<usize>,
     /// The coordinate its spring measures (index in `coordinates`).
     pub spring: Option<usize>,
+    /// The coordinate whose rate a helical link determines (index in `coordinates`).
+    pub dependent: Option<usize>,
     /// Coulomb's law on its unknowns (`contact_friction`): the axes of its sliding direction
     /// and of its normal in the basis of its axis.
     pub contact: Option<Contact>,
@@ -170,9 +172,12 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
                 "a link joins two different solids",
             ));
         }
-        // A loop closed by a closure (a crank–slider's slide) is a loop of the mechanism.
+        // A loop closed by a closure (a crank–slider's slide), or by a helical link, which
+        // ties its two relative motions itself (a screw turning on the frame, its nut sliding
+        // on it), is a loop of the mechanism.
         let sides = [from, Side::Solid(on)];
-        if let Some(chain) = closes_loop(&out, sides).filter(|_| spec.closures.is_empty()) {
+        let closed = !spec.closures.is_empty() || l.kind == LinkKind::Helical;
+        if let Some(chain) = closes_loop(&out, sides).filter(|_| !closed) {
             let names: Vec<&str> = chain.iter().map(|&k| out[k].name).collect();
             return Err(at(
                 format!("{path}.between"),
@@ -206,6 +211,7 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
             })
             .transpose()?;
         let contact = contact(known, &path, l, axis)?;
+        let dependent = helical(known, &path, l)?;
         out.push(LinkNode {
             name: &l.name,
             from,
@@ -215,6 +221,7 @@ pub(super) fn links<'a>(known: &Known<'_, 'a>) -> Result<Vec<LinkNode<'a>>, Refu
             direction,
             spring,
             contact,
+            dependent,
         });
     }
     Ok(out)
@@ -301,6 +308,32 @@ fn contact(
             normal: axis.1,
         }
     }))
+}
+
+/// A helical link's pitch, which it needs and no other kind takes, and the coordinate whose
+/// rate it determines (index in `coordinates`), if it names one.
+fn helical(known: &Known, path: &str, l: &LinkSpec) -> Result<Option<usize>, Refusal> {
+    let helical = l.kind == LinkKind::Helical;
+    match (&l.pitch, helical) {
+        (None, true) => {
+            let why = "a helical link needs its pitch `pitch`, a length per turn (`p`; negative \
+                       for a left-hand thread)";
+            return Err(at(format!("{path}.pitch"), why));
+        }
+        (Some(_), false) => {
+            let why = "only a helical link (`helical`) has a pitch";
+            return Err(at(format!("{path}.pitch"), why));
+        }
+        _ => {}
+    }
+    let Some(d) = &l.dependent else {
+        return Ok(None);
+    };
+    if !helical {
+        let why = "only a helical link (`helical`) determines a coordinate's rate";
+        return Err(at(format!("{path}.dependent"), why));
+    }
+    find(known.coords, "coordinate", format!("{path}.dependent"), d).map(Some)
 }
 
 /// A link's axis (or normal), which every kind but a ball and a fixed link needs, and a line

@@ -399,6 +399,15 @@ fn base_values(m: &Mechanism, sc: &ScenarioSpec) -> Result<Vec<f64>, String> {
     for v in reg.var_ids() {
         let i = v.index();
         match reg.role(v) {
+            // π and 1/π.
+            VarRole::Parameter(k) | VarRole::Inverse(k) if reg.constant_value(k).is_some() => {
+                let c = reg.constant_value(k).unwrap_or(f64::NAN);
+                base[i] = if matches!(reg.role(v), VarRole::Inverse(_)) {
+                    1.0 / c
+                } else {
+                    c
+                };
+            }
             VarRole::Parameter(k) if !reg.is_unknown(k) => {
                 base[i] = sc.values.get(reg.scalar_name(k)).copied().unwrap_or(0.0);
             }

@@ -12,9 +12,9 @@ use super::SpecError;
 use super::validate::{at, expr_err};
 use crate::expr::{CoordId, Expr, Registry, VarRole};
 use crate::frame::{Axis, FrameId};
-use crate::mechanism::{Mechanism, RollingLaw};
+use crate::mechanism::{HelicalLaw, Mechanism, RollingLaw};
 use crate::point::PointId;
-use crate::resolve::{Resolved, RollingNode};
+use crate::resolve::{HelixNode, Resolved, RollingNode};
 use crate::vector::Vector;
 use crate::wire::RollingSpec;
 use crate::wire::SpecFile;
@@ -35,13 +35,40 @@ pub(super) struct Solved {
     pub derivatives: Vec<Vec<String>>,
     /// Each rolling condition as the answer key writes it.
     pub rolling: Vec<crate::mechanism::RollingLaw>,
+    /// Each helical link that determines a coordinate, as the answer key writes its relation.
+    pub helical: Vec<HelicalLaw>,
     /// The determinant the rates divide by, in the spec syntax.
     pub determinant: String,
 }
 
-/// The spec with only what places the frames and points: the closures are read on it.
-fn geometry(spec: &SpecFile) -> SpecFile {
+/// The spec with only what places the frames and points: the closures are read on it. Each
+/// helical link of `helices` that determines a coordinate leaves its lead per radian
+/// p/(2π) as an alias of the geometry (named apart from every name of the spec), so that
+/// its relation is read with the divisors its pitch brings; their names, in order.
+fn geometry(spec: &SpecFile, helices: &[HelixNode]) -> (SpecFile, Vec<String>) {
+    let taken = |n: &str| {
+        (spec.parameters.iter().map(|p| &p.name))
+            .chain(spec.coordinates.iter().map(|c| &c.name))
+            .chain(spec.aliases.iter().map(|a| &a.name))
+            .any(|x| x == n)
+    };
+    let mut leads = Vec::new();
+    let mut aliases = Vec::new();
+    for h in helices.iter().filter(|h| h.dependent.is_some()) {
+        let mut name = format!("lead{}", h.link);
+        while taken(&name) {
+            name.insert(0, 'z');
+        }
+        let pitch = spec.links[h.link].pitch.as_deref().unwrap_or("0");
+        aliases.push(crate::wire::AliasSpec {
+            name: name.clone(),
+            value: format!("({pitch})/(2*pi)"),
+            description: None,
+        });
+        leads.push(name);
+    }
     let mut g = spec.clone();
+    g.aliases.extend(aliases);
     g.closures.clear();
     g.rolling.clear();
     g.solids.clear();
@@ -56,7 +83,7 @@ fn geometry(spec: &SpecFile) -> SpecFile {
     g.scenarios.clear();
     g.small.clear();
     g.default_basis = None;
-    g
+    (g, leads)
 }
 
 /// The determinant of a square matrix by cofactors along the first row (n ≤ a few).
@@ -91,15 +118,22 @@ fn det(m: &[Vec<Expr>], zero: &Expr) -> Expr {
 /// Solves the closures of a spec, if it has any, on their resolved references (the
 /// coordinates they determine, the rolling conditions' points, frames and directions).
 pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solved>, SpecError> {
-    if spec.closures.is_empty() && spec.rolling.is_empty() {
+    let helices: Vec<&HelixNode> = (resolved.helices.iter())
+        .filter(|h| h.dependent.is_some())
+        .collect();
+    if spec.closures.is_empty() && spec.rolling.is_empty() && helices.is_empty() {
         return Ok(None);
     }
     let dependent: Vec<(String, usize)> = (resolved.closures.iter().map(|c| &c.dependent))
         .chain(resolved.rolling.iter().map(|r| &r.dependent))
         .flatten()
-        .map(|&k| (spec.coordinates[k].name.clone(), k))
+        .copied()
+        .chain(helices.iter().filter_map(|h| h.dependent))
+        .map(|k| (spec.coordinates[k].name.clone(), k))
         .collect();
-    let m = super::validate::build(&geometry(spec))?;
+    let (geometry, leads) = geometry(spec, &resolved.helices);
+    // A pitch the geometry cannot read as a constant is refused at the link, in its words.
+    let m = super::validate::build(&geometry).map_err(|e| at_pitch(spec, &helices, e))?;
     let reg = m.reg.clone();
     let zero = reg.zero();
     let ids: Vec<CoordId> = dependent
@@ -121,6 +155,12 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         rolling.push(law);
         linear.extend(rs);
     }
+    let mut helical = Vec::new();
+    for (h, lead) in helices.iter().zip(&leads) {
+        let (law, row) = helical_row(&m, h, lead)?;
+        helical.push(law);
+        linear.push(row);
+    }
     let mut jac: Vec<Vec<Expr>> = Vec::new();
     let mut rhs: Vec<Expr> = Vec::new();
     for d in &linear {
@@ -133,7 +173,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         rhs.push(b);
     }
     let names: Vec<&str> = dependent.iter().map(|d| d.0.as_str()).collect();
-    let (d, divided) = determinant(spec, &jac, &zero, &names)?;
+    let (d, divided) = determinant((spec, &helices), &jac, &zero, &names)?;
     let mut rates = Vec::new();
     for (col, (_, k)) in dependent.iter().enumerate() {
         let replaced: Vec<Vec<Expr>> = jac
@@ -165,8 +205,63 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
             .collect(),
         derivatives,
         rolling,
+        helical,
         determinant: d.to_string(),
     }))
+}
+
+/// An error of the geometry at one of the aliases it adds for the helical links' pitches
+/// (after the spec's own), said at the link's pitch; any other error as it is.
+fn at_pitch(spec: &SpecFile, helices: &[&HelixNode], e: SpecError) -> SpecError {
+    let SpecError::Invalid { path, .. } = &e else {
+        return e;
+    };
+    let k = (path.strip_prefix("aliases["))
+        .and_then(|r| r.strip_suffix("].value"))
+        .and_then(|k| k.parse::<usize>().ok())
+        .and_then(|k| k.checked_sub(spec.aliases.len()));
+    let Some(h) = k.and_then(|k| helices.get(k)) else {
+        return e;
+    };
+    let text = spec.links[h.link].pitch.as_deref().unwrap_or_default();
+    let why = format!(
+        "the pitch `{}` is not a constant of the parameters (a length: no coordinate, rate, \
+         time or unknown)",
+        crate::excerpt::excerpt(text)
+    );
+    at(format!("links[{}].pitch", h.link), why)
+}
+
+/// A helical link's relation V(P ∈ b/a)·u − p/(2π) Ω(b/a)·u = 0 (linear in the rates), read
+/// on the geometry whose alias `lead` is p/(2π), and how the key writes it.
+fn helical_row(m: &Mechanism, h: &HelixNode, lead: &str) -> Result<(HelicalLaw, Expr), SpecError> {
+    let path = format!("links[{}]", h.link);
+    let k = m
+        .reg
+        .parse(lead)
+        .map_err(|e| expr_err(&format!("{path}.pitch"), e))?;
+    let (p, [fa, fb]) = (PointId(h.point), h.motion.map(FrameId));
+    let axis = (FrameId(h.axis.0), Axis::ALL[h.axis.1]);
+    let u = Vector::along(axis.0, axis.1, m.reg.one());
+    let v = crate::kinematics::velocity(m, p, fb, fa).dot(&m.frames, &u);
+    let w = crate::kinematics::omega(m, fb, fa).dot(&m.frames, &u);
+    let screw = &k * &w;
+    let row = &v - &screw;
+    if row.is_zero() {
+        let why = "the link's relation holds whatever the rates: name no coordinate it determines";
+        return Err(at(format!("{path}.dependent"), why));
+    }
+    let lines = |e: &Expr| crate::latex::expr_lines(e, crate::latex::LINE - 4);
+    let law = HelicalLaw {
+        link: h.link,
+        point: p,
+        motion: [fa, fb],
+        axis,
+        velocity: lines(&v),
+        rotation: lines(&w),
+        screw: lines(&screw),
+    };
+    Ok((law, row))
 }
 
 /// The scalar relations of the closures: each one's nonzero components on the ground's
@@ -227,17 +322,13 @@ fn closure_rows(spec: &SpecFile, m: &Mechanism) -> Result<Vec<Expr>, SpecError> 
 /// factors, refused when a rate is missing from them, when it is 0, and when the canonical
 /// form cannot divide by it.
 fn determinant(
-    spec: &SpecFile,
+    (spec, helices): (&SpecFile, &[&HelixNode]),
     jac: &[Vec<Expr>],
     zero: &Expr,
     names: &[&str],
 ) -> Result<(Expr, Divisors), SpecError> {
-    let place = match (spec.closures.is_empty(), spec.rolling.is_empty()) {
-        (false, true) => "closures",
-        (true, false) => "rolling",
-        _ => "closures and rolling",
-    };
-    let noun = place.replace("rolling", "rolling conditions");
+    let (place, noun) = constraints_place(spec, helices);
+    let (place, noun) = (place.as_str(), noun.as_str());
     // A dependent coordinate whose rate no relation holds cannot be determined by them.
     if let Some(col) = (0..names.len()).find(|&c| jac.iter().all(|row| row[c].is_zero())) {
         return Err(at(
@@ -274,6 +365,36 @@ fn determinant(
         ));
     };
     Ok((d, divided))
+}
+
+/// Where the constraints that determine coordinates are (a JSON path, for a refusal) and what
+/// they are called: `closures`, `rolling`, a helical link's `links[i].dependent`, or those
+/// of several.
+fn constraints_place(spec: &SpecFile, helices: &[&HelixNode]) -> (String, String) {
+    let mut parts: Vec<(String, &str)> = Vec::new();
+    if !spec.closures.is_empty() {
+        parts.push(("closures".into(), "closures"));
+    }
+    if !spec.rolling.is_empty() {
+        parts.push(("rolling".into(), "rolling conditions"));
+    }
+    if let Some(h) = helices.first() {
+        let noun = if helices.len() == 1 {
+            "helical link"
+        } else {
+            "helical links"
+        };
+        parts.push((format!("links[{}].dependent", h.link), noun));
+    }
+    match parts.as_slice() {
+        [(place, noun)] => (place.clone(), noun.to_string()),
+        _ => {
+            let all = |f: &dyn Fn(&(String, &str)) -> String| {
+                parts.iter().map(f).collect::<Vec<_>>().join(" and ")
+            };
+            (all(&|p| p.0.clone()), all(&|p| p.1.to_string()))
+        }
+    }
 }
 
 /// What the rates divide by, named for the registry.

@@ -142,6 +142,13 @@ fn link<'u>(
     // The relative rate along the axis: Ω(b/a)·u for a pivot, V(P ∈ b/a)·u for a slider.
     let pivot = l.kind == LinkKind::Pivot;
     let (fa, fb) = (frame_of_side(m, &from), m.body(on).frame);
+    if let Some(text) = &l.pitch {
+        let p = pitch(m, (l, path), text, ([fa, fb], point, &u))?;
+        // Perfect: zero power, X V·u + L Ω·u = 0 with V·u = p/(2π) Ω·u, so L = −p X/(2π).
+        let axial = resultant.express_in(&m.frames, basis)[axis.index()].clone();
+        let tied = &(&p * &reg.parse("-1/(2*pi)").map_err(|e| expr_err(path, e))?) * &axial;
+        moment = moment.add(&u.scale(&tied));
+    }
     let rate = || match pivot {
         true => omega(m, fb, fa).dot(&m.frames, &u),
         false => velocity(m, point, fb, fa).dot(&m.frames, &u),
@@ -200,7 +207,7 @@ fn link<'u>(
 }
 
 /// How the course describes a link: « liaison pivot d'axe (O1, z0) », « de normale », « de
-/// centre ».
+/// centre », « liaison hélicoïdale d'axe (O, z0) et de pas p ».
 fn description(l: &LinkSpec) -> String {
     let place = match (l.kind, &l.axis) {
         (LinkKind::Ball, _) | (_, None) => format!("de centre {}", l.point),
@@ -209,7 +216,76 @@ fn description(l: &LinkSpec) -> String {
         }
         (_, Some(a)) => format!("d'axe ({}, {a})", l.point),
     };
-    format!("{} {place}", l.kind.course_name())
+    match &l.pitch {
+        Some(p) => format!("{} {place} et de pas {p}", l.kind.course_name()),
+        None => format!("{} {place}", l.kind.course_name()),
+    }
+}
+
+/// A helical link's pitch p: a constant of the parameters (no unknown), a length when the
+/// parameters' units say; and, when the link names no coordinate to determine, the positions
+/// must satisfy its relation V(P ∈ b/a)·u = p/(2π) Ω(b/a)·u already.
+fn pitch(
+    m: &Mechanism,
+    (l, path): (&LinkSpec, &str),
+    text: &str,
+    ([fa, fb], point, u): ([FrameId; 2], PointId, &Vector),
+) -> Result<Expr, SpecError> {
+    let reg = &m.reg;
+    let at_pitch = format!("{path}.pitch");
+    let p = constant(reg, &at_pitch, text)?;
+    let occurs = p.occurring();
+    if let Some((n, _)) = (crate::pfd::unknown_vars(m).into_iter()).find(|(_, v)| occurs[v.index()])
+    {
+        let why = format!("the pitch holds the unknown `{n}`: it is a length of the parameters");
+        return Err(at(at_pitch, why));
+    }
+    if p.is_zero() {
+        return Err(at(
+            at_pitch,
+            "a pitch of 0 makes no screw: the link would be a pivot",
+        ));
+    }
+    let dims = crate::units::Dimensions::of(m);
+    match crate::units::dimension(&p, &dims) {
+        Ok(Some(d)) if d != crate::units::Dimension::LENGTH => {
+            let unit = match d.si_text(crate::units::UnitStyle::Mechanics) {
+                u if u.is_empty() => "a pure number".to_string(),
+                u => format!("in {u}"),
+            };
+            let why = format!(
+                "the pitch `{}` is {unit}, not a length (m per turn): name a parameter of unit m",
+                crate::excerpt::excerpt(text)
+            );
+            return Err(at(at_pitch, why));
+        }
+        Err(_) => {
+            let why = format!(
+                "the pitch `{}` is not homogeneous: it is a length (m per turn)",
+                crate::excerpt::excerpt(text)
+            );
+            return Err(at(at_pitch, why));
+        }
+        _ => {}
+    }
+    if l.dependent.is_none() {
+        let two_pi = &reg.integer(2) * &reg.pi();
+        let v = velocity(m, point, fb, fa).dot(&m.frames, u);
+        let w = omega(m, fb, fa).dot(&m.frames, u);
+        let row = &(&two_pi * &v) - &(&p * &w);
+        if !row.is_zero() {
+            let why = format!(
+                "the positions do not follow the screw motion: 2π V({},{}/{})·u − p Ω·u = `{}`, \
+                 not 0; name the coordinate whose rate the link determines (`dependent`)",
+                l.point,
+                l.between[1],
+                l.between[0],
+                crate::excerpt::excerpt(&row.to_string())
+            );
+            return Err(at(format!("{path}.dependent"), why));
+        }
+    }
+    Ok(p)
 }
 
 /// Dry friction of magnitude C (the parameters' only, never an unknown) on a link whose

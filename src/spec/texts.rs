@@ -1,7 +1,7 @@
 //! The texts of a spec, with their JSON paths: the expressions (checked for size and
 //! degree) and the free texts (checked against the formula whitelist).
 
-use crate::wire::SpecFile;
+use crate::wire::{LinkKind, SpecFile};
 
 /// Every expression text of the spec with its JSON path (what may write an angle as itself).
 pub(super) fn expression_texts(spec: &SpecFile) -> Vec<(String, &str)> {
@@ -32,6 +32,9 @@ pub(super) fn expression_texts(spec: &SpecFile) -> Vec<(String, &str)> {
     for (i, l) in spec.links.iter().enumerate() {
         if let Some(f) = &l.friction {
             out.push((format!("links[{i}].friction"), f));
+        }
+        if let Some(p) = &l.pitch {
+            out.push((format!("links[{i}].pitch"), p));
         }
         if let Some(sp) = &l.spring {
             out.push((format!("links[{i}].spring.stiffness"), &sp.stiffness));
@@ -68,8 +71,9 @@ pub(super) fn free_text_limit(path: &str) -> (usize, &'static str) {
 
 pub(crate) use crate::wire::free_texts;
 
-/// The parameters the spec divides by (`l0 - m*g*sin(beta)/k`, a rate `V/R`), in every
-/// expression it gives: the texts of [`expression_texts`], the aliases and the hypotheses.
+/// The parameters the spec divides by (`l0 - m*g*sin(beta)/k`, a rate `V/R`), and π
+/// (`p/(2*pi)`, a helical link's torsor), in every expression it gives: the texts of
+/// [`expression_texts`], the aliases and the hypotheses.
 /// A divisor that is an alias brings the parameters of its value, and a hypothesis relation
 /// that sets a divisor brings those of the value it gives (k = k2 divides by k2 too).
 pub(super) fn divisors(spec: &SpecFile, params: &[String]) -> Vec<String> {
@@ -107,9 +111,13 @@ pub(super) fn divisors(spec: &SpecFile, params: &[String]) -> Vec<String> {
         }
         k += 1;
     }
+    // A helical link's torsor ties its axial moment to its axial resultant by p/(2π).
+    if spec.links.iter().any(|l| l.kind == LinkKind::Helical) {
+        found.push(crate::expr::PI.to_string());
+    }
     let mut out: Vec<String> = Vec::new();
     for n in found {
-        if params.contains(&n) && !out.contains(&n) {
+        if (params.contains(&n) || n == crate::expr::PI) && !out.contains(&n) {
             out.push(n);
         }
     }

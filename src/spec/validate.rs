@@ -146,6 +146,7 @@ fn build_with(
             derivatives: s.derivatives.clone(),
             determinant: s.determinant.clone(),
             rolling: s.rolling.clone(),
+            helical: s.helical.clone(),
         }),
     };
     m.dynamics = super::dynamics::build(&m, spec, (resolved, unknowns))?;

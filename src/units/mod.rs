@@ -134,6 +134,10 @@ impl Dimensions {
         let vars = reg
             .var_ids()
             .map(|i| match reg.role(i) {
+                // π is a pure number.
+                VarRole::Parameter(k) | VarRole::Inverse(k) if reg.is_pi(k) => {
+                    Some(Dimension::NONE)
+                }
                 VarRole::Parameter(k) | VarRole::Inverse(k) => {
                     let is_angle = !reg.is_unknown(k)
                         && reg

@@ -140,6 +140,13 @@ pub enum LinkKind {
     Line,
     /// Ponctuelle (sphère-plan) of normal n at P: resultant along n.
     Point,
+    /// Hélicoïdale (vis–écrou) of axis (P, u) and pitch p (`pitch`, a length per turn; p > 0
+    /// for a right-hand thread, « pas à droite », p < 0 for a left-hand one): the relative
+    /// motion of the second solid with respect to the first is a screw motion,
+    /// V(P ∈ 2/1)·u = p/(2π) Ω(2/1)·u, which gives the rate of the coordinate `dependent`.
+    /// Perfect, it transmits the resultant and the moment normal to u, and along u the moment
+    /// −p/(2π) times the axial resultant (its power, X V·u + L Ω·u, is zero).
+    Helical,
 }
 
 impl LinkKind {
@@ -160,6 +167,7 @@ impl LinkKind {
             LinkKind::Annular => "liaison sphère-cylindre (linéaire annulaire)",
             LinkKind::Line => "liaison cylindre-plan (linéaire rectiligne)",
             LinkKind::Point => "liaison sphère-plan (ponctuelle)",
+            LinkKind::Helical => "liaison hélicoïdale",
         }
     }
 }
@@ -186,6 +194,17 @@ pub struct LinkSpec {
     /// Line direction of a line contact (a basis vector of the axis' basis).
     #[serde(default)]
     pub direction: Option<String>,
+    /// Pitch p of a helical link, a length per turn (a constant expression of the parameters,
+    /// `p`, `2*a`): positive for a right-hand thread (« pas à droite »), negative for a
+    /// left-hand one. V(P ∈ 2/1)·u = p/(2π) Ω(2/1)·u along the axis u.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pitch: Option<String>,
+    /// The coordinate whose rate a helical link determines (its relation solved for it, like
+    /// a rolling condition's): the load's `lambda` when the screw's angle is free, or the
+    /// screw's angle. None when the positions already satisfy the relation (the nut placed
+    /// at `p*theta/(2*pi)`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dependent: Option<String>,
     /// Viscous friction coefficient of a pivot or slider: the action on the second solid
     /// opposes the relative rate, -f q̇ along the axis.
     #[serde(default)]

@@ -162,3 +162,72 @@ fn a_coulomb_law_on_a_link_without_a_contact_exits_2_naming_its_path() {
     }
     assert!(!tex.exists());
 }
+
+/// The screw jack of the library changed by `edit`, in a temporary directory.
+fn jack(edit: impl Fn(&mut serde_json::Value)) -> (tempfile::TempDir, PathBuf) {
+    let d = tmp();
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/derivations/verin_a_vis.json");
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    edit(&mut v);
+    let p = d.path().join("spec.json");
+    std::fs::write(&p, v.to_string()).unwrap();
+    (d, p)
+}
+
+#[test]
+fn a_helical_link_without_its_pitch_or_with_a_mass_for_one_exits_2_at_its_place() {
+    let (_d, p) = jack(|v| {
+        v["links"][2].as_object_mut().unwrap().remove("pitch");
+    });
+    let line = refused(&run(&["derive", p.to_str().unwrap(), "-q", "C_m"]));
+    // The field is missing: the message names its path, with no line to point at.
+    assert!(
+        line.starts_with("torseur: error: at links[2].pitch"),
+        "{line}"
+    );
+    assert!(
+        line.ends_with(
+            "a helical link needs its pitch `pitch`, a length per turn (`p`; negative for a \
+             left-hand thread)"
+        ),
+        "{line}"
+    );
+    let (_d, p) = jack(|v| v["links"][2]["pitch"] = "M".into());
+    let line = refused(&run(&["check", p.to_str().unwrap()]));
+    assert!(
+        line.starts_with("torseur: error: at links[2].pitch (line "),
+        "{line}"
+    );
+    assert!(
+        line.ends_with(
+            "the pitch `M` is in kg, not a length (m per turn): name a parameter of unit m"
+        ),
+        "{line}"
+    );
+}
+
+#[test]
+fn verify_reads_pi_in_a_typed_result() {
+    // The carriage rises by p/(2π) per radian the screw turns back: θ̇ = −2π λ̇/p.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/derivations/verin_a_vis.json");
+    let o = run(&[
+        "verify",
+        path,
+        "-q",
+        "Omega(1/0).z0",
+        "-e",
+        "-2*pi*dot(lambda)/p",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stdout(&o).trim(), "Omega(1/0).z0: equivalent");
+    let o = run(&[
+        "verify",
+        path,
+        "-q",
+        "Omega(1/0).z0",
+        "-e",
+        "-pi*dot(lambda)/p",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+}

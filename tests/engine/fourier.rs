@@ -49,7 +49,11 @@ fn the_fourier_form_agrees_with_the_canonical_form_on_every_quantity() {
             parameters: s.parameters.clone(),
             coordinates: s.coordinates.clone(),
             time: Some(s.time),
-            ..Default::default()
+            // A link's transmissible torsor keeps the unknowns the PFD leaves (X_H of a
+            // helical link): any value of them serves, each a different one.
+            unknowns: (m.reg().unknowns().iter().enumerate())
+                .map(|(k, n)| (n.clone(), 0.7 + 0.13 * k as f64))
+                .collect(),
         };
         let point = numeric_point(&m, &values).unwrap();
         // A time coordinate's drawn value, or Ω t for a phase.

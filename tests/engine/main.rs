@@ -22,6 +22,7 @@ mod fourier;
 mod free_texts;
 mod friction;
 mod golden;
+mod helical;
 mod hypotheses;
 mod kinematics;
 mod latex;

@@ -426,10 +426,25 @@ fn habits_of_other_tools_are_refused_with_the_fix() {
          ddot(q) for a coordinate q; the functions are sin, cos, dot and ddot"
     );
     assert!(said("sqrt(L)").contains("`sqrt(...)`: a result of the spec syntax is a polynomial"));
-    assert!(said("2*π*L").contains("character `π` is not allowed (write pi, inside an angle"));
-    let pi = said("2*pi*L");
-    assert!(pi.contains("`pi` is read only inside an angle"), "{pi}");
-    assert!(!pi.contains('𝜋'), "quotes only what was typed: {pi}");
+    // π typed as a Greek letter, or pasted from a document in a mathematical form, is `pi`.
+    for (typed, c) in [("2*π*L", 'π'), ("2*𝜋*L", '𝜋'), ("2*ϖ*L", 'ϖ')] {
+        assert_eq!(
+            said(typed),
+            format!(
+                "cannot parse `{typed}`: character `{c}` is not allowed (the constant π is \
+                 written pi: 2*pi*R)"
+            )
+        );
+    }
+    assert!(said("𝜃*L").ends_with("(names are ASCII letters: theta, m…)"));
+    // `pi` is read (the constant π); where it cannot stand the message quotes what was
+    // typed, never symbolica's own name for the constant.
+    assert_eq!(reg.parse("2*pi*L").unwrap().to_string(), "2*L*pi");
+    for typed in ["dot(pi)*L", "L*sin(pi*t)", "L*pi(2)"] {
+        let e = said(typed);
+        assert!(!e.contains('𝜋'), "quotes only what was typed: {e}");
+    }
+    assert!(said("dot(pi)*L").ends_with("dot(pi): `pi` is not a coordinate"));
     // The quantity reader says the same of a derivative written as a function.
     let e = Quantity::parse("diff(theta1)").unwrap_err().to_string();
     assert!(

@@ -98,7 +98,10 @@ fn every_library_split_agrees_with_the_float_backend() {
             let imposed = c.rate.as_deref().is_some_and(|r| !r.contains("dot("));
             imposed || eq.coordinates().contains(&c.name.as_str())
         });
-        if eq.mass.is_empty() || !independent {
+        // Coulomb's law on a contact's unknowns: its sign ε follows the sliding velocity, which
+        // the float backend sets from each sample's rates (none at rest).
+        let sliding = m.spec().links.iter().any(|l| l.contact_friction.is_some());
+        if eq.mass.is_empty() || !independent || sliding {
             continue;
         }
         seen += 1;
@@ -206,9 +209,8 @@ fn displayed_vectors_and_torsors_read_back_to_the_same_value() {
     for path in crate::specs_in(&["derivations"]) {
         let m = torseur::spec::load(&path).unwrap();
         let axis = |n: &str| {
-            let (a, f) = n.split_at(1);
-            let k = "xyz".find(a)?;
-            Some((m.frames().find(f)?, k))
+            let k = "xyz".find(n.get(..1)?)?;
+            Some((m.frames().find(n.get(1..)?)?, k))
         };
         for q in m.quantities() {
             let Ok(d) = derive(&m, q) else { continue };

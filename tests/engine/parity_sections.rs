@@ -153,7 +153,7 @@ fn both_sides_refuse_an_unknowns_name_alike() {
         ),
         (
             acting("pi"),
-            "actions[0].unknowns[0]: `pi` is reserved by the expression syntax",
+            "actions[0].unknowns[0]: `pi` is reserved by the expression syntax: it is the constant π",
         ),
         (
             multiple,

@@ -430,7 +430,9 @@ impl Ctx<'_> {
                 // A phase is printed Ω t: the time is then a name of its own.
                 Some(_) => "t".to_string(),
                 None => c.name.clone(),
-            }));
+            }))
+            // \pi is the constant π, `pi` in the engine's syntax (no spec may take the name).
+            .chain(std::iter::once("pi".to_string()));
         for n in ids {
             let written: String = n.chars().filter(|&c| c != '_').collect();
             if let Some(other) = names.insert(written.clone(), n.clone())

@@ -360,7 +360,8 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         // A power: an energy per second, W.
         "P" | "Pint" => one(d(1, 2, -3)),
         // An inertia brought back to an angle.
-        "J_eq" if q.contains("(x)") => one(d(1, 0, 0)),
+        // A mass brought back to a length (x, or the screw jack's λ).
+        "J_eq" if q.contains("(x)") || q.contains("(lambda)") => one(d(1, 0, 0)),
         "J_eq" => one(d(1, 2, 0)),
         "{V" => (d(0, 0, -1), Some(d(0, 1, -1))),
         "{C" => (d(1, 1, -1), Some(d(1, 2, -1))),
@@ -407,7 +408,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 24] = [
+const LIBRARY: [&str; 25] = [
     "bielle_manivelle",
     "bille_tube_tournant",
     "bloc_frottement_sec",
@@ -432,6 +433,7 @@ const LIBRARY: [&str; 24] = [
     "toupie",
     "train_engrenages",
     "treuil",
+    "verin_a_vis",
 ];
 
 #[test]

@@ -8,7 +8,9 @@
 //! - a perfect link is the torsor of its first solid on its second at its point, with one
 //!   unknown per component it transmits (X, Y, Z, L, M, N followed by its name) along the
 //!   basis vectors of its axis' basis; viscous friction and a spring add a known part computed
-//!   from the relative motion (Ω(b/a), V(P ∈ b/a)) and the coordinate's value;
+//!   from the relative motion (Ω(b/a), V(P ∈ b/a)) and the coordinate's value; a helical
+//!   link of pitch p, perfect, has zero power X V·u + L Ω·u = 0 along the screw motion
+//!   V·u = p/(2π) Ω·u, so its axial moment is L = −p X/(2π);
 //! - a given action is evaluated from its expressions; its unknowns enter linearly (checked on
 //!   the expression's structure), and their coefficients are read exactly with dual numbers;
 //! - every action {T(a→b)} comes with its reaction {T(b→a)} = −{T(a→b)}; isolating S keeps the
@@ -84,6 +86,8 @@ pub(super) struct LinkInfo {
     pub coulomb: Option<(Node, usize)>,
     /// Spring.
     pub spring: Option<SpringInfo>,
+    /// A helical link's pitch p: its axial moment is −p/(2π) times its axial resultant.
+    pub pitch: Option<Node>,
     /// Coulomb's law on its own unknowns.
     pub law: Option<LawInfo>,
 }
@@ -174,7 +178,8 @@ fn perfect(kind: LinkKind, a: usize, d: Option<usize>) -> [bool; 6] {
     let (b, c) = ((a + 1) % 3, (a + 2) % 3);
     match kind {
         LinkKind::Fixed => t = [true; 6],
-        LinkKind::Pivot => {
+        // The axial moment of a helical link follows its axial resultant (`link_term`).
+        LinkKind::Pivot | LinkKind::Helical => {
             t = [true; 6];
             t[3 + a] = false;
         }
@@ -320,6 +325,9 @@ fn link(
         }),
         None => None,
     };
+    let pitch = (l.pitch.as_deref())
+        .map(|p| constant(p, "pitch"))
+        .transpose()?;
     let from = match node.from {
         Side::Ground => Body::Frame(0),
         Side::Solid(k) => Body::Solid(k),
@@ -335,6 +343,7 @@ fn link(
         friction,
         coulomb,
         spring,
+        pitch,
         law,
     })
 }

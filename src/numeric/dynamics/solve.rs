@@ -188,6 +188,15 @@ fn link_term(
     }
     let [fa, fb] = l.between.map(|b| body_frame(m, b));
     let u = rb.column(l.axis).into_owned();
+    if let Some(p) = &l.pitch {
+        // Zero power of the perfect screw: X λ̇ + L θ̇ = 0 with λ̇ = p θ̇/(2π), so the axial
+        // moment is −p/(2π) times the axial resultant's unknown.
+        let p = constant(p, vals, || format!("pitch of links[{i}]"))?;
+        let axial = l.components.iter().find(|(k, _)| *k == l.axis);
+        if let Some((_, idx)) = axial {
+            moment.a[*idx] -= u * (p / (2.0 * std::f64::consts::PI));
+        }
+    }
     let slider = l.kind == LinkKind::Slider;
     if let Some(f) = &l.friction {
         let f = constant(f, vals, || format!("friction of links[{i}]"))?;
