@@ -153,7 +153,7 @@ class Mechanism:
     def equations_of_motion(self) -> "EquationsOfMotion":
         """The equations of motion as M(q) q̈ + h(q, q̇, t) = Q(q, t): the mass matrix, the
         terms that vanish at rest (Coriolis, centrifugal, viscous), the generalised forces."""
-        return EquationsOfMotion(self, json.loads(self._m().equations_of_motion()))
+        return EquationsOfMotion(self, json.loads(self._m.equations_of_motion()))
 
     def simulate(self, scenario: str) -> "Simulation":
         """Integrates a scenario of the spec; columns as numpy arrays when numpy is installed."""
