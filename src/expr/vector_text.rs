@@ -123,3 +123,46 @@ fn holds_basis_vector<K>(v: AtomView, basis: &dyn Fn(AtomView) -> Option<K>) -> 
         _ => false,
     }
 }
+
+impl Registry {
+    /// Parses a vector expression `d1*z0 + L1*y1`, where `basis_vector(name)` recognises the
+    /// basis vector names (returning a basis key and an axis index). Returns, per basis key,
+    /// the three components.
+    pub fn parse_vector<K: Ord + Copy>(
+        self: &Rc<Self>,
+        s: &str,
+        basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
+    ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
+        parse_vector(self, s, basis_vector, &|_| None)
+    }
+
+    /// [`Registry::parse_vector`], where `names` gives the value of names the registry does
+    /// not know (as in [`Registry::parse_with`]).
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::new(&["a".into()], &[("q".into(), CoordinateKind::Angle)]).unwrap();
+    /// let w = reg.parse("a*dot(q)").unwrap();
+    /// let axis = |n: &str| match n {
+    ///     "x1" => Some((1, 0)),
+    ///     "y2" => Some((2, 1)),
+    ///     _ => None,
+    /// };
+    /// let v = reg
+    ///     .parse_vector_with("W*x1 - a*y2 + 2*W*x1", &axis, &|n| (n == "W").then(|| w.clone()))
+    ///     .unwrap();
+    /// let part = |k| &v.iter().find(|(b, _)| *b == k).unwrap().1;
+    /// assert_eq!(part(1)[0], reg.parse("3*a*dot(q)").unwrap());
+    /// assert_eq!(part(2)[1], reg.parse("-a").unwrap());
+    /// assert!(reg.parse_vector_with("W*x1*y2", &axis, &|_| None).is_err());
+    /// ```
+    pub fn parse_vector_with<K: Ord + Copy>(
+        self: &Rc<Self>,
+        s: &str,
+        basis_vector: &dyn Fn(&str) -> Option<(K, usize)>,
+        names: &dyn Fn(&str) -> Option<Expr>,
+    ) -> Result<Vec<(K, [Expr; 3])>, ExprError> {
+        parse_vector(self, s, basis_vector, names)
+    }
+}

@@ -27,6 +27,7 @@ use crate::derivation::{Derivation, Value};
 use crate::expr::{Expr, signed_sum};
 use crate::frame::FrameId;
 use crate::mechanism::Mechanism;
+use crate::point::PointId;
 use crate::torsor::Torsor;
 use crate::vector::Vector;
 use std::fmt;
@@ -50,6 +51,21 @@ fn vector_text(m: &Mechanism, parts: &[(FrameId, &[Expr; 3])]) -> String {
     signed_sum(&terms)
 }
 
+/// `{ R = …, M(A) = … }`.
+fn torsor_text(
+    m: &Mechanism,
+    point: PointId,
+    resultant: &[(FrameId, &[Expr; 3])],
+    moment: &[(FrameId, &[Expr; 3])],
+) -> String {
+    format!(
+        "{{ R = {}, M({}) = {} }}",
+        vector_text(m, resultant),
+        m.point_name(point),
+        vector_text(m, moment)
+    )
+}
+
 impl fmt::Display for Shown<'_, Value> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let m = self.m;
@@ -62,13 +78,12 @@ impl fmt::Display for Shown<'_, Value> {
                 basis,
                 resultant,
                 moment,
-            } => write!(
-                f,
-                "{{ R = {}, M({}) = {} }}",
-                vector_text(m, &[(*basis, resultant)]),
-                m.point_name(*point),
-                vector_text(m, &[(*basis, moment)]),
-            ),
+            } => f.write_str(&torsor_text(
+                m,
+                *point,
+                &[(*basis, resultant)],
+                &[(*basis, moment)],
+            )),
             // Scalars, quotients and inertia operators: the CLI's text.
             v => f.write_str(&super::value_text_in(m, v, super::TextForm::Presentation)),
         }
@@ -86,13 +101,7 @@ impl fmt::Display for Shown<'_, Torsor> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let r: Vec<(FrameId, &[Expr; 3])> = self.item.resultant.parts().collect();
         let mo: Vec<(FrameId, &[Expr; 3])> = self.item.moment.parts().collect();
-        write!(
-            f,
-            "{{ R = {}, M({}) = {} }}",
-            vector_text(self.m, &r),
-            self.m.point_name(self.item.point),
-            vector_text(self.m, &mo),
-        )
+        f.write_str(&torsor_text(self.m, self.item.point, &r, &mo))
     }
 }
 
