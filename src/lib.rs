@@ -55,6 +55,7 @@ pub mod derivation;
 pub mod excerpt;
 pub mod expr;
 pub mod frame;
+pub mod hint;
 pub mod inertia;
 pub mod input;
 pub mod kinematics;

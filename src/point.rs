@@ -60,6 +60,11 @@ impl Points {
         &self.points[id.0]
     }
 
+    /// The points' names, the ground's origin first.
+    pub fn names(&self) -> impl Iterator<Item = &str> + '_ {
+        self.points.iter().map(|p| p.name.as_str())
+    }
+
     /// Point by name.
     pub fn find(&self, name: &str) -> Option<PointId> {
         self.points.iter().position(|p| p.name == name).map(PointId)

@@ -536,8 +536,15 @@ fn call_kind(core: &str) -> Result<QuantityKind, String> {
             }
         }
         other => {
+            const KINDS: [&str; 15] = [
+                "Omega", "V", "Gamma", "I", "Rc", "sigma", "Rd", "delta", "Ec", "eom", "R", "M",
+                "P", "Pint", "J_eq",
+            ];
+            let guess = crate::hint::closest(other, &KINDS)
+                .map(|k| format!("did you mean `{k}`? "))
+                .unwrap_or_default();
             return Err(format!(
-                "unknown quantity `{other}` ({}known: Omega, V, Gamma, I, Rc, sigma, Rd, \
+                "unknown quantity `{other}` ({guess}{}known: Omega, V, Gamma, I, Rc, sigma, Rd, \
                  delta, Ec, eom, R, M, P, Pint, J_eq, {{V(..)}}_A, {{C(..)}}_A, \
                  {{D(..)}}_A, {{T(..)}}_A, or the name of an unknown)",
                 crate::expr::function_hint(other)

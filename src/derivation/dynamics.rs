@@ -182,7 +182,7 @@ pub(super) fn derive(
         QuantityKind::KineticEnergy(mo) => {
             let solids = m
                 .solids_of(&mo.moving)
-                .ok_or_else(|| ResolveError::unknown(q, "solid or set", &mo.moving))?;
+                .ok_or_else(|| ResolveError::unknown(m, q, "solid or set", &mo.moving))?;
             if m.frames.find(&mo.reference) != Some(m.frames.ground()) {
                 return Err(resolve_err(
                     q,
@@ -241,7 +241,7 @@ pub(super) fn derive(
             let coord = m
                 .reg
                 .coord(c)
-                .ok_or_else(|| ResolveError::unknown(q, "coordinate", c))?;
+                .ok_or_else(|| ResolveError::unknown(m, q, "coordinate", c))?;
             let th = m
                 .dynamics
                 .theorems

@@ -29,8 +29,14 @@ pub use value::Value;
 /// use torseur::quantity::Quantity;
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// let e = derive(&m, &Quantity::parse("V(Q,2/0)").unwrap()).unwrap_err();
-/// assert_eq!(e.reason, Unresolved::UnknownName { what: "point", name: "Q".into() });
-/// assert_eq!(e.to_string(), "V(Q,2/0): unknown point `Q`");
+/// assert!(matches!(&e.reason, Unresolved::UnknownName { what: "point", name, .. } if name == "Q"));
+/// assert_eq!(
+///     e.to_string(),
+///     "V(Q,2/0): unknown point `Q` (declared: `O0`, `O1`, `G1`, `O2`, `G2`)"
+/// );
+/// // A name one letter away from a declared one is suggested.
+/// let e = derive(&m, &Quantity::parse("V(g2,2/0)").unwrap()).unwrap_err();
+/// assert_eq!(e.to_string(), "V(g2,2/0): unknown point `g2` (did you mean `G2`?)");
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("{}", message(.quantity, .reason))]
@@ -45,12 +51,15 @@ pub struct ResolveError {
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum Unresolved {
     /// A name the spec does not declare.
-    #[error("unknown {what} `{name}`")]
+    #[error("unknown {what} `{name}`{hint}")]
     UnknownName {
         /// What was looked for (`point`, `solid or frame`, `coordinate`…).
         what: &'static str,
         /// The name as written.
         name: String,
+        /// ` (did you mean `G2`?)` when a declared name of that kind is close
+        /// ([`crate::hint::suggestion`]), or the few declared ones; else empty.
+        hint: String,
     },
     /// The PFD cannot be solved as declared.
     #[error(transparent)]
@@ -82,13 +91,40 @@ impl ResolveError {
         }
     }
 
-    /// `quantity` names an unknown `what` (a point, a solid…) called `name`.
-    pub fn unknown(quantity: &impl std::fmt::Display, what: &'static str, name: &str) -> Self {
+    /// `quantity` names an unknown `what` (`point`, `solid`, `solid or set`, `solid or
+    /// frame`, `coordinate`) called `name`: the refusal suggests the declared name of that
+    /// kind in `m` it most likely misspells.
+    pub fn unknown(
+        m: &Mechanism,
+        quantity: &impl std::fmt::Display,
+        what: &'static str,
+        name: &str,
+    ) -> Self {
+        let bodies = m.bodies.iter().map(|b| b.name.as_str());
+        let declared: Vec<&str> = match what {
+            "point" => m.points.names().collect(),
+            "solid" => bodies.collect(),
+            "solid or set" => bodies.chain(m.sets.keys().map(String::as_str)).collect(),
+            "solid or frame" => {
+                let mut all: Vec<&str> = m.frames.names().chain(bodies).collect();
+                all.sort_unstable();
+                all.dedup();
+                all
+            }
+            "coordinate" => m
+                .reg
+                .coordinates()
+                .iter()
+                .map(|c| c.name.as_str())
+                .collect(),
+            _ => Vec::new(),
+        };
         ResolveError::new(
             quantity,
             Unresolved::UnknownName {
                 what,
                 name: name.to_string(),
+                hint: crate::hint::suggestion(name, &declared),
             },
         )
     }
@@ -119,7 +155,7 @@ pub struct Resolved {
 
 /// Resolves the names of a quantity in a mechanism.
 pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
-    let unknown = |what: &'static str, n: &str| ResolveError::unknown(q, what, n);
+    let unknown = |what: &'static str, n: &str| ResolveError::unknown(m, q, what, n);
     let frame = |n: &str| m.frame_of(n).ok_or_else(|| unknown("solid or frame", n));
     let point = |n: &str| m.point(n).ok_or_else(|| unknown("point", n));
     let solids = |n: &str| m.solids_of(n).ok_or_else(|| unknown("solid or set", n));
@@ -404,7 +440,7 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
             let coord = m
                 .reg
                 .coord(c)
-                .ok_or_else(|| ResolveError::unknown(q, "coordinate", c))?;
+                .ok_or_else(|| ResolveError::unknown(m, q, "coordinate", c))?;
             let j =
                 crate::pfd::equivalent_inertia(m, coord).map_err(|e| ResolveError::new(q, e))?;
             Found::Value(Value::Scalar(j))

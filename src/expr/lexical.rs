@@ -30,6 +30,9 @@ pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String
     if s.trim().is_empty() {
         return Err("empty expression".to_string());
     }
+    if let Some(fix) = primed(s) {
+        return Err(fix);
+    }
     for c in s.chars() {
         if !(c.is_ascii_alphanumeric() || " \t\n+-*/^()._,[]".contains(c)) {
             let hint = super::words::char_hint(c);
@@ -336,6 +339,36 @@ pub(super) fn exact_decimals(s: &str) -> Result<String, String> {
         }
     }
     Ok(out)
+}
+
+/// A name followed by primes, `psi'` or `psi''` (also with ’ or ′), as the first one in `s`:
+/// the rate to write instead, `dot(psi)` or `ddot(psi)`.
+///
+/// ```text
+/// psi' + 1   →  `psi'`: a time derivative is written dot(psi)
+/// ```
+fn primed(s: &str) -> Option<String> {
+    let is_prime = |c: char| matches!(c, '\'' | '’' | '′');
+    let chars: Vec<(usize, char)> = s.char_indices().collect();
+    let k = chars.iter().position(|&(_, c)| is_prime(c))?;
+    let end = chars[k].0;
+    let start = s[..end]
+        .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .map_or(0, |i| i + 1);
+    let name = &s[start..end];
+    if name.is_empty() || !name.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        return None;
+    }
+    let primes = chars[k..].iter().take_while(|&&(_, c)| is_prime(c)).count();
+    let rate = match primes {
+        1 => format!("dot({name})"),
+        2 => format!("ddot({name})"),
+        _ => return None,
+    };
+    let typed: String = chars[k..k + primes].iter().map(|&(_, c)| c).collect();
+    Some(format!(
+        "`{name}{typed}`: a time derivative is written {rate}"
+    ))
 }
 
 /// What to write instead of a function the syntax does not have, when there is an answer:

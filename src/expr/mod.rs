@@ -144,15 +144,22 @@ pub enum ExprError {
     },
     /// A name that is neither a parameter nor a coordinate.
     #[error(
-        "unknown name `{}` in `{}` (declare it as a parameter or a coordinate)",
+        "unknown name `{}` in `{}` ({})",
         excerpt(.name),
-        excerpt(.input)
+        excerpt(.input),
+        match .hint.as_str() {
+            "" => "declare it as a parameter or a coordinate",
+            h => h,
+        }
     )]
     UnknownName {
         /// The name.
         name: String,
         /// The text given.
         input: String,
+        /// `did you mean `theta1`?` when a declared name is close ([`crate::hint`]), else
+        /// empty.
+        hint: String,
     },
     /// Valid syntax, outside what the exact engine handles.
     #[error("`{}`: {}", excerpt(.input), bounded(.reason))]

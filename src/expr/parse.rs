@@ -120,6 +120,25 @@ impl<'a> Walker<'a> {
         Ok(())
     }
 
+    /// The refusal of `name`, declared nowhere: with the parameter, coordinate or alias it
+    /// most likely misspells.
+    pub(super) fn unknown_name(&self, name: &str) -> ExprError {
+        let reg = self.reg;
+        let aliases: Vec<&str> = reg.aliases().map(|(a, _)| a).collect();
+        let declared: Vec<&str> = (reg.parameters().iter().map(String::as_str))
+            .chain(reg.coordinates().iter().map(|c| c.name.as_str()))
+            .chain(aliases)
+            .collect();
+        let hint = crate::hint::closest(name, &declared)
+            .map(|d| format!("did you mean `{d}`?"))
+            .unwrap_or_default();
+        ExprError::UnknownName {
+            name: name.to_string(),
+            input: self.input.to_string(),
+            hint,
+        }
+    }
+
     pub(super) fn unsupported(&self, reason: &str) -> ExprError {
         ExprError::Unsupported {
             input: self.input.to_string(),
@@ -197,10 +216,7 @@ impl<'a> Walker<'a> {
                 if name == TIME {
                     return Err(self.unsupported(TIME_IN_PHASES));
                 }
-                Err(ExprError::UnknownName {
-                    name,
-                    input: self.input.to_string(),
-                })
+                Err(self.unknown_name(&name))
             }
             AtomView::Add(a) => {
                 // Summed pairwise: adding n terms one by one to a growing sum is quadratic
@@ -361,10 +377,7 @@ impl<'a> Walker<'a> {
                         && self.reg.coord(name).is_none()
                         && self.reg.alias(name).is_none() =>
                     {
-                        Err(ExprError::UnknownName {
-                            name: name.to_string(),
-                            input: self.input.to_string(),
-                        })
+                        Err(self.unknown_name(name))
                     }
                     None => Err(self.unsupported(&format!(
                         "`{name}` is not an angle: an angle is an angle coordinate or a \

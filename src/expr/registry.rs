@@ -520,6 +520,21 @@ impl Registry {
     pub fn coordinates(&self) -> &[CoordInfo] {
         &self.coords[..self.n_coords]
     }
+    /// ` (did you mean `theta1`?)` after a refusal of the coordinate `name`, or the few
+    /// declared coordinates ([`crate::hint::suggestion`]).
+    pub fn coordinate_hint(&self, name: &str) -> String {
+        let declared: Vec<&str> = self.coordinates().iter().map(|c| c.name.as_str()).collect();
+        crate::hint::suggestion(name, &declared)
+    }
+
+    /// ` (did you mean `L1`?)` after a refusal of the parameter `name` (the PFD's unknowns
+    /// are not parameters).
+    pub fn parameter_hint(&self, name: &str) -> String {
+        let declared: Vec<&str> = (self.parameters().iter().map(String::as_str))
+            .filter(|n| !self.unknowns().iter().any(|u| u == n))
+            .collect();
+        crate::hint::suggestion(name, &declared)
+    }
 
     /// Time coordinate by name (not a constant angle parameter: it has no rate, no equation
     /// of motion, no value in a sample's coordinates).

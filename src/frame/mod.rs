@@ -268,6 +268,11 @@ impl Frames {
         (0..self.frames.len()).map(FrameId)
     }
 
+    /// The frames' names, the ground first.
+    pub fn names(&self) -> impl Iterator<Item = &str> + '_ {
+        self.frames.iter().map(|f| f.name.as_str())
+    }
+
     /// Number of frames.
     pub fn len(&self) -> usize {
         self.frames.len()

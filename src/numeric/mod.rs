@@ -315,7 +315,7 @@ impl NumericModel {
     /// let spec: torseur::spec::wire::SpecFile = serde_json::from_str(
     ///     r#"{"title": "t", "frames": [{"name": "1", "parent": "7"}]}"#).unwrap();
     /// let e = NumericModel::new(&spec).unwrap_err();
-    /// assert_eq!(e.to_string(), "spec, at frames[0].parent: unknown frame `7`");
+    /// assert_eq!(e.to_string(), "spec, at frames[0].parent: unknown frame `7` (declared: `0`, `1`)");
     /// ```
     pub fn new(spec: &SpecFile) -> Result<NumericModel, NumericError> {
         let refused = |e: crate::resolve::Refusal| NumericError::Spec {

@@ -728,7 +728,7 @@ fn documented_behaviour_by_hand() {
     let e = spec_error(r#"{"title": "t", "frames": [{"name": "1", "parent": "7"}]}"#);
     assert_eq!(
         e.to_string(),
-        "spec, at frames[0].parent: unknown frame `7`"
+        "spec, at frames[0].parent: unknown frame `7` (declared: `0`, `1`)"
     );
 
     // m cos q q̇² + q̈ at m = 3, q = π/3, q̇ = 2, q̈ = 0.5: 3 · 1/2 · 4 + 1/2 = 6.5.

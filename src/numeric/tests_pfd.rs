@@ -738,12 +738,16 @@ fn spec_errors_of_the_pfd_sections() {
     assert!(spec_error(&v).starts_with("spec, at links[0].direction: "));
     let mut v = r.clone();
     v["links"][0]["point"] = json!("Q");
-    assert_eq!(spec_error(&v), "spec, at links[0].point: unknown point `Q`");
+    assert_eq!(
+        spec_error(&v),
+        "spec, at links[0].point: unknown point `Q` (declared: `O`, `O0`)"
+    );
     let mut v = r.clone();
     v["links"][0]["between"] = json!(["0", "E"]);
     assert_eq!(
         spec_error(&v),
-        "spec, at links[0].between[1]: `E` is neither a solid nor the ground `0`"
+        "spec, at links[0].between[1]: `E` is neither a solid nor the ground `0` (declared: \
+         `1`, `0`)"
     );
     let mut v = r.clone();
     v["pfd"][0]["isolate"] = json!("0");

@@ -321,12 +321,14 @@ fn check_names(reg: &Registry, values: &Values) -> Result<(), ValuesError> {
             ));
         }
         if !reg.parameters().contains(p) {
-            return Err(ValuesError(format!("unknown parameter `{p}`")));
+            let hint = reg.parameter_hint(p);
+            return Err(ValuesError(format!("unknown parameter `{p}`{hint}")));
         }
     }
     for q in values.coordinates.keys() {
         if reg.coord(q).is_none() {
-            return Err(ValuesError(format!("unknown coordinate `{q}`")));
+            let hint = reg.coordinate_hint(q);
+            return Err(ValuesError(format!("unknown coordinate `{q}`{hint}")));
         }
     }
     for u in values.unknowns.keys() {

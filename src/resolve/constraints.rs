@@ -102,13 +102,19 @@ fn rolling(known: &Known, i: usize, taken: &mut Vec<usize>) -> Result<RollingNod
     let point = find(known.points, "point", path.clone(), point)?;
     let frame = |n: &str| {
         let solid = known.solids.iter().find(|s| s.name == n).map(|s| s.frame);
-        (solid.or_else(|| known.frames.get(n).copied()))
-            .ok_or_else(|| at(&path, format!("unknown solid or frame `{n}`")))
+        (solid.or_else(|| known.frames.get(n).copied())).ok_or_else(|| {
+            let mut declared: Vec<&str> = known.frames.keys().copied().collect();
+            declared.extend(known.solids.iter().map(|s| s.name));
+            declared.sort_unstable();
+            declared.dedup();
+            let hint = crate::hint::suggestion(n, &declared);
+            at(&path, format!("unknown solid or frame `{n}`{hint}"))
+        })
     };
     let motion = [frame(&motion.moving)?, frame(&motion.reference)?];
     let mut on = Vec::with_capacity(r.on.len());
     for (k, u) in r.on.iter().enumerate() {
-        let why = || format!("unknown basis vector `{u}`");
+        let why = || format!("unknown basis vector `{u}`{}", known.vector_hint(u));
         let v = known.basis_vector(u);
         on.push(v.ok_or_else(|| at(format!("rolling[{i}].on[{k}]"), why()))?);
     }

@@ -224,7 +224,10 @@ fn place<'a>(
                     done[i] = true;
                 }
                 None if !known.contains(p) => {
-                    return Err(at(path, format!("unknown {what} `{p}`")));
+                    let mut declared: Vec<&str> = known.iter().copied().collect();
+                    declared.sort_unstable();
+                    let hint = crate::hint::suggestion(p, &declared);
+                    return Err(at(path, format!("unknown {what} `{p}`{hint}")));
                 }
                 None => {}
             }
@@ -375,10 +378,10 @@ fn sets<'a>(
         }
         let mut list = Vec::new();
         for (k, m) in members.iter().enumerate() {
-            let s = solids
-                .iter()
-                .position(|s| s.name == m)
-                .ok_or_else(|| at(format!("{path}[{k}]"), format!("unknown solid `{m}`")))?;
+            let s = solids.iter().position(|s| s.name == m).ok_or_else(|| {
+                let hint = crate::hint::suggestion(m, &solid_names(solids));
+                at(format!("{path}[{k}]"), format!("unknown solid `{m}`{hint}"))
+            })?;
             if list.contains(&s) {
                 return Err(at(
                     format!("{path}[{k}]"),
@@ -415,9 +418,11 @@ fn hypotheses<'a>(
         let constant_rates = (h.constant_rates.iter().enumerate())
             .map(|(k, c)| {
                 names.coords.get(c.as_str()).copied().ok_or_else(|| {
+                    let declared: Vec<&str> = names.coords.keys().copied().collect();
+                    let hint = crate::hint::suggestion(c, &declared);
                     at(
                         format!("{path}.constant_rates[{k}]"),
-                        format!("unknown coordinate `{c}`"),
+                        format!("unknown coordinate `{c}`{hint}"),
                     )
                 })
             })
@@ -425,9 +430,10 @@ fn hypotheses<'a>(
         let symmetric_solids = (h.symmetric_solids.iter().enumerate())
             .map(|(k, n)| {
                 solids.iter().position(|s| s.name == n).ok_or_else(|| {
+                    let hint = crate::hint::suggestion(n, &solid_names(solids));
                     at(
                         format!("{path}.symmetric_solids[{k}]"),
-                        format!("unknown solid `{n}`"),
+                        format!("unknown solid `{n}`{hint}"),
                     )
                 })
             })
@@ -485,6 +491,11 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     })
 }
 
+/// The solids' names, in the spec's order: what a refusal of an unknown solid suggests.
+fn solid_names<'a>(solids: &[SolidNode<'a>]) -> Vec<&'a str> {
+    solids.iter().map(|s| s.name).collect()
+}
+
 /// The position of `n` in `index`, or an « unknown `what` » refusal at `path`.
 fn find(
     index: &BTreeMap<&str, usize>,
@@ -492,7 +503,11 @@ fn find(
     path: String,
     n: &str,
 ) -> Result<usize, Refusal> {
-    (index.get(n).copied()).ok_or_else(|| at(path, format!("unknown {what} `{n}`")))
+    (index.get(n).copied()).ok_or_else(|| {
+        let declared: Vec<&str> = index.keys().copied().collect();
+        let hint = crate::hint::suggestion(n, &declared);
+        at(path, format!("unknown {what} `{n}`{hint}"))
+    })
 }
 
 /// The frames' order (each after its parent: (index in the spec, position of the parent))

@@ -119,7 +119,8 @@ impl Known<'_, '_> {
         } else if self.sets.contains_key(n) {
             format!("`{n}` is a set: a link or an action joins two solids")
         } else {
-            format!("`{n}` is neither a solid nor the ground `{ground}`")
+            let hint = self.solid_hint(n, true, false);
+            format!("`{n}` is neither a solid nor the ground `{ground}`{hint}")
         };
         Err(at(path, why))
     }
@@ -135,6 +136,31 @@ impl Known<'_, '_> {
             *self.frames.get(frame)?,
             ['x', 'y', 'z'].iter().position(|&a| a == axis)?,
         ))
+    }
+
+    /// What a refusal of the basis vector `text` suggests: a close name among the named
+    /// vectors and x, y, z of every frame.
+    pub(super) fn vector_hint(&self, text: &str) -> String {
+        let course: Vec<String> = (self.frames.keys())
+            .flat_map(|f| ['x', 'y', 'z'].map(|a| format!("{a}{f}")))
+            .collect();
+        let declared: Vec<&str> = (self.vectors.keys().copied())
+            .chain(course.iter().map(String::as_str))
+            .collect();
+        crate::hint::suggestion(text, &declared)
+    }
+
+    /// What a refusal of the solid `n` suggests among the solids' names (and the ground's and
+    /// the sets', when `ground` and `sets`).
+    pub(super) fn solid_hint(&self, n: &str, ground: bool, sets: bool) -> String {
+        let mut declared: Vec<&str> = self.solids.iter().map(|s| s.name).collect();
+        if ground {
+            declared.push(&self.spec.ground);
+        }
+        if sets {
+            declared.extend(self.sets.keys().copied());
+        }
+        crate::hint::suggestion(n, &declared)
     }
 
     /// The position of the point `n`, refused at `path` if there is none.
@@ -287,7 +313,10 @@ fn contact(
     let Some((f, k)) = known.basis_vector(text) else {
         return Err(at(
             field,
-            format!("`{text}` is not a basis vector such as x0"),
+            format!(
+                "`{text}` is not a basis vector such as x0{}",
+                known.vector_hint(text)
+            ),
         ));
     };
     if f != axis.0 || k == axis.1 {
@@ -344,7 +373,10 @@ fn axis(
     l: &LinkSpec,
 ) -> Result<((usize, usize), Option<usize>), Refusal> {
     let vector = |field: &str, text: &str| {
-        let why = || format!("`{text}` is not a basis vector such as z0");
+        let why = || {
+            let hint = known.vector_hint(text);
+            format!("`{text}` is not a basis vector such as z0{hint}")
+        };
         (known.basis_vector(text)).ok_or_else(|| at(format!("{path}.{field}"), why()))
     };
     let axis = match &l.axis {
@@ -623,7 +655,8 @@ pub(super) fn theorems(known: &Known) -> Result<Vec<TheoremNode>, Refusal> {
                          \"frame\": \"{n}\", \"massless\": true}}`"
                     )
                 } else {
-                    format!("unknown solid or set `{n}`")
+                    let hint = known.solid_hint(n, false, true);
+                    format!("unknown solid or set `{n}`{hint}")
                 };
                 at(format!("{path}.isolate"), why)
             })?,
@@ -654,7 +687,8 @@ pub(super) fn theorems(known: &Known) -> Result<Vec<TheoremNode>, Refusal> {
                 return Err(at(format!("{path}.on"), why));
             }
             (Some(on), _) => known.basis_vector(on).ok_or_else(|| {
-                let why = format!("`{on}` is not a basis vector such as z0");
+                let hint = known.vector_hint(on);
+                let why = format!("`{on}` is not a basis vector such as z0{hint}");
                 at(format!("{path}.on"), why)
             })?,
         };

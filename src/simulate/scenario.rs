@@ -443,9 +443,13 @@ fn imposed_laws(m: &Mechanism, sc: &ScenarioSpec) -> Result<(Vec<Imposed>, Vec<f
     let mut imposed = Vec::new();
     let mut breakpoints = Vec::new();
     for (k, im) in sc.imposed.iter().enumerate() {
-        let q = reg
-            .coord(&im.coordinate)
-            .ok_or_else(|| format!("imposed[{k}]: unknown coordinate `{}`", im.coordinate))?;
+        let q = reg.coord(&im.coordinate).ok_or_else(|| {
+            let c = &im.coordinate;
+            format!(
+                "imposed[{k}]: unknown coordinate `{c}`{}",
+                reg.coordinate_hint(c)
+            )
+        })?;
         let law = TimeLaw::new(&im.rate, reg.parameters(), &params)
             .and_then(|law| law.check_starts(sc.duration).map(|()| law))
             .map_err(|e| {
@@ -528,7 +532,8 @@ fn free_initial(
     }
     for name in sc.initial.keys() {
         if reg.coord(name).is_none() {
-            return Err(format!("initial: unknown coordinate `{name}`"));
+            let hint = reg.coordinate_hint(name);
+            return Err(format!("initial: unknown coordinate `{name}`{hint}"));
         }
     }
     Ok(initial)

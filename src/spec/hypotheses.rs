@@ -33,7 +33,12 @@ fn parameter(reg: &Rc<Registry>, field: &str, p: &str) -> Result<VarId, SpecErro
     reg.param_id(p)
         .filter(|id| !reg.is_unknown(*id))
         .and_then(|id| reg.index_of(VarRole::Parameter(id)))
-        .ok_or_else(|| at(field, format!("unknown parameter `{p}`")))
+        .ok_or_else(|| {
+            at(
+                field,
+                format!("unknown parameter `{p}`{}", reg.parameter_hint(p)),
+            )
+        })
 }
 
 /// q̇, q̈ and the third derivative of `q` set to `first`, 0 and 0.
@@ -63,9 +68,12 @@ pub(super) fn motions(
 ) -> Result<(), SpecError> {
     let mut seen: Vec<String> = Vec::new();
     let mut coord = |field: String, c: &str| -> Result<CoordId, SpecError> {
-        let q = reg
-            .coord(c)
-            .ok_or_else(|| at(&field, format!("unknown coordinate `{c}`")))?;
+        let q = reg.coord(c).ok_or_else(|| {
+            at(
+                &field,
+                format!("unknown coordinate `{c}`{}", reg.coordinate_hint(c)),
+            )
+        })?;
         if reg.coord_info(q).has_imposed_rate() {
             return Err(at(&field, format!("`{c}` already has an imposed rate")));
         }

@@ -116,9 +116,11 @@ fn build_with(
 
     let default_basis = match &spec.default_basis {
         None => frames.ground(),
-        Some(b) => frames
-            .find(b)
-            .ok_or_else(|| at("default_basis", format!("unknown frame `{b}`")))?,
+        Some(b) => frames.find(b).ok_or_else(|| {
+            let declared: Vec<&str> = frames.names().collect();
+            let hint = crate::hint::suggestion(b, &declared);
+            at("default_basis", format!("unknown frame `{b}`{hint}"))
+        })?,
     };
     let mut quantities = Vec::new();
     for (i, q) in spec.quantities.iter().enumerate() {
@@ -649,6 +651,12 @@ fn symmetric_solid(
     Ok(())
 }
 
+/// What a refusal of the hypothesis `h` suggests among the declared ones.
+fn hypothesis_hint(h: &str, hypotheses: &[Hypothesis]) -> String {
+    let declared: Vec<&str> = hypotheses.iter().map(|x| x.name.as_str()).collect();
+    crate::hint::suggestion(h, &declared)
+}
+
 /// The questions: their hypotheses known, their quantities and equations readable (their
 /// text is escaped when printed; the quantities are resolved once the mechanism is built).
 fn questions(spec: &SpecFile, hypotheses: &[Hypothesis]) -> Result<(), SpecError> {
@@ -659,7 +667,7 @@ fn questions(spec: &SpecFile, hypotheses: &[Hypothesis]) -> Result<(), SpecError
             if !hypotheses.iter().any(|x: &Hypothesis| &x.name == h) {
                 return Err(at(
                     format!("{path}.hypotheses[{k}]"),
-                    format!("unknown hypothesis `{h}`"),
+                    format!("unknown hypothesis `{h}`{}", hypothesis_hint(h, hypotheses)),
                 ));
             }
         }
@@ -668,7 +676,7 @@ fn questions(spec: &SpecFile, hypotheses: &[Hypothesis]) -> Result<(), SpecError
         {
             return Err(at(
                 format!("{path}.under"),
-                format!("unknown hypothesis `{h}`"),
+                format!("unknown hypothesis `{h}`{}", hypothesis_hint(h, hypotheses)),
             ));
         }
         for (k, q) in qs.quantities.iter().enumerate() {
@@ -689,6 +697,9 @@ fn questions(spec: &SpecFile, hypotheses: &[Hypothesis]) -> Result<(), SpecError
 /// negative (`sign` −1).
 fn rotation_angle(reg: &Rc<Registry>, text: &str, sign: i32) -> Result<Angle, String> {
     let a = reg.parse_angle(text).map_err(|e| match e {
+        ExprError::UnknownName { name, hint, .. } if !hint.is_empty() => {
+            format!("unknown name `{name}` in the angle `{text}` ({hint})")
+        }
         ExprError::UnknownName { name, .. } => format!(
             "unknown name `{name}` in the angle `{text}` (declare it as an angle coordinate, or \
              as a parameter with \"kind\": \"angle\" for a constant angle)"

@@ -55,12 +55,15 @@ pub enum VerifyError {
     #[error("unknown hypothesis `{0}`")]
     Hypothesis(String),
     /// Names the spec does not declare, all of them.
-    #[error("{}", unknown_names(.names, .input))]
+    #[error("{}{hint}", unknown_names(.names, .input))]
     UnknownNames {
         /// The names, in the order written.
         names: Vec<String>,
         /// The text given.
         input: String,
+        /// ` (did you mean `theta`?)` for each name a declared one is close to
+        /// ([`crate::hint`]), else empty.
+        hint: String,
     },
     /// The PFD, needed for an unknown or an equation of motion, cannot be solved.
     #[error("the spec's pfd: {0}")]

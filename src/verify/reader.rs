@@ -221,9 +221,11 @@ impl<'a> Reader<'a> {
             i = end;
         }
         if !unknown.is_empty() {
+            let hint = names_hint(&reg, &unknown);
             return Err(VerifyError::UnknownNames {
                 names: unknown,
                 input: text.to_string(),
+                hint,
             });
         }
         Ok((out, placeholders))
@@ -515,4 +517,26 @@ fn quantity_end(text: &str, open: usize) -> Result<usize, VerifyError> {
         }
     }
     Ok(end)
+}
+
+/// ` (did you mean `theta` for `thta`?)`: for each of the `unknown` names, the parameter,
+/// coordinate, alias or PFD unknown of `reg` it most likely misspells; empty when none is
+/// close.
+fn names_hint(reg: &std::rc::Rc<Registry>, unknown: &[String]) -> String {
+    let aliases: Vec<&str> = reg.aliases().map(|(a, _)| a).collect();
+    let declared: Vec<&str> = (reg.parameters().iter().map(String::as_str))
+        .chain(reg.coordinates().iter().map(|c| c.name.as_str()))
+        .chain(aliases)
+        .collect();
+    let guesses: Vec<String> = (unknown.iter())
+        .filter_map(|u| crate::hint::closest(u, &declared).map(|d| (u, d)))
+        .map(|(u, d)| match unknown.len() {
+            1 => format!("`{d}`"),
+            _ => format!("`{d}` for `{u}`"),
+        })
+        .collect();
+    match guesses.is_empty() {
+        true => String::new(),
+        false => format!(" (did you mean {}?)", guesses.join(", ")),
+    }
 }

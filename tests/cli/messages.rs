@@ -231,3 +231,57 @@ fn verify_reads_pi_in_a_typed_result() {
     ]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
 }
+
+/// The typos of a first hour (issue 35, item 4), each refused with the fix: the declared name
+/// it most likely misspells, the rate to write for a prime, the solid a frame should be. The
+/// regulator declares the points O0, O1, G1, O2, G2, the solids 1, 2 and the set E, the
+/// coordinates theta1, theta2 and the parameter L1 (among others).
+#[test]
+fn a_first_hours_typos_are_refused_with_the_name_meant() {
+    let s = spec();
+    let s = s.to_str().unwrap();
+    let said = |args: &[&str]| refused(&run(args));
+    assert_eq!(
+        said(&["derive", s, "-q", "V(g2,2/0)"]),
+        "torseur: error: V(g2,2/0): unknown point `g2` (did you mean `G2`?)"
+    );
+    assert_eq!(
+        said(&["derive", s, "-q", "Omega(2/O)"]),
+        "torseur: error: Omega(2/O): unknown solid or frame `O` (did you mean `0`?)"
+    );
+    let omega = said(&["derive", s, "-q", "omega(2/0)"]);
+    assert!(
+        omega.starts_with(
+            "torseur: error: quantity `omega(2/0)`: unknown quantity `omega` (did you mean \
+             `Omega`? known: Omega, V,"
+        ),
+        "{omega}"
+    );
+    assert_eq!(
+        said(&["verify", s, "-q", "Omega(2/0).x2", "-e", "dot(thta2)"]),
+        "torseur: error: unknown name `thta2` in `dot(thta2)`: neither a parameter, a \
+         coordinate nor an unknown of the PFD of the spec (did you mean `theta2`?)"
+    );
+    assert_eq!(
+        said(&["verify", s, "-q", "Omega(2/0).x2", "-e", "theta2'"]),
+        "torseur: error: cannot parse `theta2'`: `theta2'`: a time derivative is written \
+         dot(theta2)"
+    );
+    // In the spec, at the place: a parameter's case, a point, a solid to isolate.
+    let (_d, p) = edited(|v| v["points"][2]["position"] = "d1*z0 + l1*y1".into());
+    let line = said(&["check", p.to_str().unwrap()]);
+    assert!(
+        line.ends_with("unknown name `l1` in `d1*z0 + l1*y1` (did you mean `L1`?)"),
+        "{line}"
+    );
+    let (_d, p) = edited(|v| v["pfd"][0]["isolate"] = "S2".into());
+    let line = said(&["check", p.to_str().unwrap()]);
+    assert!(
+        line.starts_with("torseur: error: at pfd[0].isolate (line "),
+        "{line}"
+    );
+    assert!(
+        line.ends_with("unknown solid or set `S2` (did you mean `2`?)"),
+        "{line}"
+    );
+}

@@ -192,8 +192,14 @@ fn an_action_that_is_not_there_is_refused_by_name() {
         "R(foo->2): no action of `foo` on `2` is declared (the actions on `2` come from: 1, \
          pes, ext)"
     );
-    assert_eq!(e("M(Q,0->1)"), "M(Q,0->1): unknown point `Q`");
-    assert_eq!(e("R(0->F)"), "R(0->F): unknown solid or set `F`");
+    assert_eq!(
+        e("M(Q,0->1)"),
+        "M(Q,0->1): unknown point `Q` (declared: `O0`, `O1`, `G1`, `O2`, `G2`)"
+    );
+    assert_eq!(
+        e("R(0->F)"),
+        "R(0->F): unknown solid or set `F` (declared: `1`, `2`, `E`)"
+    );
     // In a spec, at load, with its place.
     let text = std::fs::read_to_string("derivations/pendule_inverse_ressort.json").unwrap();
     let text = text.replacen("\"quantities\": [", "\"quantities\": [\"M(O,foo->1)\", ", 1);
