@@ -188,11 +188,12 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             r.point = Some(point(p)?);
             kinematic(motion, &mut r)?;
         }
+        // I(P,S) of a solid, or I(P,E) = Σ I(P,Si) of a set, in the basis of its first
+        // solid's operator.
         Inertia { point: p, solid } => {
             r.point = Some(point(p)?);
-            let b = m.find_body(solid).ok_or_else(|| unknown("solid", solid))?;
-            r.solids = vec![b];
-            r.basis = torsor::inertia_basis(m, b);
+            r.solids = solids(solid)?;
+            r.basis = torsor::inertia_basis(m, r.solids[0]);
         }
         KineticResultant(mo) | DynamicResultant(mo) | KineticEnergy(mo) => kinetic(mo, &mut r)?,
         // Named objects checked here, before the PFD is solved: a spec's `quantities` are
@@ -476,25 +477,34 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
                 reference,
             ))
         }
-        Inertia { .. } => {
+        Inertia { .. } if r.solids.len() == 1 => {
             let s = r.solids[0];
             let a = r.point.unwrap_or(m.body(s).centre);
-            let ia = torsor::inertia_at(m, s, a).in_basis(&m.frames, b);
-            if m.body(s).massless {
-                steps.push(massless_step(q.kind.clone(), Value::Matrix(ia.clone())));
-            }
-            if let Some(ig) = torsor::inertia_at_centre(m, s) {
+            Found::Value(Value::Matrix(inertia_steps(m, s, a, b, &mut steps)))
+        }
+        // A set: each solid's operator at the point (Huygens), then their sum.
+        Inertia { point, .. } => {
+            let a = r.point.unwrap_or(m.points.origin());
+            let mut total: Option<crate::inertia::Inertia> = None;
+            for &s in &r.solids {
+                let ia = inertia_steps(m, s, a, b, &mut steps);
+                let solid = m.body(s).name.clone();
                 steps.push(Step {
                     kind: StepKind::Quantity(QuantityKind::Inertia {
-                        point: m.point_name(m.body(s).centre).to_string(),
-                        solid: m.body(s).name.clone(),
+                        point: point.clone(),
+                        solid: solid.clone(),
                     }),
-                    label: format!("I({},{})", m.point_name(m.body(s).centre), m.body(s).name),
-                    theorem: "opérateur d'inertie donné par l'énoncé".into(),
-                    value: Value::Matrix(ig),
+                    label: format!("I({point},{solid})"),
+                    theorem: "théorème de Huygens".into(),
+                    value: Value::Matrix(ia.clone()),
+                });
+                total = Some(match total {
+                    None => ia,
+                    Some(t) => t.plus(&ia),
                 });
             }
-            Found::Value(Value::Matrix(ia))
+            let total = total.expect("a set holds at least one solid");
+            Found::Value(Value::Matrix(total))
         }
         KineticResultant(_) | DynamicResultant(_) => {
             let v = if matches!(q.kind, DynamicResultant(_)) {
@@ -665,4 +675,37 @@ fn derive_value(
         }
         _ => derive(m, q).map(|d| done(d.value)),
     }
+}
+
+/// I(A,S) of one solid in the basis `b`, with the steps the course shows before it: the
+/// operator the statement gives at the centre, or the one step that says the body has no
+/// mass.
+fn inertia_steps(
+    m: &Mechanism,
+    s: BodyId,
+    a: PointId,
+    b: FrameId,
+    steps: &mut Vec<Step>,
+) -> crate::inertia::Inertia {
+    let body = m.body(s);
+    let ia = torsor::inertia_at(m, s, a).in_basis(&m.frames, b);
+    if body.massless {
+        let kind = QuantityKind::Inertia {
+            point: m.point_name(a).to_string(),
+            solid: body.name.clone(),
+        };
+        steps.push(massless_step(kind, Value::Matrix(ia.clone())));
+    }
+    if let Some(ig) = torsor::inertia_at_centre(m, s) {
+        steps.push(Step {
+            kind: StepKind::Quantity(QuantityKind::Inertia {
+                point: m.point_name(body.centre).to_string(),
+                solid: body.name.clone(),
+            }),
+            label: format!("I({},{})", m.point_name(body.centre), body.name),
+            theorem: "opérateur d'inertie donné par l'énoncé".into(),
+            value: Value::Matrix(ig),
+        });
+    }
+    ia
 }

@@ -42,6 +42,7 @@ mod printed_names;
 mod properties;
 mod regulator;
 mod rolling;
+mod sets;
 mod simulate;
 mod spec_errors;
 mod spec_schema;
