@@ -120,3 +120,16 @@ fn the_first_spec_agrees_with_the_pendulum_by_hand() {
     ]);
     assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
 }
+
+/// The modelling rules' snippets are what the spec reads: the solid with its inertia and the
+/// motor are a `solids` and an `actions` entry (unknown fields are refused by the spec's types).
+#[test]
+fn the_modelling_rules_snippets_are_spec_entries() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let solid = block_after(&readme, "- **Solids.**", "json");
+    let solid: torseur::wire::SolidSpec = serde_json::from_str(&solid).unwrap();
+    assert_eq!(solid.name, "1");
+    let action = block_after(&readme, "- **Actions**", "json");
+    let action: torseur::wire::ActionSpec = serde_json::from_str(&action).unwrap();
+    assert_eq!(action.name, "moteur");
+}
