@@ -40,6 +40,31 @@ impl Expr {
     }
 }
 
+impl Expr {
+    /// The sum of the magnitudes of the terms at `point`: the size against which
+    /// [`Expr::eval`] is small or not (a value 1e-12 of it is rounding, not a nonzero
+    /// polynomial).
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// let reg = Registry::new(&["a".into()], &[]).unwrap();
+    /// let e = reg.parse("a - 2").unwrap();
+    /// let point = vec![2.0; reg.nvars()];
+    /// assert_eq!((e.eval(&point), e.eval_magnitude(&point)), (0.0, 4.0));
+    /// ```
+    pub fn eval_magnitude(&self, point: &[f64]) -> f64 {
+        let mut acc = 0.0;
+        for (c, e) in self.terms() {
+            let mut t = DoubleDouble::rational(c).hi.abs();
+            for (i, &k) in e.iter().enumerate() {
+                t *= point[i].abs().powi(i32::from(k));
+            }
+            acc += t;
+        }
+        acc
+    }
+}
+
 /// A number as an unevaluated sum hi + lo of two f64 (|lo| ≤ ulp(hi)/2): Dekker's and
 /// Knuth's error-free transformations, for [`Expr::eval`].
 #[derive(Debug, Clone, Copy)]

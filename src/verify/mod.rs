@@ -23,6 +23,7 @@
 //! Under a hypothesis, everything (derived values, solved unknowns, equations of motion and the
 //! text given) is taken under its substitutions.
 
+mod closure;
 mod factor;
 mod motions;
 mod reader;
@@ -105,6 +106,14 @@ pub enum Check {
         /// (coordinate, cᵢ), the nonzero coefficients in the order of the coordinates' names.
         combination: Vec<(String, Factor)>,
     },
+    /// Not an identity, but a consequence of the loop closure at position level:
+    /// lhs − rhs (or given − derived, each component) is k × one of the loop's relations as
+    /// written by hand (the closure projected on a basis vector, or with one term's direction
+    /// eliminated), k made of parameters.
+    Closure {
+        /// (the relation in words, k), one per nonzero component.
+        relations: Vec<(String, Factor)>,
+    },
 }
 
 /// The verdict: equivalent or not, which check decided, and the simplified difference.
@@ -135,6 +144,9 @@ pub struct Verdict {
     /// component of `difference`: each difference is multiplied by its denominator (for an
     /// equation, lhs − rhs over a common one), so that it is a polynomial.
     pub denominators: Vec<Expr>,
+    /// For a mechanism with loop closures, a verdict « not equivalent » found at a closed
+    /// configuration the float backend drew: where, and the value of lhs − rhs there.
+    pub counterexample: Option<String>,
 }
 
 impl Verdict {
@@ -215,6 +227,26 @@ impl fmt::Display for Verdict {
                 Check::EquationOfMotion { coordinate } => {
                     self.write_equivalent_eom(f, &subject, &under, coordinate)
                 }
+                Check::Closure { relations } => {
+                    let sides = match self.equation {
+                        Some(_) => "lhs − rhs",
+                        None => "given − derived",
+                    };
+                    let each: Vec<String> = relations
+                        .iter()
+                        .map(|(r, k)| match k.is_one() {
+                            true => r.clone(),
+                            false => format!("{k} × ({r})"),
+                        })
+                        .collect();
+                    write!(
+                        f,
+                        "{subject}: equivalent modulo the loop closure (not identically): \
+                         {sides} = {}{}",
+                        each.join("; "),
+                        self.replaced()
+                    )
+                }
                 Check::AlongMotions { combination } => {
                     let sides = match self.equation {
                         Some(_) => "lhs − rhs",
@@ -242,6 +274,9 @@ impl fmt::Display for Verdict {
                     writeln!(f, "    (multiplied by the denominator typed, {den})")?;
                 }
             }
+        }
+        if let Some(at) = &self.counterexample {
+            writeln!(f, "  not a consequence of the loop closure: {at}")?;
         }
         Ok(())
     }
@@ -326,7 +361,9 @@ impl Verdict {
                  motion times a nonzero factor made of parameters; lhs − rhs =",
                 self.replaced()
             )?,
-            Check::AlongMotions { .. } => writeln!(f, "{subject}: NOT equivalent")?,
+            Check::AlongMotions { .. } | Check::Closure { .. } => {
+                writeln!(f, "{subject}: NOT equivalent")?
+            }
         }
         Ok(())
     }
@@ -528,6 +565,28 @@ pub fn verify(
         check = Check::AlongMotions { combination };
         difference = vec![m.reg.zero()];
     }
+    // A value that differs by a consequence of the loop closure (x for R cos θ + L cos φ).
+    let mut counterexample = None;
+    if check == Check::Value && difference.iter().any(|d| !d.is_zero()) {
+        let mut relations = Vec::new();
+        for d in difference.iter().filter(|d| !d.is_zero()) {
+            match closure::modulo_closure(&reader, d)? {
+                None => break,
+                Some(closure::Closed::Proven { relation, factor }) => {
+                    relations.push((relation, factor))
+                }
+                Some(closure::Closed::Counterexample(at)) => {
+                    counterexample = Some(at);
+                    break;
+                }
+                Some(closure::Closed::Undecided) => return Err(undecided()),
+            }
+        }
+        if counterexample.is_none() && !relations.is_empty() {
+            check = Check::Closure { relations };
+            difference = vec![m.reg.zero(); difference.len()];
+        }
+    }
     Ok(Verdict {
         quantity: q.to_string(),
         equation: None,
@@ -538,7 +597,20 @@ pub fn verify(
         factor: None,
         substituted: reader.substituted,
         denominators,
+        counterexample,
     })
+}
+
+/// The refusal of a question the loop closure leaves open: lhs − rhs vanished at every
+/// closed configuration drawn, but is not proven zero.
+fn undecided() -> VerifyError {
+    VerifyError::OutOfReach(
+        "the difference is not zero as a polynomial, nor a multiple of one of the loop \
+         closure's relations (its projections on the basis vectors, or one term's direction \
+         eliminated), yet it vanished at every closed configuration the float backend drew: \
+         the question is undecided"
+            .to_string(),
+    )
 }
 
 /// The derived value of a quantity.
@@ -608,6 +680,7 @@ fn equation_of_motion(
         factor,
         substituted: reader.substituted,
         denominators: vec![den],
+        counterexample: None,
     })
 }
 
@@ -649,6 +722,7 @@ fn relation(
         factor,
         substituted,
         denominators: denominators.clone(),
+        counterexample: None,
     };
     if e.is_zero() {
         let zero = m.reg.zero();
@@ -692,8 +766,27 @@ fn relation(
             reader.substituted,
         ));
     }
+    // Not zero along the motions: a consequence of the loop closure?
     let zero = m.reg.zero();
-    Ok(verdict(Check::Relation, zero, e, None, reader.substituted))
+    match closure::modulo_closure(&reader, &e)? {
+        Some(closure::Closed::Proven { relation, factor }) => {
+            let relations = vec![(relation, factor)];
+            Ok(verdict(
+                Check::Closure { relations },
+                zero.clone(),
+                zero,
+                None,
+                reader.substituted,
+            ))
+        }
+        Some(closure::Closed::Undecided) => Err(undecided()),
+        Some(closure::Closed::Counterexample(at)) => {
+            let mut v = verdict(Check::Relation, zero, e, None, reader.substituted);
+            v.counterexample = Some(at);
+            Ok(v)
+        }
+        None => Ok(verdict(Check::Relation, zero, e, None, reader.substituted)),
+    }
 }
 
 /// Decides an equation `lhs = rhs` between quantities (`delta(O2,2/0).x2`, `eom(theta)`),

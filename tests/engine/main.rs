@@ -30,6 +30,7 @@ mod latex_safe;
 mod layers;
 mod library;
 mod links;
+mod loop_verify;
 mod massless;
 mod messages;
 mod motion;
