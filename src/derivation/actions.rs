@@ -2,7 +2,8 @@
 //! the sum of the actions `from` exerts on `on`, moved to A by M(A) = M(P) + AP ∧ R; their
 //! power P(from→on/R) and the power of the actions inside a set, P_int(E).
 
-use super::{ResolveError, Resolved, Step, StepKind, torsor_value};
+use super::steps::action_step;
+use super::{ResolveError, Resolved, Step};
 use crate::mechanism::Mechanism;
 use crate::quantity::{ActionRef, Quantity};
 use crate::torsor::Torsor;
@@ -32,20 +33,6 @@ pub(super) fn total(
         sum.moment = sum.moment.add(&moved.moment);
     }
     Ok(sum)
-}
-
-/// The step of one action's torsor at its own point, as the bilan writes it.
-pub(super) fn action_step(m: &Mechanism, act: &crate::pfd::Action) -> Step {
-    Step {
-        label: format!("T({}->{})", act.from_label, act.on_label),
-        kind: StepKind::Action {
-            from: act.from_label.clone(),
-            on: act.on_label.clone(),
-            point: m.point_name(act.point).to_string(),
-        },
-        theorem: super::dynamics::bilan_line(act),
-        value: torsor_value(m, &act.torsor(), act.basis),
-    }
 }
 
 /// P(from→on/R) = Σ R·V(A∈S/R) + M(A)·Ω(S/R) over the actions `from` exerts on `on`, each

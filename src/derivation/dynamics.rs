@@ -3,11 +3,12 @@
 //! The PFD itself (actions, theorems, the linear solve) is [`crate::pfd`]; this module only
 //! records its steps, and shares one run's cache of δ(G), m Γ(G) and the solved system.
 
+use super::steps::bilan_line;
 use super::{Derivation, ResolveError, Step, StepKind, Value};
 use crate::expr::{Expr, VarId};
 use crate::mechanism::Mechanism;
 use crate::pfd::{
-    Action, PfdError, Solution, Theorem, dynamic_quantity, kinetic_energy, solve_with_residuals,
+    PfdError, Solution, Theorem, dynamic_quantity, kinetic_energy, solve_with_residuals,
     theorem_sides, unknown_vars, unknowns_in,
 };
 use crate::quantity::{Quantity, QuantityKind};
@@ -80,28 +81,6 @@ pub(super) fn not_an_unknown(name: &str) -> String {
 /// Why `eom(c)` of a coordinate `c` has no equation.
 pub(super) fn no_eom_marked(c: &str) -> String {
     format!("no equation of `pfd` is marked `\"eom\": \"{c}\"`")
-}
-
-/// A solid in a sentence: `$S_{2}$` for solid `2`, its name otherwise (free text).
-fn solid_text(n: &str) -> String {
-    if n.chars().all(|c| c.is_ascii_digit()) {
-        format!("$S_{{{n}}}$")
-    } else {
-        n.to_string()
-    }
-}
-
-/// The line of an action in the bilan of the external actions (free text for
-/// [`crate::latex::rich_text`]).
-pub(super) fn bilan_line(a: &Action) -> String {
-    let (from, on) = (solid_text(&a.from_label), solid_text(&a.on_label));
-    if a.from_label == "pes" {
-        format!("pesanteur sur {on}")
-    } else if a.description.starts_with("liaison") || a.description.starts_with("encastrement") {
-        format!("{}, action de {from} sur {on}", a.description)
-    } else {
-        format!("{}, action sur {on}", a.label)
-    }
 }
 
 /// The steps of one theorem: each exterior action's torsor, the dynamic side, the actions'

@@ -4,7 +4,7 @@
 //! P_int(E), the kinetic energy and its derivative, then the theorem
 //! dEc(E/R0)/dt = P(ext→E/R0) + P_int(E).
 
-use super::{Step, StepKind, Value, actions::action_step};
+use super::{Step, StepKind, Value, steps::action_step};
 use crate::expr::Expr;
 use crate::mechanism::Mechanism;
 use crate::pfd::{Action, Source, Theorem, kinetic_energy};

@@ -15,6 +15,7 @@ mod derivative;
 mod dynamics;
 mod energy;
 mod moments;
+mod steps;
 mod value;
 pub use dynamics::Shared;
 pub(crate) use moments::massless_step;

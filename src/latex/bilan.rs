@@ -1,6 +1,6 @@
 //! The closing « Bilan » of an answer key: its results, their values when short, their units.
 
-use super::document::{Doc, Inline, quantity_title};
+use super::page::{Doc, Inline, quantity_title};
 use super::{basis, escape_text, name};
 use crate::derivation::Value;
 use crate::quantity::{Quantity, QuantityKind};

@@ -3,8 +3,8 @@
 //! given with its value) and the sticking condition |T| ≤ f |N|; in the PFD's solve, the law
 //! as an equation of the system, at the limit of sliding when a hypothesis gives the sign.
 
-use super::document::Doc;
-use super::method::solid;
+use super::page::Doc;
+use super::words::solid;
 use super::{Inline, basis_vector, name, point, quantity};
 use crate::derivation::{Step, StepKind, Value};
 use crate::mechanism::{CoulombLaw, Mechanism};
@@ -133,7 +133,7 @@ pub(super) fn law_steps(doc: &mut Doc, steps: &[Step]) {
             continue;
         };
         let p = point(&m.spec.links[law.link].point);
-        let v = super::method::shown_value(doc, &s.value);
+        let v = super::words::shown_value(doc, &s.value);
         let t = name(tangential);
         if let Some(place) = doc.cited(&t, &v) {
             let place = if place == "ce qui précède" {
@@ -186,7 +186,7 @@ pub(super) fn laws_phrase(m: &Mechanism) -> Option<String> {
         1 => Some(format!("la loi de Coulomb en {}", points[0])),
         _ => Some(format!(
             "les lois de Coulomb en {}",
-            super::method::french_list(&points)
+            super::words::french_list(&points)
         )),
     }
 }

@@ -3,9 +3,9 @@
 //! energy and its derivative, then dEc(E/R0)/dt = P(ext→E/R0) + P_int(E) as one equality.
 //! Every formula is recorded (see `document`).
 
-use super::document::{DisplayRole, Doc};
 use super::frame;
-use super::method::{shown_value, solid, step_lhs};
+use super::page::{DisplayRole, Doc};
+use super::words::{shown_value, solid, step_lhs};
 use crate::derivation::{Step, StepKind, Value};
 use crate::quantity::QuantityKind;
 use std::fmt::Write;
@@ -87,7 +87,7 @@ fn side_by_side(doc: &mut Doc, steps: &[&Step]) {
         widths.push(doc.last_width());
     }
     if !cited.is_empty() {
-        let _ = writeln!(doc.o, "{}", super::method::citation(&cited));
+        let _ = writeln!(doc.o, "{}", super::words::citation(&cited));
     }
     doc.rows(&cells, &widths, 3);
 }
@@ -97,7 +97,7 @@ fn shown_or_cited(doc: &mut Doc, s: &Step, sentence: &str) {
     let v = shown_value(doc, &s.value);
     let lhs = step_lhs(&s.kind);
     if let Some(place) = doc.cited(&lhs, &v) {
-        let c = super::method::citation(&[(place, vec![lhs])]);
+        let c = super::words::citation(&[(place, vec![lhs])]);
         let _ = writeln!(doc.o, "{c}");
         return;
     }

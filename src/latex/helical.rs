@@ -3,8 +3,8 @@
 //! coordinates, and the torsor a perfect one transmits, its axial moment tied to its axial
 //! resultant by zero power (N = −p Z/(2π) along z).
 
-use super::document::{DisplayRole, Doc, Inline};
-use super::method::solid;
+use super::page::{DisplayRole, Doc, Inline};
+use super::words::solid;
 use crate::derivation::Value;
 use crate::mechanism::{HelicalLaw, Mechanism};
 use crate::quantity::Quantity;

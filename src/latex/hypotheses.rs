@@ -2,7 +2,7 @@
 //! the particular inertia matrices; a later hypothesis with the same symmetries refers to it.
 
 use super::Inline;
-use super::document::{DisplayRole, Doc};
+use super::page::{DisplayRole, Doc};
 use super::{basis_vector, escape_text, name, point, rich_text_or_escaped};
 use crate::derivation::Value;
 use crate::inertia::Symmetry;
@@ -152,13 +152,13 @@ fn symmetry_sentence(
     Some(format!(
         "Pour le solide ${}$, {} : {}{}.\n",
         name(sname),
-        super::method::french_list(&why),
+        super::words::french_list(&why),
         if zeros.is_empty() {
             "les produits d'inertie correspondants sont nuls".to_string()
         } else {
             format!(
                 "les produits d'inertie {} sont nuls",
-                super::method::french_list(&zeros)
+                super::words::french_list(&zeros)
             )
         },
         if equal {
@@ -209,7 +209,7 @@ fn first_order(d: &mut Doc, h: &Hypothesis) {
         d.o,
         "Les résultats sont écrits au premier ordre en {} : les termes de degré 2 ou plus \
          en ces petits paramètres sont négligés.\n",
-        super::method::french_list(&small)
+        super::words::french_list(&small)
     );
 }
 

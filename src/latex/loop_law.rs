@@ -2,7 +2,7 @@
 //! glissement ») and the helical links' screw motions after the paramétrage of a mechanism
 //! with dependent coordinates.
 
-use super::document::{DisplayRole, Doc, Inline};
+use super::page::{DisplayRole, Doc, Inline};
 use crate::derivation::Value;
 use crate::mechanism::RollingLaw;
 use std::fmt::Write as _;

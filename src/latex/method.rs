@@ -4,43 +4,18 @@
 //! derivative of the kinetic moment in one line, and the PFD as a bilan of the external
 //! actions followed by one equality per theorem.
 
-use super::document::{DisplayRole, Doc};
 use super::omega::omega_sentence;
+use super::page::{DisplayRole, Doc};
 use super::routes::{
     derived_step, position_route, position_sentence, projected_moment_route, projected_set_route,
 };
 use super::sentences::sentence;
-use super::{action_side, basis_vector, frame, name, point, quantity};
+use super::words::{citation, french_list, mass_of, shown_value, solid, step_lhs};
+use super::{frame, point, quantity};
 use crate::derivation::{Derivation, StepKind, Value, derive};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::quantity::{Motion, Quantity, QuantityKind};
 use std::fmt::Write;
-
-/// `S_2` for solid `2`, `E` for a set.
-pub(super) fn solid(n: &str) -> String {
-    if n.chars().all(|c| c.is_ascii_digit()) {
-        format!("S_{{{n}}}")
-    } else {
-        name(n)
-    }
-}
-
-/// The mass of a solid in LaTeX (`m_{2}`), as a factor (a sum in parentheses), or `m` for a
-/// set.
-pub(super) fn mass_of(m: &Mechanism, s: &str) -> String {
-    m.bodies
-        .iter()
-        .find(|b| b.name == s)
-        .map(|b| {
-            let t = super::expr(&b.mass);
-            if t.contains(" + ") || t.contains(" - ") {
-                format!("\\left({t}\\right)")
-            } else {
-                t
-            }
-        })
-        .unwrap_or_else(|| "m".to_string())
-}
 
 /// The course's names of a torsor's elements: (resultant, moment).
 pub(super) fn torsor_names(k: &QuantityKind) -> Option<(String, String)> {
@@ -74,77 +49,6 @@ pub(super) fn torsor_names(k: &QuantityKind) -> Option<(String, String)> {
     };
     let _ = p;
     Some((quantity(&r), quantity(&mo)))
-}
-
-/// The left side of a step's display.
-pub(super) fn step_lhs(k: &StepKind) -> String {
-    match k {
-        StepKind::Quantity(q) => quantity(q),
-        StepKind::Derivative(q, r) => format!(
-            "\\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}}",
-            quantity(q),
-            frame(r)
-        ),
-        StepKind::Complementary {
-            point: a,
-            centre: g,
-            reference: r,
-            ..
-        } => format!(
-            "\\overrightarrow{{V({}/{})}} \\wedge m\\,\\overrightarrow{{V({}/{})}}",
-            point(a),
-            frame(r),
-            point(g),
-            frame(r)
-        ),
-        StepKind::Massless(q) => quantity(q),
-        StepKind::Action { from, on, point: p } => format!(
-            "\\left\\{{\\mathcal{{T}}({} \\rightarrow {})\\right\\}}_{{{}}}",
-            action_side(from),
-            action_side(on),
-            point(p)
-        ),
-        StepKind::Projected(q, (f, a)) => format!("{} \\cdot {}", quantity(q), basis_vector(*a, f)),
-        StepKind::Coulomb { tangential, .. } => super::name(tangential),
-        StepKind::Powers { isolate, reference } => format!(
-            "{} + {}",
-            quantity(&QuantityKind::Power {
-                action: crate::quantity::ActionRef {
-                    from: "ext".into(),
-                    on: isolate.clone(),
-                },
-                reference: reference.clone(),
-            }),
-            quantity(&QuantityKind::InternalPower(isolate.clone()))
-        ),
-        StepKind::External {
-            isolate,
-            point: p,
-            on: (f, a),
-        } => {
-            let s = action_side(isolate);
-            let arrow = format!("\\bar{{{s}}} \\rightarrow {s}");
-            match p {
-                Some(p) => format!(
-                    "\\overrightarrow{{M({},{arrow})}} \\cdot {}",
-                    point(p),
-                    basis_vector(*a, f)
-                ),
-                None => format!(
-                    "\\overrightarrow{{R({arrow})}} \\cdot {}",
-                    basis_vector(*a, f)
-                ),
-            }
-        }
-    }
-}
-
-/// A step's value under the question's hypothesis.
-pub(super) fn shown_value(doc: &Doc, v: &Value) -> Value {
-    match doc.under {
-        Some(h) => v.under(h),
-        None => v.clone(),
-    }
 }
 
 /// Writes the steps of a kinematic or kinetic derivation as the course shows them. Returns
@@ -464,23 +368,6 @@ fn plural_word(w: &str) -> String {
     }
 }
 
-/// Values already shown, said in one sentence with where they are: « On reprend
-/// $\Omega(3/0)$ (question 1) et $I_O(3)$ (ci-dessus). »
-pub(super) fn citation(by_place: &[(String, Vec<String>)]) -> String {
-    let items: Vec<String> = by_place
-        .iter()
-        .map(|(place, lhss)| {
-            let list: Vec<String> = lhss.iter().map(|l| format!("${l}$")).collect();
-            let at = match place.as_str() {
-                "ce qui précède" => "ci-dessus",
-                p => p.strip_prefix("la ").or(p.strip_prefix("le ")).unwrap_or(p),
-            };
-            format!("{} ({at})", french_list(&list))
-        })
-        .collect();
-    format!("On reprend {}.\n", french_list(&items))
-}
-
 /// Where a step stands in the derivation of a solid's dynamics, and of which solid: Ω, V,
 /// Γ and I first (1), then σ and Rc (2), then δ and Rd (3). A later stage of the same solid
 /// was derived from the earlier ones.
@@ -516,15 +403,6 @@ fn mo_centre(m: &Mechanism, a: &str, mo: &Motion) -> bool {
     m.bodies
         .iter()
         .any(|b| b.name == mo.moving && m.point_name(b.centre) == a)
-}
-
-/// « a, b et c ».
-pub(super) fn french_list(items: &[String]) -> String {
-    match items {
-        [] => String::new(),
-        [a] => a.clone(),
-        [init @ .., last] => format!("{} et {last}", init.join(", ")),
-    }
 }
 
 /// V(G) (derivative of the position from the ground origin) and Γ(G) (derivative of V(G)),

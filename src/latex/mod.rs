@@ -19,20 +19,20 @@ mod hypotheses;
 mod loop_law;
 mod method;
 mod omega;
+mod page;
 mod routes;
 mod sentences;
 mod setup;
 mod simulation;
 mod text;
 mod theorems;
+mod words;
 
-pub use document::{
-    AnswerKey, Display, DisplayRole, Inline, answer_key, answer_key_document, answer_key_named,
-    answer_key_with, quantity_title,
-};
+pub use document::{AnswerKey, answer_key, answer_key_document, answer_key_named, answer_key_with};
 pub use expr::{expr, expr_lines, fraction};
 pub use fault::text_at_fault;
 pub use figures::{link_graph, link_text, rotation_figures};
+pub use page::{Display, DisplayRole, Inline, quantity_title};
 pub use text::{MAX_ARROW_DEPTH, MAX_FORMULA_DEPTH, MAX_LABEL_CHARS, MAX_PROSE_CHARS};
 pub use text::{RichTextError, rich_text, rich_text_or_escaped};
 

@@ -3,9 +3,9 @@
 //! a point as derivatives of its position. Each route is taken only when its terms give the
 //! engine's value exactly.
 
-use super::document::{DisplayRole, Doc};
-use super::method::{mass_of, shown_value, solid};
 use super::omega::{omega_of, omega_sentence};
+use super::page::{DisplayRole, Doc};
+use super::words::{mass_of, shown_value, solid};
 use super::{basis_vector, frame, point, quantity};
 use crate::derivation::{Derivation, Value, derive};
 use crate::frame::FrameId;
@@ -32,7 +32,7 @@ fn show_vector(
             let _ = writeln!(
                 doc.o,
                 "{}",
-                super::method::citation(&[(place, vec![lhs.to_string()])])
+                super::words::citation(&[(place, vec![lhs.to_string()])])
             );
         }
         None => {
@@ -423,7 +423,7 @@ pub(super) fn derived_step(doc: &mut Doc, text: &str, lhs: &str, sentence: &str)
             let _ = writeln!(
                 doc.o,
                 "{}",
-                super::method::citation(&[(place, vec![lhs.to_string()])])
+                super::words::citation(&[(place, vec![lhs.to_string()])])
             );
         }
         None => {
@@ -514,7 +514,7 @@ fn kinetic_projections(
                 let _ = writeln!(
                     doc.o,
                     "{}",
-                    super::method::citation(&[(place, vec![lhs.to_string()])])
+                    super::words::citation(&[(place, vec![lhs.to_string()])])
                 );
             }
             None => show_scalar(doc, &format!("sigma({a},{mo})"), &sentence, &lhs, p),
@@ -535,7 +535,7 @@ fn massless_note(m: &Mechanism, light: &[crate::mechanism::BodyId]) -> String {
     let verb = if light.len() > 1 { "sont" } else { "est" };
     format!(
         " ({} {verb} de masse négligeable)",
-        super::method::french_list(&names)
+        super::words::french_list(&names)
     )
 }
 
@@ -626,7 +626,7 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
             let _ = writeln!(
                 doc.o,
                 "{}",
-                super::method::citation(&[(place, vec![lhs.to_string()])])
+                super::words::citation(&[(place, vec![lhs.to_string()])])
             );
         }
         None => {

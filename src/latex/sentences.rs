@@ -2,8 +2,8 @@
 //! to the step's objects (« $O_1$ est fixe dans $\mathcal{R}_0$ … », Huygens at the centre of
 //! inertia, the change of point of a torsor's moment).
 
-use super::method::{mass_of, solid};
 use super::omega::{omega_of, omega_sentence};
+use super::words::{mass_of, solid};
 use super::{frame, point, quantity};
 use crate::derivation::{Step, StepKind};
 use crate::mechanism::Mechanism;

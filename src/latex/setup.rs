@@ -2,7 +2,7 @@
 //! known, aliases, frames, positions of the points, the figures planes and the graph of
 //! links) and each solid's mass, centre and inertia operator; every formula recorded.
 
-use super::document::{DisplayRole, Doc, Inline};
+use super::page::{DisplayRole, Doc, Inline};
 use super::{basis, basis_vector, link_graph, name, point, rich_text_or_escaped, rotation_figures};
 use crate::derivation::Value;
 use crate::mechanism::Mechanism;
@@ -209,7 +209,7 @@ pub(super) fn solids(doc: &mut Doc) {
             cells.push(format!(
                 "Le solide ${}$ est de masse négligeable : ses torseurs cinétique et dynamique \
                  sont nuls.\n\n",
-                super::method::solid(&b.name)
+                super::words::solid(&b.name)
             ));
             widths.push(super::LINE);
             continue;

@@ -1,8 +1,8 @@
 //! The PFD in the answer key: the bilan of the external actions once per isolated system, each
 //! theorem as its two sides, then the unknown or the equation of motion, boxed.
 
-use super::document::{DisplayRole, Doc};
-use super::method::{shown_value, solid, step_lhs};
+use super::page::{DisplayRole, Doc};
+use super::words::{shown_value, solid, step_lhs};
 use super::{basis_vector, name, point, quantity};
 use crate::derivation::{Derivation, Step, StepKind, Value};
 use crate::quantity::QuantityKind;
@@ -131,7 +131,7 @@ fn members_by_mass(m: &crate::mechanism::Mechanism, isolate: &str) -> (Vec<Strin
 /// « $S_1$ et $S_2$ ».
 fn solids_list(names: &[String]) -> String {
     let items: Vec<String> = names.iter().map(|n| format!("${}$", solid(n))).collect();
-    super::method::french_list(&items)
+    super::words::french_list(&items)
 }
 
 /// The theorem `title` applied to a system of negligible mass (`isolate`, its solids
@@ -205,7 +205,7 @@ fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]
     }
     if !by_place.is_empty() {
         // After « Bilan … à $S_1$ : », the sentence goes on in lower case.
-        let c = super::method::citation(&by_place).replacen("On reprend", "on reprend", 1);
+        let c = super::words::citation(&by_place).replacen("On reprend", "on reprend", 1);
         let _ = writeln!(doc.o, "{c}");
     }
     // Each action's line and torsor, side by side when they are short.
@@ -472,7 +472,7 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
         "Pour de petits mouvements ({}), au premier ordre ($\\sin$ d'un petit angle remplacé \
          par l'angle, $\\cos$ par 1, les produits de petites quantités négligés), l'équation \
          du mouvement en ${}$ devient :",
-        super::method::french_list(&small),
+        super::words::french_list(&small),
         name(q)
     );
     let id = d.quantity.to_string();
@@ -572,7 +572,7 @@ fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Opti
     if held.is_empty() || groups.is_empty() {
         return None;
     }
-    let list = super::method::french_list;
+    let list = super::words::french_list;
     let isolated: Vec<String> = (groups.iter())
         .map(|(s, res, mom)| {
             let res = (!res.is_empty()).then(|| format!("résultante sur {}", list(res)));
@@ -584,9 +584,9 @@ fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Opti
     let laws = super::coulomb::laws_phrase(m).map_or(String::new(), |l| format!(", et {l}"));
     Some(format!(
         "{} s'élimin{} avec les autres équations du PFD, obtenues en isolant {}{laws}.",
-        super::method::french_list(&held),
+        super::words::french_list(&held),
         if held.len() > 1 { "ent" } else { "e" },
-        super::method::french_list(&isolated)
+        super::words::french_list(&isolated)
     ))
 }
 
@@ -755,7 +755,7 @@ pub(super) fn kinetic_energy_sentence(
                 point: g.clone(),
                 motion: motion.clone(),
             });
-            let mass = super::method::mass_of(m, &b.name);
+            let mass = super::words::mass_of(m, &b.name);
             let translation = format!("\\frac{{1}}{{2}}\\,{mass}\\,{v}^2");
             if b.inertia.is_none() {
                 return translation;
