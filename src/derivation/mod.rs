@@ -496,7 +496,7 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
                         solid: solid.clone(),
                     }),
                     label: format!("I({point},{solid})"),
-                    theorem: "théorème de Huygens".into(),
+                    theorem: moments::inertia_theorem(m, s, a),
                     value: Value::Matrix(ia.clone()),
                 });
                 total = Some(match total {

@@ -286,7 +286,7 @@ fn complementary(
 }
 
 /// How I(A,S) is found: by Huygens from G, as a point mass, or as given at G.
-fn inertia_theorem(m: &Mechanism, s: BodyId, a: PointId) -> String {
+pub(super) fn inertia_theorem(m: &Mechanism, s: BodyId, a: PointId) -> String {
     let body = m.body(s);
     if a != body.centre && body.inertia.is_some() {
         format!(
