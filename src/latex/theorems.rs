@@ -19,6 +19,9 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
     let mut k = 0;
     let steps = &d.steps;
     let mut last_equality: Option<(Value, Value)> = None;
+    // The system the previous theorem isolated: the next one on the same system does not
+    // say « On isole S » again.
+    let mut isolated: Option<&str> = None;
     while k < steps.len() {
         // One theorem: actions…, projected dynamic side, external actions.
         let start = k;
@@ -30,7 +33,10 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
             let StepKind::Powers { isolate, .. } = &steps[e].kind else {
                 break;
             };
-            external_bilan(doc, isolate, &solid(isolate), &steps[start..k]);
+            if isolated != Some(isolate.as_str()) {
+                external_bilan(doc, isolate, &solid(isolate), &steps[start..k]);
+            }
+            isolated = Some(isolate);
             last_equality = super::energy::energy_theorem(doc, &steps[k..=e]);
             k = e + 1;
             continue;
@@ -47,7 +53,10 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
             break;
         };
         let iso_name = solid(isolate);
-        external_bilan(doc, isolate, &iso_name, &steps[start..k]);
+        if isolated != Some(isolate.as_str()) {
+            external_bilan(doc, isolate, &iso_name, &steps[start..k]);
+        }
+        isolated = Some(isolate);
         let (massless, massive) = members_by_mass(doc.m, isolate);
         if massive.is_empty() {
             // Of negligible mass: the dynamic torsor is zero, the theorem is the balance of
