@@ -352,9 +352,11 @@ fn primed(s: &str) -> Option<String> {
     let chars: Vec<(usize, char)> = s.char_indices().collect();
     let k = chars.iter().position(|&(_, c)| is_prime(c))?;
     let end = chars[k].0;
+    // After the last character that is not part of a name (it may be several bytes long).
     let start = s[..end]
-        .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-        .map_or(0, |i| i + 1);
+        .char_indices()
+        .rfind(|&(_, c)| !(c.is_ascii_alphanumeric() || c == '_'))
+        .map_or(0, |(i, c)| i + c.len_utf8());
     let name = &s[start..end];
     if name.is_empty() || !name.starts_with(|c: char| c.is_ascii_alphabetic()) {
         return None;

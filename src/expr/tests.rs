@@ -560,3 +560,16 @@ fn a_form_times_a_monomial_reduces_what_adding_exponents_would_not() {
         assert_eq!(form.to_expr(&r), expected, "{text}");
     }
 }
+
+/// A prime after a name says which rate to write; after anything else (a pasted θ, a
+/// multi-byte character just before the name), the parser refuses without panicking.
+#[test]
+fn a_prime_names_the_rate_to_write() {
+    let r = reg();
+    let said = |s: &str| r.parse(s).unwrap_err().to_string();
+    assert!(said("m*a'").ends_with("`a'`: a time derivative is written dot(a)"));
+    assert!(said("m*a’’").ends_with("`a’’`: a time derivative is written ddot(a)"));
+    assert!(said("éa'").ends_with("`a'`: a time derivative is written dot(a)"));
+    assert!(said("θ'").contains("character `θ` is not allowed"), "{}", said("θ'"));
+    assert!(said("2'").contains("character `'` is not allowed"), "{}", said("2'"));
+}
