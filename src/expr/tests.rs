@@ -570,6 +570,14 @@ fn a_prime_names_the_rate_to_write() {
     assert!(said("m*a'").ends_with("`a'`: a time derivative is written dot(a)"));
     assert!(said("m*a’’").ends_with("`a’’`: a time derivative is written ddot(a)"));
     assert!(said("éa'").ends_with("`a'`: a time derivative is written dot(a)"));
-    assert!(said("θ'").contains("character `θ` is not allowed"), "{}", said("θ'"));
-    assert!(said("2'").contains("character `'` is not allowed"), "{}", said("2'"));
+    assert!(
+        said("θ'").contains("character `θ` is not allowed"),
+        "{}",
+        said("θ'")
+    );
+    assert!(
+        said("2'").contains("character `'` is not allowed"),
+        "{}",
+        said("2'")
+    );
 }
