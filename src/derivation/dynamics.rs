@@ -3,7 +3,6 @@
 //! The PFD itself (actions, theorems, the linear solve) is [`crate::pfd`]; this module only
 //! records its steps, and shares one run's cache of δ(G), m Γ(G) and the solved system.
 
-use super::steps::bilan_line;
 use super::{Derivation, ResolveError, Step, StepKind, Value};
 use crate::expr::{Expr, VarId};
 use crate::mechanism::Mechanism;
@@ -91,24 +90,10 @@ fn theorem_steps(m: &Mechanism, th: &Theorem, cache: &mut torsor::Cache, steps: 
         super::energy::theorem_steps(m, th, dynamic, &parts, steps);
         return;
     }
+    // Each action as the bilan words it: « liaison pivot d'axe (O1, z0), action de 0 sur
+    // 1 », « pesanteur sur $S_{1}$ », « le moteur, action de 0 sur 1 ».
     for (a, _) in &parts {
-        steps.push(Step {
-            label: format!("T({}->{})", a.from_label, a.on_label),
-            kind: StepKind::Action {
-                from: a.from_label.clone(),
-                on: a.on_label.clone(),
-                point: m.point_name(a.point).to_string(),
-            },
-            // The bilan's line, as the course words it: « liaison pivot d'axe (O1, z0),
-            // action de 0 sur 1 », « pesanteur sur $S_{1}$ », « le moteur, action de 0 sur 1 ».
-            theorem: bilan_line(a),
-            value: Value::Torsor {
-                point: a.point,
-                basis: a.basis,
-                resultant: a.resultant.express_in(&m.frames, a.basis),
-                moment: a.moment.express_in(&m.frames, a.basis),
-            },
-        });
+        steps.push(super::steps::action_step(m, a));
     }
     let on = (m.frame_name(th.on.0).to_string(), th.on.1.letter());
     let dq = dynamic_quantity(m, th);
