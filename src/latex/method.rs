@@ -550,6 +550,26 @@ fn method_notes(doc: &mut Doc, d: &Derivation) {
             mass_of(m, sn)
         );
     }
+    // I_A(E) of a set: the sum of its solids' operators at the same point, said in words
+    // before the result (each solid's operator is a step above).
+    if let QuantityKind::Inertia {
+        point: a,
+        solid: sn,
+    } = &d.quantity.kind
+        && let Some(members) = m.sets.get(sn)
+    {
+        let names: Vec<String> = (members.iter())
+            .map(|&b| format!("${}$", solid(&m.body(b).name)))
+            .collect();
+        let _ = writeln!(
+            doc.o,
+            "L'opérateur d'inertie de ${}$ en ${}$ est la somme de ceux de {} en ${}$ :",
+            solid(sn),
+            point(a),
+            french_list(&names),
+            point(a)
+        );
+    }
     // Ω asked by itself has no steps: its method is the composition along the frames (or
     // the paramétrage, for one rotation).
     if let QuantityKind::Omega(mo) = &d.quantity.kind

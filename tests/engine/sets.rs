@@ -66,3 +66,33 @@ fn the_inertia_of_an_unknown_set_is_refused_by_name() {
         "I(O1,F): unknown solid or set `F` (declared: `1`, `2`, `E`)"
     );
 }
+
+/// In the answer key, the operator of a set is derived solid by solid, each by Huygens from
+/// its own centre, and said to be their sum before it is boxed.
+#[test]
+fn the_key_derives_the_inertia_of_a_set_solid_by_solid() {
+    let mut spec: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/derivations/regulateur_centrifuge.json"
+        ))
+        .unwrap(),
+    )
+    .unwrap();
+    spec["questions"] = serde_json::json!([
+        {"title": "Inertie", "statement": "Opérateur d'inertie de E en O1.", "quantities": ["I(O1,E)"]}
+    ]);
+    let m = torseur::spec::from_str(&spec.to_string()).unwrap();
+    let tex = torseur::latex::answer_key(&m).unwrap();
+    let at = |s: &str| {
+        tex.find(s)
+            .unwrap_or_else(|| panic!("`{s}` not in the key"))
+    };
+    let g1 = at("Théorème de Huygens, de $G_{1}$ en $O_{1}$");
+    let g2 = at("Théorème de Huygens, de $G_{2}$ en $O_{1}$");
+    let sum = at(
+        "L'opérateur d'inertie de $E$ en $O_{1}$ est la somme de ceux de $S_{1}$ et \
+                  $S_{2}$ en $O_{1}$ :",
+    );
+    assert!(g1 < g2 && g2 < sum);
+}
