@@ -9,7 +9,8 @@
 //! relation itself stays implicit. The rates become driven rates of the registry, holonomic.
 
 use super::SpecError;
-use super::validate::{at, expr_err};
+use super::refusal::{at, expr_err};
+use super::validate::{Solved, build_solving};
 use crate::expr::{CoordId, Expr, Registry, VarRole};
 use crate::frame::{Axis, FrameId};
 use crate::mechanism::{HelicalLaw, Mechanism, RollingLaw};
@@ -18,28 +19,6 @@ use crate::resolve::{HelixNode, Resolved, RollingNode};
 use crate::vector::Vector;
 use crate::wire::RollingSpec;
 use crate::wire::SpecFile;
-
-/// What the closures give the registry.
-pub(super) struct Solved {
-    /// (index in `coordinates`, the rate as a text of the free rates).
-    pub rates: Vec<(usize, String)>,
-    /// The angles whose cosine the rates divide by.
-    pub secants: Vec<String>,
-    /// The angles whose sine the rates divide by.
-    pub cosecants: Vec<String>,
-    /// The parameters the rates divide by.
-    pub inverses: Vec<String>,
-    /// The coordinates a loop closure determines (holonomic driven rates).
-    pub dependent: Vec<String>,
-    /// Each relation's time derivative in LaTeX lines, the dependent rates as symbols.
-    pub derivatives: Vec<Vec<String>>,
-    /// Each rolling condition as the answer key writes it.
-    pub rolling: Vec<crate::mechanism::RollingLaw>,
-    /// Each helical link that determines a coordinate, as the answer key writes its relation.
-    pub helical: Vec<HelicalLaw>,
-    /// The determinant the rates divide by, in the spec syntax.
-    pub determinant: String,
-}
 
 /// The spec with only what places the frames and points: the closures are read on it. Each
 /// helical link of `helices` that determines a coordinate leaves its lead per radian
@@ -133,7 +112,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         .collect();
     let (geometry, leads) = geometry(spec, &resolved.helices);
     // A pitch the geometry cannot read as a constant is refused at the link, in its words.
-    let m = super::validate::build(&geometry).map_err(|e| at_pitch(spec, &helices, e))?;
+    let m = build_solving(&geometry, &solve).map_err(|e| at_pitch(spec, &helices, e))?;
     let reg = m.reg.clone();
     let zero = reg.zero();
     let ids: Vec<CoordId> = dependent

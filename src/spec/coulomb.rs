@@ -4,7 +4,7 @@
 
 use super::SpecError;
 use super::dynamics::{constant, frame_of_side, source};
-use super::validate::at;
+use super::refusal::at;
 use crate::expr::{Expr, VarRole};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::velocity;

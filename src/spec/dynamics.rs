@@ -3,7 +3,7 @@
 //! exact side's own `small` section, every error naming the JSON path.
 
 use super::SpecError;
-use super::validate::{at, expr_err};
+use super::refusal::{at, expr_err};
 use crate::expr::{Expr, Registry};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::{omega, velocity};

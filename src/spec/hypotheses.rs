@@ -3,7 +3,7 @@
 //! becomes substitutions applied to the general results (after every derivative is taken).
 
 use super::SpecError;
-use super::validate::at;
+use super::refusal::at;
 use crate::expr::{CoordId, CoordinateKind, Expr, Registry, VarId, VarRole};
 use crate::wire::HypothesisSpec;
 use std::rc::Rc;

@@ -6,7 +6,10 @@ mod coulomb;
 mod dynamics;
 mod hypotheses;
 mod locate;
+mod pipeline;
+mod refusal;
 mod scenarios;
+mod solids;
 mod texts;
 mod validate;
 /// The wire types, also at [`crate::wire`] (the spec's data, used by every layer).
@@ -14,7 +17,7 @@ pub use crate::wire;
 
 pub use builder::Builder;
 pub use locate::locate;
-pub use validate::build;
+pub use pipeline::build;
 
 use crate::excerpt::{bounded, excerpt};
 use crate::mechanism::Mechanism;

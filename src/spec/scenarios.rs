@@ -3,7 +3,7 @@
 //! without the place in the file.
 
 use super::SpecError;
-use super::validate::at;
+use super::refusal::at;
 use crate::mechanism::Mechanism;
 use crate::simulate::{TimeLaw, duration_refusal};
 

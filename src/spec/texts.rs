@@ -132,7 +132,7 @@ pub(super) fn registry_error(
     aliases: &[(String, String)],
     e: crate::expr::ExprError,
 ) -> super::SpecError {
-    use super::validate::at;
+    use super::refusal::at;
     let alias_at_fault = builder.clone().build().ok().and_then(|_| {
         (0..aliases.len()).find_map(|k| {
             builder

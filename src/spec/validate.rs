@@ -2,55 +2,49 @@
 //! parsed, every error naming the JSON path of the offending value.
 
 use super::SpecError;
+use super::refusal::{at, bounded, expr_err, name_ok, refused};
+use super::solids::bodies;
 use super::texts::{expression_texts, free_text_limit, free_texts};
 use crate::expr::{ExprError, Registry};
 use crate::frame::{Angle, Axis, FrameId, Frames, Rotation};
-use crate::inertia::{Inertia, Symmetry};
-use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
+use crate::mechanism::{Body, BodyId, HelicalLaw, Hypothesis, Mechanism};
 use crate::point::{PointId, Points};
-use crate::quantity::{Quantity, check_name};
+use crate::quantity::Quantity;
 use crate::resolve::{Resolved, Unknowns};
 use crate::vector::Vector;
-use crate::wire::{CoordinateKind, ParameterKind, SpecFile, SymmetrySpec};
+use crate::wire::{CoordinateKind, ParameterKind, SpecFile};
 use std::rc::Rc;
 
-pub(super) fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
-    SpecError::Invalid {
-        path: path.into(),
-        message: message.into(),
-        location: None,
-    }
+/// What the loop closures give the registry: the dependent coordinates' rates and what they
+/// divide by, and how the answer key writes the loop law (built by `spec/closures.rs`).
+pub(super) struct Solved {
+    /// (index in `coordinates`, the rate as a text of the free rates).
+    pub rates: Vec<(usize, String)>,
+    /// The angles whose cosine the rates divide by.
+    pub secants: Vec<String>,
+    /// The angles whose sine the rates divide by.
+    pub cosecants: Vec<String>,
+    /// The parameters the rates divide by.
+    pub inverses: Vec<String>,
+    /// The coordinates a loop closure determines (holonomic driven rates).
+    pub dependent: Vec<String>,
+    /// Each relation's time derivative in LaTeX lines, the dependent rates as symbols.
+    pub derivatives: Vec<Vec<String>>,
+    /// Each rolling condition as the answer key writes it.
+    pub rolling: Vec<crate::mechanism::RollingLaw>,
+    /// Each helical link that determines a coordinate, as the answer key writes its relation.
+    pub helical: Vec<HelicalLaw>,
+    /// The determinant the rates divide by, in the spec syntax.
+    pub determinant: String,
 }
 
-pub(super) fn expr_err(path: &str, e: ExprError) -> SpecError {
-    at(path, e.to_string())
-}
+/// Solves a spec's loop closures and rolling conditions from the resolved spec (the
+/// pipeline passes `spec/closures.rs`'s solver, which builds the loop's geometry through
+/// [`build_solving`] itself).
+pub(super) type Solver<'a> = &'a dyn Fn(&SpecFile, &Resolved) -> Result<Option<Solved>, SpecError>;
 
-/// A refusal of the shared resolution, as the exact side reports it.
-pub(super) fn refused(e: crate::resolve::Refusal) -> SpecError {
-    at(e.path, e.message)
-}
-
-/// Bounds the degree of a spec expression (see [`crate::expr::MAX_SPEC_DEGREE`]).
-fn bounded(path: &str, e: crate::expr::Expr) -> Result<crate::expr::Expr, SpecError> {
-    if e.max_degree() > crate::expr::MAX_SPEC_DEGREE {
-        return Err(at(
-            path,
-            format!(
-                "degree over {} in one variable",
-                crate::expr::MAX_SPEC_DEGREE
-            ),
-        ));
-    }
-    Ok(e)
-}
-
-fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
-    check_name(n).map_err(|m| at(path, m))
-}
-
-/// Builds the mechanism described by a spec.
-pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
+/// Builds the mechanism described by a spec, its closures solved by `solve`.
+pub(super) fn build_solving(spec: &SpecFile, solve: Solver) -> Result<Mechanism, SpecError> {
     // Dry friction's signs are parameters of their own; loop closures and rolling conditions
     // give the dependent coordinates their rates (driven by the free ones), read on the
     // geometry alone; the mechanism keeps the spec as written.
@@ -66,7 +60,7 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     };
     let unknowns = crate::resolve::unknowns(spec, &resolved, &transmitted).map_err(refused)?;
     let shared = (&resolved, &unknowns);
-    match super::closures::solve(spec, &resolved)? {
+    match solve(spec, &resolved)? {
         None => build_with(spec, written, shared, None),
         Some(solved) => {
             let mut with_rates = spec.clone();
@@ -78,13 +72,13 @@ pub fn build(spec: &SpecFile) -> Result<Mechanism, SpecError> {
     }
 }
 
-/// [`build`] from a spec whose dependent coordinates have their rates, resolved; `written` is
+/// [`build_solving`] from a spec whose dependent coordinates have their rates, resolved; `written` is
 /// the spec as the user wrote it, kept in the mechanism.
 fn build_with(
     spec: &SpecFile,
     written: &SpecFile,
     (resolved, unknowns): (&Resolved, &Unknowns),
-    solved: Option<&super::closures::Solved>,
+    solved: Option<&Solved>,
 ) -> Result<Mechanism, SpecError> {
     // Free texts, after the shared resolution: a formula the answer key could not print
     // safely refuses the spec.
@@ -220,7 +214,7 @@ fn raw_angles(spec: &SpecFile) -> Vec<String> {
 fn registry(
     spec: &SpecFile,
     unknowns: &[String],
-    solved: Option<&super::closures::Solved>,
+    solved: Option<&Solved>,
 ) -> Result<Rc<Registry>, SpecError> {
     let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
     let angle_params: Vec<String> = spec
@@ -345,193 +339,6 @@ fn points(
         points.add(node.name, PointId(node.from), v);
     }
     Ok(points)
-}
-
-/// The solids: mass, centre, inertia operator and symmetries, named and referenced as
-/// resolved.
-fn bodies(
-    spec: &SpecFile,
-    reg: &Rc<Registry>,
-    frames: &Frames,
-    resolved: &Resolved,
-) -> Result<Vec<Body>, SpecError> {
-    // Solids: named and referenced in the trees.
-    let mut bodies = Vec::new();
-    for ((i, s), node) in spec.solids.iter().enumerate().zip(&resolved.solids) {
-        let path = format!("solids[{i}]");
-        let frame = FrameId(node.frame);
-        let (mass, massless) = solid_mass(reg, s, &path)?;
-        if massless {
-            massless_has_nothing_else(s, &path)?;
-        }
-        // A body of negligible mass needs no centre: its frame's origin stands for it (every
-        // term it enters is multiplied by its zero mass).
-        let centre = match node.centre {
-            Some(c) => PointId(c),
-            None if massless => PointId(resolved.frames[node.frame].origin),
-            None => {
-                return Err(at(
-                    format!("{path}.centre"),
-                    "missing: a solid with a mass has a centre of inertia (a point)",
-                ));
-            }
-        };
-        let inertia = match (&s.inertia, node.inertia) {
-            (Some(given), Some((point, basis))) => Some(inertia(
-                reg,
-                frames,
-                (frame, PointId(point), FrameId(basis)),
-                given,
-                &format!("{path}.inertia"),
-            )?),
-            _ => None,
-        };
-        let mut symmetries = Vec::new();
-        for (k, sym) in s.symmetries.iter().enumerate() {
-            let sp = format!("{path}.symmetries[{k}]");
-            let (txt, ctor): (&str, fn(Axis) -> Symmetry) = match sym {
-                SymmetrySpec::Plane { normal } => (normal, Symmetry::Plane),
-                SymmetrySpec::Revolution { axis } => (axis, Symmetry::Revolution),
-            };
-            let (f, axis) = frames
-                .basis_vector(txt)
-                .ok_or_else(|| at(&sp, format!("`{txt}` is not a basis vector")))?;
-            let Some(ine) = &inertia else {
-                return Err(at(&sp, "a point mass has no symmetry to declare"));
-            };
-            if f != ine.basis {
-                return Err(at(
-                    &sp,
-                    format!(
-                        "`{txt}` is not a vector of B{}, the basis the inertia matrix is written in",
-                        frames.get(ine.basis).name
-                    ),
-                ));
-            }
-            symmetries.push(ctor(axis));
-        }
-        bodies.push(Body {
-            name: s.name.clone(),
-            frame,
-            mass,
-            massless,
-            centre,
-            inertia,
-            symmetries,
-        });
-    }
-
-    Ok(bodies)
-}
-
-/// A solid's mass, and whether it is negligible: declared `"massless": true` (no mass, or a
-/// mass of 0), or a mass that is zero. A solid that is not massless gives its mass.
-fn solid_mass(
-    reg: &Rc<Registry>,
-    s: &crate::wire::SolidSpec,
-    path: &str,
-) -> Result<(crate::expr::Expr, bool), SpecError> {
-    let mp = format!("{path}.mass");
-    let Some(text) = &s.mass else {
-        if s.massless {
-            return Ok((reg.zero(), true));
-        }
-        return Err(at(
-            mp,
-            "missing: give the solid's mass, or declare a body of negligible mass with \
-             `\"massless\": true`",
-        ));
-    };
-    let mass = reg
-        .parse(text)
-        .map_err(|e| expr_err(&mp, e))
-        .and_then(|e| bounded(&mp, e))?;
-    if !mass.is_time_independent() {
-        return Err(at(mp, "a mass is constant (parameters only)"));
-    }
-    if s.massless && !mass.is_zero() {
-        return Err(at(
-            mp,
-            format!(
-                "the solid is declared `\"massless\": true` but its mass is `{text}`: remove \
-                 `mass`, or `massless` if the solid has this mass"
-            ),
-        ));
-    }
-    let massless = mass.is_zero();
-    Ok((mass, massless))
-}
-
-/// A body of negligible mass has no inertia operator and no symmetries to declare.
-fn massless_has_nothing_else(s: &crate::wire::SolidSpec, path: &str) -> Result<(), SpecError> {
-    let why = if s.massless {
-        "the solid is declared `\"massless\": true`"
-    } else {
-        "a mass of 0 makes the solid a body of negligible mass"
-    };
-    if s.inertia.is_some() {
-        return Err(at(
-            format!("{path}.inertia"),
-            format!("{why}: it has no inertia operator (remove `inertia`, or give its mass)"),
-        ));
-    }
-    if !s.symmetries.is_empty() {
-        return Err(at(
-            format!("{path}.symmetries[0]"),
-            format!("{why}: it has no symmetry to declare (remove `symmetries`)"),
-        ));
-    }
-    Ok(())
-}
-
-/// A solid's inertia operator at `point` in `basis` (`frame` the solid's): constant
-/// entries, a symmetric matrix, a basis in which the operator does not turn.
-fn inertia(
-    reg: &Rc<Registry>,
-    frames: &Frames,
-    (frame, point, basis): (FrameId, PointId, FrameId),
-    given: &crate::wire::InertiaSpec,
-    ip: &str,
-) -> Result<Inertia, SpecError> {
-    let mut m: Vec<Vec<crate::expr::Expr>> = Vec::new();
-    for (r, row) in given.matrix.iter().enumerate() {
-        let mut out = Vec::new();
-        for (c, cell) in row.iter().enumerate() {
-            let e = reg
-                .parse(cell)
-                .map_err(|e| expr_err(&format!("{ip}.matrix[{r}][{c}]"), e))
-                .and_then(|e| bounded(&format!("{ip}.matrix[{r}][{c}]"), e))?;
-            if !e.is_time_independent() {
-                return Err(at(
-                    format!("{ip}.matrix[{r}][{c}]"),
-                    "an inertia entry is constant in the solid's basis",
-                ));
-            }
-            out.push(e);
-        }
-        m.push(out);
-    }
-    for r in 0..3 {
-        for c in r + 1..3 {
-            if m[r][c] != m[c][r] {
-                return Err(at(
-                    format!("{ip}.matrix[{c}][{r}]"),
-                    format!(
-                        "the inertia matrix is not symmetric: entry [{r}][{c}] is \
-                             `{}` but entry [{c}][{r}] is `{}`",
-                        m[r][c], m[c][r]
-                    ),
-                ));
-            }
-        }
-    }
-    invariant_in_solid(frames, frame, basis, &m).map_err(|msg| at(format!("{ip}.basis"), msg))?;
-    let matrix = std::array::from_fn(|r| std::array::from_fn(|c| m[r][c].clone()));
-    Ok(Inertia {
-        point,
-        basis,
-        matrix,
-    })
 }
 
 /// The hypotheses: each as substitutions (constant rates, the symmetries of the solids it
@@ -759,39 +566,6 @@ fn rotation_angle(reg: &Rc<Registry>, text: &str, sign: i32) -> Result<Angle, St
         cos: a.cos,
         sin: if sign < 0 { -a.sin } else { a.sin },
     })
-}
-
-/// An inertia matrix is constant in the solid's basis. Given in another basis, that basis
-/// must be fixed in the solid, or turn relative to it about one of its own axes around which
-/// the matrix is of revolution (then it is the same in every such basis); anything else would
-/// be a matrix the engine takes as constant while it is not.
-fn invariant_in_solid(
-    frames: &Frames,
-    solid: FrameId,
-    basis: FrameId,
-    m: &[Vec<crate::expr::Expr>],
-) -> Result<(), String> {
-    let w = crate::vector::omega(frames, solid, basis).express_in(frames, basis);
-    let turning: Vec<usize> = (0..3).filter(|&k| !w[k].is_zero()).collect();
-    let ok = match turning.as_slice() {
-        [] => true,
-        [k] => {
-            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-            m[i][*k].is_zero() && m[j][*k].is_zero() && m[i][j].is_zero() && m[i][i] == m[j][j]
-        }
-        _ => false,
-    };
-    if ok {
-        Ok(())
-    } else {
-        Err(format!(
-            "the inertia matrix is given in basis {} which turns relative to the solid's frame \
-             {}: give it in the solid's basis (or in a basis where it is of revolution about \
-             the relative rotation axis)",
-            frames.get(basis).name,
-            frames.get(solid).name
-        ))
-    }
 }
 
 /// The course's order of parameters in a written product, from their units: masses, then
