@@ -14,6 +14,7 @@ use crate::derivation::derive;
 use crate::mechanism::Mechanism;
 use crate::quantity::Quantity;
 use crate::quantity::QuantityKind;
+use crate::simulate::QuestionRuns;
 use crate::wire::QuestionSpec;
 use std::fmt::Write;
 
@@ -120,20 +121,6 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
     Ok(())
 }
 
-/// The complete answer key of a mechanism as a LaTeX document: the set-up, then either each
-/// question of the spec with its answer, or the hypotheses and every requested quantity.
-pub fn answer_key(m: &Mechanism) -> Result<String, crate::derivation::ResolveError> {
-    answer_key_with(m, VectorStyle::Sum)
-}
-
-/// [`answer_key`] with vectors written in the given style.
-pub fn answer_key_with(
-    m: &Mechanism,
-    style: VectorStyle,
-) -> Result<String, crate::derivation::ResolveError> {
-    answer_key_document(m, style).map(|k| k.tex)
-}
-
 /// An answer key with the figures it includes (`\includegraphics{name}`): the caller writes
 /// each figure as PNG under its name, next to the .tex file.
 pub struct AnswerKey {
@@ -147,31 +134,15 @@ pub struct AnswerKey {
     pub inline: Vec<Inline>,
 }
 
-/// [`answer_key_with`], with the figures of the simulations the questions show
-/// (`simulation-7.png` for question 7).
-pub fn answer_key_document(
-    m: &Mechanism,
-    style: VectorStyle,
-) -> Result<AnswerKey, crate::derivation::ResolveError> {
-    answer_key_named(m, style, "")
-}
-
-/// [`answer_key_document`], its figure files named after the key's own file: `prefix`
-/// (`corrige-`) before each name (`corrige-simulation-7.png`), so that two keys written in
-/// one directory do not share their figures.
-///
-/// ```
-/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-/// let key = torseur::latex::answer_key_named(&m, torseur::latex::VectorStyle::Sum, "k-").unwrap();
-/// assert!(key.figures.iter().all(|(n, _)| n.starts_with("k-simulation-")));
-/// for (n, _) in &key.figures {
-///     assert!(key.tex.contains(&format!("{{{n}}}")));
-/// }
-/// ```
-pub fn answer_key_named(
+/// The answer key of `m` from the runs of its simulations, which the caller ran
+/// ([`crate::simulate::question_runs`]: one entry per question of the spec): the document
+/// draws and tabulates them, it runs nothing. The figure files are named after `prefix`, as
+/// [`super::answer_key_named`] says.
+pub fn write_answer_key(
     m: &Mechanism,
     style: VectorStyle,
     prefix: &str,
+    runs: &[QuestionRuns],
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
     let _names = super::VectorNames::of(m);
     let mut doc = Doc::new(m, style);
@@ -181,7 +152,7 @@ pub fn answer_key_named(
     super::helical::links(&mut doc);
     super::setup::solids(&mut doc);
     super::hypotheses::model_hypotheses(&mut doc);
-    let figures = questions(&mut doc, prefix)?;
+    let figures = questions(&mut doc, prefix, runs)?;
     super::bilan::bilan(&mut doc);
     doc.o.push_str("\\end{document}\n");
     Ok(AnswerKey {
@@ -208,11 +179,13 @@ fn title_block(doc: &mut Doc) {
     }
 }
 
-/// The questions of the spec with their simulations (figure files named after `prefix`),
+/// The questions of the spec with their simulations (`runs`, one entry per question; figure
+/// files named after `prefix`),
 /// or, without questions, the hypotheses and every requested quantity.
 fn questions(
     doc: &mut Doc,
     prefix: &str,
+    runs: &[QuestionRuns],
 ) -> Result<Vec<(String, crate::simulate::Figure)>, crate::derivation::ResolveError> {
     let m = doc.m;
     let mut figures = Vec::new();
@@ -239,7 +212,16 @@ fn questions(
             question_block(doc, qs)?;
             if let Some(sim) = &qs.simulation {
                 let file = format!("{prefix}simulation-{}.png", k + 1);
-                figures.push((file.clone(), simulation_block(&mut doc.o, m, sim, &file)?));
+                let runs = runs.get(k).ok_or_else(|| {
+                    crate::derivation::ResolveError::new(
+                        &qs.title,
+                        "the runs of its simulation were not given".to_string(),
+                    )
+                })?;
+                figures.push((
+                    file.clone(),
+                    simulation_block(&mut doc.o, m, sim, runs, &file)?,
+                ));
             }
         }
     }

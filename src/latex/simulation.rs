@@ -14,27 +14,27 @@ fn french(v: f64) -> String {
     format!("{v:.digits$}").replace('.', "{,}")
 }
 
-/// The simulations of a question: the assumed values, the curves, the maxima against the
-/// statement's.
+/// The simulations of a question from their runs (run by the caller): the assumed values,
+/// the curves, the maxima against the statement's.
 pub(super) fn simulation_block(
     o: &mut String,
     m: &Mechanism,
     sim: &crate::wire::SimulationSpec,
+    runs: &crate::simulate::QuestionRuns,
     file: &str,
 ) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
-    let mut runs = Vec::new();
-    for name in &sim.scenarios {
-        runs.push(crate::simulate::simulate(m, name).map_err(|e| fail(name, e.to_string()))?);
-    }
+    let runs = runs
+        .as_ref()
+        .map_err(|(name, e)| fail(name, e.to_string()))?;
     assumed_values(o, m, sim);
     scenario_descriptions(o, m, sim);
-    let figure = simulation_figure(sim, &runs);
+    let figure = simulation_figure(sim, runs);
     let _ = writeln!(
         o,
         "\\begin{{center}}\n\\includegraphics[width=0.9\\textwidth]{{{file}}}\n\\end{{center}}"
     );
     if let Some(col) = &sim.maximum {
-        maxima_table(o, m, sim, &runs, col)?;
+        maxima_table(o, m, sim, runs, col)?;
     }
     Ok(figure)
 }

@@ -152,6 +152,26 @@ pub fn simulate(m: &Mechanism, name: &str) -> Result<Run, SimulateError> {
     simulate_with(m, sc, &[])
 }
 
+/// The runs of one question's simulation, its scenarios in order; or the first scenario that
+/// failed, with its error (the scenarios after it are not run).
+pub type QuestionRuns = Result<Vec<Run>, (String, SimulateError)>;
+
+/// The runs of the simulation each question of the spec shows (`questions[k].simulation`),
+/// one entry per question, in order (no run for a question without one): what the answer key
+/// draws and tabulates, run here so that the key's writer runs nothing itself.
+pub fn question_runs(m: &Mechanism) -> Vec<QuestionRuns> {
+    m.spec
+        .questions
+        .iter()
+        .map(|q| {
+            let names = q.simulation.iter().flat_map(|s| &s.scenarios);
+            names
+                .map(|n| simulate(m, n).map_err(|e| (n.clone(), e)))
+                .collect()
+        })
+        .collect()
+}
+
 /// Longest scenario, in seconds: the run is output every millisecond (every thousandth of
 /// the duration below 1 s), so it holds at most 10⁶ instants.
 pub const MAX_DURATION: f64 = 1000.0;
