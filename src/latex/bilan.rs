@@ -1,6 +1,6 @@
 //! The closing « Bilan » of an answer key: its results, their values when short, their units.
 
-use super::page::{Doc, Inline, quantity_title};
+use super::page::{Doc, Inline};
 use super::{basis, escape_text, name};
 use crate::derivation::Value;
 use crate::quantity::{Quantity, QuantityKind};
@@ -94,7 +94,7 @@ fn bilan_entries(doc: &Doc) -> (Vec<Entry>, Vec<Inline>) {
         {
             Some(r) => r.unders.push(under),
             None => merged.push(Entry {
-                title: bilan_title(&q),
+                title: bilan_title(&doc.names, &q),
                 unders: vec![under],
                 value,
                 unit,
@@ -132,7 +132,7 @@ fn unit_of(
 
 /// The grandeur of a result: « Éq. du mouvement en θ », or the quantity with the basis
 /// asked (the same vector asked in two bases reads apart).
-fn bilan_title(q: &Quantity) -> String {
+fn bilan_title(names: &super::VectorNames, q: &Quantity) -> String {
     match &q.kind {
         QuantityKind::Eom(c) if q.linear => {
             format!(
@@ -142,8 +142,8 @@ fn bilan_title(q: &Quantity) -> String {
         }
         QuantityKind::Eom(c) => format!("\\text{{Éq. du mouvement en }} {}", name(c)),
         _ => match &q.basis {
-            Some(b) => format!("{} \\text{{ dans }} {}", quantity_title(q), basis(b)),
-            None => quantity_title(q),
+            Some(b) => format!("{} \\text{{ dans }} {}", names.quantity_title(q), basis(b)),
+            None => names.quantity_title(q),
         },
     }
 }

@@ -5,7 +5,7 @@
 
 use super::page::Doc;
 use super::words::solid;
-use super::{Inline, basis_vector, name, point, quantity};
+use super::{Inline, name, point, quantity};
 use crate::derivation::{Step, StepKind, Value};
 use crate::mechanism::{CoulombLaw, Mechanism};
 use crate::quantity::{Motion, QuantityKind};
@@ -17,8 +17,12 @@ fn names(law: &CoulombLaw) -> [String; 2] {
 }
 
 /// A basis vector of a law's directions, in LaTeX.
-fn direction(m: &Mechanism, (f, a): (crate::frame::FrameId, crate::frame::Axis)) -> String {
-    basis_vector(a.letter(), m.frame_name(f))
+fn direction(
+    m: &Mechanism,
+    names: &super::VectorNames,
+    (f, a): (crate::frame::FrameId, crate::frame::Axis),
+) -> String {
+    names.basis_vector(a.letter(), m.frame_name(f))
 }
 
 /// Records an inline formula and returns its LaTeX.
@@ -74,8 +78,8 @@ fn state_law(doc: &mut Doc, law: &CoulombLaw) {
          tangentielle de l'action, selon ${}$, et ${n}$ sa composante normale, selon ${}$, \
          positive tant que le contact est maintenu. Tant que ${moving}$ glisse sur ${fixed}$ \
          en ${p}$, l'action tangentielle s'oppose au glissement :",
-        direction(m, law.directions[0]),
-        direction(m, law.directions[1]),
+        direction(m, &doc.names, law.directions[0]),
+        direction(m, &doc.names, law.directions[1]),
     );
     let sign = super::expr(&law.sign);
     doc.show_law(
@@ -91,7 +95,7 @@ fn state_law(doc: &mut Doc, law: &CoulombLaw) {
             reference: l.between[0].clone(),
         },
     });
-    let along = direction(m, law.directions[0]);
+    let along = direction(m, &doc.names, law.directions[0]);
     let rate = inline(
         doc,
         format!("sliding velocity of {id}"),

@@ -5,11 +5,11 @@
 
 use super::hypotheses::hypothesis_block;
 use super::method::quantity_block;
-use super::page::{Display, DisplayRole, Doc, Inline, quantity_title};
+use super::page::{Display, DisplayRole, Doc, Inline};
 use super::rich_text_or_escaped;
 use super::simulation::simulation_block;
 use super::theorems::pfd_block;
-use super::{VectorStyle, basis, escape_text, name, quantity};
+use super::{VectorStyle, basis, escape_text, name};
 use crate::derivation::derive;
 use crate::mechanism::Mechanism;
 use crate::quantity::Quantity;
@@ -82,7 +82,7 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
         let q = Quantity::parse(text)
             .map_err(|e| crate::derivation::ResolveError::new(text, e.to_string()))?;
         let d = derive(m, &q)?;
-        let title = quantity_title(&q);
+        let title = doc.names.quantity_title(&q);
         // The heading names the basis asked: the same vector in B2 and in B1 reads apart.
         let heading = match &q.basis {
             Some(b) => format!("{title} \\text{{ dans }} {}", basis(b)),
@@ -92,9 +92,9 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
             QuantityKind::Unknown(_) | QuantityKind::Eom(_) => pfd_block(doc, &d, &title),
             k => {
                 let lhs = match k {
-                    k if k.is_torsor() => quantity(k),
-                    QuantityKind::Inertia { .. } => quantity(k),
-                    QuantityKind::KineticEnergy(_) => quantity(k),
+                    k if k.is_torsor() => doc.names.quantity(k),
+                    QuantityKind::Inertia { .. } => doc.names.quantity(k),
+                    QuantityKind::KineticEnergy(_) => doc.names.quantity(k),
                     _ => title.clone(),
                 };
                 quantity_block(doc, &d, &heading, &lhs)
@@ -108,7 +108,7 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
         if let Some(r) = &e.reason {
             let _ = writeln!(doc.o, "{} :", rich_text_or_escaped(r));
         }
-        let lhs = format!("{} = {}", name(&e.lhs), quantity_title(&q));
+        let lhs = format!("{} = {}", name(&e.lhs), doc.names.quantity_title(&q));
         let id = q.to_string();
         let v = match doc.under {
             Some(h) => d.value.under(h),
@@ -144,7 +144,6 @@ pub fn write_answer_key(
     prefix: &str,
     runs: &[QuestionRuns],
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
-    let _names = super::VectorNames::of(m);
     let mut doc = Doc::new(m, style);
     title_block(&mut doc);
     super::setup::parametrage(&mut doc);

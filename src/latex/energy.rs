@@ -55,8 +55,14 @@ pub(super) fn energy_theorem(doc: &mut Doc, group: &[Step]) -> Option<(Value, Va
         shown_or_cited(doc, s, &sentence);
     }
     let dynamic = rest.last()?;
-    let (dl, dv) = (step_lhs(&dynamic.kind), shown_value(doc, &dynamic.value));
-    let (pl, pv) = (step_lhs(&last.kind), shown_value(doc, &last.value));
+    let (dl, dv) = (
+        step_lhs(&doc.names, &dynamic.kind),
+        shown_value(doc, &dynamic.value),
+    );
+    let (pl, pv) = (
+        step_lhs(&doc.names, &last.kind),
+        shown_value(doc, &last.value),
+    );
     let _ = writeln!(
         doc.o,
         "Théorème de l'énergie cinétique appliqué à ${e}$ dans son mouvement par rapport à \
@@ -73,7 +79,7 @@ fn side_by_side(doc: &mut Doc, steps: &[&Step]) {
     let mut cited: Vec<(String, Vec<String>)> = Vec::new();
     for s in steps {
         let v = shown_value(doc, &s.value);
-        let lhs = step_lhs(&s.kind);
+        let lhs = step_lhs(&doc.names, &s.kind);
         if let Some(place) = doc.cited(&lhs, &v) {
             match cited.iter_mut().find(|(p, _)| *p == place) {
                 Some((_, l)) => l.push(lhs),
@@ -95,7 +101,7 @@ fn side_by_side(doc: &mut Doc, steps: &[&Step]) {
 /// A step's sentence and display, or the place it was shown.
 fn shown_or_cited(doc: &mut Doc, s: &Step, sentence: &str) {
     let v = shown_value(doc, &s.value);
-    let lhs = step_lhs(&s.kind);
+    let lhs = step_lhs(&doc.names, &s.kind);
     if let Some(place) = doc.cited(&lhs, &v) {
         let c = super::words::citation(&[(place, vec![lhs])]);
         let _ = writeln!(doc.o, "{c}");

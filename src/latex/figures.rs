@@ -4,7 +4,7 @@
 //! Both need only `\usepackage{tikz}` (no TikZ library) and are written without `:` and
 //! without polar coordinates, so they compile under `babel`'s French shorthands.
 
-use super::{basis_vector, name, point};
+use super::{VectorNames, name, point};
 use crate::expr::{CoordId, Registry};
 use crate::frame::{Axis, Rotation};
 use crate::mechanism::Mechanism;
@@ -41,8 +41,7 @@ const VECTOR: f64 = 1.4;
 /// assert!(tex.contains("{$\\theta_{2}$}"));
 /// ```
 pub fn rotation_figures(m: &Mechanism) -> String {
-    let _names = super::VectorNames::of(m);
-    let pictures = rotation_pictures(m);
+    let pictures = rotation_pictures(m, &VectorNames::of(m));
     if pictures.is_empty() {
         return String::new();
     }
@@ -55,8 +54,9 @@ pub fn rotation_figures(m: &Mechanism) -> String {
 /// Printed width of one figure plane, in cm (arrows of 1.4 cm and their labels).
 pub(super) const PLANE_WIDTH: f64 = 2.8;
 
-/// The figures planes of [`rotation_figures`], one `tikzpicture` each.
-pub(super) fn rotation_pictures(m: &Mechanism) -> Vec<String> {
+/// The figures planes of [`rotation_figures`], one `tikzpicture` each, the basis vectors by
+/// the statement's `names`.
+pub(super) fn rotation_pictures(m: &Mechanism, names: &VectorNames) -> Vec<String> {
     m.frames
         .ids()
         .skip(1)
@@ -66,7 +66,7 @@ pub(super) fn rotation_pictures(m: &Mechanism) -> Vec<String> {
             let parent = m.frames.get(frame.parent?);
             let mut drawn = DRAWN
                 .iter()
-                .map(|&d| plane_figure(&m.reg, &parent.name, &frame.name, rotation, d));
+                .map(|&d| plane_figure(&m.reg, names, &parent.name, &frame.name, rotation, d));
             let first = drawn.next()?;
             let clean = std::iter::once(first.clone())
                 .chain(drawn)
@@ -80,6 +80,7 @@ pub(super) fn rotation_pictures(m: &Mechanism) -> Vec<String> {
 /// `small` degrees; and whether the angle's name stays clear of the vectors.
 fn plane_figure(
     reg: &Registry,
+    names: &VectorNames,
     parent: &str,
     child: &str,
     r: &Rotation,
@@ -104,18 +105,18 @@ fn plane_figure(
     let minus = if flip < 0 { "-" } else { "" };
     let axis_label = format!(
         "{minus}{} = {minus}{}",
-        basis_vector(a, parent),
-        basis_vector(a, child)
+        names.basis_vector(a, parent),
+        names.basis_vector(a, child)
     );
 
     let mut o = String::from("\\begin{tikzpicture}[>=stealth, font=\\small]\n");
     let mut taken = Layout::default();
     // Parent basis, then child basis; each name outside its tip.
     let vectors = [
-        (0.0, basis_vector(h, parent), "->"),
-        (90.0, basis_vector(v, parent), "->"),
-        (phi, basis_vector(h, child), "->, thick"),
-        (phi + 90.0, basis_vector(v, child), "->, thick"),
+        (0.0, names.basis_vector(h, parent), "->"),
+        (90.0, names.basis_vector(v, parent), "->"),
+        (phi, names.basis_vector(h, child), "->, thick"),
+        (phi + 90.0, names.basis_vector(v, child), "->, thick"),
     ];
     draw_vectors(&mut o, &mut taken, &vectors);
     let clean = draw_angle(&mut o, &mut taken, phi, &label);
@@ -376,14 +377,14 @@ fn num(x: f64) -> String {
     }
 }
 
-/// A basis vector of the spec (`z0`) in LaTeX (`\vec{z}_{0}`).
-pub(super) fn spec_vector(s: &str) -> String {
-    if let Some(v) = super::named_vector(s) {
+/// A basis vector of the spec (`z0`) in LaTeX (`\vec{z}_{0}`), or by the statement's `names`.
+pub(super) fn spec_vector(names: &VectorNames, s: &str) -> String {
+    if let Some(v) = names.named_vector(s) {
         return v;
     }
     let mut c = s.chars();
     match c.next() {
-        Some(a @ ('x' | 'y' | 'z')) => basis_vector(a, c.as_str()),
+        Some(a @ ('x' | 'y' | 'z')) => names.basis_vector(a, c.as_str()),
         _ => format!("\\vec{{{}}}", name(s)),
     }
 }
@@ -400,7 +401,13 @@ pub(super) fn spec_vector(s: &str) -> String {
 /// );
 /// ```
 pub fn link_text(l: &LinkSpec) -> String {
+    link_text_with(&VectorNames::default(), l)
+}
+
+/// [`link_text`], the basis vectors by the statement's `names`.
+pub(super) fn link_text_with(names: &VectorNames, l: &LinkSpec) -> String {
     let p = point(&l.point);
+    let spec_vector = |s: &str| spec_vector(names, s);
     let axis = l.axis.as_deref().map(spec_vector);
     let mut t = match (l.kind, axis) {
         (LinkKind::Fixed, _) => "encastrement".to_string(),
@@ -465,19 +472,24 @@ const BRANCH: f64 = 2.0;
 /// assert!(tex.contains("bâti"));
 /// ```
 pub fn link_graph(m: &Mechanism) -> String {
-    match link_picture(m) {
+    link_graph_with(m, &VectorNames::default())
+}
+
+/// [`link_graph`], the basis vectors by the statement's `names`.
+pub(super) fn link_graph_with(m: &Mechanism, names: &VectorNames) -> String {
+    match link_picture(m, names) {
         Some((p, _)) => format!("\\begin{{center}}\n{p}\\end{{center}}\n"),
         None => String::new(),
     }
 }
 
 /// The `tikzpicture` of [`link_graph`] and its printed width in cm; none without links.
-pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
+pub(super) fn link_picture(m: &Mechanism, names: &VectorNames) -> Option<(String, f64)> {
     let links = &m.spec.links;
     if links.is_empty() {
         return None;
     }
-    let (nodes, edges) = link_graph_of(m, links);
+    let (nodes, edges) = link_graph_of(m, names, links);
     let forest = Forest::of(nodes.len(), &edges);
     let row = forest.rows();
     let o = draw_link_graph(&nodes, &edges, &forest, &row);
@@ -494,7 +506,7 @@ pub(super) fn link_picture(m: &Mechanism) -> Option<(String, f64)> {
 type Edges = BTreeMap<(usize, usize), Vec<String>>;
 
 /// The solids in order of appearance, the ground first, and the edges between them.
-fn link_graph_of(m: &Mechanism, links: &[LinkSpec]) -> (Vec<String>, Edges) {
+fn link_graph_of(m: &Mechanism, names: &VectorNames, links: &[LinkSpec]) -> (Vec<String>, Edges) {
     let ground = m.frame_name(m.frames.ground()).to_string();
     let mut nodes: Vec<String> = vec![ground];
     for l in links {
@@ -511,7 +523,7 @@ fn link_graph_of(m: &Mechanism, links: &[LinkSpec]) -> (Vec<String>, Edges) {
         edges
             .entry((a.min(b), a.max(b)))
             .or_default()
-            .push(link_text(l));
+            .push(link_text_with(names, l));
     }
     (nodes, edges)
 }

@@ -19,13 +19,13 @@ fn lines(l: &[String]) -> String {
 
 /// A helical link's quantities of the relative motion, as the course writes them:
 /// (V(P,2/1)·u, Ω(2/1)·u), the motion of its second solid on its first.
-fn motion_quantities(m: &Mechanism, l: &LinkSpec) -> (String, String) {
+fn motion_quantities(m: &Mechanism, names: &super::VectorNames, l: &LinkSpec) -> (String, String) {
     let [a, b] = &l.between;
     let axis = l.axis.as_deref().unwrap_or("z0");
     let u = m
         .frames
         .basis_vector(axis)
-        .map(|(f, x)| super::basis_vector(x.letter(), m.frame_name(f)))
+        .map(|(f, x)| names.basis_vector(x.letter(), m.frame_name(f)))
         .unwrap_or_default();
     let q = |text: String| {
         Quantity::parse(&text)
@@ -56,11 +56,11 @@ fn pitch_math(doc: &mut Doc, l: &LinkSpec) -> String {
 fn statement(doc: &mut Doc, l: &LinkSpec) -> String {
     let m = doc.m;
     let p = pitch_math(doc, l);
-    let (v, w) = motion_quantities(m, l);
+    let (v, w) = motion_quantities(m, &doc.names, l);
     let axis = l
         .axis
         .as_deref()
-        .map(super::figures::spec_vector)
+        .map(|s| super::figures::spec_vector(&doc.names, s))
         .unwrap_or_default();
     let pitch = match p.chars().count() {
         0 => String::new(),
@@ -99,7 +99,7 @@ pub(super) fn kinematics(doc: &mut Doc, laws: &[HelicalLaw]) {
         let l = &m.spec.links[law.link];
         let sentence = statement(doc, l);
         let _ = writeln!(doc.o, "{sentence}, avec :");
-        let (v, w) = motion_quantities(m, l);
+        let (v, w) = motion_quantities(m, &doc.names, l);
         let u = Vector::along(law.axis.0, law.axis.1, m.reg.one());
         let [fa, fb] = law.motion;
         let values = [
@@ -175,7 +175,7 @@ fn free_motion(doc: &mut Doc, i: usize) {
     let Some(action) = m.dynamics.actions.get(i) else {
         return;
     };
-    let (v, w) = motion_quantities(m, l);
+    let (v, w) = motion_quantities(m, &doc.names, l);
     let Some((f, a)) = l.axis.as_deref().and_then(|x| m.frames.basis_vector(x)) else {
         return;
     };
@@ -223,7 +223,7 @@ fn torsor(doc: &mut Doc, i: usize) {
     // The axial moment's letter: L, M or N where the resultant's is X, Y or Z.
     let letter = ["L", "M", "N"][k];
     let moment_name = format!("{letter}{}", axial.get(1..).unwrap_or_default());
-    let (v, w) = motion_quantities(m, l);
+    let (v, w) = motion_quantities(m, &doc.names, l);
     let tied = super::expr(&moment[k]);
     let latex = format!("{} = {tied}", super::name(&moment_name));
     doc.inline.push(Inline {

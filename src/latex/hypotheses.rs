@@ -3,20 +3,26 @@
 
 use super::Inline;
 use super::page::{DisplayRole, Doc};
-use super::{basis_vector, escape_text, name, point, rich_text_or_escaped};
+use super::{escape_text, name, point, rich_text_or_escaped};
 use crate::derivation::Value;
 use crate::inertia::Symmetry;
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::wire::HypothesisSpec;
 use std::fmt::Write;
 
-fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) -> String {
+fn symmetry_text(
+    m: &Mechanism,
+    names: &super::VectorNames,
+    basis_frame: &str,
+    s: Symmetry,
+    centre: &str,
+) -> String {
     let axes = ['x', 'y', 'z'];
     match s {
         Symmetry::Plane(n) => {
             let others: Vec<String> = (0..3)
                 .filter(|&k| k != n.index())
-                .map(|k| basis_vector(axes[k], basis_frame))
+                .map(|k| names.basis_vector(axes[k], basis_frame))
                 .collect();
             format!(
                 "le plan $({}, {}, {})$ est un plan de symétrie",
@@ -30,7 +36,7 @@ fn symmetry_text(m: &Mechanism, basis_frame: &str, s: Symmetry, centre: &str) ->
             format!(
                 "l'axe $({}, {})$ est un axe de révolution",
                 point(centre),
-                basis_vector(axes[a.index()], basis_frame)
+                names.basis_vector(axes[a.index()], basis_frame)
             )
         }
     }
@@ -96,7 +102,7 @@ fn symmetric_matrices<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpe
         cells.push(d.capture(|d| {
             let bn = m.frame_name(i.basis).to_string();
             let centre = m.point_name(i.point).to_string();
-            if let Some(s) = symmetry_sentence(m, sname, b, &bn, &centre) {
+            if let Some(s) = symmetry_sentence(m, &d.names, sname, b, &bn, &centre) {
                 let _ = writeln!(d.o, "{s}");
             }
             let under = Value::Matrix(i.clone()).under(h);
@@ -122,6 +128,7 @@ fn symmetric_matrices<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpe
 /// they cancel (and the equal moments of a revolution); none without symmetries.
 fn symmetry_sentence(
     m: &Mechanism,
+    names: &super::VectorNames,
     sname: &str,
     b: &crate::mechanism::Body,
     bn: &str,
@@ -132,7 +139,7 @@ fn symmetry_sentence(
     let mut zeros: Vec<String> = Vec::new();
     let mut equal = false;
     for s in &b.symmetries {
-        why.push(symmetry_text(m, bn, *s, centre));
+        why.push(symmetry_text(m, names, bn, *s, centre));
         for t in s
             .zero_entries()
             .iter()
@@ -221,7 +228,7 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
     if let Some(g) = &m.dynamics.gravity {
         parts.push(format!(
             "l'accélération de la pesanteur est ${}$",
-            super::vector_over_bases(m, g)
+            super::vector_over_bases(m, &doc.names, g)
         ));
     }
     if !m.spec.links.is_empty() {

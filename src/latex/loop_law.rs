@@ -74,7 +74,10 @@ fn closures(doc: &mut Doc, derivatives: &[Vec<String>]) {
     let _ = writeln!(doc.o, "\\noindent\\textbf{{Loi entrée-sortie.}} ");
     for (c, v) in m.spec.closures.iter().zip(m.closure_vectors()) {
         let comps = v.express_in(&m.frames, ground);
-        let latex = format!("\\vec{{0}} = {}", super::vector_over_bases(m, &v));
+        let latex = format!(
+            "\\vec{{0}} = {}",
+            super::vector_over_bases(m, &doc.names, &v)
+        );
         let _ = writeln!(
             doc.o,
             "La fermeture géométrique ${latex}$, projetée sur ${}$, donne :",
@@ -129,7 +132,7 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
     let _ = writeln!(doc.o, "\\noindent\\textbf{{{title}}} ");
     let zero = m.reg.zero();
     for (r, law) in m.spec.rolling.iter().zip(laws) {
-        let v = super::quantity(&law.velocity.kind);
+        let v = doc.names.quantity(&law.velocity.kind);
         let ground = m.frames.ground();
         let [i, j] = law.motion;
         let velocity = crate::kinematics::velocity(m, law.point, i, j);
@@ -148,7 +151,7 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
             stated.push(format!("${latex}$"));
         } else {
             for &(f, a) in &law.on {
-                let u = super::basis_vector(a.letter(), m.frame_name(f));
+                let u = doc.names.basis_vector(a.letter(), m.frame_name(f));
                 let latex = format!("{v} \\cdot {u} = 0");
                 doc.inline.push(Inline {
                     what: format!("rolling condition {written} on {u}"),

@@ -133,12 +133,12 @@ fn skipped_for_point_mass(m: &Mechanism, d: &Derivation, i: usize) -> bool {
 /// The left side of a step as displayed: V(A/R) ∧ m2 V(G2/R) with the mass of the solid
 /// whose term it is (each solid of a set has its own term, and two solids may share their
 /// centre of inertia: the mass is never looked up by the point).
-fn displayed_lhs(m: &Mechanism, k: &StepKind) -> String {
+fn displayed_lhs(m: &Mechanism, names: &super::VectorNames, k: &StepKind) -> String {
     match k {
         StepKind::Complementary { solid, .. } => {
-            step_lhs(k).replace("\\wedge m\\,", &format!("\\wedge {}\\,", mass_of(m, solid)))
+            step_lhs(names, k).replace("\\wedge m\\,", &format!("\\wedge {}\\,", mass_of(m, solid)))
         }
-        _ => step_lhs(k),
+        _ => step_lhs(names, k),
     }
 }
 
@@ -206,8 +206,8 @@ impl StepRun<'_> {
             return false;
         }
         let v = shown_value(doc, &s.value);
-        let delta = quantity(&next_kind(&next.kind));
-        let lhs = format!("{delta} = {}", step_lhs(&s.kind));
+        let delta = doc.names.quantity(&next_kind(&next.kind));
+        let lhs = format!("{delta} = {}", step_lhs(&doc.names, &s.kind));
         let why = if mo_centre(m, a, mo) {
             format!("${}$ est le centre d'inertie", point(a))
         } else {
@@ -240,7 +240,7 @@ impl StepRun<'_> {
             }
         }
         // The derivative's own key too: a later projection cites it.
-        let dl = step_lhs(&s.kind);
+        let dl = step_lhs(&doc.names, &s.kind);
         doc.remember(&dl, &v);
         true
     }
@@ -252,7 +252,7 @@ impl StepRun<'_> {
         let (d, m) = (self.d, doc.m);
         let s = &d.steps[i];
         let v = shown_value(doc, &s.value);
-        let lhs = displayed_lhs(m, &s.kind);
+        let lhs = displayed_lhs(m, &doc.names, &s.kind);
         if let Some(place) = doc.cited(&lhs, &v) {
             self.cited.push((lhs, place, stage(&s.kind)));
             return;
@@ -260,7 +260,7 @@ impl StepRun<'_> {
         // The last step is the result itself: the result display (boxed) shows it.
         if i + 1 == d.steps.len() && lhs == self.result_lhs && d.value.exprs() == s.value.exprs() {
             self.flush(doc);
-            let _ = writeln!(doc.o, "{}", sentence(m, s));
+            let _ = writeln!(doc.o, "{}", sentence(m, &doc.names, s));
             return;
         }
         self.flush(doc);
@@ -278,7 +278,7 @@ impl StepRun<'_> {
                 return;
             }
         }
-        let _ = writeln!(doc.o, "{}", sentence(m, s));
+        let _ = writeln!(doc.o, "{}", sentence(m, &doc.names, s));
         let boxed = self.is_element(&lhs, &s.value);
         doc.show_keyed(DisplayRole::Step, &s.label, &lhs, &lhs, &v, boxed);
         if let StepKind::Complementary { solid, .. } = &s.kind {
@@ -470,7 +470,7 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
     // already shown.
     let all_shown = d.steps.iter().all(|s| {
         let v = shown_value(doc, &s.value);
-        doc.cited(&step_lhs(&s.kind), &v).is_some()
+        doc.cited(&step_lhs(&doc.names, &s.kind), &v).is_some()
     });
     let last_is_result =
         if !all_shown && (projected_moment_route(doc, d) || projected_set_route(doc, d)) {

@@ -224,21 +224,17 @@ pub fn point(n: &str) -> String {
     name(n)
 }
 
-thread_local! {
-    /// The basis vectors named as the statement does, per frame name, while a key is written.
-    static VECTOR_NAMES: std::cell::RefCell<std::collections::HashMap<String, [String; 3]>> =
-        std::cell::RefCell::new(std::collections::HashMap::new());
-}
-
-/// While it lives, [`basis_vector`] writes the statement's names of the mechanism's basis
-/// vectors (\vec{u} rather than \vec{x}_{2}); the key's writers hold one.
+/// The basis vectors named as the statement does (\vec{u} rather than \vec{x}_{2}), per frame
+/// name: what the key's writers hold (the page [`page::Doc`], the figures of the rotations)
+/// and hand to every function that writes a basis vector. [`VectorNames::default`] names
+/// none, as the public functions that take no mechanism write.
+#[derive(Debug, Clone, Default)]
 pub(crate) struct VectorNames {
-    /// The names in force before, restored on drop (writers nest).
-    before: std::collections::HashMap<String, [String; 3]>,
+    by_frame: std::collections::HashMap<String, [String; 3]>,
 }
 
 impl VectorNames {
-    /// The names of `m`'s frames, in force until the value is dropped.
+    /// The names of `m`'s frames.
     pub(crate) fn of(m: &Mechanism) -> VectorNames {
         let mut now: std::collections::HashMap<String, [String; 3]> =
             std::collections::HashMap::new();
@@ -254,48 +250,43 @@ impl VectorNames {
                 now.insert(fr.name.clone(), n);
             }
         }
-        VectorNames {
-            before: VECTOR_NAMES.with(|v| v.replace(now)),
-        }
+        VectorNames { by_frame: now }
     }
-}
 
-impl Drop for VectorNames {
-    fn drop(&mut self) {
-        let before = std::mem::take(&mut self.before);
-        VECTOR_NAMES.with(|v| v.replace(before));
-    }
-}
-
-/// A basis vector the statement names (`u`), in LaTeX, while a [`VectorNames`] lives.
-pub(crate) fn named_vector(s: &str) -> Option<String> {
-    let (frame, k) = VECTOR_NAMES.with(|v| {
-        v.borrow()
+    /// A basis vector the statement names (`u`), in LaTeX.
+    pub(crate) fn named_vector(&self, s: &str) -> Option<String> {
+        let (frame, k) = self
+            .by_frame
             .iter()
-            .find_map(|(f, n)| n.iter().position(|x| x == s).map(|k| (f.clone(), k)))
-    })?;
-    Some(basis_vector(['x', 'y', 'z'][k], &frame))
+            .find_map(|(f, n)| n.iter().position(|x| x == s).map(|k| (f.clone(), k)))?;
+        Some(self.basis_vector(['x', 'y', 'z'][k], &frame))
+    }
+
+    /// Basis vector `\vec{x}_{2}`, or the statement's name (`\vec{u}`, `\vec{i}_{1}`) when
+    /// it names the frame's vectors.
+    pub(crate) fn basis_vector(&self, axis: char, frame: &str) -> String {
+        let k = match axis {
+            'x' => 0,
+            'y' => 1,
+            _ => 2,
+        };
+        match self.by_frame.get(frame).map(|n| &n[k]) {
+            Some(n) => {
+                let latex = name(n);
+                match latex.split_once("_{") {
+                    Some((head, sub)) => format!("\\vec{{{head}}}_{{{sub}"),
+                    None => format!("\\vec{{{latex}}}"),
+                }
+            }
+            None => format!("\\vec{{{axis}}}_{{{}}}", escape_ident(frame)),
+        }
+    }
 }
 
-/// Basis vector `\vec{x}_{2}`, or the statement's name (`\vec{u}`, `\vec{i}_{1}`) while the
-/// answer key of a mechanism that names its basis vectors is being written.
+/// Basis vector `\vec{x}_{2}` (the statement's names of the vectors are the answer key's:
+/// its writers hold them).
 pub fn basis_vector(axis: char, frame: &str) -> String {
-    let k = match axis {
-        'x' => 0,
-        'y' => 1,
-        _ => 2,
-    };
-    let own = VECTOR_NAMES.with(|v| v.borrow().get(frame).map(|n| n[k].clone()));
-    match own {
-        Some(n) => {
-            let latex = name(&n);
-            match latex.split_once("_{") {
-                Some((head, sub)) => format!("\\vec{{{head}}}_{{{sub}"),
-                None => format!("\\vec{{{latex}}}"),
-            }
-        }
-        None => format!("\\vec{{{axis}}}_{{{}}}", escape_ident(frame)),
-    }
+    VectorNames::default().basis_vector(axis, frame)
 }
 
 pub(crate) fn escape_ident(s: &str) -> String {
@@ -344,100 +335,109 @@ fn motion(m: &Motion) -> String {
 
 /// A quantity in the seed's notation: `\overrightarrow{\delta(O_{2},2/0)}`, `\{\mathcal{D}(2/0)\}_{O_2}`.
 pub fn quantity(k: &QuantityKind) -> String {
-    use QuantityKind::*;
-    let arrow = |s: String| format!("\\overrightarrow{{{s}}}");
-    match k {
-        Omega(mo) => arrow(format!("\\Omega({})", motion(mo))),
-        ActionResultant(a) => arrow(format!("R({})", action(a))),
-        ActionMoment {
-            point: p,
-            action: a,
-        } => arrow(format!("M({},{})", point(p), action(a))),
-        ActionTorsor {
-            action: a,
-            point: p,
-        } => format!(
-            "\\left\\{{\\mathcal{{T}}({})\\right\\}}_{{{}}}",
-            action(a),
-            point(p)
-        ),
-        Velocity {
-            point: p,
-            motion: mo,
-        } => arrow(format!("V({},{})", point(p), motion(mo))),
-        Acceleration {
-            point: p,
-            motion: mo,
-        } => arrow(format!("\\Gamma({},{})", point(p), motion(mo))),
-        Inertia { point: p, solid } => format!("I_{{{}}}({})", point(p), escape_ident(solid)),
-        KineticResultant(mo) => arrow(format!("R_c({})", motion(mo))),
-        KineticMoment {
-            point: p,
-            motion: mo,
-        } => arrow(format!("\\sigma({},{})", point(p), motion(mo))),
-        DynamicResultant(mo) => arrow(format!("R_d({})", motion(mo))),
-        DynamicMoment {
-            point: p,
-            motion: mo,
-        } => arrow(format!("\\delta({},{})", point(p), motion(mo))),
-        KinematicTorsor {
-            motion: mo,
-            point: p,
-        } => {
-            format!(
-                "\\left\\{{\\mathcal{{V}}({})\\right\\}}_{{{}}}",
-                motion(mo),
-                point(p)
-            )
-        }
-        KineticTorsor {
-            motion: mo,
-            point: p,
-        } => {
-            format!(
-                "\\left\\{{\\mathcal{{C}}({})\\right\\}}_{{{}}}",
-                motion(mo),
-                point(p)
-            )
-        }
-        DynamicTorsor {
-            motion: mo,
-            point: p,
-        } => {
-            format!(
-                "\\left\\{{\\mathcal{{D}}({})\\right\\}}_{{{}}}",
-                motion(mo),
-                point(p)
-            )
-        }
-        KineticEnergy(mo) => format!("E_{{c}}({})", motion(mo)),
-        Power {
-            action: a,
-            reference,
-        } => format!("\\mathcal{{P}}({}/{})", action(a), escape_ident(reference)),
-        InternalPower(set) => format!("\\mathcal{{P}}_{{\\mathrm{{int}}}}({})", escape_ident(set)),
-        EquivalentInertia(c) => format!("J_{{\\mathrm{{eq}}}}({})", name(c)),
-        Unknown(n) => name(n),
-        Eom(q) => format!("\\text{{Équation du mouvement en }} {}", name(q)),
-        Derivative { of, frame: r } => derivative(of, r.as_deref()),
-    }
+    VectorNames::default().quantity(k)
 }
 
-/// [d/dt Q]_R of a vector, `\left[\frac{d}{dt}\overrightarrow{\sigma(A,2/0)}\right]_{\mathcal{R}_0}`;
-/// dQ/dt of a scalar, `\frac{dE_c(E/0)}{dt}`, a projection in parentheses.
-fn derivative(of: &crate::quantity::Quantity, r: Option<&str>) -> String {
-    let d = "\\mathrm{d}";
-    let inner = quantity(&of.kind);
-    match (r, &of.projection) {
-        (Some(r), _) => format!(
-            "\\left[\\frac{{{d}}}{{{d}t}}{inner}\\right]_{{{}}}",
-            frame(r)
-        ),
-        (None, Some((f, a))) => format!(
-            "\\frac{{{d}}}{{{d}t}}\\left({inner} \\cdot {}\\right)",
-            basis_vector(*a, f)
-        ),
-        (None, None) => format!("\\frac{{{d}{inner}}}{{{d}t}}"),
+impl VectorNames {
+    /// [`quantity`], a basis vector (of a derivative's projection) by the statement's name.
+    pub(crate) fn quantity(&self, k: &QuantityKind) -> String {
+        use QuantityKind::*;
+        let arrow = |s: String| format!("\\overrightarrow{{{s}}}");
+        match k {
+            Omega(mo) => arrow(format!("\\Omega({})", motion(mo))),
+            ActionResultant(a) => arrow(format!("R({})", action(a))),
+            ActionMoment {
+                point: p,
+                action: a,
+            } => arrow(format!("M({},{})", point(p), action(a))),
+            ActionTorsor {
+                action: a,
+                point: p,
+            } => format!(
+                "\\left\\{{\\mathcal{{T}}({})\\right\\}}_{{{}}}",
+                action(a),
+                point(p)
+            ),
+            Velocity {
+                point: p,
+                motion: mo,
+            } => arrow(format!("V({},{})", point(p), motion(mo))),
+            Acceleration {
+                point: p,
+                motion: mo,
+            } => arrow(format!("\\Gamma({},{})", point(p), motion(mo))),
+            Inertia { point: p, solid } => format!("I_{{{}}}({})", point(p), escape_ident(solid)),
+            KineticResultant(mo) => arrow(format!("R_c({})", motion(mo))),
+            KineticMoment {
+                point: p,
+                motion: mo,
+            } => arrow(format!("\\sigma({},{})", point(p), motion(mo))),
+            DynamicResultant(mo) => arrow(format!("R_d({})", motion(mo))),
+            DynamicMoment {
+                point: p,
+                motion: mo,
+            } => arrow(format!("\\delta({},{})", point(p), motion(mo))),
+            KinematicTorsor {
+                motion: mo,
+                point: p,
+            } => {
+                format!(
+                    "\\left\\{{\\mathcal{{V}}({})\\right\\}}_{{{}}}",
+                    motion(mo),
+                    point(p)
+                )
+            }
+            KineticTorsor {
+                motion: mo,
+                point: p,
+            } => {
+                format!(
+                    "\\left\\{{\\mathcal{{C}}({})\\right\\}}_{{{}}}",
+                    motion(mo),
+                    point(p)
+                )
+            }
+            DynamicTorsor {
+                motion: mo,
+                point: p,
+            } => {
+                format!(
+                    "\\left\\{{\\mathcal{{D}}({})\\right\\}}_{{{}}}",
+                    motion(mo),
+                    point(p)
+                )
+            }
+            KineticEnergy(mo) => format!("E_{{c}}({})", motion(mo)),
+            Power {
+                action: a,
+                reference,
+            } => format!("\\mathcal{{P}}({}/{})", action(a), escape_ident(reference)),
+            InternalPower(set) => {
+                format!("\\mathcal{{P}}_{{\\mathrm{{int}}}}({})", escape_ident(set))
+            }
+            EquivalentInertia(c) => format!("J_{{\\mathrm{{eq}}}}({})", name(c)),
+            Unknown(n) => name(n),
+            Eom(q) => format!("\\text{{Équation du mouvement en }} {}", name(q)),
+            Derivative { of, frame: r } => self.derivative(of, r.as_deref()),
+        }
+    }
+
+    /// [d/dt Q]_R of a vector, `\left[\frac{d}{dt}\overrightarrow{\sigma(A,2/0)}\right]_{\mathcal{R}_0}`;
+    /// dQ/dt of a scalar, `\frac{dE_c(E/0)}{dt}`, a projection in parentheses.
+    fn derivative(&self, of: &crate::quantity::Quantity, r: Option<&str>) -> String {
+        let d = "\\mathrm{d}";
+        let inner = self.quantity(&of.kind);
+        match (r, &of.projection) {
+            (Some(r), _) => format!(
+                "\\left[\\frac{{{d}}}{{{d}t}}{inner}\\right]_{{{}}}",
+                frame(r)
+            ),
+            (None, Some((f, a))) => format!(
+                "\\frac{{{d}}}{{{d}t}}\\left({inner} \\cdot {}\\right)",
+                self.basis_vector(*a, f)
+            ),
+            (None, None) => format!("\\frac{{{d}{inner}}}{{{d}t}}"),
+        }
     }
 }
 
@@ -511,6 +511,18 @@ pub fn vector_sum(
     c: &[Expr; 3],
     max: usize,
 ) -> String {
+    let _ = m;
+    vector_sum_with(&VectorNames::default(), lhs, basis_frame, c, max)
+}
+
+/// [`vector_sum`], the basis vectors by the statement's names.
+fn vector_sum_with(
+    names: &VectorNames,
+    lhs: &str,
+    basis_frame: &str,
+    c: &[Expr; 3],
+    max: usize,
+) -> String {
     let axes = ['x', 'y', 'z'];
     let mut lines: Vec<String> = Vec::new();
     let mut first = true;
@@ -518,7 +530,7 @@ pub fn vector_sum(
         if c[k].is_zero() {
             continue;
         }
-        let bv = basis_vector(axes[k], basis_frame);
+        let bv = names.basis_vector(axes[k], basis_frame);
         // A sum whose terms are mostly negative is written − [...] (− [(L1 + L2 cos θ2) θ̇1²
         // cos θ2 + L2 θ̇2²] y2, not + (−(L1 + L2 cos θ2) θ̇1² cos θ2 − L2 θ̇2²) y2).
         let own = c[k].presentation();
@@ -576,7 +588,6 @@ pub fn vector_sum(
         }
         first = false;
     }
-    let _ = m;
     if lines.is_empty() {
         return format!("{lhs} &= \\vec{{0}}");
     }
@@ -685,7 +696,15 @@ pub fn value_named(
     v: &Value,
     torsor_names: Option<(&str, &str)>,
 ) -> String {
-    value_within(m, style, lhs, v, torsor_names, LINE)
+    value_within(
+        m,
+        &VectorNames::default(),
+        style,
+        lhs,
+        v,
+        torsor_names,
+        LINE,
+    )
 }
 
 /// The width left for the right side of `lhs` on a line of `line` characters: a wide left
@@ -694,9 +713,11 @@ fn room(lhs: &str, line: usize) -> usize {
     line.saturating_sub(width(lhs).saturating_sub(14)).max(28)
 }
 
-/// [`value_named`] on lines of at most `line` characters (a boxed result has less room).
+/// [`value_named`] on lines of at most `line` characters (a boxed result has less room), the
+/// basis vectors by the statement's `names`.
 pub(crate) fn value_within(
     m: &Mechanism,
+    names: &VectorNames,
     style: VectorStyle,
     lhs: &str,
     v: &Value,
@@ -730,7 +751,7 @@ pub(crate) fn value_within(
         Value::Vector {
             basis: b,
             components,
-        } => vector_sum(m, lhs, m.frame_name(*b), components, max),
+        } => vector_sum_with(names, lhs, m.frame_name(*b), components, max),
         Value::Matrix(i) => {
             let mx = matrix(m, i);
             if width(&mx) > max + 20 {
@@ -771,8 +792,8 @@ pub(crate) fn value_within(
                 };
                 format!(
                     "{}\\\\\n{}",
-                    vector_sum(m, &rn, bn, resultant, room(&rn, line)),
-                    vector_sum(m, &mn, bn, moment, room(&mn, line))
+                    vector_sum_with(names, &rn, bn, resultant, room(&rn, line)),
+                    vector_sum_with(names, &mn, bn, moment, room(&mn, line))
                 )
             }
         }
@@ -781,7 +802,11 @@ pub(crate) fn value_within(
 
 /// A vector as written in the spec, over the bases of its parts: `d_{1}\,\vec{z}_{0} +
 /// L_{1}\,\vec{y}_{1}`.
-pub(super) fn vector_over_bases(m: &Mechanism, v: &crate::vector::Vector) -> String {
+pub(super) fn vector_over_bases(
+    m: &Mechanism,
+    names: &VectorNames,
+    v: &crate::vector::Vector,
+) -> String {
     let parts: Vec<String> = v
         .parts()
         .flat_map(|(b, c)| {
@@ -790,7 +815,7 @@ pub(super) fn vector_over_bases(m: &Mechanism, v: &crate::vector::Vector) -> Str
                 .filter(|&k| !c[k].is_zero())
                 .map(|k| {
                     let e = expr(&c[k]);
-                    let bv = basis_vector(['x', 'y', 'z'][k], &bn);
+                    let bv = names.basis_vector(['x', 'y', 'z'][k], &bn);
                     if c[k].nterms() > 1 {
                         format!("\\left({e}\\right){bv}")
                     } else if e == "1" {

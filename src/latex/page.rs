@@ -3,7 +3,7 @@
 //! formulas in the text ([`Inline`]), what it has shown and where, and a quantity as a heading
 //! ([`quantity_title`]).
 
-use super::{VectorStyle, basis_vector, quantity, value_named};
+use super::{VectorNames, VectorStyle};
 use crate::derivation::Value;
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::quantity::Quantity;
@@ -72,6 +72,8 @@ pub struct Inline {
 pub(super) struct Doc<'m> {
     pub(super) m: &'m Mechanism,
     style: VectorStyle,
+    /// The statement's names of the basis vectors, which every formula of the page uses.
+    pub(super) names: VectorNames,
     pub(super) o: String,
     pub(super) displays: Vec<Display>,
     pub(super) inline: Vec<Inline>,
@@ -100,6 +102,7 @@ impl<'m> Doc<'m> {
         Doc {
             m,
             style,
+            names: VectorNames::of(m),
             o: String::new(),
             displays: Vec::new(),
             inline: Vec::new(),
@@ -290,7 +293,7 @@ impl<'m> Doc<'m> {
         } else {
             super::LINE
         };
-        let body = super::value_within(self.m, self.style, lhs, v, None, line);
+        let body = super::value_within(self.m, &self.names, self.style, lhs, v, None, line);
         self.record(role, what, body, v, None, boxed_display);
         self.remember(key_lhs, v);
     }
@@ -307,6 +310,7 @@ impl<'m> Doc<'m> {
     ) {
         let body = super::value_within(
             self.m,
+            &self.names,
             self.style,
             lhs,
             v,
@@ -348,8 +352,8 @@ impl<'m> Doc<'m> {
     ) {
         let body = format!(
             "{} \\\\\n{}",
-            value_named(self.m, self.style, l1, v1, None),
-            value_named(self.m, self.style, l2, v2, None)
+            super::value_within(self.m, &self.names, self.style, l1, v1, None, super::LINE),
+            super::value_within(self.m, &self.names, self.style, l2, v2, None, super::LINE)
         );
         self.record(role, what, body, v1, Some(v2.clone()), boxed_display);
     }
@@ -357,7 +361,7 @@ impl<'m> Doc<'m> {
     /// A law `lhs = b` (Coulomb's T = −f N ε), not boxed: recorded as the equality of the
     /// unknown `a` that `lhs` names and `b`, and remembered.
     pub(super) fn show_law(&mut self, what: &str, lhs: &str, a: &Value, b: &Value) {
-        let body = super::value_within(self.m, self.style, lhs, b, None, super::LINE);
+        let body = super::value_within(self.m, &self.names, self.style, lhs, b, None, super::LINE);
         self.record(DisplayRole::Step, what, body, a, Some(b.clone()), false);
         self.remember(lhs, b);
     }
@@ -388,7 +392,15 @@ impl<'m> Doc<'m> {
         } else {
             lhs
         };
-        let body = super::value_within(self.m, self.style, &lhs, &rv, None, super::LINE - 6);
+        let body = super::value_within(
+            self.m,
+            &self.names,
+            self.style,
+            &lhs,
+            &rv,
+            None,
+            super::LINE - 6,
+        );
         self.record(role, what, body, &Value::Scalar(l.clone()), Some(rv), true);
         if let Some(d) = self.displays.last_mut() {
             d.hypothesis = hyp.map(str::to_string);
@@ -403,21 +415,35 @@ impl<'m> Doc<'m> {
 /// assert_eq!(torseur::latex::quantity_title(&q), "\\overrightarrow{\\Omega(2/0)}");
 /// ```
 pub fn quantity_title(q: &Quantity) -> String {
-    if q.linear {
-        let inner = Quantity {
-            linear: false,
-            ..q.clone()
-        };
-        // « équation … linéarisée », « moment … linéarisé ».
-        let agree = if matches!(q.kind, QuantityKind::Eom(_)) {
-            "e"
-        } else {
-            ""
-        };
-        return format!("{} \\text{{ (linéarisé{agree})}}", quantity_title(&inner));
-    }
-    match &q.projection {
-        Some((f, axis)) => format!("{} \\cdot {}", quantity(&q.kind), basis_vector(*axis, f)),
-        None => quantity(&q.kind),
+    VectorNames::default().quantity_title(q)
+}
+
+impl VectorNames {
+    /// [`quantity_title`], the basis vectors by the statement's names.
+    pub(super) fn quantity_title(&self, q: &Quantity) -> String {
+        if q.linear {
+            let inner = Quantity {
+                linear: false,
+                ..q.clone()
+            };
+            // « équation … linéarisée », « moment … linéarisé ».
+            let agree = if matches!(q.kind, QuantityKind::Eom(_)) {
+                "e"
+            } else {
+                ""
+            };
+            return format!(
+                "{} \\text{{ (linéarisé{agree})}}",
+                self.quantity_title(&inner)
+            );
+        }
+        match &q.projection {
+            Some((f, axis)) => format!(
+                "{} \\cdot {}",
+                self.quantity(&q.kind),
+                self.basis_vector(*axis, f)
+            ),
+            None => self.quantity(&q.kind),
+        }
     }
 }

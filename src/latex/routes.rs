@@ -6,7 +6,7 @@
 use super::omega::{omega_of, omega_sentence};
 use super::page::{DisplayRole, Doc};
 use super::words::{mass_of, shown_value, solid};
-use super::{basis_vector, frame, point, quantity};
+use super::{frame, point, quantity};
 use crate::derivation::{Derivation, Value, derive};
 use crate::frame::FrameId;
 use crate::mechanism::Mechanism;
@@ -54,7 +54,7 @@ fn show_scalar(doc: &mut Doc, what: &str, sentence: &str, lhs: &str, e: crate::e
 /// (A ≠ G), the change of point to the centre of inertia, δ(G)·u + (AG ∧ m Γ(G))·u. Returns
 /// false when neither applies (the steps of the vector are then shown).
 pub(super) fn projected_moment_route(doc: &mut Doc, d: &Derivation) -> bool {
-    let Some(pm) = ProjectedMoment::of(doc.m, d) else {
+    let Some(pm) = ProjectedMoment::of(doc.m, &doc.names, d) else {
         return false;
     };
     if pm.fixed {
@@ -93,7 +93,7 @@ struct ProjectedMoment<'d> {
 
 impl<'d> ProjectedMoment<'d> {
     /// The projected dynamic moment of one solid that `d` derives, if it is one.
-    fn of(m: &Mechanism, d: &'d Derivation) -> Option<Self> {
+    fn of(m: &Mechanism, names: &super::VectorNames, d: &'d Derivation) -> Option<Self> {
         use crate::kinematics::{omega, point_velocity};
         let q = &d.quantity;
         let QuantityKind::DynamicMoment {
@@ -128,7 +128,7 @@ impl<'d> ProjectedMoment<'d> {
             uf,
             ua,
             u: crate::vector::Vector::along(uf, ua, m.reg.one()),
-            ul: basis_vector(ua.letter(), m.frame_name(uf)),
+            ul: names.basis_vector(ua.letter(), m.frame_name(uf)),
             rl: frame(&mo.reference),
             sigma_a: quantity(&QuantityKind::KineticMoment {
                 point: a.clone(),
@@ -572,7 +572,7 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
     let light_note = massless_note(m, &light);
     let rf = r.reference.unwrap_or(m.frames.ground());
     let u = crate::vector::Vector::along(uf, ua, m.reg.one());
-    let ul = basis_vector(ua.letter(), m.frame_name(uf));
+    let ul = doc.names.basis_vector(ua.letter(), m.frame_name(uf));
     let sigma_e = quantity(&QuantityKind::KineticMoment {
         point: a.clone(),
         motion: mo.clone(),

@@ -10,7 +10,7 @@ use crate::mechanism::Mechanism;
 use crate::quantity::{Motion, QuantityKind};
 
 /// The sentence that introduces a step: the theorem applied to the step's objects.
-pub(super) fn sentence(m: &Mechanism, s: &Step) -> String {
+pub(super) fn sentence(m: &Mechanism, names: &super::VectorNames, s: &Step) -> String {
     use QuantityKind::*;
     let t = s.theorem.as_str();
     match &s.kind {
@@ -44,7 +44,7 @@ pub(super) fn sentence(m: &Mechanism, s: &Step) -> String {
         StepKind::Quantity(DynamicResultant(mo)) => resultant_sentence(m, mo, true),
         StepKind::Quantity(KineticResultant(mo)) => resultant_sentence(m, mo, false),
         StepKind::Quantity(k) if k.is_torsor() => change_of_point_sentence(t, k),
-        StepKind::Action { .. } => format!("{} :", super::theorems::action_line(m, s)),
+        StepKind::Action { .. } => format!("{} :", super::theorems::action_line(m, names, s)),
         _ => format!("{} :", super::escape_text(t)),
     }
 }

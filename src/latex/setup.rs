@@ -3,7 +3,7 @@
 //! links) and each solid's mass, centre and inertia operator; every formula recorded.
 
 use super::page::{DisplayRole, Doc, Inline};
-use super::{basis, basis_vector, link_graph, name, point, rich_text_or_escaped, rotation_figures};
+use super::{basis, name, point, rich_text_or_escaped, rotation_figures};
 use crate::derivation::Value;
 use crate::mechanism::Mechanism;
 use std::fmt::Write;
@@ -130,12 +130,12 @@ fn frame_items(doc: &mut Doc) {
                 let _ = writeln!(
                     doc.o,
                     "\\item $({}, {}) = ({}, {}) = {angle}$, autour de ${} = {}$.",
-                    basis_vector(u, &parent.name),
-                    basis_vector(u, &fr.name),
-                    basis_vector(v, &parent.name),
-                    basis_vector(v, &fr.name),
-                    basis_vector(r.axis.letter(), &parent.name),
-                    basis_vector(r.axis.letter(), &fr.name)
+                    doc.names.basis_vector(u, &parent.name),
+                    doc.names.basis_vector(u, &fr.name),
+                    doc.names.basis_vector(v, &parent.name),
+                    doc.names.basis_vector(v, &fr.name),
+                    doc.names.basis_vector(r.axis.letter(), &parent.name),
+                    doc.names.basis_vector(r.axis.letter(), &fr.name)
                 );
             }
             None => {
@@ -157,7 +157,7 @@ fn position_items(doc: &mut Doc) {
     for p in m.points.ids().skip(1) {
         let pt = m.points.get(p);
         let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
-        let rhs = super::vector_over_bases(m, &pt.offset);
+        let rhs = super::vector_over_bases(m, &doc.names, &pt.offset);
         let math = format!(
             "\\overrightarrow{{{}{}}} = {rhs}",
             point(from),
@@ -179,9 +179,9 @@ fn position_items(doc: &mut Doc) {
 /// The figures planes of the rotations and the graph of links, side by side when small.
 fn setup_figures(doc: &mut Doc) {
     let m = doc.m;
+    let planes = super::figures::rotation_pictures(m, &doc.names);
+    let graph = super::figures::link_picture(m, &doc.names);
     let o = &mut doc.o;
-    let planes = super::figures::rotation_pictures(m);
-    let graph = super::figures::link_picture(m);
     let planes_width = planes.len() as f64 * (super::figures::PLANE_WIDTH + 0.5);
     match graph {
         Some((g, w)) if !planes.is_empty() && planes_width + w + 1.0 <= 17.5 => {
@@ -193,7 +193,7 @@ fn setup_figures(doc: &mut Doc) {
         }
         _ => {
             o.push_str(&rotation_figures(m));
-            o.push_str(&link_graph(m));
+            o.push_str(&super::figures::link_graph_with(m, &doc.names));
         }
     }
 }

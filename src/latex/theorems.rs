@@ -3,7 +3,7 @@
 
 use super::page::{DisplayRole, Doc};
 use super::words::{shown_value, solid, step_lhs};
-use super::{basis_vector, name, point, quantity};
+use super::{name, point, quantity};
 use crate::derivation::{Derivation, Step, StepKind, Value};
 use crate::quantity::QuantityKind;
 use std::fmt::Write;
@@ -61,16 +61,16 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         if massive.is_empty() {
             // Of negligible mass: the dynamic torsor is zero, the theorem is the balance of
             // the actions.
-            let title = theorem_title(&iso_name, at.as_deref(), f, *a);
+            let title = theorem_title(&doc.names, &iso_name, at.as_deref(), f, *a);
             let ev = shown_value(doc, &ext_step.value);
-            let el = step_lhs(&ext_step.kind);
+            let el = step_lhs(&doc.names, &ext_step.kind);
             let iso = (isolate.as_str(), massless.as_slice());
             massless_theorem(doc, &ext_step.label, iso, &title, (&el, &ev));
             last_equality = Some((Value::Scalar(doc.m.reg.zero()), ev));
             k += 2;
             continue;
         }
-        let mut title = theorem_title(&iso_name, at.as_deref(), f, *a);
+        let mut title = theorem_title(&doc.names, &iso_name, at.as_deref(), f, *a);
         if !massless.is_empty() {
             // The members of negligible mass add nothing to the dynamic side.
             let _ = write!(
@@ -85,8 +85,14 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
         }
         let theorem = Theorem {
             title,
-            dynamic: (step_lhs(&dyn_step.kind), shown_value(doc, &dyn_step.value)),
-            external: (step_lhs(&ext_step.kind), shown_value(doc, &ext_step.value)),
+            dynamic: (
+                step_lhs(&doc.names, &dyn_step.kind),
+                shown_value(doc, &dyn_step.value),
+            ),
+            external: (
+                step_lhs(&doc.names, &ext_step.kind),
+                shown_value(doc, &ext_step.value),
+            ),
         };
         // When the actions reduce to the unknown asked (C_m), the theorem gives it at once.
         if k + 2 == steps.len() && unknown_at_once(doc, d, &theorem) {
@@ -204,7 +210,7 @@ fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]
     // Actions already shown (asked as quantities above) are cited, not repeated.
     let mut by_place: Vec<(String, Vec<String>)> = Vec::new();
     for s in actions {
-        let lhs = step_lhs(&s.kind);
+        let lhs = step_lhs(&doc.names, &s.kind);
         if let Some(place) = doc.cited(&lhs, &shown_value(doc, &s.value)) {
             match by_place.iter_mut().find(|(p, _)| *p == place) {
                 Some((_, v)) => v.push(lhs),
@@ -221,9 +227,9 @@ fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]
     let mut cells = Vec::new();
     let mut widths = Vec::new();
     for s in actions {
-        let text = action_line(m, s);
+        let text = action_line(m, &doc.names, s);
         let v = shown_value(doc, &s.value);
-        let lhs = step_lhs(&s.kind);
+        let lhs = step_lhs(&doc.names, &s.kind);
         if doc.cited(&lhs, &v).is_some() {
             continue;
         }
@@ -241,16 +247,22 @@ fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]
 
 /// The theorem applied to the isolated system, at `at` (moment) or not (resultant), in
 /// projection on the axis `a` of `f`.
-fn theorem_title(iso_name: &str, at: Option<&str>, f: &str, a: char) -> String {
+fn theorem_title(
+    names: &super::VectorNames,
+    iso_name: &str,
+    at: Option<&str>,
+    f: &str,
+    a: char,
+) -> String {
     match at {
         Some(p) => format!(
             "Théorème du moment dynamique appliqué à ${iso_name}$ en ${}$, en projection sur ${}$",
             point(p),
-            basis_vector(a, f)
+            names.basis_vector(a, f)
         ),
         None => format!(
             "Théorème de la résultante dynamique appliqué à ${iso_name}$, en projection sur ${}$",
-            basis_vector(a, f)
+            names.basis_vector(a, f)
         ),
     }
 }
@@ -314,7 +326,7 @@ fn pfd_result(doc: &mut Doc, d: &Derivation, last_equality: Option<(Value, Value
             if matches!(d.quantity.kind, QuantityKind::Unknown(_)) {
                 state_conditions(doc);
             }
-            let lhs = quantity(&d.quantity.kind);
+            let lhs = doc.names.quantity(&d.quantity.kind);
             doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
         }
     }
@@ -333,7 +345,7 @@ fn eom_result(
     let m = doc.m;
     let hn = doc.under.map(|h| h.name.clone());
     if let Some((_, Value::Scalar(actions))) = last_equality
-        && let Some(s) = eliminated(m, actions)
+        && let Some(s) = eliminated(m, &doc.names, actions)
     {
         let _ = writeln!(doc.o, "{s}");
     }
@@ -496,7 +508,11 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
 /// geometry (« liaison pivot d'axe $(O_1, \vec{z}_0)$, action de $S_0$ sur $S_1$ »); other
 /// actions keep the derivation's wording (« pesanteur sur $S_1$ », « le moteur, action sur
 /// $S_1$ »).
-fn bilan_text(m: &crate::mechanism::Mechanism, s: &crate::derivation::Step) -> String {
+fn bilan_text(
+    m: &crate::mechanism::Mechanism,
+    names: &super::VectorNames,
+    s: &crate::derivation::Step,
+) -> String {
     if let StepKind::Action { from, on, point } = &s.kind {
         let between = |l: &&crate::wire::LinkSpec| {
             (l.between[0] == *from && l.between[1] == *on)
@@ -510,7 +526,7 @@ fn bilan_text(m: &crate::mechanism::Mechanism, s: &crate::derivation::Step) -> S
         if let [l] = links.as_slice() {
             return format!(
                 "liaison {}, action de ${}$ sur ${}$",
-                super::link_text(l),
+                super::figures::link_text_with(names, l),
                 solid(from),
                 solid(on)
             );
@@ -521,8 +537,12 @@ fn bilan_text(m: &crate::mechanism::Mechanism, s: &crate::derivation::Step) -> S
 
 /// The bilan's line for an action, capitalised: « Liaison pivot d'axe $(O_1, \vec{z}_0)$,
 /// action de $S_0$ sur $S_1$ ».
-pub(super) fn action_line(m: &crate::mechanism::Mechanism, s: &crate::derivation::Step) -> String {
-    let text = bilan_text(m, s);
+pub(super) fn action_line(
+    m: &crate::mechanism::Mechanism,
+    names: &super::VectorNames,
+    s: &crate::derivation::Step,
+) -> String {
+    let text = bilan_text(m, names, s);
     let mut cs = text.chars();
     match cs.next() {
         Some(c) => c.to_uppercase().chain(cs).collect::<String>(),
@@ -552,7 +572,11 @@ fn first_integral(e: &crate::expr::Expr) -> Option<crate::expr::Expr> {
 /// theorem still holds, and the other equations of the PFD that eliminate them, grouped by
 /// what they isolate (« $X_{12}$ et $Y_{12}$ s'éliminent avec les autres équations du PFD,
 /// obtenues en isolant $S_3$ (résultante sur $\vec{x}_0$) et … »); None when it holds none.
-fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Option<String> {
+fn eliminated(
+    m: &crate::mechanism::Mechanism,
+    names: &super::VectorNames,
+    side: &crate::expr::Expr,
+) -> Option<String> {
     let occurs = side.occurring();
     let held: Vec<String> = (crate::pfd::unknown_vars(m).into_iter())
         .filter(|(_, v)| occurs[v.index()])
@@ -561,7 +585,10 @@ fn eliminated(m: &crate::mechanism::Mechanism, side: &crate::expr::Expr) -> Opti
     // Per isolated system: the vectors of its resultant theorems, then its moment theorems.
     let mut groups: Vec<(&str, Vec<String>, Vec<String>)> = Vec::new();
     for t in m.dynamics.theorems.iter().filter(|t| t.eom.is_none()) {
-        let on = format!("${}$", basis_vector(t.on.1.letter(), m.frame_name(t.on.0)));
+        let on = format!(
+            "${}$",
+            names.basis_vector(t.on.1.letter(), m.frame_name(t.on.0))
+        );
         let g = match groups.iter().position(|g| g.0 == t.isolate) {
             Some(k) => &mut groups[k],
             None => {

@@ -3,7 +3,7 @@
 //! cites values already shown.
 
 use super::page::Doc;
-use super::{action_side, basis_vector, frame, name, point, quantity};
+use super::{action_side, frame, name, point, quantity};
 use crate::derivation::{StepKind, Value};
 use crate::mechanism::Mechanism;
 use crate::quantity::QuantityKind;
@@ -35,12 +35,12 @@ pub(super) fn mass_of(m: &Mechanism, s: &str) -> String {
 }
 
 /// The left side of a step's display.
-pub(super) fn step_lhs(k: &StepKind) -> String {
+pub(super) fn step_lhs(names: &super::VectorNames, k: &StepKind) -> String {
     match k {
-        StepKind::Quantity(q) => quantity(q),
+        StepKind::Quantity(q) => names.quantity(q),
         StepKind::Derivative(q, r) => format!(
             "\\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}}",
-            quantity(q),
+            names.quantity(q),
             frame(r)
         ),
         StepKind::Complementary {
@@ -55,14 +55,16 @@ pub(super) fn step_lhs(k: &StepKind) -> String {
             point(g),
             frame(r)
         ),
-        StepKind::Massless(q) => quantity(q),
+        StepKind::Massless(q) => names.quantity(q),
         StepKind::Action { from, on, point: p } => format!(
             "\\left\\{{\\mathcal{{T}}({} \\rightarrow {})\\right\\}}_{{{}}}",
             action_side(from),
             action_side(on),
             point(p)
         ),
-        StepKind::Projected(q, (f, a)) => format!("{} \\cdot {}", quantity(q), basis_vector(*a, f)),
+        StepKind::Projected(q, (f, a)) => {
+            format!("{} \\cdot {}", names.quantity(q), names.basis_vector(*a, f))
+        }
         StepKind::Coulomb { tangential, .. } => super::name(tangential),
         StepKind::Powers { isolate, reference } => format!(
             "{} + {}",
@@ -86,11 +88,11 @@ pub(super) fn step_lhs(k: &StepKind) -> String {
                 Some(p) => format!(
                     "\\overrightarrow{{M({},{arrow})}} \\cdot {}",
                     point(p),
-                    basis_vector(*a, f)
+                    names.basis_vector(*a, f)
                 ),
                 None => format!(
                     "\\overrightarrow{{R({arrow})}} \\cdot {}",
-                    basis_vector(*a, f)
+                    names.basis_vector(*a, f)
                 ),
             }
         }
