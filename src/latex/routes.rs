@@ -539,55 +539,114 @@ fn massless_note(m: &Mechanism, light: &[crate::mechanism::BodyId]) -> String {
     )
 }
 
+/// A projection on an axis u of the kinetic or dynamic moment of a set, σ(A,E/R)·u or
+/// δ(A,E/R)·u, resolved: its objects, their names in LaTeX, the sum of its massive solids'
+/// σ(A,S/R)·u, and the engine's value the route must give.
+struct ProjectedSet<'d> {
+    /// σ(A,E/R)·u or δ(A,E/R)·u as asked, and whether it is δ.
+    kind: &'d QuantityKind,
+    dynamic: bool,
+    a: &'d str,
+    mo: &'d Motion,
+    pa: crate::point::PointId,
+    /// The reference frame R.
+    rf: FrameId,
+    /// The axis u: its frame, its vector and its LaTeX.
+    uf: FrameId,
+    u: crate::vector::Vector,
+    ul: String,
+    /// The solids of the set that have a mass, and the note naming the others.
+    solids: Vec<crate::mechanism::BodyId>,
+    light_note: String,
+    /// σ(A,E/R) in LaTeX, and the sum of the solids' σ(A,S/R)·u.
+    sigma_e: String,
+    sum: crate::expr::Expr,
+    result: &'d crate::expr::Expr,
+}
+
+impl<'d> ProjectedSet<'d> {
+    /// The projected kinetic or dynamic moment of a set of two solids or more that `d`
+    /// derives, if it is one.
+    fn of(m: &Mechanism, names: &super::VectorNames, d: &'d Derivation) -> Option<Self> {
+        let q = &d.quantity;
+        let (a, mo, dynamic) = match &q.kind {
+            QuantityKind::KineticMoment { point, motion } => (point, motion, false),
+            QuantityKind::DynamicMoment { point, motion } => (point, motion, true),
+            _ => return None,
+        };
+        let r = crate::derivation::resolve(m, q).ok()?;
+        let (Some((uf, ua)), Some(pa)) = (r.projection, r.point) else {
+            return None;
+        };
+        if r.solids.len() < 2 {
+            return None;
+        }
+        let Value::Scalar(result) = &d.value else {
+            return None;
+        };
+        // The members of negligible mass add nothing: the sum is over the others, the
+        // sentence names them.
+        let (light, solids): (Vec<_>, Vec<_>) = r.solids.iter().partition(|&&s| m.body(s).massless);
+        if solids.is_empty() {
+            return None;
+        }
+        let light_note = massless_note(m, &light);
+        let rf = r.reference.unwrap_or(m.frames.ground());
+        let u = crate::vector::Vector::along(uf, ua, m.reg.one());
+        let ul = names.basis_vector(ua.letter(), m.frame_name(uf));
+        let sigma_e = quantity(&QuantityKind::KineticMoment {
+            point: a.clone(),
+            motion: mo.clone(),
+        });
+        let sum = crate::expr::Expr::sum(
+            &m.reg,
+            solids
+                .iter()
+                .map(|&s| crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, &u)),
+        );
+        Some(ProjectedSet {
+            kind: &q.kind,
+            dynamic,
+            a,
+            mo,
+            pa,
+            rf,
+            uf,
+            u,
+            ul,
+            solids,
+            light_note,
+            sigma_e,
+            sum,
+            result,
+        })
+    }
+}
+
 /// The short route for a projection on an axis u of the kinetic or dynamic moment of a set:
 /// σ(A,E/R)·u as the sum of the solids' projections; δ(A,E/R)·u, at a point A fixed in R
 /// and u fixed in R, as d/dt(σ(A,E/R)·u). Taken only when it gives the engine's value.
 pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
-    use crate::kinematics::{omega, point_velocity};
+    let Some(ps) = ProjectedSet::of(doc.m, &doc.names, d) else {
+        return false;
+    };
+    if ps.dynamic {
+        dynamic_set_route(doc, &ps)
+    } else {
+        kinetic_set_route(doc, &ps)
+    }
+}
+
+/// σ(A,E/R)·u as the sum of its solids' σ(A,S/R)·u, when that is the engine's value.
+fn kinetic_set_route(doc: &mut Doc, ps: &ProjectedSet) -> bool {
     let m = doc.m;
-    let q = &d.quantity;
-    let (a, mo, dynamic) = match &q.kind {
-        QuantityKind::KineticMoment { point, motion } => (point, motion, false),
-        QuantityKind::DynamicMoment { point, motion } => (point, motion, true),
-        _ => return false,
-    };
-    let Ok(r) = crate::derivation::resolve(m, q) else {
-        return false;
-    };
-    let (Some((uf, ua)), Some(pa)) = (r.projection, r.point) else {
-        return false;
-    };
-    if r.solids.len() < 2 {
-        return false;
-    }
-    let Value::Scalar(result) = &d.value else {
-        return false;
-    };
-    // The members of negligible mass add nothing: the sum is over the others, the sentence
-    // names them.
-    let (light, solids): (Vec<_>, Vec<_>) = r.solids.iter().partition(|&&s| m.body(s).massless);
-    if solids.is_empty() {
-        return false;
-    }
-    let light_note = massless_note(m, &light);
-    let rf = r.reference.unwrap_or(m.frames.ground());
-    let u = crate::vector::Vector::along(uf, ua, m.reg.one());
-    let ul = doc.names.basis_vector(ua.letter(), m.frame_name(uf));
-    let sigma_e = quantity(&QuantityKind::KineticMoment {
-        point: a.clone(),
-        motion: mo.clone(),
-    });
-    let sum = crate::expr::Expr::sum(
-        &m.reg,
-        solids
-            .iter()
-            .map(|&s| crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, &u)),
-    );
-    let members: Vec<String> = solids
+    let (a, mo, ul, sigma_e) = (ps.a, ps.mo, &ps.ul, &ps.sigma_e);
+    let members: Vec<String> = ps
+        .solids
         .iter()
         .map(|&s| {
             quantity(&QuantityKind::KineticMoment {
-                point: a.clone(),
+                point: a.to_string(),
                 motion: Motion {
                     moving: m.body(s).name.clone(),
                     reference: mo.reference.clone(),
@@ -595,32 +654,42 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
             })
         })
         .collect();
-    if !dynamic {
-        if &sum != result {
-            return false;
-        }
-        let _ = writeln!(
-            doc.o,
-            "Le moment cinétique de ${}$ est la somme de ceux de ses solides, ${sigma_e} = {}${light_note} ; en projection sur ${ul}$ :\n",
-            solid(&mo.moving),
-            members.join(" + ")
-        );
-        kinetic_projections(doc, &solids, pa, rf, &u, &ul, &mo.reference);
-        return true;
+    if &ps.sum != ps.result {
+        return false;
     }
-    let fixed = point_velocity(m, pa, rf).is_zero(&m.frames) && omega(m, uf, rf).is_zero(&m.frames);
-    if !fixed || &sum.dt() != result {
+    let _ = writeln!(
+        doc.o,
+        "Le moment cinétique de ${}$ est la somme de ceux de ses solides, ${sigma_e} = {}${} ; en projection sur ${ul}$ :\n",
+        solid(&mo.moving),
+        members.join(" + "),
+        ps.light_note
+    );
+    kinetic_projections(doc, &ps.solids, ps.pa, ps.rf, &ps.u, ul, &mo.reference);
+    true
+}
+
+/// δ(A,E/R)·u as d/dt(σ(A,E/R)·u), A and u fixed in R, when that is the engine's value: the
+/// solids' σ(A,S/R)·u and their sum, or where that sum was shown.
+fn dynamic_set_route(doc: &mut Doc, ps: &ProjectedSet) -> bool {
+    use crate::kinematics::{omega, point_velocity};
+    let m = doc.m;
+    let (a, mo, ul, sigma_e) = (ps.a, ps.mo, &ps.ul, &ps.sigma_e);
+    let (pa, rf) = (ps.pa, ps.rf);
+    let fixed =
+        point_velocity(m, pa, rf).is_zero(&m.frames) && omega(m, ps.uf, rf).is_zero(&m.frames);
+    if !fixed || &ps.sum.dt() != ps.result {
         return false;
     }
     let lhs = format!("{sigma_e} \\cdot {ul}");
     let _ = writeln!(
         doc.o,
-        "${}$ est fixe dans ${}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_e}\\cdot {ul}\\right)${light_note}.\n",
+        "${}$ est fixe dans ${}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_e}\\cdot {ul}\\right)${}.\n",
         point(a),
         frame(&mo.reference),
-        quantity(&q.kind)
+        quantity(ps.kind),
+        ps.light_note
     );
-    let v = shown_value(doc, &Value::Scalar(sum.clone()));
+    let v = shown_value(doc, &Value::Scalar(ps.sum.clone()));
     match doc.cited(&lhs, &v) {
         Some(place) => {
             let _ = writeln!(
@@ -630,13 +699,13 @@ pub(super) fn projected_set_route(doc: &mut Doc, d: &Derivation) -> bool {
             );
         }
         None => {
-            kinetic_projections(doc, &solids, pa, rf, &u, &ul, &mo.reference);
+            kinetic_projections(doc, &ps.solids, pa, rf, &ps.u, ul, &mo.reference);
             show_scalar(
                 doc,
                 &format!("sigma({a},{mo})"),
                 "d'où, en sommant :",
                 &lhs,
-                sum,
+                ps.sum.clone(),
             );
         }
     }

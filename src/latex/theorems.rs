@@ -16,108 +16,148 @@ pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
     if linearised_from_above(doc, d) {
         return;
     }
-    let mut k = 0;
     let steps = &d.steps;
+    let mut k = 0;
     let mut last_equality: Option<(Value, Value)> = None;
     // The system the previous theorem isolated: the next one on the same system does not
     // say « On isole S » again.
     let mut isolated: Option<&str> = None;
     while k < steps.len() {
-        // One theorem: actions…, projected dynamic side, external actions.
-        let start = k;
-        while k < steps.len() && matches!(steps[k].kind, StepKind::Action { .. }) {
-            k += 1;
-        }
-        // The kinetic energy theorem: its powers, its energy, then its power side.
-        if let Some(e) = energy_group(&steps[k..]).map(|e| e + k) {
-            let StepKind::Powers { isolate, .. } = &steps[e].kind else {
+        match theorem_at(doc, d, k, &mut isolated, &mut last_equality) {
+            Written::Theorem { next } => k = next,
+            Written::Unknown => return,
+            Written::End { at } => {
+                k = at;
                 break;
-            };
-            if isolated != Some(isolate.as_str()) {
-                external_bilan(doc, isolate, &solid(isolate), &steps[start..k]);
             }
-            isolated = Some(isolate);
-            last_equality = super::energy::energy_theorem(doc, &steps[k..=e]);
-            k = e + 1;
-            continue;
         }
-        let (Some(dyn_step), Some(ext_step)) = (steps.get(k), steps.get(k + 1)) else {
-            break;
-        };
-        let StepKind::External {
-            isolate,
-            point: at,
-            on: (f, a),
-        } = &ext_step.kind
-        else {
-            break;
-        };
-        let iso_name = solid(isolate);
-        if isolated != Some(isolate.as_str()) {
-            external_bilan(doc, isolate, &iso_name, &steps[start..k]);
-        }
-        isolated = Some(isolate);
-        let (massless, massive) = members_by_mass(doc.m, isolate);
-        if massive.is_empty() {
-            // Of negligible mass: the dynamic torsor is zero, the theorem is the balance of
-            // the actions.
-            let title = theorem_title(&doc.names, &iso_name, at.as_deref(), f, *a);
-            let ev = shown_value(doc, &ext_step.value);
-            let el = step_lhs(&doc.names, &ext_step.kind);
-            let iso = (isolate.as_str(), massless.as_slice());
-            massless_theorem(doc, &ext_step.label, iso, &title, (&el, &ev));
-            last_equality = Some((Value::Scalar(doc.m.reg.zero()), ev));
-            k += 2;
-            continue;
-        }
-        let mut title = theorem_title(&doc.names, &iso_name, at.as_deref(), f, *a);
-        if !massless.is_empty() {
-            // The members of negligible mass add nothing to the dynamic side.
-            let _ = write!(
-                title,
-                " ({} {} de masse négligeable : seul{} {} contribue{} au côté dynamique)",
-                solids_list(&massless),
-                if massless.len() > 1 { "sont" } else { "est" },
-                if massive.len() > 1 { "s" } else { "" },
-                solids_list(&massive),
-                if massive.len() > 1 { "nt" } else { "" },
-            );
-        }
-        let theorem = Theorem {
-            title,
-            dynamic: (
-                step_lhs(&doc.names, &dyn_step.kind),
-                shown_value(doc, &dyn_step.value),
-            ),
-            external: (
-                step_lhs(&doc.names, &ext_step.kind),
-                shown_value(doc, &ext_step.value),
-            ),
-        };
-        // When the actions reduce to the unknown asked (C_m), the theorem gives it at once.
-        if k + 2 == steps.len() && unknown_at_once(doc, d, &theorem) {
-            return;
-        }
-        let Theorem {
-            title,
-            dynamic: (dl, dv),
-            external: (el, ev),
-        } = theorem;
-        let _ = writeln!(doc.o, "{title}, ${dl} = {el}$ :");
-        doc.show_equality(
-            DisplayRole::Step,
-            &dyn_step.label,
-            &dl,
-            &dv,
-            &el,
-            &ev,
-            false,
-        );
-        last_equality = Some((dv, ev));
-        k += 2;
     }
     super::coulomb::law_steps(doc, &steps[k.min(steps.len())..]);
     pfd_result(doc, d, last_equality);
+}
+
+/// What writing the theorem that starts at a step did.
+enum Written {
+    /// A theorem; the next one starts at the step `next`.
+    Theorem { next: usize },
+    /// The theorem gave the unknown asked at once: the PFD is written.
+    Unknown,
+    /// No theorem starts at the step `at` (after the actions): what is left is the laws'.
+    End { at: usize },
+}
+
+/// The theorem whose steps start at `start` (its actions, then its dynamic side and its
+/// external actions, or the kinetic energy theorem's powers, energy and power side), the
+/// bilan of its system first unless the previous theorem isolated it (`isolated`); its
+/// equality (dynamic side, actions), when it has one, in `last_equality`.
+fn theorem_at<'d>(
+    doc: &mut Doc,
+    d: &'d Derivation,
+    start: usize,
+    isolated: &mut Option<&'d str>,
+    last_equality: &mut Option<(Value, Value)>,
+) -> Written {
+    let steps = &d.steps;
+    let k = start
+        + (steps[start..].iter())
+            .take_while(|s| matches!(s.kind, StepKind::Action { .. }))
+            .count();
+    let actions = &steps[start..k];
+    // The kinetic energy theorem: its powers, its energy, then its power side.
+    if let Some(e) = energy_group(&steps[k..]).map(|e| e + k) {
+        let StepKind::Powers { isolate, .. } = &steps[e].kind else {
+            return Written::End { at: k };
+        };
+        isolate_once(doc, isolated, isolate, &solid(isolate), actions);
+        *last_equality = super::energy::energy_theorem(doc, &steps[k..=e]);
+        return Written::Theorem { next: e + 1 };
+    }
+    let (Some(dyn_step), Some(ext_step)) = (steps.get(k), steps.get(k + 1)) else {
+        return Written::End { at: k };
+    };
+    let StepKind::External {
+        isolate,
+        point: at,
+        on: (f, a),
+    } = &ext_step.kind
+    else {
+        return Written::End { at: k };
+    };
+    let iso_name = solid(isolate);
+    isolate_once(doc, isolated, isolate, &iso_name, actions);
+    let mut title = theorem_title(&doc.names, &iso_name, at.as_deref(), f, *a);
+    let (massless, massive) = members_by_mass(doc.m, isolate);
+    if massive.is_empty() {
+        // Of negligible mass: the dynamic torsor is zero, the theorem is the balance of
+        // the actions.
+        let ev = shown_value(doc, &ext_step.value);
+        let el = step_lhs(&doc.names, &ext_step.kind);
+        let iso = (isolate.as_str(), massless.as_slice());
+        massless_theorem(doc, &ext_step.label, iso, &title, (&el, &ev));
+        *last_equality = Some((Value::Scalar(doc.m.reg.zero()), ev));
+        return Written::Theorem { next: k + 2 };
+    }
+    if !massless.is_empty() {
+        title.push_str(&massless_members(&massless, &massive));
+    }
+    let theorem = Theorem {
+        title,
+        dynamic: (
+            step_lhs(&doc.names, &dyn_step.kind),
+            shown_value(doc, &dyn_step.value),
+        ),
+        external: (
+            step_lhs(&doc.names, &ext_step.kind),
+            shown_value(doc, &ext_step.value),
+        ),
+    };
+    // When the actions reduce to the unknown asked (C_m), the theorem gives it at once.
+    if k + 2 == steps.len() && unknown_at_once(doc, d, &theorem) {
+        return Written::Unknown;
+    }
+    *last_equality = Some(theorem_equality(doc, &dyn_step.label, theorem));
+    Written::Theorem { next: k + 2 }
+}
+
+/// The bilan of the external actions to `isolate` (its `actions`), unless the previous
+/// theorem isolated it too (`isolated`, which then names it).
+fn isolate_once<'d>(
+    doc: &mut Doc,
+    isolated: &mut Option<&'d str>,
+    isolate: &'d str,
+    iso_name: &str,
+    actions: &[Step],
+) {
+    if *isolated != Some(isolate) {
+        external_bilan(doc, isolate, iso_name, actions);
+    }
+    *isolated = Some(isolate);
+}
+
+/// What a theorem's title adds when members of the isolated system are of negligible mass:
+/// they add nothing to the dynamic side.
+fn massless_members(massless: &[String], massive: &[String]) -> String {
+    format!(
+        " ({} {} de masse négligeable : seul{} {} contribue{} au côté dynamique)",
+        solids_list(massless),
+        if massless.len() > 1 { "sont" } else { "est" },
+        if massive.len() > 1 { "s" } else { "" },
+        solids_list(massive),
+        if massive.len() > 1 { "nt" } else { "" },
+    )
+}
+
+/// A theorem as one equality, its title first (« …, $dl = el$ : »), then its dynamic side
+/// and its actions each on its line; returns their values (dynamic side, actions).
+fn theorem_equality(doc: &mut Doc, what: &str, theorem: Theorem) -> (Value, Value) {
+    let Theorem {
+        title,
+        dynamic: (dl, dv),
+        external: (el, ev),
+    } = theorem;
+    let _ = writeln!(doc.o, "{title}, ${dl} = {el}$ :");
+    doc.show_equality(DisplayRole::Step, what, &dl, &dv, &el, &ev, false);
+    (dv, ev)
 }
 
 /// The index in `steps` of the power side of a kinetic energy theorem starting there, when
