@@ -38,6 +38,20 @@ const PREAMBLE: &str = "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf
 /// quantities (kinematics and kinetics step by step, the PFD as bilan and theorems), its
 /// equations written out.
 fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivation::ResolveError> {
+    question_heading(doc, qs);
+    for text in &qs.quantities {
+        question_quantity(doc, text)?;
+    }
+    for e in &qs.equations {
+        question_equation(doc, e)?;
+    }
+    doc.under = None;
+    Ok(())
+}
+
+/// A question's title, statement and answer text, the hypotheses it states and the one it
+/// works under (kept in `doc.under` for its quantities and equations).
+fn question_heading(doc: &mut Doc, qs: &QuestionSpec) {
     let m = doc.m;
     let _ = writeln!(
         doc.o,
@@ -78,46 +92,55 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
             escape_text(&h.name)
         );
     }
-    for text in &qs.quantities {
-        let q = Quantity::parse(text)
-            .map_err(|e| crate::derivation::ResolveError::new(text, e.to_string()))?;
-        let d = derive(m, &q)?;
-        let title = doc.names.quantity_title(&q);
-        // The heading names the basis asked: the same vector in B2 and in B1 reads apart.
-        let heading = match &q.basis {
-            Some(b) => format!("{title} \\text{{ dans }} {}", basis(b)),
-            None => title.clone(),
-        };
-        match &q.kind {
-            QuantityKind::Unknown(_) | QuantityKind::Eom(_) => pfd_block(doc, &d, &title),
-            k => {
-                let lhs = match k {
-                    k if k.is_torsor() => doc.names.quantity(k),
-                    QuantityKind::Inertia { .. } => doc.names.quantity(k),
-                    QuantityKind::KineticEnergy(_) => doc.names.quantity(k),
-                    _ => title.clone(),
-                };
-                quantity_block(doc, &d, &heading, &lhs)
-            }
+}
+
+/// A quantity of a question (`text`, in the notation): the PFD for an unknown or an equation
+/// of motion, else its method step by step.
+fn question_quantity(doc: &mut Doc, text: &str) -> Result<(), crate::derivation::ResolveError> {
+    let q = Quantity::parse(text)
+        .map_err(|e| crate::derivation::ResolveError::new(&text, e.to_string()))?;
+    let d = derive(doc.m, &q)?;
+    let title = doc.names.quantity_title(&q);
+    // The heading names the basis asked: the same vector in B2 and in B1 reads apart.
+    let heading = match &q.basis {
+        Some(b) => format!("{title} \\text{{ dans }} {}", basis(b)),
+        None => title.clone(),
+    };
+    match &q.kind {
+        QuantityKind::Unknown(_) | QuantityKind::Eom(_) => pfd_block(doc, &d, &title),
+        k => {
+            let lhs = match k {
+                k if k.is_torsor() => doc.names.quantity(k),
+                QuantityKind::Inertia { .. } => doc.names.quantity(k),
+                QuantityKind::KineticEnergy(_) => doc.names.quantity(k),
+                _ => title.clone(),
+            };
+            quantity_block(doc, &d, &heading, &lhs)
         }
     }
-    for e in &qs.equations {
-        let q = Quantity::parse(&e.quantity)
-            .map_err(|er| crate::derivation::ResolveError::new(&e.quantity, er.to_string()))?;
-        let d = derive(m, &q)?;
-        if let Some(r) = &e.reason {
-            let _ = writeln!(doc.o, "{} :", rich_text_or_escaped(r));
-        }
-        let lhs = format!("{} = {}", name(&e.lhs), doc.names.quantity_title(&q));
-        let id = q.to_string();
-        let v = match doc.under {
-            Some(h) => d.value.under(h),
-            None => d.value.clone(),
-        };
-        let hyp = doc.under.map(|h| h.name.clone());
-        doc.show_result(DisplayRole::Equation, &id, hyp.as_deref(), &lhs, &v, None);
+    Ok(())
+}
+
+/// An equation of a question (`C_m = δ(O1,E/0)·z0`): its reason, then the equation boxed,
+/// under the question's hypothesis.
+fn question_equation(
+    doc: &mut Doc,
+    e: &crate::wire::EquationSpec,
+) -> Result<(), crate::derivation::ResolveError> {
+    let q = Quantity::parse(&e.quantity)
+        .map_err(|er| crate::derivation::ResolveError::new(&e.quantity, er.to_string()))?;
+    let d = derive(doc.m, &q)?;
+    if let Some(r) = &e.reason {
+        let _ = writeln!(doc.o, "{} :", rich_text_or_escaped(r));
     }
-    doc.under = None;
+    let lhs = format!("{} = {}", name(&e.lhs), doc.names.quantity_title(&q));
+    let id = q.to_string();
+    let v = match doc.under {
+        Some(h) => d.value.under(h),
+        None => d.value.clone(),
+    };
+    let hyp = doc.under.map(|h| h.name.clone());
+    doc.show_result(DisplayRole::Equation, &id, hyp.as_deref(), &lhs, &v, None);
     Ok(())
 }
 

@@ -531,61 +531,7 @@ fn vector_sum_with(
             continue;
         }
         let bv = names.basis_vector(axes[k], basis_frame);
-        // A sum whose terms are mostly negative is written − [...] (− [(L1 + L2 cos θ2) θ̇1²
-        // cos θ2 + L2 θ̇2²] y2, not + (−(L1 + L2 cos θ2) θ̇1² cos θ2 − L2 θ̇2²) y2).
-        let own = c[k].presentation();
-        let negated = mostly_negative(&own);
-        let shown = if negated {
-            (-&c[k]).presentation()
-        } else {
-            own
-        };
-        let ls = expr::presentation_lines(&shown, max);
-        // One product (a group that is not a bare sum) multiplies the basis vector without
-        // parentheses; anything else is parenthesised.
-        let single_term = shown.form().terms.len() == 1;
-        let sign = match (first, negated) {
-            (true, false) => "",
-            (true, true) => "-",
-            (false, false) => "+ ",
-            (false, true) => "- ",
-        };
-        let (open_p, close_p) = if ls.iter().any(|l| l.contains("\\left(")) {
-            ("\\left[", "\\right]")
-        } else {
-            ("\\left(", "\\right)")
-        };
-        if ls.len() == 1 && single_term {
-            // The product's own sign and the sign taken out combine.
-            let (inner_neg, body) = match ls[0].strip_prefix('-') {
-                Some(b) => (true, b),
-                None => (false, ls[0].as_str()),
-            };
-            let s = match (first, negated != inner_neg) {
-                (true, false) => body.to_string(),
-                (true, true) => format!("-{body}"),
-                (false, false) => format!("+ {body}"),
-                (false, true) => format!("- {body}"),
-            };
-            lines.push(format!("{s}\\,{bv}"));
-        } else if ls.len() == 1 {
-            lines.push(format!("{sign}{open_p}{}{close_p}{bv}", ls[0]));
-        } else {
-            let n = ls.len();
-            for (i, l) in ls.into_iter().enumerate() {
-                let open = if i == 0 {
-                    format!("{sign}\\Big(")
-                } else {
-                    "\\quad ".to_string()
-                };
-                let close = if i + 1 == n {
-                    format!("\\Big)\\,{bv}")
-                } else {
-                    String::new()
-                };
-                lines.push(format!("{open}{l}{close}"));
-            }
-        }
+        lines.extend(component_lines(&c[k], &bv, first, max));
         first = false;
     }
     if lines.is_empty() {
@@ -600,6 +546,64 @@ fn vector_sum_with(
         out.push_str(&format!(" \\\\\n&\\phantom{{=}} {l}"));
     }
     out
+}
+
+/// The lines of a vector sum (see [`vector_sum`]) that its nonzero component `e` along the
+/// basis vector `bv` adds (`first`: it opens the sum); more than one when long.
+fn component_lines(e: &Expr, bv: &str, first: bool, max: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    // A sum whose terms are mostly negative is written − [...] (− [(L1 + L2 cos θ2) θ̇1²
+    // cos θ2 + L2 θ̇2²] y2, not + (−(L1 + L2 cos θ2) θ̇1² cos θ2 − L2 θ̇2²) y2).
+    let own = e.presentation();
+    let negated = mostly_negative(&own);
+    let shown = if negated { (-e).presentation() } else { own };
+    let ls = expr::presentation_lines(&shown, max);
+    // One product (a group that is not a bare sum) multiplies the basis vector without
+    // parentheses; anything else is parenthesised.
+    let single_term = shown.form().terms.len() == 1;
+    let sign = match (first, negated) {
+        (true, false) => "",
+        (true, true) => "-",
+        (false, false) => "+ ",
+        (false, true) => "- ",
+    };
+    let (open_p, close_p) = if ls.iter().any(|l| l.contains("\\left(")) {
+        ("\\left[", "\\right]")
+    } else {
+        ("\\left(", "\\right)")
+    };
+    if ls.len() == 1 && single_term {
+        // The product's own sign and the sign taken out combine.
+        let (inner_neg, body) = match ls[0].strip_prefix('-') {
+            Some(b) => (true, b),
+            None => (false, ls[0].as_str()),
+        };
+        let s = match (first, negated != inner_neg) {
+            (true, false) => body.to_string(),
+            (true, true) => format!("-{body}"),
+            (false, false) => format!("+ {body}"),
+            (false, true) => format!("- {body}"),
+        };
+        lines.push(format!("{s}\\,{bv}"));
+    } else if ls.len() == 1 {
+        lines.push(format!("{sign}{open_p}{}{close_p}{bv}", ls[0]));
+    } else {
+        let n = ls.len();
+        for (i, l) in ls.into_iter().enumerate() {
+            let open = if i == 0 {
+                format!("{sign}\\Big(")
+            } else {
+                "\\quad ".to_string()
+            };
+            let close = if i + 1 == n {
+                format!("\\Big)\\,{bv}")
+            } else {
+                String::new()
+            };
+            lines.push(format!("{open}{l}{close}"));
+        }
+    }
+    lines
 }
 
 /// A short vector as a column with its basis as subscript.
@@ -765,38 +769,58 @@ pub(crate) fn value_within(
             basis: b,
             resultant,
             moment,
-        } => {
-            let short = resultant
-                .iter()
-                .chain(moment.iter())
-                .all(|e| e.nterms() <= 1);
-            let pn = point(m.point_name(*p));
-            if resultant.iter().chain(moment.iter()).all(|e| e.is_zero()) {
-                // The zero torsor, as the course writes it.
-                return format!("{lhs} &= \\left\\{{ 0 \\right\\}}");
-            }
-            if short {
-                let rows: Vec<String> = (0..3)
-                    .map(|k| format!("{} & {}", expr(&resultant[k]), expr(&moment[k])))
-                    .collect();
-                format!(
-                    "{lhs} &= \\left\\{{ \\begin{{array}}{{c|c}} {} \\end{{array}} \\right\\}}_{{{pn},\\,{}}}",
-                    rows.join(" \\\\ "),
-                    basis(m.frame_name(*b))
-                )
-            } else {
-                let bn = m.frame_name(*b);
-                let (rn, mn) = match torsor_names {
-                    Some((r, mo)) => (r.to_string(), mo.to_string()),
-                    None => ("\\vec{R}".to_string(), format!("\\vec{{M}}({pn})")),
-                };
-                format!(
-                    "{}\\\\\n{}",
-                    vector_sum_with(names, &rn, bn, resultant, room(&rn, line)),
-                    vector_sum_with(names, &mn, bn, moment, room(&mn, line))
-                )
-            }
-        }
+        } => torsor_value(
+            m,
+            names,
+            lhs,
+            (*p, *b),
+            [resultant, moment],
+            torsor_names,
+            line,
+        ),
+    }
+}
+
+/// A torsor's value on the right of `lhs` (see [`value_within`]): the zero torsor, a short
+/// torsor as its two columns, a long one as its two elements, each a vector sum.
+fn torsor_value(
+    m: &Mechanism,
+    names: &VectorNames,
+    lhs: &str,
+    (p, b): (crate::point::PointId, crate::frame::FrameId),
+    [resultant, moment]: [&[Expr; 3]; 2],
+    torsor_names: Option<(&str, &str)>,
+    line: usize,
+) -> String {
+    let short = resultant
+        .iter()
+        .chain(moment.iter())
+        .all(|e| e.nterms() <= 1);
+    let pn = point(m.point_name(p));
+    if resultant.iter().chain(moment.iter()).all(|e| e.is_zero()) {
+        // The zero torsor, as the course writes it.
+        return format!("{lhs} &= \\left\\{{ 0 \\right\\}}");
+    }
+    if short {
+        let rows: Vec<String> = (0..3)
+            .map(|k| format!("{} & {}", expr(&resultant[k]), expr(&moment[k])))
+            .collect();
+        format!(
+            "{lhs} &= \\left\\{{ \\begin{{array}}{{c|c}} {} \\end{{array}} \\right\\}}_{{{pn},\\,{}}}",
+            rows.join(" \\\\ "),
+            basis(m.frame_name(b))
+        )
+    } else {
+        let bn = m.frame_name(b);
+        let (rn, mn) = match torsor_names {
+            Some((r, mo)) => (r.to_string(), mo.to_string()),
+            None => ("\\vec{R}".to_string(), format!("\\vec{{M}}({pn})")),
+        };
+        format!(
+            "{}\\\\\n{}",
+            vector_sum_with(names, &rn, bn, resultant, room(&rn, line)),
+            vector_sum_with(names, &mn, bn, moment, room(&mn, line))
+        )
     }
 }
 

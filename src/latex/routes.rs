@@ -449,62 +449,15 @@ fn kinetic_projections(
     let a = m.point_name(pa).to_string();
     let mut total = m.reg.zero();
     for &s in solids {
-        let body = m.body(s);
         let mo = Motion {
-            moving: body.name.clone(),
+            moving: m.body(s).name.clone(),
             reference: reference.to_string(),
         };
         let sigma = quantity(&QuantityKind::KineticMoment {
             point: a.clone(),
             motion: mo.clone(),
         });
-        let fixed = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
-        let point_velocity = crate::kinematics::point_velocity;
-        let oml = omega_of(&mo.moving, &mo.reference);
-        let sentence = if body.inertia.is_none() {
-            let p = m.point_name(body.centre).to_string();
-            format!(
-                "${}$ est une masse ponctuelle : ${sigma} = \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
-                point(&p),
-                point(&a),
-                point(&p),
-                mass_of(m, &mo.moving),
-                quantity(&QuantityKind::Velocity {
-                    point: p.clone(),
-                    motion: mo.clone()
-                })
-            )
-        } else if fixed {
-            let how = if point_velocity(m, pa, rf).is_zero(&m.frames) {
-                "fixe"
-            } else {
-                "de vitesse nulle"
-            };
-            format!(
-                "${}$ est un point de ${}$ {how} dans ${}$ : ${sigma} = I_{{{}}}({})\\cdot{oml}$ :",
-                point(&a),
-                solid(&mo.moving),
-                frame(reference),
-                point(&a),
-                mo.moving
-            )
-        } else {
-            let g = m.point_name(body.centre).to_string();
-            format!(
-                "${sigma} = {} + \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
-                quantity(&QuantityKind::KineticMoment {
-                    point: g.clone(),
-                    motion: mo.clone()
-                }),
-                point(&a),
-                point(&g),
-                mass_of(m, &mo.moving),
-                quantity(&QuantityKind::Velocity {
-                    point: g.clone(),
-                    motion: mo.clone()
-                })
-            )
-        };
+        let sentence = kinetic_moment_formula(m, s, pa, rf, &mo, &sigma);
         let p = crate::torsor::kinetic_moment_solid(m, s, pa, rf).dot(&m.frames, u);
         total = &total + &p;
         let lhs = format!("{sigma} \\cdot {ul}");
@@ -521,6 +474,68 @@ fn kinetic_projections(
         }
     }
     total
+}
+
+/// The formula that gives σ(A,S/R) (`sigma`) of the solid `s` in its motion `mo`: a point
+/// mass's, a solid's at a point of it at rest, or by its centre of inertia.
+fn kinetic_moment_formula(
+    m: &Mechanism,
+    s: crate::mechanism::BodyId,
+    pa: crate::point::PointId,
+    rf: FrameId,
+    mo: &Motion,
+    sigma: &str,
+) -> String {
+    let body = m.body(s);
+    let a = m.point_name(pa).to_string();
+    let reference = mo.reference.as_str();
+    let fixed = crate::kinematics::velocity(m, pa, body.frame, rf).is_zero(&m.frames);
+    let point_velocity = crate::kinematics::point_velocity;
+    let oml = omega_of(&mo.moving, &mo.reference);
+    if body.inertia.is_none() {
+        let p = m.point_name(body.centre).to_string();
+        format!(
+            "${}$ est une masse ponctuelle : ${sigma} = \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+            point(&p),
+            point(&a),
+            point(&p),
+            mass_of(m, &mo.moving),
+            quantity(&QuantityKind::Velocity {
+                point: p.clone(),
+                motion: mo.clone()
+            })
+        )
+    } else if fixed {
+        let how = if point_velocity(m, pa, rf).is_zero(&m.frames) {
+            "fixe"
+        } else {
+            "de vitesse nulle"
+        };
+        format!(
+            "${}$ est un point de ${}$ {how} dans ${}$ : ${sigma} = I_{{{}}}({})\\cdot{oml}$ :",
+            point(&a),
+            solid(&mo.moving),
+            frame(reference),
+            point(&a),
+            mo.moving
+        )
+    } else {
+        let g = m.point_name(body.centre).to_string();
+        format!(
+            "${sigma} = {} + \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+            quantity(&QuantityKind::KineticMoment {
+                point: g.clone(),
+                motion: mo.clone()
+            }),
+            point(&a),
+            point(&g),
+            mass_of(m, &mo.moving),
+            quantity(&QuantityKind::Velocity {
+                point: g.clone(),
+                motion: mo.clone()
+            })
+        )
+    }
 }
 
 /// « ($S_1$ et $S_2$ sont de masse négligeable) » for the members `light` of a set, or nothing.

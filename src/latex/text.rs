@@ -257,6 +257,16 @@ struct Formula<'a> {
     arrows: usize,
 }
 
+/// What the current atom of a group already carries: a superscript, a subscript; whether it
+/// ends with primes, which a `^` right after joins (any other token closes them into a
+/// superscript).
+#[derive(Default)]
+struct Scripts {
+    sup: bool,
+    sub: bool,
+    primes: bool,
+}
+
 /// What closes the group being read.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Close {
@@ -374,10 +384,7 @@ impl Formula<'_> {
     /// Reads items up to `close` (consumed), checking scripts, `\left`/`\right` and macro
     /// arguments. `open` is where the group started, for the message of an unclosed group.
     fn group(&mut self, close: Close, open: usize) -> Result<(), RichTextError> {
-        // Whether the current atom already has a superscript, a subscript; whether it ends
-        // with primes, which a `^` right after joins (any other token closes them into a
-        // superscript).
-        let (mut sup, mut sub, mut primes) = (false, false, false);
+        let mut scripts = Scripts::default();
         let mut lefts: Vec<usize> = Vec::new();
         loop {
             let Some((t, at)) = self.token()? else {
@@ -386,81 +393,113 @@ impl Formula<'_> {
                     Close::Brace => self.err(open, "a `{` is never closed"),
                 });
             };
-            if primes && matches!(t, Token::Script('^') | Token::Char('\'')) {
+            if scripts.primes && matches!(t, Token::Script('^') | Token::Char('\'')) {
                 // `x' ^2`, `x' '`: TeX joins a `^` or a prime only right after a prime.
                 while self.out.ends_with(' ') {
                     self.out.pop();
                 }
             }
             match t {
-                Token::Dollar => {
-                    if close == Close::Brace {
-                        return Err(self.err(open, "a `{` is not closed before the closing `$`"));
-                    }
-                    if let Some(&l) = lefts.last() {
-                        return Err(self.err(l, "a `\\left` has no `\\right`"));
-                    }
-                    // `pos` is just after the `$`; leave it on the `$`.
-                    self.pos -= 1;
-                    return Ok(());
+                Token::Dollar | Token::Close => {
+                    return self.group_end(&t, close, open, at, &lefts);
                 }
-                Token::Close => {
-                    if close == Close::Dollar {
-                        return Err(self.err(at, "a `}` closes no `{`"));
-                    }
-                    if let Some(&l) = lefts.last() {
-                        return Err(self.err(l, "a `\\left` has no `\\right` in its group"));
-                    }
-                    self.out.push('}');
-                    return Ok(());
-                }
-                Token::Script(c) => {
-                    // Primes followed by `_` are a superscript already.
-                    if std::mem::take(&mut primes) && c == '_' {
-                        sup = true;
-                    }
-                    let seen = if c == '^' { &mut sup } else { &mut sub };
-                    if *seen {
-                        let what = if c == '^' { "superscript" } else { "subscript" };
-                        return Err(self.err(
-                            at,
-                            format!("double {what}: put braces around the first one"),
-                        ));
-                    }
-                    *seen = true;
-                    self.out.push(c);
-                    self.argument(at, &format!("`{c}`"), true)?;
-                }
+                Token::Script(c) => self.script(&mut scripts, c, at)?,
                 Token::Char('\'') => {
                     // A prime is a superscript that a following `^` joins.
-                    if sup {
+                    if scripts.sup {
                         return Err(self.err(
                             at,
                             "double superscript: a prime after a superscript needs braces",
                         ));
                     }
                     self.out.push('\'');
-                    primes = true;
+                    scripts.primes = true;
                 }
                 Token::Word(w) if w == "left" || w == "right" => {
-                    if w == "left" {
-                        lefts.push(at);
-                        self.enter(at)?;
-                    } else if lefts.pop().is_none() {
-                        return Err(self.err(at, "a `\\right` has no `\\left`"));
-                    } else {
-                        self.depth -= 1;
-                    }
-                    self.word(&w);
-                    self.delimiter(at, &w)?;
-                    (sup, sub, primes) = (false, false, false);
+                    self.left_right(&w, at, &mut lefts)?;
+                    scripts = Scripts::default();
                 }
                 other => {
                     self.atom(other, at)?;
-                    (sup, sub, primes) = (false, false, false);
+                    scripts = Scripts::default();
                 }
             }
         }
+    }
+
+    /// The end of a group, at a `$` or a `}` (`t`, at `at`): refused when it is not the one
+    /// that closes it (`close`, opened at `open`) or when a `\left` of the group (`lefts`) has
+    /// no `\right`.
+    fn group_end(
+        &mut self,
+        t: &Token,
+        close: Close,
+        open: usize,
+        at: usize,
+        lefts: &[usize],
+    ) -> Result<(), RichTextError> {
+        if let Token::Dollar = t {
+            if close == Close::Brace {
+                return Err(self.err(open, "a `{` is not closed before the closing `$`"));
+            }
+            if let Some(&l) = lefts.last() {
+                return Err(self.err(l, "a `\\left` has no `\\right`"));
+            }
+            // `pos` is just after the `$`; leave it on the `$`.
+            self.pos -= 1;
+            return Ok(());
+        }
+        if close == Close::Dollar {
+            return Err(self.err(at, "a `}` closes no `{`"));
+        }
+        if let Some(&l) = lefts.last() {
+            return Err(self.err(l, "a `\\left` has no `\\right` in its group"));
+        }
+        self.out.push('}');
+        Ok(())
+    }
+
+    /// A `^` or a `_` (`c`, at `at`) and its argument; refused when the atom has one already.
+    fn script(&mut self, scripts: &mut Scripts, c: char, at: usize) -> Result<(), RichTextError> {
+        // Primes followed by `_` are a superscript already.
+        if std::mem::take(&mut scripts.primes) && c == '_' {
+            scripts.sup = true;
+        }
+        let seen = if c == '^' {
+            &mut scripts.sup
+        } else {
+            &mut scripts.sub
+        };
+        if *seen {
+            let what = if c == '^' { "superscript" } else { "subscript" };
+            return Err(self.err(
+                at,
+                format!("double {what}: put braces around the first one"),
+            ));
+        }
+        *seen = true;
+        self.out.push(c);
+        self.argument(at, &format!("`{c}`"), true)
+    }
+
+    /// A `\left` or a `\right` (`w`, at `at`) and its delimiter; the `\left`s open in the
+    /// group are `lefts`.
+    fn left_right(
+        &mut self,
+        w: &str,
+        at: usize,
+        lefts: &mut Vec<usize>,
+    ) -> Result<(), RichTextError> {
+        if w == "left" {
+            lefts.push(at);
+            self.enter(at)?;
+        } else if lefts.pop().is_none() {
+            return Err(self.err(at, "a `\\right` has no `\\left`"));
+        } else {
+            self.depth -= 1;
+        }
+        self.word(w);
+        self.delimiter(at, w)
     }
 
     /// One more group open at `at` (a `{` or a `\left`), refused past [`MAX_FORMULA_DEPTH`].
