@@ -343,6 +343,13 @@ impl VectorNames {
     pub(crate) fn quantity(&self, k: &QuantityKind) -> String {
         use QuantityKind::*;
         let arrow = |s: String| format!("\\overrightarrow{{{s}}}");
+        // A torsor {𝒯(of)} at the point p.
+        let torsor = |t: char, of: String, p: &str| {
+            format!(
+                "\\left\\{{\\mathcal{{{t}}}({of})\\right\\}}_{{{}}}",
+                point(p)
+            )
+        };
         match k {
             Omega(mo) => arrow(format!("\\Omega({})", motion(mo))),
             ActionResultant(a) => arrow(format!("R({})", action(a))),
@@ -353,11 +360,7 @@ impl VectorNames {
             ActionTorsor {
                 action: a,
                 point: p,
-            } => format!(
-                "\\left\\{{\\mathcal{{T}}({})\\right\\}}_{{{}}}",
-                action(a),
-                point(p)
-            ),
+            } => torsor('T', action(a), p),
             Velocity {
                 point: p,
                 motion: mo,
@@ -380,33 +383,15 @@ impl VectorNames {
             KinematicTorsor {
                 motion: mo,
                 point: p,
-            } => {
-                format!(
-                    "\\left\\{{\\mathcal{{V}}({})\\right\\}}_{{{}}}",
-                    motion(mo),
-                    point(p)
-                )
-            }
+            } => torsor('V', motion(mo), p),
             KineticTorsor {
                 motion: mo,
                 point: p,
-            } => {
-                format!(
-                    "\\left\\{{\\mathcal{{C}}({})\\right\\}}_{{{}}}",
-                    motion(mo),
-                    point(p)
-                )
-            }
+            } => torsor('C', motion(mo), p),
             DynamicTorsor {
                 motion: mo,
                 point: p,
-            } => {
-                format!(
-                    "\\left\\{{\\mathcal{{D}}({})\\right\\}}_{{{}}}",
-                    motion(mo),
-                    point(p)
-                )
-            }
+            } => torsor('D', motion(mo), p),
             KineticEnergy(mo) => format!("E_{{c}}({})", motion(mo)),
             Power {
                 action: a,
