@@ -377,6 +377,15 @@ pub fn solve(m: &Mechanism) -> Result<Solution, PfdError> {
     solve_with_residuals(m, &mut torsor::Cache::default()).map(|(s, _)| s)
 }
 
+/// Equations of the system as (index of the theorem, or of the law after the theorems, residual).
+type Equations = Vec<(usize, Expr)>;
+
+/// Expressions by coordinate name.
+type ByCoordinate = BTreeMap<String, Expr>;
+
+/// The unknowns solved so far, each as its variable and its value.
+type Solved = Vec<(VarId, Fraction)>;
+
 /// [`solve`], also returning each declared theorem's residual (in the spec's order), then
 /// each Coulomb law's (T + f N ε, in the order of `Dynamics::laws`).
 pub fn solve_with_residuals(
@@ -420,14 +429,13 @@ pub fn solve_with_residuals(
 /// laws (the rows that determine the unknowns), the theorems with `eom` apart, and every
 /// residual in the order [`solve_with_residuals`] returns them. Each must be linear in the
 /// unknowns.
-#[allow(clippy::type_complexity)]
 fn equations(
     m: &Mechanism,
     cache: &mut torsor::Cache,
-) -> Result<(Vec<(usize, Expr)>, Vec<(usize, Expr)>, Vec<Expr>), PfdError> {
+) -> Result<(Equations, Equations, Vec<Expr>), PfdError> {
     let mut residuals = Vec::with_capacity(m.dynamics.theorems.len());
-    let mut rows: Vec<(usize, Expr)> = Vec::new();
-    let mut eoms: Vec<(usize, Expr)> = Vec::new();
+    let mut rows: Equations = Vec::new();
+    let mut eoms: Equations = Vec::new();
     for (i, th) in m.dynamics.theorems.iter().enumerate() {
         let r = residual(m, th, cache);
         check_linear(m, &r).map_err(|(first, second)| PfdError::NotLinear {
@@ -459,10 +467,10 @@ fn equations(
 fn eliminate_unknowns(
     m: &Mechanism,
     cols: &[VarId],
-    rows: Vec<(usize, Expr)>,
+    rows: Equations,
     names: &BTreeMap<VarId, String>,
-) -> Result<(Vec<(VarId, Fraction)>, Vec<Expr>), PfdError> {
-    let mut solved: Vec<(VarId, Fraction)> = Vec::new();
+) -> Result<(Solved, Vec<Expr>), PfdError> {
+    let mut solved: Solved = Vec::new();
     let mut conditions: Vec<Expr> = Vec::new();
     let mut pending = rows;
     for &v in cols {
@@ -532,13 +540,12 @@ fn pivot_row(pending: &[(usize, Expr)], v: VarId) -> Option<usize> {
 
 /// Each equation of motion with the solved unknowns substituted, by coordinate name, and the
 /// factor it was left multiplied by when a pivot did not divide back (only those not 1).
-#[allow(clippy::type_complexity)]
 fn equations_of_motion(
     m: &Mechanism,
-    eoms: Vec<(usize, Expr)>,
+    eoms: Equations,
     solved: &[(VarId, Fraction)],
     names: &BTreeMap<VarId, String>,
-) -> Result<(BTreeMap<String, Expr>, BTreeMap<String, Expr>), PfdError> {
+) -> Result<(ByCoordinate, ByCoordinate), PfdError> {
     let mut eom = BTreeMap::new();
     let mut eom_factors = BTreeMap::new();
     for (i, mut r) in eoms {

@@ -144,8 +144,9 @@ impl Registry {
         let n_coords = infos.len();
         vars.angle_parameters(&angle_parameters, &parameters, &mut infos)?;
         let n_params = parameters.len();
-        let declared: Vec<String> = parameters.iter().chain(&unknowns).cloned().collect();
-        let (parameters, param_var, pi, pi_var) = vars.parameters(declared, &mut names)?;
+        let mut parameters: Vec<String> = parameters.iter().chain(&unknowns).cloned().collect();
+        let param_var = vars.parameters(&parameters, &mut names)?;
+        let (pi, pi_var) = vars.pi(&mut parameters);
         let inverse_pairs =
             vars.inverses(&inverses, &parameters, n_params, &param_var, (pi, pi_var))?;
         let reciprocals = vars.reciprocals(&secants, &cosecants, &mut infos, n_declared)?;
@@ -753,14 +754,13 @@ impl Variables {
         Ok(())
     }
 
-    /// A variable per parameter and unknown (`declared`, names checked), then π: returns the
-    /// names with `pi` last, the variable of each name, π's id and π's variable.
-    #[allow(clippy::type_complexity)]
+    /// A variable per parameter and unknown (`declared`, names checked): the variable of each
+    /// name.
     fn parameters(
         &mut self,
-        mut declared: Vec<String>,
+        declared: &[String],
         names: &mut Names,
-    ) -> Result<(Vec<String>, HashMap<String, usize>, ParamId, usize), ExprError> {
+    ) -> Result<HashMap<String, usize>, ExprError> {
         let mut param_var = HashMap::new();
         for (i, p) in declared.iter().enumerate() {
             names.check(p)?;
@@ -770,12 +770,19 @@ impl Variables {
             );
             param_var.insert(p.clone(), v);
         }
-        // π, a positive constant of no dimension: a variable of its own, after every declared
-        // scalar (so that no other variable moves), read from `pi` and printed `pi`.
-        let pi = ParamId(declared.len());
-        declared.push(PI.to_string());
-        let pi_var = self.push(PolyVariable::Symbol(Symbol::PI), VarRole::Parameter(pi));
-        Ok((declared, param_var, pi, pi_var))
+        Ok(param_var)
+    }
+
+    /// π, a positive constant of no dimension: a variable of its own, after every declared
+    /// scalar (so that no other variable moves), read from `pi` and printed `pi`; its name goes
+    /// last in `parameters`. Returns its id and its variable.
+    fn pi(&mut self, parameters: &mut Vec<String>) -> (ParamId, usize) {
+        let pi = ParamId(parameters.len());
+        parameters.push(PI.to_string());
+        (
+            pi,
+            self.push(PolyVariable::Symbol(Symbol::PI), VarRole::Parameter(pi)),
+        )
     }
 
     /// The variable 1/p of each parameter (or π) the mechanism divides by, once each: (p,
