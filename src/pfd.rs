@@ -377,15 +377,65 @@ pub fn solve(m: &Mechanism) -> Result<Solution, PfdError> {
     solve_with_residuals(m, &mut torsor::Cache::default()).map(|(s, _)| s)
 }
 
+/// Equations of the system as (index of the theorem, or of the law after the theorems, residual).
+type Equations = Vec<(usize, Expr)>;
+
+/// Expressions by coordinate name.
+type ByCoordinate = BTreeMap<String, Expr>;
+
+/// The unknowns solved so far, each as its variable and its value.
+type Solved = Vec<(VarId, Fraction)>;
+
 /// [`solve`], also returning each declared theorem's residual (in the spec's order), then
 /// each Coulomb law's (T + f N ε, in the order of `Dynamics::laws`).
 pub fn solve_with_residuals(
     m: &Mechanism,
     cache: &mut torsor::Cache,
 ) -> Result<(Solution, Vec<Expr>), PfdError> {
+    let (rows, eoms, residuals) = equations(m, cache)?;
+    let mut cols: Vec<VarId> = Vec::new();
+    for (_, r) in &rows {
+        for v in unknowns_in(m, r) {
+            if !cols.contains(&v) {
+                cols.push(v);
+            }
+        }
+    }
+    let names: BTreeMap<VarId, String> = unknown_vars(m).into_iter().map(|(n, v)| (v, n)).collect();
+    if cols.len() != rows.len() {
+        return Err(PfdError::NotSquare {
+            equations: rows.len(),
+            unknowns: cols.iter().map(|v| names[v].clone()).collect(),
+        });
+    }
+    let (solved, conditions) = eliminate_unknowns(m, &cols, rows, &names)?;
+    let mut unknowns = BTreeMap::new();
+    for (v, value) in &solved {
+        unknowns.insert(names[v].clone(), value.clone());
+    }
+    let (eom, eom_factors) = equations_of_motion(m, eoms, &solved, &names)?;
+    Ok((
+        Solution {
+            unknowns,
+            eom,
+            conditions,
+            eom_factors,
+        },
+        residuals,
+    ))
+}
+
+/// The system's equations as (index, residual): the theorems without `eom` then Coulomb's
+/// laws (the rows that determine the unknowns), the theorems with `eom` apart, and every
+/// residual in the order [`solve_with_residuals`] returns them. Each must be linear in the
+/// unknowns.
+fn equations(
+    m: &Mechanism,
+    cache: &mut torsor::Cache,
+) -> Result<(Equations, Equations, Vec<Expr>), PfdError> {
     let mut residuals = Vec::with_capacity(m.dynamics.theorems.len());
-    let mut rows: Vec<(usize, Expr)> = Vec::new();
-    let mut eoms: Vec<(usize, Expr)> = Vec::new();
+    let mut rows: Equations = Vec::new();
+    let mut eoms: Equations = Vec::new();
     for (i, th) in m.dynamics.theorems.iter().enumerate() {
         let r = residual(m, th, cache);
         check_linear(m, &r).map_err(|(first, second)| PfdError::NotLinear {
@@ -408,49 +458,23 @@ pub fn solve_with_residuals(
         residuals.push(r.clone());
         rows.push((theorems + k, r));
     }
-    let mut cols: Vec<VarId> = Vec::new();
-    for (_, r) in &rows {
-        for v in unknowns_in(m, r) {
-            if !cols.contains(&v) {
-                cols.push(v);
-            }
-        }
-    }
-    let names: BTreeMap<VarId, String> = unknown_vars(m).into_iter().map(|(n, v)| (v, n)).collect();
-    if cols.len() != rows.len() {
-        return Err(PfdError::NotSquare {
-            equations: rows.len(),
-            unknowns: cols.iter().map(|v| names[v].clone()).collect(),
-        });
-    }
-    // Gauss–Jordan elimination, fraction-free: a pivot is a number when one exists, else a
-    // nonzero polynomial in the parameters (a length between two bearings), whose value is
-    // then a quotient and whose nonvanishing is a condition of the solution.
-    let mut solved: Vec<(VarId, Fraction)> = Vec::new();
+    Ok((rows, eoms, residuals))
+}
+
+/// Gauss–Jordan elimination of the unknowns `cols` from the square system `rows`,
+/// fraction-free: returns each unknown's value and the conditions of the solution (the
+/// pivots that are not numbers, each nonzero).
+fn eliminate_unknowns(
+    m: &Mechanism,
+    cols: &[VarId],
+    rows: Equations,
+    names: &BTreeMap<VarId, String>,
+) -> Result<(Solved, Vec<Expr>), PfdError> {
+    let mut solved: Solved = Vec::new();
     let mut conditions: Vec<Expr> = Vec::new();
     let mut pending = rows;
-    for &v in &cols {
-        let coefficient = |r: &Expr| r.derivative(v);
-        let pos = pending
-            .iter()
-            .position(|(_, r)| coefficient(r).is_nonzero_constant())
-            .or_else(|| {
-                pending
-                    .iter()
-                    .enumerate()
-                    .map(|(i, (_, r))| (i, coefficient(r)))
-                    .filter(|(_, c)| c.is_parameter_polynomial())
-                    .min_by_key(|(_, c)| c.nterms())
-                    .map(|(i, _)| i)
-            })
-            .or_else(|| {
-                // A product of parameters and cosines a loop closure divides by (L cos φ):
-                // inverted exactly, its nonvanishing a condition.
-                pending
-                    .iter()
-                    .position(|(_, r)| coefficient(r).monomial_inverse().is_ok())
-            });
-        let Some(pos) = pos else {
+    for &v in cols {
+        let Some(pos) = pivot_row(&pending, v) else {
             return Err(PfdError::NoNumericPivot {
                 unknown: names[&v].clone(),
             });
@@ -485,16 +509,49 @@ pub fn solve_with_residuals(
         }
         solved.push((v, value));
     }
-    let mut unknowns = BTreeMap::new();
-    for (v, value) in &solved {
-        unknowns.insert(names[v].clone(), value.clone());
-    }
+    Ok((solved, conditions))
+}
+
+/// The row of `pending` to solve for `v`: a pivot is a number when one exists, else a nonzero
+/// polynomial in the parameters (a length between two bearings, the fewest terms), whose
+/// value is then a quotient and whose nonvanishing is a condition of the solution.
+fn pivot_row(pending: &[(usize, Expr)], v: VarId) -> Option<usize> {
+    let coefficient = |r: &Expr| r.derivative(v);
+    pending
+        .iter()
+        .position(|(_, r)| coefficient(r).is_nonzero_constant())
+        .or_else(|| {
+            pending
+                .iter()
+                .enumerate()
+                .map(|(i, (_, r))| (i, coefficient(r)))
+                .filter(|(_, c)| c.is_parameter_polynomial())
+                .min_by_key(|(_, c)| c.nterms())
+                .map(|(i, _)| i)
+        })
+        .or_else(|| {
+            // A product of parameters and cosines a loop closure divides by (L cos φ):
+            // inverted exactly, its nonvanishing a condition.
+            pending
+                .iter()
+                .position(|(_, r)| coefficient(r).monomial_inverse().is_ok())
+        })
+}
+
+/// Each equation of motion with the solved unknowns substituted, by coordinate name, and the
+/// factor it was left multiplied by when a pivot did not divide back (only those not 1).
+fn equations_of_motion(
+    m: &Mechanism,
+    eoms: Equations,
+    solved: &[(VarId, Fraction)],
+    names: &BTreeMap<VarId, String>,
+) -> Result<(ByCoordinate, ByCoordinate), PfdError> {
     let mut eom = BTreeMap::new();
     let mut eom_factors = BTreeMap::new();
     for (i, mut r) in eoms {
         // r stays `factor` times the residual with the unknowns eliminated so far.
         let mut factor = m.reg.one();
-        for (v, value) in &solved {
+        for (v, value) in solved {
             if r.derivative(*v).is_zero() {
                 continue;
             }
@@ -525,15 +582,7 @@ pub fn solve_with_residuals(
         }
         eom.insert(name, r);
     }
-    Ok((
-        Solution {
-            unknowns,
-            eom,
-            conditions,
-            eom_factors,
-        },
-        residuals,
-    ))
+    Ok((eom, eom_factors))
 }
 
 /// Unknowns must enter linearly (no term with two unknown factors); else the two that multiply,

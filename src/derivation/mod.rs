@@ -156,10 +156,6 @@ pub struct Resolved {
 
 /// Resolves the names of a quantity in a mechanism.
 pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
-    let unknown = |what: &'static str, n: &str| ResolveError::unknown(m, q, what, n);
-    let frame = |n: &str| m.frame_of(n).ok_or_else(|| unknown("solid or frame", n));
-    let point = |n: &str| m.point(n).ok_or_else(|| unknown("point", n));
-    let solids = |n: &str| m.solids_of(n).ok_or_else(|| unknown("solid or set", n));
     let mut r = Resolved {
         point: None,
         moving_frame: None,
@@ -168,6 +164,23 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
         basis: m.default_basis,
         projection: None,
     };
+    resolve_kind(m, q, &mut r)?;
+    // The action must be in the bilan of what it acts on.
+    if let Some(a) = q.kind.action() {
+        crate::pfd::actions_of(m, &a.from, &r.solids, &a.on)
+            .map_err(|e| ResolveError::new(q, e))?;
+    }
+    resolve_basis(m, q, &mut r)?;
+    Ok(r)
+}
+
+/// The objects the quantity's kind names (its point, solids, frames), into `r`; a set's
+/// inertia in the basis of its first solid's operator.
+fn resolve_kind(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), ResolveError> {
+    let unknown = |what: &'static str, n: &str| ResolveError::unknown(m, q, what, n);
+    let frame = |n: &str| m.frame_of(n).ok_or_else(|| unknown("solid or frame", n));
+    let point = |n: &str| m.point(n).ok_or_else(|| unknown("point", n));
+    let solids = |n: &str| m.solids_of(n).ok_or_else(|| unknown("solid or set", n));
     let kinetic = |mo: &Motion, r: &mut Resolved| -> Result<(), ResolveError> {
         r.solids = solids(&mo.moving)?;
         r.reference = Some(frame(&mo.reference)?);
@@ -180,14 +193,14 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
     };
     use QuantityKind::*;
     match &q.kind {
-        Omega(mo) => kinematic(mo, &mut r)?,
+        Omega(mo) => kinematic(mo, r)?,
         Velocity { point: p, motion } | Acceleration { point: p, motion } => {
             r.point = Some(point(p)?);
-            kinematic(motion, &mut r)?;
+            kinematic(motion, r)?;
         }
         KinematicTorsor { motion, point: p } => {
             r.point = Some(point(p)?);
-            kinematic(motion, &mut r)?;
+            kinematic(motion, r)?;
         }
         // I(P,S) of a solid, or I(P,E) = Σ I(P,Si) of a set, in the basis of its first
         // solid's operator.
@@ -196,7 +209,7 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             r.solids = solids(solid)?;
             r.basis = torsor::inertia_basis(m, r.solids[0]);
         }
-        KineticResultant(mo) | DynamicResultant(mo) | KineticEnergy(mo) => kinetic(mo, &mut r)?,
+        KineticResultant(mo) | DynamicResultant(mo) | KineticEnergy(mo) => kinetic(mo, r)?,
         // Named objects checked here, before the PFD is solved: a spec's `quantities` are
         // resolved when it is loaded.
         Unknown(name) => {
@@ -237,14 +250,16 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
         | KineticTorsor { motion, point: p }
         | DynamicTorsor { motion, point: p } => {
             r.point = Some(point(p)?);
-            kinetic(motion, &mut r)?;
+            kinetic(motion, r)?;
         }
     }
-    // The action must be in the bilan of what it acts on.
-    if let Some(a) = q.kind.action() {
-        crate::pfd::actions_of(m, &a.from, &r.solids, &a.on)
-            .map_err(|e| ResolveError::new(q, e))?;
-    }
+    Ok(())
+}
+
+/// The basis the quantity asks for (`in B2`) and its projection vector (`.x2`), into `r`;
+/// without a basis, the projection's is used.
+fn resolve_basis(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), ResolveError> {
+    let unknown = |what: &'static str, n: &str| ResolveError::unknown(m, q, what, n);
     if let Some(b) = &q.basis {
         r.basis = m
             .frames
@@ -265,7 +280,7 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
             Axis::parse(&axis.to_string()).ok_or_else(|| unknown("axis", &axis.to_string()))?,
         ));
     }
-    Ok(r)
+    Ok(())
 }
 
 /// What a step computes, for printing in the course's notation.
@@ -426,17 +441,45 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
         );
     }
     let r = resolve(m, q)?;
-    let b = r.basis;
     let mut steps = Vec::new();
-    let reference = r.reference.unwrap_or(m.frames.ground());
+    let Some(found) = found(m, q, &r, &mut steps)? else {
+        return dynamics::derive(m, q, &mut Shared::default(), true);
+    };
+    // A vector is projected where the quantity asks (Ω(2/0).x1), else written in its basis.
+    let value = match found {
+        Found::Value(v) => v,
+        Found::Vector(v) => match r.projection {
+            Some((f, axis)) => {
+                let u = Vector::along(f, axis, m.reg.one());
+                Value::Scalar(v.dot(&m.frames, &u))
+            }
+            None => vec_value(m, &v, r.basis),
+        },
+    };
+    Ok(Derivation {
+        quantity: q.clone(),
+        steps,
+        value,
+    })
+}
+
+/// The value of `q`, whose names `r` holds, its steps pushed on `steps`: a vector still to
+/// write in the requested basis, or a value in its final form; `None` for a quantity of the
+/// PFD, derived by [`dynamics::derive`].
+fn found(
+    m: &Mechanism,
+    q: &Quantity,
+    r: &Resolved,
+    steps: &mut Vec<Step>,
+) -> Result<Option<Found>, ResolveError> {
     use QuantityKind::*;
-    let found = match &q.kind {
-        KineticEnergy(_) | Unknown(_) | Eom(_) => {
-            return dynamics::derive(m, q, &mut Shared::default(), true);
-        }
+    let reference = r.reference.unwrap_or(m.frames.ground());
+    let b = r.basis;
+    Ok(Some(match &q.kind {
+        KineticEnergy(_) | Unknown(_) | Eom(_) => return Ok(None),
         Omega(_) => Found::Vector(omega(m, r.moving_frame.unwrap_or(reference), reference)),
         Power { action, .. } => Found::Value(Value::Scalar(actions::power(
-            m, q, action, &r, reference, &mut steps,
+            m, q, action, r, reference, steps,
         )?)),
         EquivalentInertia(c) => {
             let coord = m
@@ -447,13 +490,13 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
                 crate::pfd::equivalent_inertia(m, coord).map_err(|e| ResolveError::new(q, e))?;
             Found::Value(Value::Scalar(j))
         }
-        InternalPower(_) => Found::Value(Value::Scalar(actions::internal_power(m, &r, &mut steps))),
-        Derivative { of, .. } => match derivative::derive(m, q, of, r.reference, b, &mut steps)? {
+        InternalPower(_) => Found::Value(Value::Scalar(actions::internal_power(m, r, steps))),
+        Derivative { of, .. } => match derivative::derive(m, q, of, r.reference, b, steps)? {
             derivative::Derived::Scalar(e) => Found::Value(Value::Scalar(e)),
             derivative::Derived::Vector(v) => Found::Vector(v),
         },
         ActionResultant(action) | ActionMoment { action, .. } | ActionTorsor { action, .. } => {
-            let t = actions::total(m, q, action, &r, &mut steps)?;
+            let t = actions::total(m, q, action, r, steps)?;
             match &q.kind {
                 ActionResultant(_) => Found::Vector(t.resultant),
                 ActionMoment { .. } => Found::Vector(t.moment),
@@ -481,48 +524,15 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
         Inertia { .. } if r.solids.len() == 1 => {
             let s = r.solids[0];
             let a = r.point.unwrap_or(m.body(s).centre);
-            Found::Value(Value::Matrix(inertia_steps(m, s, a, b, &mut steps)))
+            Found::Value(Value::Matrix(inertia_steps(m, s, a, b, steps)))
         }
         // A set: each solid's operator at the point (Huygens), then their sum.
-        Inertia { point, .. } => {
-            let a = r.point.unwrap_or(m.points.origin());
-            let mut total: Option<crate::inertia::Inertia> = None;
-            for &s in &r.solids {
-                let ia = inertia_steps(m, s, a, b, &mut steps);
-                let solid = m.body(s).name.clone();
-                steps.push(Step {
-                    kind: StepKind::Quantity(QuantityKind::Inertia {
-                        point: point.clone(),
-                        solid: solid.clone(),
-                    }),
-                    label: format!("I({point},{solid})"),
-                    theorem: moments::inertia_theorem(m, s, a),
-                    value: Value::Matrix(ia.clone()),
-                });
-                total = Some(match total {
-                    None => ia,
-                    Some(t) => t.plus(&ia),
-                });
-            }
-            let total = total.expect("a set holds at least one solid");
-            Found::Value(Value::Matrix(total))
-        }
-        KineticResultant(_) | DynamicResultant(_) => {
-            let v = if matches!(q.kind, DynamicResultant(_)) {
-                torsor::dynamic_resultant(m, &r.solids, reference)
-            } else {
-                torsor::kinetic_resultant(m, &r.solids, reference)
-            };
-            if r.solids.iter().all(|&s| m.body(s).massless) {
-                let kind = q.kind.clone();
-                steps.push(massless_step(kind, vec_value(m, &v, b)));
-            }
-            Found::Vector(v)
-        }
+        Inertia { point, .. } => Found::Value(Value::Matrix(set_inertia(m, r, point, steps))),
+        KineticResultant(_) | DynamicResultant(_) => Found::Vector(resultant(m, q, r, steps)),
         KineticMoment { .. } | DynamicMoment { .. } => {
             let a = r.point.unwrap_or(m.points.origin());
             let dynamic = matches!(q.kind, DynamicMoment { .. });
-            let total = moment_steps(m, &r.solids, a, reference, b, dynamic, &mut steps);
+            let total = moment_steps(m, &r.solids, a, reference, b, dynamic, steps);
             Found::Vector(total)
         }
         KinematicTorsor { .. } => {
@@ -533,26 +543,56 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
         KineticTorsor { .. } | DynamicTorsor { .. } => {
             let a = r.point.unwrap_or(m.points.origin());
             let dynamic = matches!(q.kind, DynamicTorsor { .. });
-            let t = solids_torsor(m, &r.solids, a, reference, b, dynamic, &mut steps);
+            let t = solids_torsor(m, &r.solids, a, reference, b, dynamic, steps);
             Found::Value(torsor_value(m, &t, b))
         }
+    }))
+}
+
+/// I(A,E) of a set at the point named `point`: each solid's operator at A (Huygens, its steps
+/// and a step of its own), then their sum.
+fn set_inertia(
+    m: &Mechanism,
+    r: &Resolved,
+    point: &str,
+    steps: &mut Vec<Step>,
+) -> crate::inertia::Inertia {
+    let b = r.basis;
+    let a = r.point.unwrap_or(m.points.origin());
+    let mut total: Option<crate::inertia::Inertia> = None;
+    for &s in &r.solids {
+        let ia = inertia_steps(m, s, a, b, steps);
+        let solid = m.body(s).name.clone();
+        steps.push(Step {
+            kind: StepKind::Quantity(QuantityKind::Inertia {
+                point: point.to_string(),
+                solid: solid.clone(),
+            }),
+            label: format!("I({point},{solid})"),
+            theorem: moments::inertia_theorem(m, s, a),
+            value: Value::Matrix(ia.clone()),
+        });
+        total = Some(match total {
+            None => ia,
+            Some(t) => t.plus(&ia),
+        });
+    }
+    total.expect("a set holds at least one solid")
+}
+
+/// Rc or Rd of the solids `r` holds (a step when all are massless, it is then zero).
+fn resultant(m: &Mechanism, q: &Quantity, r: &Resolved, steps: &mut Vec<Step>) -> Vector {
+    let reference = r.reference.unwrap_or(m.frames.ground());
+    let v = if matches!(q.kind, QuantityKind::DynamicResultant(_)) {
+        torsor::dynamic_resultant(m, &r.solids, reference)
+    } else {
+        torsor::kinetic_resultant(m, &r.solids, reference)
     };
-    // A vector is projected where the quantity asks (Ω(2/0).x1), else written in its basis.
-    let value = match found {
-        Found::Value(v) => v,
-        Found::Vector(v) => match r.projection {
-            Some((f, axis)) => {
-                let u = Vector::along(f, axis, m.reg.one());
-                Value::Scalar(v.dot(&m.frames, &u))
-            }
-            None => vec_value(m, &v, b),
-        },
-    };
-    Ok(Derivation {
-        quantity: q.clone(),
-        steps,
-        value,
-    })
+    if r.solids.iter().all(|&s| m.body(s).massless) {
+        let kind = q.kind.clone();
+        steps.push(massless_step(kind, vec_value(m, &v, r.basis)));
+    }
+    v
 }
 
 /// Values only, by the fastest exact route: kinetic and dynamic moments and torsors by

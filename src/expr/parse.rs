@@ -182,42 +182,12 @@ impl<'a> Walker<'a> {
         Ok(p.get_constant())
     }
 
+    /// The expression a parsed atom stands for, in the registry's variables.
     pub(super) fn scalar(&self, v: AtomView) -> Result<Expr, ExprError> {
         let reg = self.reg;
         match v {
             AtomView::Num(_) => Ok(reg.constant(self.number(v)?)),
-            AtomView::Var(var) => {
-                // π: `pi` as typed, which symbolica reads as its own constant.
-                if var.get_symbol() == Symbol::PI {
-                    return Ok(reg.pi());
-                }
-                let name = var.get_symbol().get_stripped_name().to_string();
-                if name == super::PI {
-                    return Ok(reg.pi());
-                }
-                if let Some(p) = reg.param(&name) {
-                    return Ok(p);
-                }
-                if let Some(q) = reg.coord(&name) {
-                    return reg.value(q).ok_or_else(|| {
-                        self.unsupported(&format!(
-                            "the angle `{name}` is written as itself in no expression of the \
-                             spec, so no result holds it: here it enters only through \
-                             sin({name}) and cos({name})"
-                        ))
-                    });
-                }
-                if let Some(e) = reg.alias(&name) {
-                    return Ok(e);
-                }
-                if let Some(e) = (self.names)(&name) {
-                    return Ok(e);
-                }
-                if name == TIME {
-                    return Err(self.unsupported(TIME_IN_PHASES));
-                }
-                Err(self.unknown_name(&name))
-            }
+            AtomView::Var(var) => self.variable(var.get_symbol()),
             AtomView::Add(a) => {
                 // Summed pairwise: adding n terms one by one to a growing sum is quadratic
                 // (a chain's equation of motion holds 10^5 terms).
@@ -237,78 +207,126 @@ impl<'a> Walker<'a> {
             }
             AtomView::Pow(p) => {
                 let (base, exp) = p.get_base_exp();
-                let e = self.number(exp)?;
-                if !e.is_integer() {
-                    return Err(self.unsupported("only integer powers are allowed"));
-                }
-                let n = e.to_f64() as i64;
-                if n.abs() > MAX_POWER {
-                    return Err(self.unsupported(&format!("powers are limited to ±{MAX_POWER}")));
-                }
-                if n >= 0 {
-                    let b = self.scalar(base)?;
-                    if !reg.zero().product_fits(&b, 0) || !b.product_fits(&reg.zero(), n as u32) {
-                        return Err(self.degree_too_high());
-                    }
-                    if b.power_terms_bound(n as u32) > super::MAX_EXPANDED_TERMS {
-                        return Err(self.too_many_terms());
-                    }
-                    // The result may be small while the work to reach it is not: each
-                    // product is charged before it is done (see `charge`).
-                    let mut acc = reg.one();
-                    for _ in 0..n {
-                        self.charge(&acc, &b)?;
-                        acc = &acc * &b;
-                    }
-                    return Ok(acc);
-                }
-                // A negative power of a number, or of a product of the parameters the
-                // mechanism divides by (their 1/p variables): the canonical form is a
-                // polynomial in these.
-                let b = self.scalar(base)?;
-                match b.as_rational() {
-                    Some(r) if !r.is_zero() => Ok(reg.constant(r.inv().pow((-n) as u64))),
-                    Some(_) => Err(self.unsupported("division by zero")),
-                    None => {
-                        let inv = b.monomial_inverse().map_err(|why| self.unsupported(&why))?;
-                        if !inv.product_fits(&reg.zero(), (-n) as u32) {
-                            return Err(self.degree_too_high());
-                        }
-                        Ok(inv.pow((-n) as u32))
-                    }
-                }
+                self.power(base, exp)
             }
             AtomView::Fun(f) => {
-                let s = f.get_symbol();
-                let name = s.get_stripped_name();
-                if f.get_nargs() != 1 {
-                    return Err(self.unsupported(&format!("`{name}` takes one argument")));
-                }
-                let arg = f.get(0);
-                if s == Symbol::SIN || s == Symbol::COS {
-                    let (c, sn) = self.trig(arg)?;
-                    return Ok(if s == Symbol::SIN { sn } else { c });
-                }
-                let order = match name {
-                    "dot" => 1,
-                    "ddot" => 2,
-                    _ => {
-                        return Err(self.unsupported(&format!(
-                            "unknown function `{name}` (known: sin, cos, dot, ddot)"
-                        )));
-                    }
-                };
-                let AtomView::Var(qv) = arg else {
-                    return Err(self.unsupported(&format!("{name}() takes a coordinate name")));
-                };
-                let qn = super::words::typed_name(qv.get_symbol());
-                let qn = qn.as_str();
-                let q = reg.coord(qn).ok_or_else(|| {
-                    self.unsupported(&format!("{name}({qn}): `{qn}` is not a coordinate"))
-                })?;
-                Ok(reg.rate(q, order))
+                let arg = (f.get_nargs() == 1).then(|| f.get(0));
+                self.function(f.get_symbol(), arg)
             }
         }
+    }
+
+    /// A name: π, a parameter, a coordinate written as itself, an alias, or a name the
+    /// caller defines; the time alone and an unknown name are refused.
+    fn variable(&self, symbol: Symbol) -> Result<Expr, ExprError> {
+        let reg = self.reg;
+        // π: `pi` as typed, which symbolica reads as its own constant.
+        if symbol == Symbol::PI {
+            return Ok(reg.pi());
+        }
+        let name = symbol.get_stripped_name().to_string();
+        if name == super::PI {
+            return Ok(reg.pi());
+        }
+        if let Some(p) = reg.param(&name) {
+            return Ok(p);
+        }
+        if let Some(q) = reg.coord(&name) {
+            return reg.value(q).ok_or_else(|| {
+                self.unsupported(&format!(
+                    "the angle `{name}` is written as itself in no expression of the \
+                     spec, so no result holds it: here it enters only through \
+                     sin({name}) and cos({name})"
+                ))
+            });
+        }
+        if let Some(e) = reg.alias(&name) {
+            return Ok(e);
+        }
+        if let Some(e) = (self.names)(&name) {
+            return Ok(e);
+        }
+        if name == TIME {
+            return Err(self.unsupported(TIME_IN_PHASES));
+        }
+        Err(self.unknown_name(&name))
+    }
+
+    /// base^exp for an integer exponent: expanded when nonnegative (each product charged
+    /// first), else the inverse of a number or of a monomial of the inverted parameters.
+    fn power(&self, base: AtomView, exp: AtomView) -> Result<Expr, ExprError> {
+        let reg = self.reg;
+        let e = self.number(exp)?;
+        if !e.is_integer() {
+            return Err(self.unsupported("only integer powers are allowed"));
+        }
+        let n = e.to_f64() as i64;
+        if n.abs() > MAX_POWER {
+            return Err(self.unsupported(&format!("powers are limited to ±{MAX_POWER}")));
+        }
+        if n >= 0 {
+            let b = self.scalar(base)?;
+            if !reg.zero().product_fits(&b, 0) || !b.product_fits(&reg.zero(), n as u32) {
+                return Err(self.degree_too_high());
+            }
+            if b.power_terms_bound(n as u32) > super::MAX_EXPANDED_TERMS {
+                return Err(self.too_many_terms());
+            }
+            // The result may be small while the work to reach it is not: each
+            // product is charged before it is done (see `charge`).
+            let mut acc = reg.one();
+            for _ in 0..n {
+                self.charge(&acc, &b)?;
+                acc = &acc * &b;
+            }
+            return Ok(acc);
+        }
+        // A negative power of a number, or of a product of the parameters the
+        // mechanism divides by (their 1/p variables): the canonical form is a
+        // polynomial in these.
+        let b = self.scalar(base)?;
+        match b.as_rational() {
+            Some(r) if !r.is_zero() => Ok(reg.constant(r.inv().pow((-n) as u64))),
+            Some(_) => Err(self.unsupported("division by zero")),
+            None => {
+                let inv = b.monomial_inverse().map_err(|why| self.unsupported(&why))?;
+                if !inv.product_fits(&reg.zero(), (-n) as u32) {
+                    return Err(self.degree_too_high());
+                }
+                Ok(inv.pow((-n) as u32))
+            }
+        }
+    }
+
+    /// sin, cos, dot or ddot of its one argument (`None` when there is not exactly one).
+    fn function(&self, s: Symbol, arg: Option<AtomView>) -> Result<Expr, ExprError> {
+        let reg = self.reg;
+        let name = s.get_stripped_name();
+        let Some(arg) = arg else {
+            return Err(self.unsupported(&format!("`{name}` takes one argument")));
+        };
+        if s == Symbol::SIN || s == Symbol::COS {
+            let (c, sn) = self.trig(arg)?;
+            return Ok(if s == Symbol::SIN { sn } else { c });
+        }
+        let order = match name {
+            "dot" => 1,
+            "ddot" => 2,
+            _ => {
+                return Err(self.unsupported(&format!(
+                    "unknown function `{name}` (known: sin, cos, dot, ddot)"
+                )));
+            }
+        };
+        let AtomView::Var(qv) = arg else {
+            return Err(self.unsupported(&format!("{name}() takes a coordinate name")));
+        };
+        let qn = super::words::typed_name(qv.get_symbol());
+        let qn = qn.as_str();
+        let q = reg.coord(qn).ok_or_else(|| {
+            self.unsupported(&format!("{name}({qn}): `{qn}` is not a coordinate"))
+        })?;
+        Ok(reg.rate(q, order))
     }
 
     /// (cos a, sin a) of an angle a = Σ nᵢ qᵢ + k π/2, by the angle-addition formulas.

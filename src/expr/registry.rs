@@ -115,6 +115,9 @@ impl Registry {
         RegistryBuilder::default()
     }
 
+    /// Builds the registry from its declarations: the variables in their fixed order
+    /// (coordinates and their rates, constant angles, parameters and unknowns, π, inverses,
+    /// reciprocals), then the aliases and the imposed rates, parsed against them.
     pub(super) fn build(b: RegistryBuilder) -> Result<Rc<Registry>, ExprError> {
         let RegistryBuilder {
             parameters,
@@ -130,239 +133,25 @@ impl Registry {
             holonomic,
             display_ranks,
         } = b;
-        for w in &phases {
-            if !parameters.contains(w) || angle_parameters.contains(w) {
-                return Err(ExprError::Declaration(format!(
-                    "the pulsation `{w}` of `{w}*t` is not a parameter (the time enters as \
-                     cos(Omega*t), Omega a parameter declared in rad/s)"
-                )));
-            }
-        }
         let n_declared = coords.len();
-        let mut coords = coords;
-        for w in &phases {
-            let name = format!("{w}*t");
-            if !coords.iter().any(|c| c.0 == name) {
-                coords.push((name, CoordinateKind::Angle, Some(w.clone())));
-            }
-        }
-        let (parameters, coords, unknowns, raw_angles, angle_parameters) = (
-            &parameters[..],
-            &coords[..],
-            &unknowns[..],
-            &raw_angles[..],
-            &angle_parameters[..],
-        );
+        let coords = with_phases(coords, &phases, &parameters, &angle_parameters)?;
         // Before any symbolica call: a second thread using symbolica concurrently would abort
         // the process in its restricted mode.
         let guard = ThreadGuard::acquire()?;
-        let mut vars: Vec<PolyVariable> = Vec::new();
-        let mut roles = Vec::new();
-        let mut seen: HashMap<String, ()> = HashMap::new();
-        let mut check = |n: &str| -> Result<(), ExprError> {
-            check_identifier(n).map_err(ExprError::Declaration)?;
-            if RESERVED.contains(&n) {
-                return Err(ExprError::Declaration(reserved_word(n)));
-            }
-            if seen.insert(n.to_string(), ()).is_some() {
-                return Err(ExprError::Declaration(format!("`{n}` is declared twice")));
-            }
-            Ok(())
-        };
-        let mut infos = Vec::new();
-        for (i, (name, kind, rate)) in coords.iter().enumerate() {
-            let phase = (i >= n_declared).then(|| rate.clone()).flatten();
-            let id = CoordId(i);
-            let q = match &phase {
-                // The atom Ω t itself: no symbol of the user's can clash with it.
-                Some(w) => {
-                    Atom::var(symbolica::symbol!(w.as_str())) * Atom::var(symbolica::symbol!("t"))
-                }
-                None => {
-                    check(name)?;
-                    Atom::var(symbolica::symbol!(name.as_str()))
-                }
-            };
-            let mut info = CoordInfo {
-                name: name.clone(),
-                kind: *kind,
-                value: None,
-                trig: None,
-                rates: None,
-                imposed_rate: None,
-                constant: false,
-                phase,
-                driven: false,
-                nonholonomic: false,
-                cos_reduced: false,
-            };
-            match kind {
-                CoordinateKind::Angle => {
-                    // sin before cos: in lex order sin² leads sin² + cos² − 1.
-                    // A function variable holds the whole call, sin(q), not its argument.
-                    vars.push(PolyVariable::Function(
-                        Symbol::SIN,
-                        symbolica::function!(Symbol::SIN, q.clone()),
-                    ));
-                    roles.push(VarRole::Sin(id));
-                    vars.push(PolyVariable::Function(
-                        Symbol::COS,
-                        symbolica::function!(Symbol::COS, q.clone()),
-                    ));
-                    roles.push(VarRole::Cos(id));
-                    info.trig = Some((vars.len() - 1, vars.len() - 2));
-                    if raw_angles.contains(name) {
-                        vars.push(PolyVariable::Symbol(symbolica::symbol!(name.as_str())));
-                        roles.push(VarRole::Value(id));
-                        info.value = Some(vars.len() - 1);
-                    }
-                }
-                CoordinateKind::Length => {
-                    vars.push(PolyVariable::Symbol(symbolica::symbol!(name.as_str())));
-                    roles.push(VarRole::Value(id));
-                    info.value = Some(vars.len() - 1);
-                }
-            }
-            if rate.is_none() {
-                let mut r = [0; 3];
-                for (k, slot) in r.iter_mut().enumerate() {
-                    let order = k as u8 + 1;
-                    vars.push(PolyVariable::Function(
-                        rate_symbol(order),
-                        symbolica::function!(rate_symbol(order), q.clone()),
-                    ));
-                    roles.push(VarRole::Rate(id, order));
-                    *slot = vars.len() - 1;
-                }
-                info.rates = Some(r);
-            }
-            infos.push(info);
-        }
+        let mut vars = Variables::default();
+        let mut names = Names::default();
+        let mut infos = vars.coordinates(&coords, n_declared, &raw_angles, &mut names)?;
         let n_coords = infos.len();
-        for (k, name) in angle_parameters.iter().enumerate() {
-            if !parameters.contains(name) {
-                return Err(ExprError::Declaration(format!(
-                    "the angle parameter `{name}` is not a parameter"
-                )));
-            }
-            if angle_parameters[..k].contains(name) {
-                return Err(ExprError::Declaration(format!(
-                    "`{name}` is declared twice"
-                )));
-            }
-            let id = CoordId(infos.len());
-            let a = Atom::var(symbolica::symbol!(name.as_str()));
-            vars.push(PolyVariable::Function(
-                Symbol::SIN,
-                symbolica::function!(Symbol::SIN, a.clone()),
-            ));
-            roles.push(VarRole::Sin(id));
-            vars.push(PolyVariable::Function(
-                Symbol::COS,
-                symbolica::function!(Symbol::COS, a),
-            ));
-            roles.push(VarRole::Cos(id));
-            infos.push(CoordInfo {
-                name: name.clone(),
-                kind: CoordinateKind::Angle,
-                value: None,
-                trig: Some((vars.len() - 1, vars.len() - 2)),
-                rates: None,
-                imposed_rate: None,
-                constant: true,
-                phase: None,
-                driven: false,
-                nonholonomic: false,
-                cos_reduced: false,
-            });
-        }
-        let mut param_var = HashMap::new();
+        vars.angle_parameters(&angle_parameters, &parameters, &mut infos)?;
         let n_params = parameters.len();
-        let mut parameters: Vec<String> = parameters.iter().chain(unknowns).cloned().collect();
-        for (i, p) in parameters.iter().enumerate() {
-            check(p)?;
-            vars.push(PolyVariable::Symbol(symbolica::symbol!(p.as_str())));
-            roles.push(VarRole::Parameter(ParamId(i)));
-            param_var.insert(p.clone(), vars.len() - 1);
-        }
-        // π, a positive constant of no dimension: a variable of its own, after every declared
-        // scalar (so that no other variable moves), read from `pi` and printed `pi`.
-        let pi = ParamId(parameters.len());
-        parameters.push(PI.to_string());
-        vars.push(PolyVariable::Symbol(Symbol::PI));
-        roles.push(VarRole::Parameter(pi));
-        let pi_var = vars.len() - 1;
-        let mut inverse_pairs = Vec::new();
-        for name in &inverses {
-            let found = match name.as_str() {
-                PI => Some((pi, pi_var)),
-                _ => param_var
-                    .get(name)
-                    .filter(|_| parameters[..n_params].contains(name))
-                    .map(|&v| {
-                        (
-                            ParamId(
-                                parameters
-                                    .iter()
-                                    .position(|x| x == name)
-                                    .unwrap_or_default(),
-                            ),
-                            v,
-                        )
-                    }),
-            };
-            let Some((p, v)) = found else {
-                return Err(ExprError::Declaration(format!(
-                    "cannot divide by `{name}`: a text may divide only by parameters (not by a \
-                     coordinate, a rate or an unknown)"
-                )));
-            };
-            if inverse_pairs.iter().any(|&(q, _, _)| q == p) {
-                continue;
-            }
-            vars.push(PolyVariable::Function(
-                inverse_symbol(),
-                symbolica::function!(inverse_symbol(), vars[v].to_atom()),
-            ));
-            roles.push(VarRole::Inverse(p));
-            inverse_pairs.push((p, v, vars.len() - 1));
-        }
-        let mut reciprocals = Vec::new();
-        let over = secants
-            .iter()
-            .map(|n| (n, Trig::Cos))
-            .chain(cosecants.iter().map(|n| (n, Trig::Sin)));
-        for (name, t) in over {
-            let found = infos
-                .iter()
-                .enumerate()
-                .take(n_declared)
-                .find(|(_, c)| &c.name == name && c.kind == CoordinateKind::Angle);
-            let Some((q, (ci, si))) = found.and_then(|(q, c)| Some((q, c.trig?))) else {
-                return Err(ExprError::Declaration(format!(
-                    "cannot divide by `{}({name})`: `{name}` is not an angle coordinate",
-                    t.name()
-                )));
-            };
-            if secants.contains(name) && cosecants.contains(name) {
-                return Err(ExprError::Declaration(format!(
-                    "cannot divide by both `cos({name})` and `sin({name})`"
-                )));
-            }
-            vars.push(PolyVariable::Function(
-                reciprocal_symbol(t),
-                symbolica::function!(
-                    reciprocal_symbol(t),
-                    Atom::var(symbolica::symbol!(name.as_str()))
-                ),
-            ));
-            roles.push(VarRole::Reciprocal(CoordId(q), t));
-            let v = if t == Trig::Cos { ci } else { si };
-            reciprocals.push((CoordId(q), t, v, vars.len() - 1));
-            infos[q].cos_reduced = t == Trig::Sin;
-        }
+        let mut parameters: Vec<String> = parameters.iter().chain(&unknowns).cloned().collect();
+        let param_var = vars.parameters(&parameters, &mut names)?;
+        let (pi, pi_var) = vars.pi(&mut parameters);
+        let inverse_pairs =
+            vars.inverses(&inverses, &parameters, n_params, &param_var, (pi, pi_var))?;
+        let reciprocals = vars.reciprocals(&secants, &cosecants, &mut infos, n_declared)?;
         for (n, _) in &aliases {
-            check(n)?;
+            names.check(n)?;
         }
         // Constant angle parameters are found by `angle`, not by `coord`.
         let coord_by_name = infos
@@ -370,6 +159,7 @@ impl Registry {
             .enumerate()
             .map(|(i, c)| (c.name.clone(), CoordId(i)))
             .collect();
+        let Variables { vars, roles } = vars;
         let role_index = roles.iter().enumerate().map(|(i, r)| (*r, i)).collect();
         let mut reg = Registry {
             _guard: guard,
@@ -388,29 +178,37 @@ impl Registry {
             inverses: inverse_pairs,
             reciprocals,
         };
-        // Aliases, then imposed rates, are expressions in the parameters: parse them with a
-        // registry that shares the same variable list (and the aliases read so far).
-        let snapshot = |reg: &Registry| -> Result<Rc<Registry>, ExprError> {
-            Ok(Rc::new(Registry {
-                _guard: ThreadGuard::acquire()?,
-                vars: reg.vars.clone(),
-                roles: reg.roles.clone(),
-                role_index: reg.role_index.clone(),
-                parameters: reg.parameters.clone(),
-                n_params: reg.n_params,
-                pi: reg.pi,
-                param_var: reg.param_var.clone(),
-                coords: reg.coords.clone(),
-                n_coords: reg.n_coords,
-                coord_by_name: reg.coord_by_name.clone(),
-                display_ranks: Vec::new(),
-                aliases: reg.aliases.clone(),
-                inverses: reg.inverses.clone(),
-                reciprocals: reg.reciprocals.clone(),
-            }))
-        };
-        for (name, text) in &aliases {
-            let e = snapshot(&reg)?.parse(text)?;
+        reg.read_aliases(&aliases)?;
+        reg.impose_rates(&coords, &holonomic)?;
+        Ok(Rc::new(reg))
+    }
+
+    /// A registry that shares this one's variable list and the aliases read so far: aliases,
+    /// then imposed rates, are expressions in the parameters, parsed with it.
+    fn snapshot(&self) -> Result<Rc<Registry>, ExprError> {
+        Ok(Rc::new(Registry {
+            _guard: ThreadGuard::acquire()?,
+            vars: self.vars.clone(),
+            roles: self.roles.clone(),
+            role_index: self.role_index.clone(),
+            parameters: self.parameters.clone(),
+            n_params: self.n_params,
+            pi: self.pi,
+            param_var: self.param_var.clone(),
+            coords: self.coords.clone(),
+            n_coords: self.n_coords,
+            coord_by_name: self.coord_by_name.clone(),
+            display_ranks: Vec::new(),
+            aliases: self.aliases.clone(),
+            inverses: self.inverses.clone(),
+            reciprocals: self.reciprocals.clone(),
+        }))
+    }
+
+    /// Reads each alias, in declaration order, as an expression of the parameters only.
+    fn read_aliases(&mut self, aliases: &[(String, String)]) -> Result<(), ExprError> {
+        for (name, text) in aliases {
+            let e = self.snapshot()?.parse(text)?;
             if !(e.is_zero() || e.is_parameter_polynomial()) {
                 return Err(ExprError::Unsupported {
                     input: text.clone(),
@@ -420,45 +218,55 @@ impl Registry {
                     ),
                 });
             }
-            reg.aliases.push((name.clone(), e.into_poly()));
+            self.aliases.push((name.clone(), e.into_poly()));
         }
-        if coords.iter().any(|c| c.2.is_some()) {
-            let base = snapshot(&reg)?;
-            for (i, (_, _, rate)) in coords.iter().enumerate() {
-                if let Some(r) = rate {
-                    // The rate of a coordinate whose rate is itself imposed reads as 0 in
-                    // `base`: refused by name rather than silently dropped.
-                    let compact: String = r.chars().filter(|c| !c.is_whitespace()).collect();
-                    if let Some((other, _, _)) = coords
-                        .iter()
-                        .find(|(n, _, w)| w.is_some() && compact.contains(&format!("dot({n})")))
-                    {
-                        return Err(ExprError::Unsupported {
-                            input: r.clone(),
-                            reason: format!(
-                                "the rate of `{other}` is imposed too: write the rate with the \
-                                 coordinates whose rates are free"
-                            ),
-                        });
-                    }
-                    let e = base.parse(r)?;
-                    let driven =
-                        super::rates::driven_by(&base, CoordId(i), &e).map_err(|reason| {
-                            ExprError::Unsupported {
-                                input: r.clone(),
-                                reason,
-                            }
-                        })?;
-                    reg.coords[i].imposed_rate = Some(e.into_poly());
-                    reg.coords[i].driven = driven.is_some();
-                    // A rate solved from a loop closure f(q) = 0 is holonomic, whatever its
-                    // coefficients hold.
-                    reg.coords[i].nonholonomic =
-                        driven == Some(false) && !holonomic.contains(&reg.coords[i].name);
+        Ok(())
+    }
+
+    /// Reads the imposed rates (the third field of `coords`) and records, per coordinate,
+    /// whether it is driven and whether its rate is nonholonomic.
+    fn impose_rates(
+        &mut self,
+        coords: &[(String, CoordinateKind, Option<String>)],
+        holonomic: &[String],
+    ) -> Result<(), ExprError> {
+        if !coords.iter().any(|c| c.2.is_some()) {
+            return Ok(());
+        }
+        let base = self.snapshot()?;
+        for (i, (_, _, rate)) in coords.iter().enumerate() {
+            if let Some(r) = rate {
+                // The rate of a coordinate whose rate is itself imposed reads as 0 in
+                // `base`: refused by name rather than silently dropped.
+                let compact: String = r.chars().filter(|c| !c.is_whitespace()).collect();
+                if let Some((other, _, _)) = coords
+                    .iter()
+                    .find(|(n, _, w)| w.is_some() && compact.contains(&format!("dot({n})")))
+                {
+                    return Err(ExprError::Unsupported {
+                        input: r.clone(),
+                        reason: format!(
+                            "the rate of `{other}` is imposed too: write the rate with the \
+                             coordinates whose rates are free"
+                        ),
+                    });
                 }
+                let e = base.parse(r)?;
+                let driven = super::rates::driven_by(&base, CoordId(i), &e).map_err(|reason| {
+                    ExprError::Unsupported {
+                        input: r.clone(),
+                        reason,
+                    }
+                })?;
+                self.coords[i].imposed_rate = Some(e.into_poly());
+                self.coords[i].driven = driven.is_some();
+                // A rate solved from a loop closure f(q) = 0 is holonomic, whatever its
+                // coefficients hold.
+                self.coords[i].nonholonomic =
+                    driven == Some(false) && !holonomic.contains(&self.coords[i].name);
             }
         }
-        Ok(Rc::new(reg))
+        Ok(())
     }
 
     /// The parameters, in declaration order.
@@ -771,5 +579,303 @@ impl Registry {
     /// ```
     pub fn parse_angle(self: &Rc<Self>, s: &str) -> Result<LinearAngle, ExprError> {
         parse::parse_angle(self, s)
+    }
+}
+
+/// The declared coordinates followed by one coordinate `w*t` per pulsation `w` (each a
+/// parameter that is not an angle), whose imposed rate field holds `w`.
+fn with_phases(
+    mut coords: Vec<(String, CoordinateKind, Option<String>)>,
+    phases: &[String],
+    parameters: &[String],
+    angle_parameters: &[String],
+) -> Result<Vec<(String, CoordinateKind, Option<String>)>, ExprError> {
+    for w in phases {
+        if !parameters.contains(w) || angle_parameters.contains(w) {
+            return Err(ExprError::Declaration(format!(
+                "the pulsation `{w}` of `{w}*t` is not a parameter (the time enters as \
+                 cos(Omega*t), Omega a parameter declared in rad/s)"
+            )));
+        }
+    }
+    for w in phases {
+        let name = format!("{w}*t");
+        if !coords.iter().any(|c| c.0 == name) {
+            coords.push((name, CoordinateKind::Angle, Some(w.clone())));
+        }
+    }
+    Ok(coords)
+}
+
+/// The names declared so far, each checked once: an identifier, not reserved, not twice.
+#[derive(Default)]
+struct Names(HashMap<String, ()>);
+
+impl Names {
+    /// Refuses `n` if it is not an identifier, is reserved, or was declared before.
+    fn check(&mut self, n: &str) -> Result<(), ExprError> {
+        check_identifier(n).map_err(ExprError::Declaration)?;
+        if RESERVED.contains(&n) {
+            return Err(ExprError::Declaration(reserved_word(n)));
+        }
+        if self.0.insert(n.to_string(), ()).is_some() {
+            return Err(ExprError::Declaration(format!("`{n}` is declared twice")));
+        }
+        Ok(())
+    }
+}
+
+/// The polynomial variables of a registry being built, each with its role, in order.
+#[derive(Default)]
+struct Variables {
+    vars: Vec<PolyVariable>,
+    roles: Vec<VarRole>,
+}
+
+impl Variables {
+    /// Appends a variable with its role; returns its index.
+    fn push(&mut self, var: PolyVariable, role: VarRole) -> usize {
+        self.vars.push(var);
+        self.roles.push(role);
+        self.vars.len() - 1
+    }
+
+    /// The variables sin q and cos q of the angle `q` (sin first: in lex order sin² leads
+    /// sin² + cos² − 1); returns (cos, sin), as `CoordInfo::trig` holds them.
+    fn trig(&mut self, id: CoordId, q: &Atom) -> (usize, usize) {
+        // A function variable holds the whole call, sin(q), not its argument.
+        let s = self.push(
+            PolyVariable::Function(Symbol::SIN, symbolica::function!(Symbol::SIN, q.clone())),
+            VarRole::Sin(id),
+        );
+        let c = self.push(
+            PolyVariable::Function(Symbol::COS, symbolica::function!(Symbol::COS, q.clone())),
+            VarRole::Cos(id),
+        );
+        (c, s)
+    }
+
+    /// The variables of each time coordinate (its value or its sine and cosine, then its
+    /// three rates unless imposed), its name checked; the coordinates from index
+    /// `n_declared` on are the phases `w*t`.
+    fn coordinates(
+        &mut self,
+        coords: &[(String, CoordinateKind, Option<String>)],
+        n_declared: usize,
+        raw_angles: &[String],
+        names: &mut Names,
+    ) -> Result<Vec<CoordInfo>, ExprError> {
+        let mut infos = Vec::new();
+        for (i, (name, kind, rate)) in coords.iter().enumerate() {
+            let phase = (i >= n_declared).then(|| rate.clone()).flatten();
+            let id = CoordId(i);
+            let q = match &phase {
+                // The atom Ω t itself: no symbol of the user's can clash with it.
+                Some(w) => {
+                    Atom::var(symbolica::symbol!(w.as_str())) * Atom::var(symbolica::symbol!("t"))
+                }
+                None => {
+                    names.check(name)?;
+                    Atom::var(symbolica::symbol!(name.as_str()))
+                }
+            };
+            let mut info = CoordInfo {
+                name: name.clone(),
+                kind: *kind,
+                value: None,
+                trig: None,
+                rates: None,
+                imposed_rate: None,
+                constant: false,
+                phase,
+                driven: false,
+                nonholonomic: false,
+                cos_reduced: false,
+            };
+            if *kind == CoordinateKind::Angle {
+                info.trig = Some(self.trig(id, &q));
+            }
+            if *kind == CoordinateKind::Length || raw_angles.contains(name) {
+                let v = PolyVariable::Symbol(symbolica::symbol!(name.as_str()));
+                info.value = Some(self.push(v, VarRole::Value(id)));
+            }
+            if rate.is_none() {
+                let mut r = [0; 3];
+                for (k, slot) in r.iter_mut().enumerate() {
+                    let order = k as u8 + 1;
+                    let v = PolyVariable::Function(
+                        rate_symbol(order),
+                        symbolica::function!(rate_symbol(order), q.clone()),
+                    );
+                    *slot = self.push(v, VarRole::Rate(id, order));
+                }
+                info.rates = Some(r);
+            }
+            infos.push(info);
+        }
+        Ok(infos)
+    }
+
+    /// The sine and cosine of each constant angle parameter, appended to `infos` after the
+    /// time coordinates; each must be a declared parameter, named once.
+    fn angle_parameters(
+        &mut self,
+        angle_parameters: &[String],
+        parameters: &[String],
+        infos: &mut Vec<CoordInfo>,
+    ) -> Result<(), ExprError> {
+        for (k, name) in angle_parameters.iter().enumerate() {
+            if !parameters.contains(name) {
+                return Err(ExprError::Declaration(format!(
+                    "the angle parameter `{name}` is not a parameter"
+                )));
+            }
+            if angle_parameters[..k].contains(name) {
+                return Err(ExprError::Declaration(format!(
+                    "`{name}` is declared twice"
+                )));
+            }
+            let id = CoordId(infos.len());
+            let trig = self.trig(id, &Atom::var(symbolica::symbol!(name.as_str())));
+            infos.push(CoordInfo {
+                name: name.clone(),
+                kind: CoordinateKind::Angle,
+                value: None,
+                trig: Some(trig),
+                rates: None,
+                imposed_rate: None,
+                constant: true,
+                phase: None,
+                driven: false,
+                nonholonomic: false,
+                cos_reduced: false,
+            });
+        }
+        Ok(())
+    }
+
+    /// A variable per parameter and unknown (`declared`, names checked): the variable of each
+    /// name.
+    fn parameters(
+        &mut self,
+        declared: &[String],
+        names: &mut Names,
+    ) -> Result<HashMap<String, usize>, ExprError> {
+        let mut param_var = HashMap::new();
+        for (i, p) in declared.iter().enumerate() {
+            names.check(p)?;
+            let v = self.push(
+                PolyVariable::Symbol(symbolica::symbol!(p.as_str())),
+                VarRole::Parameter(ParamId(i)),
+            );
+            param_var.insert(p.clone(), v);
+        }
+        Ok(param_var)
+    }
+
+    /// π, a positive constant of no dimension: a variable of its own, after every declared
+    /// scalar (so that no other variable moves), read from `pi` and printed `pi`; its name goes
+    /// last in `parameters`. Returns its id and its variable.
+    fn pi(&mut self, parameters: &mut Vec<String>) -> (ParamId, usize) {
+        let pi = ParamId(parameters.len());
+        parameters.push(PI.to_string());
+        (
+            pi,
+            self.push(PolyVariable::Symbol(Symbol::PI), VarRole::Parameter(pi)),
+        )
+    }
+
+    /// The variable 1/p of each parameter (or π) the mechanism divides by, once each: (p,
+    /// variable of p, variable of 1/p). A coordinate, a rate or an unknown is refused.
+    fn inverses(
+        &mut self,
+        inverses: &[String],
+        parameters: &[String],
+        n_params: usize,
+        param_var: &HashMap<String, usize>,
+        (pi, pi_var): (ParamId, usize),
+    ) -> Result<Vec<(ParamId, usize, usize)>, ExprError> {
+        let mut inverse_pairs = Vec::new();
+        for name in inverses {
+            let found = match name.as_str() {
+                PI => Some((pi, pi_var)),
+                _ => param_var
+                    .get(name)
+                    .filter(|_| parameters[..n_params].contains(name))
+                    .map(|&v| {
+                        (
+                            ParamId(
+                                parameters
+                                    .iter()
+                                    .position(|x| x == name)
+                                    .unwrap_or_default(),
+                            ),
+                            v,
+                        )
+                    }),
+            };
+            let Some((p, v)) = found else {
+                return Err(ExprError::Declaration(format!(
+                    "cannot divide by `{name}`: a text may divide only by parameters (not by a \
+                     coordinate, a rate or an unknown)"
+                )));
+            };
+            if inverse_pairs.iter().any(|&(q, _, _)| q == p) {
+                continue;
+            }
+            let inv = PolyVariable::Function(
+                inverse_symbol(),
+                symbolica::function!(inverse_symbol(), self.vars[v].to_atom()),
+            );
+            inverse_pairs.push((p, v, self.push(inv, VarRole::Inverse(p))));
+        }
+        Ok(inverse_pairs)
+    }
+
+    /// The variable 1/cos q of each angle coordinate in `secants` and 1/sin q of each in
+    /// `cosecants` (never both for one q): (q, cos or sin, its variable, its reciprocal's).
+    /// A q divided by sin q has its cos² reduced instead (`cos_reduced`).
+    fn reciprocals(
+        &mut self,
+        secants: &[String],
+        cosecants: &[String],
+        infos: &mut [CoordInfo],
+        n_declared: usize,
+    ) -> Result<Vec<(CoordId, Trig, usize, usize)>, ExprError> {
+        let mut reciprocals = Vec::new();
+        let over = secants
+            .iter()
+            .map(|n| (n, Trig::Cos))
+            .chain(cosecants.iter().map(|n| (n, Trig::Sin)));
+        for (name, t) in over {
+            let found = infos
+                .iter()
+                .enumerate()
+                .take(n_declared)
+                .find(|(_, c)| &c.name == name && c.kind == CoordinateKind::Angle);
+            let Some((q, (ci, si))) = found.and_then(|(q, c)| Some((q, c.trig?))) else {
+                return Err(ExprError::Declaration(format!(
+                    "cannot divide by `{}({name})`: `{name}` is not an angle coordinate",
+                    t.name()
+                )));
+            };
+            if secants.contains(name) && cosecants.contains(name) {
+                return Err(ExprError::Declaration(format!(
+                    "cannot divide by both `cos({name})` and `sin({name})`"
+                )));
+            }
+            let rec = PolyVariable::Function(
+                reciprocal_symbol(t),
+                symbolica::function!(
+                    reciprocal_symbol(t),
+                    Atom::var(symbolica::symbol!(name.as_str()))
+                ),
+            );
+            let r = self.push(rec, VarRole::Reciprocal(CoordId(q), t));
+            let v = if t == Trig::Cos { ci } else { si };
+            reciprocals.push((CoordId(q), t, v, r));
+            infos[q].cos_reduced = t == Trig::Sin;
+        }
+        Ok(reciprocals)
     }
 }

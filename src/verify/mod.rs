@@ -519,6 +519,22 @@ fn equation_of_motion(
     })
 }
 
+/// Refuses a relation `text`, read by `reader`, that does not contain the quantity (or the
+/// unknown) `q` it is said to be about.
+fn contains(reader: &Reader, q: &Quantity, text: &str) -> Result<(), VerifyError> {
+    let present = match &q.kind {
+        QuantityKind::Unknown(n) if !q.linear => reader.names.contains(n),
+        _ => reader.quantities.iter().any(|(x, _)| x == q),
+    };
+    if !present {
+        return Err(VerifyError::Shape(format!(
+            "`{text}` does not contain {q}: write {q} in the equation, or verify the \
+             equation without --quantity"
+        )));
+    }
+    Ok(())
+}
+
 /// A relation: lhs − rhs, quantities and unknowns replaced, is zero, or else an equation of
 /// motion of the spec up to a nonzero factor of parameters. With `subject`, the equation must
 /// contain that quantity.
@@ -534,16 +550,7 @@ fn relation(
     // lhs − rhs = e / den, den ≠ 0: the relation holds iff e = 0.
     let (e, den) = reader.read_difference(l, r)?;
     if let Some(q) = subject {
-        let present = match &q.kind {
-            QuantityKind::Unknown(n) if !q.linear => reader.names.contains(n),
-            _ => reader.quantities.iter().any(|(x, _)| x == q),
-        };
-        if !present {
-            return Err(VerifyError::Shape(format!(
-                "`{text}` does not contain {q}: write {q} in the equation, or verify the \
-                 equation without --quantity"
-            )));
-        }
+        contains(&reader, q, text)?;
     }
     let quantity = subject.map_or_else(|| text.trim().to_string(), Quantity::to_string);
     let denominators = vec![den.clone()];

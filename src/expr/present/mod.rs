@@ -277,11 +277,9 @@ fn kinematic_key(k: &Kinematic) -> GroupKey {
     (k.is_empty(), v)
 }
 
-/// The expression grouped by kinematic monomial, each coefficient written by the search (or
-/// only with its content out when `cheap`), then the content common to every group out when
-/// that is cheaper.
-fn grouped(e: &Expr, cheap: bool) -> Form {
-    let reg = e.registry();
+/// The terms of `e` grouped by kinematic monomial (their rates), each group's coefficient as
+/// monomials without rates, the groups in the order of [`kinematic_key`].
+fn by_kinematic(e: &Expr) -> Vec<(Kinematic, Vec<Mono>)> {
     let mut groups: Vec<(Kinematic, Vec<Mono>)> = Vec::new();
     let mut index: std::collections::HashMap<Kinematic, usize> = Default::default();
     for m in e.monos() {
@@ -302,6 +300,15 @@ fn grouped(e: &Expr, cheap: bool) -> Form {
         }
     }
     groups.sort_by_key(|g| kinematic_key(&g.0));
+    groups
+}
+
+/// The expression grouped by kinematic monomial, each coefficient written by the search (or
+/// only with its content out when `cheap`), then the content common to every group out when
+/// that is cheaper.
+fn grouped(e: &Expr, cheap: bool) -> Form {
+    let reg = e.registry();
+    let groups = by_kinematic(e);
     let mut search = search::Search::new(reg);
     let mut terms = Vec::new();
     let mut units = Vec::new();
@@ -530,38 +537,9 @@ fn clustered(reg: &Rc<Registry>, units: &[Unit], search: &mut search::Search) ->
                         c
                     }
                 };
-                let inner_units: Vec<Unit> = alone
-                    .iter()
-                    .map(|u| (u.0.clone(), u.1.exact_div(&d).expect("d divides it")))
-                    .collect();
-                // A 1/p out in front only when no term keeps one: never a fraction inside a
-                // fraction.
-                let nested = reg.var_ids().any(|w| {
-                    matches!(reg.role(w), VarRole::Inverse(_) | VarRole::Reciprocal(..))
-                        && d.contains_var(w)
-                        && inner_units.iter().any(|u| u.1.contains_var(w))
-                });
-                if nested {
+                let Some((together, key)) = factored(reg, search, &d, &alone) else {
                     continue;
-                }
-                let inner_refs: Vec<&Unit> = inner_units.iter().collect();
-                let mut inner = unit_products(reg, &inner_refs, search);
-                inner.sort_by(|a, b| a.0.cmp(&b.0));
-                let key = inner[0].0.clone();
-                let mut inner = Form {
-                    terms: inner.into_iter().map(|x| x.1).collect(),
                 };
-                form::positive_first(&mut inner.terms);
-                // The numbers the terms share come out too: m2 L1 L2/2 (…), not m2 L1 L2 (½ … + ½ …).
-                let mut n = inner.terms[0].coef.abs();
-                for t in &inner.terms[1..] {
-                    n = n.gcd(&t.coef);
-                }
-                let n = n.abs();
-                inner.terms.iter_mut().for_each(|t| t.coef = &t.coef / &n);
-                let df = best_coefficient(search, normalize(d.monos()), reg.coordinates().len());
-                let mut together = times_form(df, inner);
-                together.coef = &together.coef * &n;
                 let cost = Form::single(together.clone()).cost().0;
                 if cost < separate {
                     let gain = separate - cost;
@@ -596,6 +574,50 @@ fn clustered(reg: &Rc<Registry>, units: &[Unit], search: &mut search::Search) ->
         terms.push(p);
     }
     Form { terms }
+}
+
+/// The units `alone`, all divided by `d`, written as one product d (…) with the numbers their
+/// terms share out too, and the key it sorts by; `None` when a 1/p would stand both in front
+/// and inside.
+fn factored(
+    reg: &Rc<Registry>,
+    search: &mut search::Search,
+    d: &Expr,
+    alone: &[&Unit],
+) -> Option<(Product, GroupKey)> {
+    let inner_units: Vec<Unit> = alone
+        .iter()
+        .map(|u| (u.0.clone(), u.1.exact_div(d).expect("d divides it")))
+        .collect();
+    // A 1/p out in front only when no term keeps one: never a fraction inside a
+    // fraction.
+    let nested = reg.var_ids().any(|w| {
+        matches!(reg.role(w), VarRole::Inverse(_) | VarRole::Reciprocal(..))
+            && d.contains_var(w)
+            && inner_units.iter().any(|u| u.1.contains_var(w))
+    });
+    if nested {
+        return None;
+    }
+    let inner_refs: Vec<&Unit> = inner_units.iter().collect();
+    let mut inner = unit_products(reg, &inner_refs, search);
+    inner.sort_by(|a, b| a.0.cmp(&b.0));
+    let key = inner[0].0.clone();
+    let mut inner = Form {
+        terms: inner.into_iter().map(|x| x.1).collect(),
+    };
+    form::positive_first(&mut inner.terms);
+    // The numbers the terms share come out too: m2 L1 L2/2 (…), not m2 L1 L2 (½ … + ½ …).
+    let mut n = inner.terms[0].coef.abs();
+    for t in &inner.terms[1..] {
+        n = n.gcd(&t.coef);
+    }
+    let n = n.abs();
+    inner.terms.iter_mut().for_each(|t| t.coef = &t.coef / &n);
+    let df = best_coefficient(search, normalize(d.monos()), reg.coordinates().len());
+    let mut together = times_form(df, inner);
+    together.coef = &together.coef * &n;
+    Some((together, key))
 }
 
 /// `a · (b)` as one product, `b` a sum (or one product).
