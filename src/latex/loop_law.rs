@@ -31,7 +31,7 @@ pub(super) fn loop_law(doc: &mut Doc) {
     let condition = match &law.determinant {
         // A condition on the coordinates only: a length R ≠ 0 goes without saying.
         Some(d) if !d.is_time_independent() => {
-            let math = format!("{} \\neq 0", super::expr(&d));
+            let math = format!("{} \\neq 0", super::expr(d));
             let s = format!(", tant que ${math}$");
             doc.inline.push(Inline {
                 what: "loop determinant".into(),
