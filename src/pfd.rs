@@ -26,6 +26,7 @@ use crate::wire::{LinkKind, TheoremKind};
 use std::collections::BTreeMap;
 
 mod energy;
+mod hyperstatic;
 mod motion;
 
 pub use crate::mechanism::{Action, Dynamics, Small, Source, SpringPart, Theorem};
@@ -33,6 +34,7 @@ pub use energy::{
     action_power, equivalent_inertia, internal_actions, internal_power, kinetic_energy, lagrange,
     potential_energy, power,
 };
+pub use hyperstatic::Hyperstatic;
 pub use motion::{CompiledEquations, EquationsOfMotion};
 
 impl Action {
@@ -92,6 +94,33 @@ pub struct Solution {
     /// where they do not divide out (1 − f1 f2 εA εB for a ladder with friction at both
     /// ends): `eom` is that factor times the residual. Absent when it is 1.
     pub eom_factors: BTreeMap<String, Expr>,
+    /// What the declared equations leave undetermined when the mechanism is hyperstatic
+    /// (those unknowns are not in `unknowns`); None when they determine every unknown.
+    pub hyperstatic: Option<Hyperstatic>,
+}
+
+impl Solution {
+    /// Why the unknown `name` has no value when the mechanism is hyperstatic and the declared
+    /// equations give it only through a relation with others; None otherwise.
+    pub fn why_undetermined(&self, name: &str) -> Option<String> {
+        match &self.hyperstatic {
+            Some(h) if h.undetermined.iter().any(|n| n == name) => Some({
+                let relations: Vec<String> =
+                    h.relations.iter().map(|r| format!("{r} = 0")).collect();
+                format!(
+                    "the mechanism is hyperstatic of degree {}: the equations of `pfd` do not \
+                     determine {} separately{}",
+                    h.degree,
+                    h.undetermined.join(", "),
+                    match relations.is_empty() {
+                        true => String::new(),
+                        false => format!(", only {}", relations.join(" and ")),
+                    }
+                )
+            }),
+            _ => None,
+        }
+    }
 }
 
 /// Why the PFD cannot be solved as declared. `theorem` is the index of a declared equation
@@ -152,6 +181,28 @@ pub enum PfdError {
         theorem: usize,
         /// The unknown left in it.
         unknown: String,
+    },
+    /// The declared equations leave unknowns undetermined that the PFD of every solid would
+    /// determine: an equation is missing (not a hyperstatic mechanism).
+    #[error(
+        "the equations without `eom` do not determine {}, which the PFD of each solid would \
+         determine: declare the theorem that fixes {}",
+        unknowns.join(", "),
+        if unknowns.len() == 1 { "it" } else { "them" }
+    )]
+    MissingEquation {
+        /// The unknowns left free.
+        unknowns: Vec<String>,
+    },
+    /// Once the unknowns are eliminated, an equation without `eom` holds none of them and is
+    /// not zero: it contradicts the others, or is an equation of motion.
+    #[error(
+        "pfd[{theorem}]: once the other equations give the unknowns, this one holds none of \
+         them and is not 0 (is it an equation of motion? mark it with `eom`)"
+    )]
+    Dependent {
+        /// The equation.
+        theorem: usize,
     },
     /// An equation of motion is not linear in the accelerations (no mass matrix).
     #[error("the equation of motion of {coordinate} is not linear in the accelerations")]
@@ -402,16 +453,25 @@ pub fn solve_with_residuals(
         }
     }
     let names: BTreeMap<VarId, String> = unknown_vars(m).into_iter().map(|(n, v)| (v, n)).collect();
-    if cols.len() != rows.len() {
+    if cols.len() < rows.len() {
         return Err(PfdError::NotSquare {
             equations: rows.len(),
             unknowns: cols.iter().map(|v| names[v].clone()).collect(),
         });
     }
-    let (solved, conditions) = eliminate_unknowns(m, &cols, rows, &names)?;
+    let (solved, conditions, free) = eliminate_unknowns(m, &cols, rows, &names)?;
+    let hyperstatic = match free.is_empty() {
+        true => None,
+        false => Some(hyperstatic::undetermined(m, cache, &free, &solved, &|v| {
+            names[&v].clone()
+        })?),
+    };
     let mut unknowns = BTreeMap::new();
     for (v, value) in &solved {
-        unknowns.insert(names[v].clone(), value.clone());
+        let held = |h: &Hyperstatic| h.undetermined.contains(&names[v]);
+        if !hyperstatic.as_ref().is_some_and(held) {
+            unknowns.insert(names[v].clone(), value.clone());
+        }
     }
     let (eom, eom_factors) = equations_of_motion(m, eoms, &solved, &names)?;
     Ok((
@@ -420,6 +480,7 @@ pub fn solve_with_residuals(
             eom,
             conditions,
             eom_factors,
+            hyperstatic,
         },
         residuals,
     ))
@@ -461,20 +522,27 @@ fn equations(
     Ok((rows, eoms, residuals))
 }
 
-/// Gauss–Jordan elimination of the unknowns `cols` from the square system `rows`,
-/// fraction-free: returns each unknown's value and the conditions of the solution (the
-/// pivots that are not numbers, each nonzero).
+/// Gauss–Jordan elimination of the unknowns `cols` from the system `rows`, fraction-free:
+/// returns each unknown's value, the conditions of the solution (the pivots that are not
+/// numbers, each nonzero) and the unknowns no remaining row held (a hyperstatic mechanism's,
+/// which the others' values may hold). A row left over must read 0.
 fn eliminate_unknowns(
     m: &Mechanism,
     cols: &[VarId],
     rows: Equations,
     names: &BTreeMap<VarId, String>,
-) -> Result<(Solved, Vec<Expr>), PfdError> {
+) -> Result<(Solved, Vec<Expr>, Vec<VarId>), PfdError> {
     let mut solved: Solved = Vec::new();
     let mut conditions: Vec<Expr> = Vec::new();
+    // Unknowns no remaining equation holds (a hyperstatic mechanism's).
+    let mut free: Vec<VarId> = Vec::new();
     let mut pending = rows;
     for &v in cols {
         let Some(pos) = pivot_row(&pending, v) else {
+            if pending.iter().all(|(_, r)| r.derivative(v).is_zero()) {
+                free.push(v);
+                continue;
+            }
             return Err(PfdError::NoNumericPivot {
                 unknown: names[&v].clone(),
             });
@@ -509,7 +577,10 @@ fn eliminate_unknowns(
         }
         solved.push((v, value));
     }
-    Ok((solved, conditions))
+    if let Some((i, _)) = pending.iter().find(|(_, r)| !r.is_zero()) {
+        return Err(PfdError::Dependent { theorem: *i });
+    }
+    Ok((solved, conditions, free))
 }
 
 /// The row of `pending` to solve for `v`: a pivot is a number when one exists, else a nonzero

@@ -178,8 +178,12 @@ pub(super) fn derive(
                 .find(|(n, _)| n == name)
                 .map(|(_, v)| v);
             let (sol, residuals) = shared.pfd(m).map_err(|e| ResolveError::new(q, e))?;
-            let v = sol.unknowns.get(name).cloned().ok_or_else(|| {
-                resolve_err(q, format!("no equation of `pfd` determines `{name}`"))
+            let v = (sol.unknowns.get(name).cloned()).ok_or_else(|| {
+                let why = sol.why_undetermined(name);
+                resolve_err(
+                    q,
+                    why.unwrap_or_else(|| format!("no equation of `pfd` determines `{name}`")),
+                )
             })?;
             // The theorems that determine the unknown, whose steps are recorded: those that
             // hold it, and those that hold the other unknowns of these (X_A + X_B = … needs

@@ -110,7 +110,10 @@ pub(super) fn kinematics(doc: &mut Doc, laws: &[HelicalLaw]) {
             .into_iter()
             .zip(values.clone())
         {
-            let body = format!("{lhs} &= {}", lines(shown));
+            let body = format!(
+                "{lhs} &= {}",
+                lines(&super::expr_lines(shown, super::LINE - 4))
+            );
             doc.record(
                 DisplayRole::Step,
                 "helical factor",
@@ -125,7 +128,11 @@ pub(super) fn kinematics(doc: &mut Doc, laws: &[HelicalLaw]) {
         doc.record(
             DisplayRole::Step,
             "helical relation",
-            format!("{} &= {}", law.velocity.join(" "), lines(&law.screw)),
+            format!(
+                "{} &= {}",
+                super::expr_lines(&law.velocity, super::LINE - 4).join(" "),
+                lines(&super::expr_lines(&law.screw, super::LINE - 4))
+            ),
             &velocity,
             Some(velocity.clone()),
             false,

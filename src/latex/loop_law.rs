@@ -28,15 +28,15 @@ pub(super) fn loop_law(doc: &mut Doc) {
     if !law.helical.is_empty() {
         super::helical::kinematics(doc, &law.helical);
     }
-    let condition = match m.reg.parse(&law.determinant) {
+    let condition = match &law.determinant {
         // A condition on the coordinates only: a length R ≠ 0 goes without saying.
-        Ok(d) if !d.is_time_independent() => {
-            let math = format!("{} \\neq 0", super::expr(&d));
+        Some(d) if !d.is_time_independent() => {
+            let math = format!("{} \\neq 0", super::expr(d));
             let s = format!(", tant que ${math}$");
             doc.inline.push(Inline {
                 what: "loop determinant".into(),
                 latex: math,
-                value: Value::Scalar(d),
+                value: Value::Scalar(d.clone()),
             });
             s
         }
@@ -68,7 +68,7 @@ pub(super) fn loop_law(doc: &mut Doc) {
 }
 
 /// Each closure projected on the ground's basis, then the relations' time derivatives.
-fn closures(doc: &mut Doc, derivatives: &[Vec<String>]) {
+fn closures(doc: &mut Doc, derivatives: &[crate::expr::Expr]) {
     let m = doc.m;
     let ground = m.frames.ground();
     let _ = writeln!(doc.o, "\\noindent\\textbf{{Loi entrée-sortie.}} ");
@@ -106,7 +106,7 @@ fn closures(doc: &mut Doc, derivatives: &[Vec<String>]) {
     let _ = writeln!(doc.o, "En dérivant par rapport au temps :");
     let zero = m.reg.zero();
     for d in derivatives {
-        let body = format!("0 &= {}", lines(d));
+        let body = format!("0 &= {}", lines(&super::expr_lines(d, super::LINE - 4)));
         doc.record(
             DisplayRole::Step,
             "loop relation's derivative",
@@ -178,7 +178,7 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
             doc.record(
                 DisplayRole::Step,
                 "rolling relation",
-                format!("0 &= {}", lines(row)),
+                format!("0 &= {}", lines(&super::expr_lines(row, super::LINE - 4))),
                 &Value::Scalar(zero.clone()),
                 None,
                 false,

@@ -15,6 +15,7 @@ mod fault;
 mod figures;
 mod greek;
 mod helical;
+mod hyperstatic;
 mod hypotheses;
 mod loop_law;
 mod method;

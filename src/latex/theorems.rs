@@ -466,6 +466,9 @@ fn state_conditions(doc: &mut Doc) {
     let Ok(sol) = crate::pfd::solve(doc.m) else {
         return;
     };
+    if let Some(h) = &sol.hyperstatic {
+        super::hyperstatic::state(doc, h);
+    }
     if sol.conditions.is_empty() {
         return;
     }

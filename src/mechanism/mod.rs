@@ -122,11 +122,12 @@ pub struct Mechanism {
 /// determinant the solution divides by.
 #[derive(Debug, Clone)]
 pub struct LoopLaw {
-    /// The derivative of each scalar relation, in LaTeX lines (an answer key's display),
-    /// the dependent rates as symbols.
-    pub derivatives: Vec<Vec<String>>,
-    /// The determinant of the dependent rates' columns (`L*cos(phi)`), in the spec syntax.
-    pub determinant: String,
+    /// The time derivative of each scalar relation, the dependent rates as symbols (the
+    /// expressions belong to the geometry's registry, where those rates are variables).
+    pub derivatives: Vec<Expr>,
+    /// The determinant of the dependent rates' columns (`L*cos(phi)`), over the mechanism's
+    /// variables; None when it names a helical link's lead, which only the geometry has.
+    pub determinant: Option<Expr>,
     /// Each rolling condition of the spec, in its order.
     pub rolling: Vec<RollingLaw>,
     /// Each helical link that determines a coordinate, in the order of the links.
@@ -134,8 +135,8 @@ pub struct LoopLaw {
 }
 
 /// A helical link's relation V(P ∈ b/a)·u = p/(2π) Ω(b/a)·u as the answer key writes it:
-/// the link, its point, frames and axis, and in LaTeX lines the two factors and the right
-/// side p/(2π) Ω(b/a)·u, the dependent rate as a symbol (in the mechanism, where it reads its
+/// the link, its point, frames and axis, the two factors and the right side p/(2π) Ω(b/a)·u,
+/// the dependent rate as a symbol (in the mechanism, where it reads its
 /// solved rate, the right side is the velocity V(P ∈ b/a)·u).
 #[derive(Debug, Clone)]
 pub struct HelicalLaw {
@@ -148,17 +149,17 @@ pub struct HelicalLaw {
     /// Its axis u.
     pub axis: (FrameId, crate::frame::Axis),
     /// V(P ∈ b/a)·u.
-    pub velocity: Vec<String>,
+    pub velocity: Expr,
     /// Ω(b/a)·u.
-    pub rotation: Vec<String>,
+    pub rotation: Expr,
     /// p/(2π) Ω(b/a)·u.
-    pub screw: Vec<String>,
+    pub screw: Expr,
 }
 
 /// A rolling condition V(I,2/0) = 0⃗ as the answer key writes it: the velocity, its point and
 /// frames, the directions it is zero along, the basis it was projected on (None when the spec
-/// names the directions, `on`) and each scalar relation in LaTeX lines, the dependent rates as
-/// symbols (each reads 0 in the mechanism).
+/// names the directions, `on`) and each scalar relation, the dependent rates as symbols (each
+/// reads 0 in the mechanism).
 #[derive(Debug, Clone)]
 pub struct RollingLaw {
     /// The velocity that is zero, as the course writes it.
@@ -171,8 +172,8 @@ pub struct RollingLaw {
     pub on: Vec<(FrameId, crate::frame::Axis)>,
     /// The frame whose basis the velocity was projected on, by name.
     pub basis: Option<String>,
-    /// The scalar relations, linear in the rates, in LaTeX lines.
-    pub rows: Vec<Vec<String>>,
+    /// The scalar relations, linear in the rates.
+    pub rows: Vec<Expr>,
 }
 
 impl Mechanism {

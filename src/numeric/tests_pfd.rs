@@ -652,10 +652,38 @@ fn regulator_spec_quantities_evaluate() {
 
 // ------------------------------------------------------------------------------- errors
 
+/// The scaled linear solve, by hand: a regular system, a hyperstatic one (x + y = 3, z = 2:
+/// z alone is determined), and one whose equations contradict each other.
+#[test]
+fn the_solve_keeps_what_a_hyperstatic_system_determines() {
+    use nalgebra::{DMatrix, DVector};
+    let solve = super::dynamics::determined;
+    let a = DMatrix::from_row_slice(2, 2, &[1.0, 2.0, 3.0, 4.0]);
+    let (y, free) = solve(&a, &DVector::from_vec(vec![5.0, 6.0])).unwrap();
+    assert!(free.is_empty());
+    assert!(
+        (y[0] + 4.0).abs() < 1e-12 && (y[1] - 4.5).abs() < 1e-12,
+        "{y}"
+    );
+    let a = DMatrix::from_row_slice(2, 3, &[1.0, 1.0, 0.0, 0.0, 0.0, 1.0]);
+    let (y, free) = solve(&a, &DVector::from_vec(vec![3.0, 2.0])).unwrap();
+    assert_eq!(free, [0, 1]);
+    assert!(
+        (y[2] - 2.0).abs() < 1e-12 && (y[0] + y[1] - 3.0).abs() < 1e-12,
+        "{y}"
+    );
+    // The same equation written twice, then contradicted.
+    let a = DMatrix::from_row_slice(2, 2, &[1.0, 1.0, 1.0, 1.0]);
+    let (_, free) = solve(&a, &DVector::from_vec(vec![1.0, 1.0])).unwrap();
+    assert_eq!(free, [0, 1]);
+    assert!(solve(&a, &DVector::from_vec(vec![1.0, 2.0])).is_err());
+}
+
 #[test]
 fn solving_errors() {
     let s = rotor_sample([0.3, 1.2, -0.7]);
-    // Two unknowns that only appear as their sum: singular.
+    // Two unknowns that only appear as their sum: fixed together, neither alone
+    // (hyperstatic), whether the equation is written twice or once.
     let mut v = rotor();
     v["actions"][0]["moment"] = json!("(Ca + Cb)*z0");
     v["actions"][0]["unknowns"] = json!(["Ca", "Cb"]);
@@ -663,11 +691,11 @@ fn solving_errors() {
     let twice = with(v.clone(), "pfd", json!([one.clone(), one.clone()]));
     let m = model_of(&twice);
     let e = error(&m, "Ca", &s);
-    assert!(e.starts_with("Ca: ") && e.contains("singular"), "{e}");
-    // One equation for two unknowns: not square.
+    assert!(e.starts_with("Ca: ") && e.contains("only together"), "{e}");
     let m = model_of(&v);
-    let e = error(&m, "Ca", &s);
-    assert!(e.contains("1 equation(s) for 2 unknown(s) (Ca, Cb)"), "{e}");
+    let e = error(&m, "Cb", &s);
+    assert!(e.starts_with("Cb: ") && e.contains("(hyperstatic)"), "{e}");
+
     // Names that are no unknown, and an equation of motion nobody declared.
     let m = model_of(&rotor());
     assert!(error(&m, "nope", &s).contains("`nope` is not an unknown of the PFD"));

@@ -212,8 +212,9 @@ pub fn solve_unknowns(m: &Mechanism, v: &Value, values: &mut Values) -> Result<V
     for (n, x) in &held {
         let value = solution.unknowns.get(n).ok_or_else(|| {
             ValuesError(format!(
-                "no value for `{n}` (give it in \"unknowns\"): no equation of the spec's pfd \
-                 determines it"
+                "no value for `{n}` (give it in \"unknowns\"): {}",
+                (solution.why_undetermined(n))
+                    .unwrap_or_else(|| "no equation of the spec's pfd determines it".into())
             ))
         })?;
         if value.is_whole() {

@@ -125,7 +125,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
     let mut linear = Vec::new();
     for r in &rows {
         let d = r.dt();
-        derivatives.push(crate::latex::expr_lines(&d, crate::latex::LINE - 4));
+        derivatives.push(d.clone());
         linear.push(d);
     }
     let mut rolling = Vec::new();
@@ -230,15 +230,14 @@ fn helical_row(m: &Mechanism, h: &HelixNode, lead: &str) -> Result<(HelicalLaw, 
         let why = "the link's relation holds whatever the rates: name no coordinate it determines";
         return Err(at(format!("{path}.dependent"), why));
     }
-    let lines = |e: &Expr| crate::latex::expr_lines(e, crate::latex::LINE - 4);
     let law = HelicalLaw {
         link: h.link,
         point: p,
         motion: [fa, fb],
         axis,
-        velocity: lines(&v),
-        rotation: lines(&w),
-        screw: lines(&screw),
+        velocity: v,
+        rotation: w,
+        screw,
     };
     Ok((law, row))
 }
@@ -486,10 +485,6 @@ fn rolling_rows(
         }
         (None, rows)
     };
-    let lines = rows
-        .iter()
-        .map(|e| crate::latex::expr_lines(e, crate::latex::LINE - 4))
-        .collect();
     let law = RollingLaw {
         velocity: node.velocity.clone(),
         point: p,
@@ -498,7 +493,7 @@ fn rolling_rows(
             .map(|&(f, a)| (FrameId(f), Axis::ALL[a]))
             .collect(),
         basis,
-        rows: lines,
+        rows: rows.clone(),
     };
     Ok((law, rows))
 }

@@ -28,8 +28,8 @@ pub(super) struct Solved {
     pub inverses: Vec<String>,
     /// The coordinates a loop closure determines (holonomic driven rates).
     pub dependent: Vec<String>,
-    /// Each relation's time derivative in LaTeX lines, the dependent rates as symbols.
-    pub derivatives: Vec<Vec<String>>,
+    /// Each relation's time derivative, the dependent rates as symbols (over the geometry).
+    pub derivatives: Vec<crate::expr::Expr>,
     /// Each rolling condition as the answer key writes it.
     pub rolling: Vec<crate::mechanism::RollingLaw>,
     /// Each helical link that determines a coordinate, as the answer key writes its relation.
@@ -123,6 +123,9 @@ fn build_with(
     }
 
     questions(spec, &hypotheses)?;
+    // The determinant the solved rates divide by, over this registry's variables (none when
+    // it names a helical link's lead, an alias of the geometry only).
+    let determinant = solved.and_then(|s| reg.parse(&s.determinant).ok());
 
     let mut m = Mechanism {
         title: spec.title.clone(),
@@ -140,7 +143,7 @@ fn build_with(
         spec: written.clone(),
         loop_law: solved.map(|s| crate::mechanism::LoopLaw {
             derivatives: s.derivatives.clone(),
-            determinant: s.determinant.clone(),
+            determinant,
             rolling: s.rolling.clone(),
             helical: s.helical.clone(),
         }),

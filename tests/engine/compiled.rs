@@ -185,6 +185,8 @@ fn the_compiled_equations_of_motion_agree_with_the_exact_ones_on_every_spec() {
     assert_eq!(
         skipped,
         [
+            // A shaft at an imposed speed on two ball joints: no equation of motion.
+            "arbre_deux_rotules",
             "bras_robot_deux_axes",
             "rotor_balourd",
             "rotor_deux_paliers",

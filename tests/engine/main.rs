@@ -23,6 +23,7 @@ mod free_texts;
 mod friction;
 mod golden;
 mod helical;
+mod hyperstatic;
 mod hypotheses;
 mod kinematics;
 mod latex;

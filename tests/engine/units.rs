@@ -408,7 +408,8 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 25] = [
+const LIBRARY: [&str; 26] = [
+    "arbre_deux_rotules",
     "bielle_manivelle",
     "bille_tube_tournant",
     "bloc_frottement_sec",

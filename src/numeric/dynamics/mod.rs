@@ -42,6 +42,8 @@ const SINGULAR: f64 = 1e-10;
 
 mod solve;
 use solve::body_frame;
+#[cfg(test)]
+pub(in crate::numeric) use solve::determined;
 pub(super) use solve::{action, eom, internal_power, power, set_signs, unknown};
 
 /// What exerts or receives an action: a solid, or a frame that is not a solid (the ground).

@@ -479,6 +479,9 @@ pub(in crate::numeric) fn action(
 struct Solution {
     /// Value of each unknown that the equations without `eom` determine.
     values: Vec<Option<f64>>,
+    /// The unknowns that appear in them but that they do not determine one by one (a
+    /// hyperstatic mechanism's: only a combination of them is fixed).
+    undetermined: Vec<usize>,
     /// Each declared equation's residual, coefficients of absent unknowns set to zero.
     residuals: Vec<Lin<f64>>,
 }
@@ -506,6 +509,12 @@ pub(in crate::numeric) fn unknown(
         )));
     };
     let solution = solve(m, st, vals)?.map_err(fail)?;
+    if solution.undetermined.contains(k) {
+        return Err(fail(format!(
+            "the equations of the PFD without eom fix `{name}` only together with other \
+             unknowns (hyperstatic): it has no value of its own"
+        )));
+    }
     solution.values[*k].ok_or_else(|| {
         fail(format!(
             "the unknown `{name}` appears in no equation of the PFD without eom: nothing \
@@ -601,7 +610,7 @@ fn solve(
             .collect::<Vec<_>>()
             .join(", ")
     };
-    if rows.len() != cols.len() {
+    if rows.len() > cols.len() {
         return Ok(Err(format!(
             "the PFD's equations without eom must determine the unknowns that appear in them: \
              {} equation(s) for {} unknown(s) ({})",
@@ -611,9 +620,10 @@ fn solve(
         )));
     }
     let mut values = vec![None; n];
+    let mut undetermined = Vec::new();
     if !rows.is_empty() {
-        let k = rows.len();
-        let mut a = DMatrix::from_fn(k, k, |r, c| residuals[rows[r]].a[cols[c]]);
+        let (k, c) = (rows.len(), cols.len());
+        let mut a = DMatrix::from_fn(k, c, |r, j| residuals[rows[r]].a[cols[j]]);
         let mut b = DVector::from_fn(k, |r, _| -residuals[rows[r]].c);
         // Scale rows then columns to unit largest entries, so that the pivot test is
         // independent of units.
@@ -624,30 +634,81 @@ fn solve(
                 b[r] /= s;
             }
         }
-        let col_scale: Vec<f64> = (0..k).map(|c| a.column(c).amax()).collect();
-        for (c, s) in col_scale.iter().enumerate() {
-            a.column_mut(c).scale_mut(1.0 / s);
+        let col_scale: Vec<f64> = (0..c).map(|j| a.column(j).amax()).collect();
+        for (j, s) in col_scale.iter().enumerate() {
+            a.column_mut(j).scale_mut(1.0 / s);
         }
-        let lu = a.lu();
-        let pivot = lu.u().diagonal().amin();
-        let singular = || {
-            format!(
-                "the PFD's equations without eom are singular at this sample: they do not \
-                 determine their unknowns ({})",
-                listed(&cols)
-            )
+        let y = match determined(&a, &b) {
+            Ok((y, free)) => {
+                undetermined = free.into_iter().map(|j| cols[j]).collect();
+                y
+            }
+            Err(()) => {
+                return Ok(Err(format!(
+                    "the PFD's equations without eom are singular at this sample: they do not \
+                     determine their unknowns ({})",
+                    listed(&cols)
+                )));
+            }
         };
-        if pivot.is_nan() || pivot <= SINGULAR {
-            return Ok(Err(singular()));
-        }
-        let Some(y) = lu.solve(&b) else {
-            return Ok(Err(singular()));
-        };
-        for (c, col) in cols.iter().enumerate() {
-            values[*col] = Some(y[c] / col_scale[c]);
+        for (j, col) in cols.iter().enumerate() {
+            if !undetermined.contains(col) {
+                values[*col] = Some(y[j] / col_scale[j]);
+            }
         }
     }
-    Ok(Ok(Solution { values, residuals }))
+    Ok(Ok(Solution {
+        values,
+        undetermined,
+        residuals,
+    }))
+}
+
+/// Solves the scaled system a y = b: by LU when it is square and regular; else, when it has
+/// fewer independent equations than unknowns (a hyperstatic mechanism), by the singular value
+/// decomposition: the least-norm solution, whose component j is the value every solution
+/// shares exactly when the unit vector eⱼ lies in the row space of a (the right singular
+/// vectors of the nonzero singular values span it), and the columns that do not, free.
+/// Err when the equations contradict each other or determine nothing.
+pub(in crate::numeric) fn determined(
+    a: &DMatrix<f64>,
+    b: &DVector<f64>,
+) -> Result<(DVector<f64>, Vec<usize>), ()> {
+    let (k, c) = a.shape();
+    if k == c {
+        let lu = a.clone().lu();
+        let pivot = lu.u().diagonal().amin();
+        if pivot > SINGULAR
+            && let Some(y) = lu.solve(b)
+        {
+            return Ok((y, Vec::new()));
+        }
+    }
+    let svd = a.clone().svd(true, true);
+    let (Some(vt), true) = (
+        svd.v_t.as_ref(),
+        svd.singular_values.iter().all(|s| s.is_finite()),
+    ) else {
+        return Err(());
+    };
+    let kept: Vec<usize> = (0..svd.singular_values.len())
+        .filter(|&i| svd.singular_values[i] > SINGULAR)
+        .collect();
+    if kept.is_empty() {
+        return Err(());
+    }
+    let y = svd.solve(b, SINGULAR).map_err(|_| ())?;
+    // The equations must hold at the least-norm solution (no contradiction between them).
+    if (a * &y - b).amax() > APPEARS * b.amax().max(1.0) {
+        return Err(());
+    }
+    let free = (0..c)
+        .filter(|&j| {
+            let inside: f64 = kept.iter().map(|&i| vt[(i, j)] * vt[(i, j)]).sum();
+            inside < 1.0 - APPEARS
+        })
+        .collect();
+    Ok((y, free))
 }
 
 /// A power affine in the unknowns, c + Σ aₖ uₖ, summed action by action: the unknowns of a
