@@ -577,8 +577,8 @@ fn method_notes(doc: &mut Doc, d: &Derivation) {
     {
         let _ = writeln!(doc.o, "{}", omega_sentence(m, mo));
     }
-    if let Some(s) = super::theorems::action_sentence(m, d)
-        .or_else(|| super::theorems::kinetic_energy_sentence(m, d))
+    if let Some(s) = super::action_method::action_sentence(m, d)
+        .or_else(|| super::action_method::kinetic_energy_sentence(m, d))
     {
         let _ = writeln!(doc.o, "{s}");
     }

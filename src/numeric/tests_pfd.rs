@@ -652,33 +652,6 @@ fn regulator_spec_quantities_evaluate() {
 
 // ------------------------------------------------------------------------------- errors
 
-/// The scaled linear solve, by hand: a regular system, a hyperstatic one (x + y = 3, z = 2:
-/// z alone is determined), and one whose equations contradict each other.
-#[test]
-fn the_solve_keeps_what_a_hyperstatic_system_determines() {
-    use nalgebra::{DMatrix, DVector};
-    let solve = super::dynamics::determined;
-    let a = DMatrix::from_row_slice(2, 2, &[1.0, 2.0, 3.0, 4.0]);
-    let (y, free) = solve(&a, &DVector::from_vec(vec![5.0, 6.0])).unwrap();
-    assert!(free.is_empty());
-    assert!(
-        (y[0] + 4.0).abs() < 1e-12 && (y[1] - 4.5).abs() < 1e-12,
-        "{y}"
-    );
-    let a = DMatrix::from_row_slice(2, 3, &[1.0, 1.0, 0.0, 0.0, 0.0, 1.0]);
-    let (y, free) = solve(&a, &DVector::from_vec(vec![3.0, 2.0])).unwrap();
-    assert_eq!(free, [0, 1]);
-    assert!(
-        (y[2] - 2.0).abs() < 1e-12 && (y[0] + y[1] - 3.0).abs() < 1e-12,
-        "{y}"
-    );
-    // The same equation written twice, then contradicted.
-    let a = DMatrix::from_row_slice(2, 2, &[1.0, 1.0, 1.0, 1.0]);
-    let (_, free) = solve(&a, &DVector::from_vec(vec![1.0, 1.0])).unwrap();
-    assert_eq!(free, [0, 1]);
-    assert!(solve(&a, &DVector::from_vec(vec![1.0, 2.0])).is_err());
-}
-
 #[test]
 fn solving_errors() {
     let s = rotor_sample([0.3, 1.2, -0.7]);

@@ -40,10 +40,9 @@ const APPEARS: f64 = 1e-9;
 /// A pivot of the row- and column-scaled system below this is a singular system.
 const SINGULAR: f64 = 1e-10;
 
+mod linear;
 mod solve;
 use solve::body_frame;
-#[cfg(test)]
-pub(in crate::numeric) use solve::determined;
 pub(super) use solve::{action, eom, internal_power, power, set_signs, unknown};
 
 /// What exerts or receives an action: a solid, or a frame that is not a solid (the ground).
