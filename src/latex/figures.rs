@@ -472,7 +472,7 @@ const BRANCH: f64 = 2.0;
 /// assert!(tex.contains("bâti"));
 /// ```
 pub fn link_graph(m: &Mechanism) -> String {
-    link_graph_with(m, &VectorNames::default())
+    link_graph_with(m, &VectorNames::of(m))
 }
 
 /// [`link_graph`], the basis vectors by the statement's `names`.

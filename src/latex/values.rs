@@ -174,7 +174,9 @@ fn matrix_named(m: &Mechanism, lhs: &str, i: &crate::inertia::Inertia) -> String
     out
 }
 
-/// A value on the right of `lhs`, as lines of an `align*` environment (vectors as sums).
+/// A value on the right of `lhs`, as lines of an `align*` environment (vectors as sums), the
+/// basis vectors named as the mechanism's statement names them (`basis` of a frame), as the
+/// answer key writes them.
 pub fn value(m: &Mechanism, lhs: &str, v: &Value) -> String {
     value_styled(m, VectorStyle::Sum, lhs, v)
 }
@@ -194,15 +196,7 @@ pub fn value_named(
     v: &Value,
     torsor_names: Option<(&str, &str)>,
 ) -> String {
-    value_within(
-        m,
-        &VectorNames::default(),
-        style,
-        lhs,
-        v,
-        torsor_names,
-        LINE,
-    )
+    value_within(m, &VectorNames::of(m), style, lhs, v, torsor_names, LINE)
 }
 
 /// The width left for the right side of `lhs` on a line of `line` characters: a wide left

@@ -295,3 +295,28 @@ fn every_stated_composition_of_rotations_holds() {
     }
     assert!(checked >= 4, "{checked} compositions");
 }
+
+/// The public writer of a value names the basis vectors as the statement does, like the key:
+/// the support-pendulum's B2 is (u, v, w) and its ground's (x, y, z), so V(G,2/1) in B2 is
+/// written along \vec{u}, \vec{v}, never \vec{x}_{2}; the graph of links says its axis z.
+#[test]
+fn a_value_written_alone_uses_the_statements_vector_names() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let m = torseur::spec::load(root.join("tests/specs/pendule_support_oscillant.json")).unwrap();
+    let q = torseur::quantity::Quantity::parse("V(G,2/1) in B2").unwrap();
+    let d = torseur::derivation::derive(&m, &q).unwrap();
+    let tex = torseur::latex::value(&m, "V", &d.value);
+    assert!(
+        tex.contains("\\vec{v}") || tex.contains("\\vec{u}"),
+        "{tex}"
+    );
+    assert!(
+        !tex.contains("\\vec{x}_{2}") && !tex.contains("\\vec{y}_{2}"),
+        "{tex}"
+    );
+    let graph = torseur::latex::link_graph(&m);
+    assert!(
+        graph.contains("\\vec{z})") && !graph.contains("\\vec{z}_{0}"),
+        "{graph}"
+    );
+}
