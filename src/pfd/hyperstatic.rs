@@ -129,7 +129,7 @@ pub(super) fn undetermined(
     for (v, value) in solved {
         if free.iter().any(|&f| !value.num.derivative(f).is_zero()) {
             vars.push(*v);
-            // d x − n = 0, its first coefficient made positive.
+            // x = n/d, kept as d x − n = 0.
             relations.push(&(&value.den * &x(*v)) - &value.num);
         }
     }
