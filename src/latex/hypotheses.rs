@@ -228,7 +228,7 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
     if let Some(g) = &m.dynamics.gravity {
         parts.push(format!(
             "l'accélération de la pesanteur est ${}$",
-            super::vector_over_bases(m, &doc.names, g)
+            super::values::vector_over_bases(m, &doc.names, g)
         ));
     }
     if !m.spec.links.is_empty() {

@@ -76,7 +76,7 @@ fn closures(doc: &mut Doc, derivatives: &[crate::expr::Expr]) {
         let comps = v.express_in(&m.frames, ground);
         let latex = format!(
             "\\vec{{0}} = {}",
-            super::vector_over_bases(m, &doc.names, &v)
+            super::values::vector_over_bases(m, &doc.names, &v)
         );
         let _ = writeln!(
             doc.o,

@@ -38,8 +38,6 @@ pub use figures::{link_graph, link_text, rotation_figures};
 pub use page::{Display, DisplayRole, Inline, quantity_title};
 pub use text::{MAX_ARROW_DEPTH, MAX_FORMULA_DEPTH, MAX_LABEL_CHARS, MAX_PROSE_CHARS};
 pub use text::{RichTextError, rich_text, rich_text_or_escaped};
-pub(crate) use values::value_within;
-use values::vector_over_bases;
 pub use values::{matrix, value, value_named, value_styled, vector_column, vector_sum};
 
 use crate::derivation::Value;

@@ -293,7 +293,7 @@ impl<'m> Doc<'m> {
         } else {
             super::LINE
         };
-        let body = super::value_within(self.m, &self.names, self.style, lhs, v, None, line);
+        let body = super::values::value_within(self.m, &self.names, self.style, lhs, v, None, line);
         self.record(role, what, body, v, None, boxed_display);
         self.remember(key_lhs, v);
     }
@@ -308,7 +308,7 @@ impl<'m> Doc<'m> {
         v: &Value,
         names: Option<&(String, String)>,
     ) {
-        let body = super::value_within(
+        let body = super::values::value_within(
             self.m,
             &self.names,
             self.style,
@@ -352,8 +352,8 @@ impl<'m> Doc<'m> {
     ) {
         let body = format!(
             "{} \\\\\n{}",
-            super::value_within(self.m, &self.names, self.style, l1, v1, None, super::LINE),
-            super::value_within(self.m, &self.names, self.style, l2, v2, None, super::LINE)
+            super::values::value_within(self.m, &self.names, self.style, l1, v1, None, super::LINE),
+            super::values::value_within(self.m, &self.names, self.style, l2, v2, None, super::LINE)
         );
         self.record(role, what, body, v1, Some(v2.clone()), boxed_display);
     }
@@ -361,7 +361,8 @@ impl<'m> Doc<'m> {
     /// A law `lhs = b` (Coulomb's T = −f N ε), not boxed: recorded as the equality of the
     /// unknown `a` that `lhs` names and `b`, and remembered.
     pub(super) fn show_law(&mut self, what: &str, lhs: &str, a: &Value, b: &Value) {
-        let body = super::value_within(self.m, &self.names, self.style, lhs, b, None, super::LINE);
+        let body =
+            super::values::value_within(self.m, &self.names, self.style, lhs, b, None, super::LINE);
         self.record(DisplayRole::Step, what, body, a, Some(b.clone()), false);
         self.remember(lhs, b);
     }
@@ -392,7 +393,7 @@ impl<'m> Doc<'m> {
         } else {
             lhs
         };
-        let body = super::value_within(
+        let body = super::values::value_within(
             self.m,
             &self.names,
             self.style,

@@ -157,7 +157,7 @@ fn position_items(doc: &mut Doc) {
     for p in m.points.ids().skip(1) {
         let pt = m.points.get(p);
         let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
-        let rhs = super::vector_over_bases(m, &doc.names, &pt.offset);
+        let rhs = super::values::vector_over_bases(m, &doc.names, &pt.offset);
         let math = format!(
             "\\overrightarrow{{{}{}}} = {rhs}",
             point(from),

@@ -207,7 +207,7 @@ fn room(lhs: &str, line: usize) -> usize {
 
 /// [`value_named`] on lines of at most `line` characters (a boxed result has less room), the
 /// basis vectors by the statement's `names`.
-pub(crate) fn value_within(
+pub(super) fn value_within(
     m: &Mechanism,
     names: &VectorNames,
     style: VectorStyle,

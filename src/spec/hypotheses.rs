@@ -95,35 +95,7 @@ pub(super) fn motions(
         let q = coord(field.clone(), c)?;
         let info = reg.coord_info(q);
         match info.kind {
-            CoordinateKind::Angle => {
-                // cos q and sin q become those of the angle parameter (or 1 and 0).
-                let (cos, sin, value) = if text.trim() == "0" {
-                    (reg.one(), reg.zero(), reg.zero())
-                } else {
-                    let b = reg
-                        .angle(text.trim())
-                        .filter(|b| reg.coord_info(*b).is_constant())
-                        .ok_or_else(|| {
-                            at(
-                                &field,
-                                format!(
-                                    "the angle `{c}` is held at 0 or at an angle parameter \
-                                     (a parameter of kind angle), not at `{text}`"
-                                ),
-                            )
-                        })?;
-                    let value = reg.param(text.trim()).unwrap_or_else(|| reg.zero());
-                    (reg.cos(b), reg.sin(b), value)
-                };
-                for (from, to) in [(reg.cos(q), cos), (reg.sin(q), sin)] {
-                    if let Some(v) = from.single_variable() {
-                        subs.push((v, to));
-                    }
-                }
-                if let Some(v) = reg.value(q).and_then(|e| e.single_variable()) {
-                    subs.push((v, value));
-                }
-            }
+            CoordinateKind::Angle => held_angle(reg, q, (c, text), &field, subs)?,
             CoordinateKind::Length => {
                 let e = constant(reg, &field, text)?;
                 if let Some(v) = reg.value(q).and_then(|e| e.single_variable()) {
@@ -157,6 +129,44 @@ pub(super) fn motions(
         }
         subs.push((v, e));
         effects.push(format!("{p} = {}", text.trim()));
+    }
+    Ok(())
+}
+
+/// An angle coordinate `q` (named `c`) held at equilibrium at `text`, 0 or an angle
+/// parameter: cos q and sin q become those of the parameter (or 1 and 0), and q its value.
+fn held_angle(
+    reg: &Rc<Registry>,
+    q: CoordId,
+    (c, text): (&str, &str),
+    field: &str,
+    subs: &mut Vec<(VarId, Expr)>,
+) -> Result<(), SpecError> {
+    let (cos, sin, value) = if text.trim() == "0" {
+        (reg.one(), reg.zero(), reg.zero())
+    } else {
+        let b = reg
+            .angle(text.trim())
+            .filter(|b| reg.coord_info(*b).is_constant())
+            .ok_or_else(|| {
+                at(
+                    field,
+                    format!(
+                        "the angle `{c}` is held at 0 or at an angle parameter (a parameter of \
+                         kind angle), not at `{text}`"
+                    ),
+                )
+            })?;
+        let value = reg.param(text.trim()).unwrap_or_else(|| reg.zero());
+        (reg.cos(b), reg.sin(b), value)
+    };
+    for (from, to) in [(reg.cos(q), cos), (reg.sin(q), sin)] {
+        if let Some(v) = from.single_variable() {
+            subs.push((v, to));
+        }
+    }
+    if let Some(v) = reg.value(q).and_then(|e| e.single_variable()) {
+        subs.push((v, value));
     }
     Ok(())
 }

@@ -30,7 +30,7 @@
 mod form;
 mod harmonics;
 pub(crate) use harmonics::fourier_form;
-use harmonics::fourier_monos;
+use harmonics::{coefficient_expr, exponents, fourier_monos};
 mod rewrite;
 mod search;
 
@@ -408,16 +408,6 @@ fn grouped(e: &Expr, cheap: bool) -> Form {
     best
 }
 
-/// A coefficient (monomials of plain leaves) as an expression.
-fn coefficient_expr(reg: &Rc<Registry>, ms: &[Mono]) -> Expr {
-    Expr::from_terms(
-        reg,
-        ms.iter()
-            .map(|m| (m.coef.clone(), exponents(reg, m)))
-            .collect(),
-    )
-}
-
 /// A unit of [`clustered`]: a kinematic monomial and (part of) its coefficient.
 type Unit = (Kinematic, Expr);
 
@@ -587,31 +577,6 @@ fn times_form(a: Form, b: Form) -> Product {
         }
     }
     p
-}
-
-/// The exponent vector of a monomial of plain leaves (no compound angle).
-fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
-    let mut e = vec![0u8; reg.nvars()];
-    for (a, k) in &m.atoms {
-        let role = match a {
-            Leaf::Param(p) => VarRole::Parameter(*p),
-            Leaf::Inverse(p) => VarRole::Inverse(*p),
-            Leaf::Reciprocal(q, f) => VarRole::Reciprocal(*q, *f),
-            Leaf::Value(q) => VarRole::Value(*q),
-            Leaf::Rate(q, o) => VarRole::Rate(*q, *o),
-            // Only single angles here: a compound angle is no variable of the registry.
-            Leaf::Cos(x) if x.is_simple() => VarRole::Cos(x.terms()[0].0),
-            Leaf::Sin(x) if x.is_simple() => VarRole::Sin(x.terms()[0].0),
-            Leaf::Cos(_) | Leaf::Sin(_) => {
-                unreachable!("a compound angle is not a variable of the canonical form")
-            }
-        };
-        let i = reg
-            .index_of(role)
-            .expect("a leaf of a canonical term is a variable");
-        e[i.index()] += k;
-    }
-    e
 }
 
 /// The cheapest of the coefficient's rewritings (see the module documentation).
