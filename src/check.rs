@@ -224,9 +224,11 @@ pub fn compare(
     // An action of the bilan holds the unknowns of its links: each sample gives every unknown
     // of the PFD a random value, the same on both sides (a component the projection drops
     // may hold one that the value does not).
-    let held: Vec<String> = match q.kind.action() {
-        Some(_) => m.reg.unknowns().to_vec(),
-        None => Vec::new(),
+    // An equation of motion holds its inputs (a motor torque): given a value the same way.
+    let held: Vec<String> = match (&q.kind, q.kind.action()) {
+        (_, Some(_)) => m.reg.unknowns().to_vec(),
+        (QuantityKind::Eom(_), None) => m.dynamics().action_unknowns.clone(),
+        _ => Vec::new(),
     };
     let default = m.frame_name(m.default_basis).to_string();
     let mut row = CheckRow {

@@ -97,6 +97,11 @@ pub struct Solution {
     /// What the declared equations leave undetermined when the mechanism is hyperstatic
     /// (those unknowns are not in `unknowns`); None when they determine every unknown.
     pub hyperstatic: Option<Hyperstatic>,
+    /// The actions' unknowns that only equations of motion hold (a motor torque), in the
+    /// unknowns' order: inputs of `eom`, which keeps them as symbols (the direct dynamics),
+    /// and in `unknowns` as those equations solved for them (the inverse dynamics: the torque
+    /// that imposes a motion, in terms of q, q̇, q̈).
+    pub inputs: Vec<String>,
 }
 
 impl Solution {
@@ -203,6 +208,20 @@ pub enum PfdError {
     Dependent {
         /// The equation.
         theorem: usize,
+    },
+    /// The actions' unknowns that only equations of motion hold are not as many as those
+    /// equations: the inverse dynamics cannot give each of them.
+    #[error(
+        "{} appear(s) only in equations of motion ({}): as many equations of motion must \
+         hold such action unknowns as there are of them, to give each for an imposed motion",
+        unknowns.join(", "),
+        equations.join(", ")
+    )]
+    Inputs {
+        /// The action unknowns only equations of motion hold.
+        unknowns: Vec<String>,
+        /// The coordinates whose equations of motion hold them.
+        equations: Vec<String>,
     },
     /// An equation of motion is not linear in the accelerations (no mass matrix).
     #[error("the equation of motion of {coordinate} is not linear in the accelerations")]
@@ -473,7 +492,18 @@ pub fn solve_with_residuals(
             unknowns.insert(names[v].clone(), value.clone());
         }
     }
-    let (eom, eom_factors) = equations_of_motion(m, eoms, &solved, &names)?;
+    let (eom, eom_factors) = equations_of_motion(m, eoms, &solved, &names, &cols)?;
+    let (inputs, more) = inverse_dynamics(m, &eom, &names)?;
+    let mut conditions = conditions;
+    for c in more {
+        if !conditions.contains(&c) {
+            conditions.push(c);
+        }
+    }
+    for (v, value) in &inputs {
+        unknowns.insert(names[v].clone(), value.clone());
+    }
+    let inputs = inputs.into_iter().map(|(v, _)| names[&v].clone()).collect();
     Ok((
         Solution {
             unknowns,
@@ -481,6 +511,7 @@ pub fn solve_with_residuals(
             conditions,
             eom_factors,
             hyperstatic,
+            inputs,
         },
         residuals,
     ))
@@ -610,13 +641,17 @@ fn pivot_row(pending: &[(usize, Expr)], v: VarId) -> Option<usize> {
 }
 
 /// Each equation of motion with the solved unknowns substituted, by coordinate name, and the
-/// factor it was left multiplied by when a pivot did not divide back (only those not 1).
+/// factor it was left multiplied by when a pivot did not divide back (only those not 1). An
+/// unknown left in one must be an action's that no equation without `eom` holds (`cols`
+/// are those the others hold): an input, such as a motor torque.
 fn equations_of_motion(
     m: &Mechanism,
     eoms: Equations,
     solved: &[(VarId, Fraction)],
     names: &BTreeMap<VarId, String>,
+    cols: &[VarId],
 ) -> Result<(ByCoordinate, ByCoordinate), PfdError> {
+    let input = |v: &VarId| !cols.contains(v) && m.dynamics.action_unknowns.contains(&names[v]);
     let mut eom = BTreeMap::new();
     let mut eom_factors = BTreeMap::new();
     for (i, mut r) in eoms {
@@ -636,7 +671,7 @@ fn equations_of_motion(
             }
         }
         let left = unknowns_in(m, &r);
-        if let Some(v) = left.first() {
+        if let Some(v) = left.iter().find(|v| !input(v)) {
             return Err(PfdError::Undetermined {
                 theorem: i,
                 unknown: names[v].clone(),
@@ -654,6 +689,51 @@ fn equations_of_motion(
         eom.insert(name, r);
     }
     Ok((eom, eom_factors))
+}
+
+/// The inputs of the equations of motion (the actions' unknowns left in them) with their
+/// values for an imposed motion: the equations that hold them, one per input, solved for them
+/// (a motor torque C_m = J θ̈ + …), and the conditions of that solve (its pivots that are not
+/// numbers).
+fn inverse_dynamics(
+    m: &Mechanism,
+    eom: &ByCoordinate,
+    names: &BTreeMap<VarId, String>,
+) -> Result<(Solved, Vec<Expr>), PfdError> {
+    let mut inputs: Vec<VarId> = Vec::new();
+    let mut rows: Equations = Vec::new();
+    let mut coordinates: Vec<String> = Vec::new();
+    for (c, r) in eom {
+        let held = unknowns_in(m, r);
+        if held.is_empty() {
+            continue;
+        }
+        for v in held {
+            if !inputs.contains(&v) {
+                inputs.push(v);
+            }
+        }
+        let i = (m.dynamics.theorems.iter())
+            .position(|t| t.eom.is_some_and(|q| m.reg.coord_info(q).name == *c))
+            .expect("an equation of motion is a theorem's");
+        rows.push((i, r.clone()));
+        coordinates.push(c.clone());
+    }
+    if inputs.is_empty() {
+        return Ok((Vec::new(), Vec::new()));
+    }
+    inputs.sort();
+    let refused = || PfdError::Inputs {
+        unknowns: inputs.iter().map(|v| names[v].clone()).collect(),
+        equations: coordinates.iter().map(|c| format!("eom({c})")).collect(),
+    };
+    if rows.len() != inputs.len() {
+        return Err(refused());
+    }
+    match eliminate_unknowns(m, &inputs, rows, names) {
+        Ok((solved, conditions, free)) if free.is_empty() => Ok((solved, conditions)),
+        _ => Err(refused()),
+    }
 }
 
 /// Unknowns must enter linearly (no term with two unknown factors); else the two that multiply,

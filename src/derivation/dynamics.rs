@@ -189,6 +189,7 @@ pub(super) fn derive(
             // hold it, and those that hold the other unknowns of these (X_A + X_B = … needs
             // the moment that gives X_B), in the spec's order.
             let cited: Vec<usize> = match var {
+                Some(v) if with_steps && sol.inputs.contains(name) => driving(m, residuals, v),
                 Some(v) if with_steps => determining(m, residuals, v),
                 _ => Vec::new(),
             };
@@ -262,6 +263,29 @@ fn determining(m: &Mechanism, residuals: &[Expr], v: VarId) -> Vec<usize> {
     // as Coulomb's laws make it): the equations that share unknowns with it, all together.
     let mut cited = block(&rows, v, &mut Vec::new()).unwrap_or_else(|| coupled(&rows, v));
     cited.sort_unstable();
+    cited
+}
+
+/// The theorems that give an input of the equations of motion `v` (a motor torque) for an
+/// imposed motion: the equations of motion that hold it, and those that determine the other
+/// unknowns these hold, in the spec's order.
+fn driving(m: &Mechanism, residuals: &[Expr], v: VarId) -> Vec<usize> {
+    let theorems = &m.dynamics.theorems;
+    let mut cited: Vec<usize> = Vec::new();
+    for (i, t) in theorems.iter().enumerate() {
+        if t.eom.is_none() || residuals[i].derivative(v).is_zero() {
+            continue;
+        }
+        cited.push(i);
+        for u in unknowns_in(m, &residuals[i])
+            .into_iter()
+            .filter(|&u| u != v)
+        {
+            cited.extend(determining(m, residuals, u));
+        }
+    }
+    cited.sort_unstable();
+    cited.dedup();
     cited
 }
 

@@ -140,6 +140,11 @@ pub struct Dynamics {
     pub dry: Vec<DryFriction>,
     /// Coulomb's laws on contacts' unknowns, in the spec's order of the links.
     pub laws: Vec<CoulombLaw>,
+    /// The unknowns the given actions declare (a motor torque `C_m`), in the spec's order.
+    /// One that no equation without `eom` holds is an input of the equations of motion: a
+    /// known torque for the direct dynamics, and found from them for an imposed motion
+    /// (the inverse dynamics).
+    pub action_unknowns: Vec<String>,
 }
 
 /// A coordinate declared small, and the equilibrium value it moves around.

@@ -144,7 +144,7 @@ impl At<'_> {
                 Raw::Scalar(kinetic_energy(m, st, vals, &solids, j)?)
             }
             K::Unknown(name) => Raw::Scalar(dynamics::unknown(m, st, vals, name)?),
-            K::Eom(c) => Raw::Scalar(dynamics::eom(m, st, vals, c)?),
+            K::Eom(c) => Raw::Scalar(dynamics::eom(m, st, vals, c, self.unknowns)?),
             K::ActionResultant(a) => {
                 let [r, _] = self.action(a, 0)?;
                 Raw::Vector(r?)

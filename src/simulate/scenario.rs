@@ -98,11 +98,12 @@ impl Plan {
     ) -> Result<Plan, SimulateError> {
         let err = |s: String| SimulateError::Scenario(format!("scenario `{}`: {s}", sc.name));
         let sol = pfd::solve(m).map_err(|e| err(e.to_string()))?;
-        check_values(m, sc).map_err(err)?;
+        check_values(m, sc, &sol.inputs).map_err(err)?;
         let base = base_values(m, sc).map_err(err)?;
         let (mut imposed, mut breakpoints) = imposed_laws(m, sc).map_err(err)?;
         let (free, driven) = split_coordinates(m, sc, &base, &mut imposed);
         let initial = free_initial(m, sc, &sol, &free).map_err(err)?;
+        given_inputs(m, sc, &sol, &free).map_err(err)?;
         let dynamics = compile_dynamics(m, &sol, &free).map_err(err)?;
         let (recorded, scales) =
             compile_recorded(m, &sol, &base, record, integrate).map_err(err)?;
@@ -364,9 +365,9 @@ fn set(m: &Mechanism, q: CoordId, v: [f64; 3], point: &mut [f64]) {
     }
 }
 
-/// Every parameter given a finite value, and only parameters (a dry friction's sign is set by
-/// the simulation).
-fn check_values(m: &Mechanism, sc: &ScenarioSpec) -> Result<(), String> {
+/// Every parameter given a finite value, and only parameters or `inputs` of the equations of
+/// motion (a motor torque; a dry friction's sign is set by the simulation).
+fn check_values(m: &Mechanism, sc: &ScenarioSpec, inputs: &[String]) -> Result<(), String> {
     let reg = &m.reg;
     let sign = |p: &str| m.dynamics.dry.iter().any(|d| d.sign == p);
     for p in reg.parameters() {
@@ -381,7 +382,14 @@ fn check_values(m: &Mechanism, sc: &ScenarioSpec) -> Result<(), String> {
                  simulation sets it"
             ));
         }
-        if !reg.parameters().contains(k) {
+        if reg.unknowns().contains(k) && !inputs.contains(k) {
+            return Err(format!(
+                "`{k}` is found by the equations of `pfd` without `eom`: the scenario cannot \
+                 give it (an action's unknown is an input only where equations of motion \
+                 alone hold it)"
+            ));
+        }
+        if !reg.parameters().contains(k) && !inputs.contains(k) {
             return Err(format!("`{k}` is not a parameter"));
         }
         if !v.is_finite() {
@@ -408,7 +416,9 @@ fn base_values(m: &Mechanism, sc: &ScenarioSpec) -> Result<Vec<f64>, String> {
                     c
                 };
             }
-            VarRole::Parameter(k) if !reg.is_unknown(k) => {
+            // A parameter, or an input of the equations of motion the scenario gives (a
+            // motor torque; [`given_inputs`] demands those a free coordinate's equation holds).
+            VarRole::Parameter(k) => {
                 base[i] = sc.values.get(reg.scalar_name(k)).copied().unwrap_or(0.0);
             }
             // 1/k, for a parameter k the spec divides by.
@@ -537,6 +547,31 @@ fn free_initial(
         }
     }
     Ok(initial)
+}
+
+/// Every input of the equations of motion (a motor torque) that a free coordinate's equation
+/// holds is given a value by the scenario: the direct dynamics integrates the motion it drives.
+/// (An imposed coordinate's inputs are found from its motion, and may be recorded.)
+fn given_inputs(
+    m: &Mechanism,
+    sc: &ScenarioSpec,
+    sol: &pfd::Solution,
+    free: &[CoordId],
+) -> Result<(), String> {
+    for &q in free {
+        let name = &m.reg.coord_info(q).name;
+        let Some(e) = sol.eom.get(name) else { continue };
+        for (input, v) in pfd::unknown_vars(m) {
+            let held = e.contains_var(v);
+            if held && sol.inputs.contains(&input) && !sc.values.contains_key(&input) {
+                return Err(format!(
+                    "the equation of motion of `{name}` holds the input `{input}`: give its \
+                     value in `values`, or impose the motion of `{name}`"
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// M (row-major) then h of M q̈ + h = 0 over the free coordinates, compiled; every eom is

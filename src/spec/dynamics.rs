@@ -84,6 +84,9 @@ pub(super) fn build(
     for (i, node) in resolved.actions.iter().enumerate() {
         d.actions.push(action(m, spec, i, node)?);
     }
+    d.action_unknowns = (unknowns.actions.iter().flatten())
+        .map(|&u| unknowns.names[u].clone())
+        .collect();
     // What each theorem isolates, its point, its vector and its coordinate, as resolved.
     for (t, node) in spec.pfd.iter().zip(&resolved.theorems) {
         let eom = (t.eom.as_ref()).map(|c| m.reg.coord(c).expect("a coordinate, as resolved"));

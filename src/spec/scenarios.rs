@@ -35,7 +35,9 @@ pub(super) fn check(m: &Mechanism) -> Result<(), SpecError> {
                     ),
                 ));
             }
-            if !reg.parameters().contains(k) {
+            // An action's unknown may be given: an input of the equations of motion (a
+            // motor torque), which `simulate` checks against the solved PFD.
+            if !reg.parameters().contains(k) && !m.dynamics.action_unknowns.contains(k) {
                 return Err(at(here, format!("`{k}` is not a parameter")));
             }
         }

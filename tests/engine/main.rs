@@ -25,6 +25,7 @@ mod golden;
 mod helical;
 mod hyperstatic;
 mod hypotheses;
+mod inverse;
 mod kinematics;
 mod latex;
 mod latex_safe;

@@ -4,8 +4,9 @@
 //! compiled evaluation against the exact entries, and the `Display` of derived values read back
 //! by the spec's reader.
 
-use rand::SeedableRng;
+use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use std::collections::BTreeMap;
 use torseur::numeric::{NumValue, NumericModel, Sample};
 use torseur::output::{Values, numeric_point};
 use torseur::pfd::EquationsOfMotion;
@@ -68,10 +69,15 @@ fn the_pendulum_on_a_cart_splits_as_derived_by_hand() {
 }
 
 /// The float backend's eom(q) at a sample whose accelerations (and, for `rest`, rates) are
-/// replaced.
-fn float_eom(model: &NumericModel, s: &Sample, q: &str) -> f64 {
+/// replaced, its inputs (a motor torque the equations of motion hold) at `inputs`.
+fn float_eom(model: &NumericModel, s: &Sample, q: &str, inputs: &BTreeMap<String, f64>) -> f64 {
     let v = model
-        .evaluate(&Quantity::parse(&format!("eom({q})")).unwrap(), s, "0")
+        .evaluate_with(
+            &Quantity::parse(&format!("eom({q})")).unwrap(),
+            s,
+            inputs,
+            "0",
+        )
         .unwrap_or_else(|e| panic!("eom({q}): {e}"));
     match v {
         NumValue::Scalar(x) => x,
@@ -108,6 +114,11 @@ fn every_library_split_agrees_with_the_float_backend() {
         let model = NumericModel::new(m.spec()).unwrap();
         let mut rng = ChaCha8Rng::seed_from_u64(7);
         let names = eq.coordinates();
+        // The inputs of the equations of motion (the robot's motor torques): random values,
+        // the same on both sides.
+        let inputs: BTreeMap<String, f64> = (torseur::pfd::solve(&m).unwrap().inputs.iter())
+            .map(|n| (n.clone(), rng.random_range(-2.0..2.0)))
+            .collect();
         for _ in 0..3 {
             let s = model.sample(&mut rng).unwrap();
             let mut zero_acc = s.clone();
@@ -125,7 +136,7 @@ fn every_library_split_agrees_with_the_float_backend() {
             let values = |s: &Sample| Values {
                 parameters: s.parameters.clone(),
                 coordinates: s.coordinates.clone(),
-                unknowns: Default::default(),
+                unknowns: inputs.clone(),
                 time: Some(s.time),
             };
             let point = numeric_point(&m, &values(&s)).unwrap();
@@ -138,14 +149,14 @@ fn every_library_split_agrees_with_the_float_backend() {
                 )
             };
             for (i, qi) in names.iter().enumerate() {
-                let base = float_eom(&model, &zero_acc, qi);
+                let base = float_eom(&model, &zero_acc, qi, &inputs);
                 for (j, qj) in names.iter().enumerate() {
                     let mut unit = zero_acc.clone();
                     unit.coordinates.get_mut(*qj).unwrap()[2] = 1.0;
-                    let mij = float_eom(&model, &unit, qi) - base;
+                    let mij = float_eom(&model, &unit, qi, &inputs) - base;
                     close(eq.mass[i][j].eval(&point), mij, &format!("M[{qi}][{qj}]"));
                 }
-                let q = -float_eom(&model, &rest, qi);
+                let q = -float_eom(&model, &rest, qi, &inputs);
                 close(eq.forces[i].eval(&point), q, &format!("Q[{qi}]"));
                 close(
                     eq.forces[i].eval(&rest_point),

@@ -154,6 +154,9 @@ pub(super) struct Dynamics {
     /// Names of the unknowns: the links' components in order, then the actions' unknowns.
     pub unknowns: Vec<String>,
     unknown_index: BTreeMap<String, usize>,
+    /// The given actions' unknowns (a motor torque), by index: one that no equation without
+    /// `eom` holds is an input of the equations of motion.
+    given_unknowns: Vec<usize>,
 }
 
 /// Components a link transmits (0..3 resultant, 3..6 moment, in its basis), `a` the axis,
@@ -243,6 +246,7 @@ pub(super) fn build(
         let path = format!("actions[{i}]");
         d.actions.push(given(m, (a, &path), node, own.collect())?);
     }
+    d.given_unknowns = unknowns.actions.iter().flatten().copied().collect();
     d.unknown_index = (unknowns.names.iter().enumerate())
         .map(|(k, n)| (n.clone(), k))
         .collect();

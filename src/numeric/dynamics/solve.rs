@@ -489,6 +489,9 @@ struct Solution {
     undetermined: Vec<usize>,
     /// Each declared equation's residual, coefficients of absent unknowns set to zero.
     residuals: Vec<Lin<f64>>,
+    /// The given actions' unknowns that only equations with `eom` hold (a motor torque): the
+    /// inputs of the equations of motion.
+    inputs: Vec<usize>,
 }
 
 /// The value of the unknown `name` at the sample, solved from the equations without `eom`.
@@ -514,6 +517,9 @@ pub(in crate::numeric) fn unknown(
         )));
     };
     let solution = solve(m, st, vals)?.map_err(fail)?;
+    if solution.inputs.contains(k) {
+        return inverse(m, &solution, *k).map_err(fail);
+    }
     if solution.undetermined.contains(k) {
         return Err(fail(format!(
             "the equations of the PFD without eom fix `{name}` only together with other \
@@ -528,13 +534,57 @@ pub(in crate::numeric) fn unknown(
     })
 }
 
+/// An input of the equations of motion (the unknown `k`, a motor torque) for the sample's
+/// motion taken as imposed: the equations with `eom` that hold inputs, as many as them, solved
+/// for them by LU, the other unknowns at their solved values (the inverse dynamics).
+fn inverse(m: &NumericModel, solution: &Solution, k: usize) -> Result<f64, String> {
+    let dy = &m.dynamics;
+    let inputs = &solution.inputs;
+    let rows: Vec<usize> = (0..dy.theorems.len())
+        .filter(|&i| dy.theorems[i].eom.is_some())
+        .filter(|&i| inputs.iter().any(|&j| solution.residuals[i].a[j] != 0.0))
+        .collect();
+    if rows.len() != inputs.len() {
+        return Err(format!(
+            "{} equation(s) of motion hold the {} input(s) of the equations of motion: the \
+             inverse dynamics needs one per input",
+            rows.len(),
+            inputs.len()
+        ));
+    }
+    let n = inputs.len();
+    let mut a = DMatrix::zeros(n, n);
+    let mut b = DVector::zeros(n);
+    for (r, &i) in rows.iter().enumerate() {
+        let res = &solution.residuals[i];
+        let mut c = res.c;
+        for (j, x) in res.a.iter().enumerate() {
+            match inputs.iter().position(|&u| u == j) {
+                Some(col) => a[(r, col)] = *x,
+                None if *x != 0.0 => {
+                    c += x * solution.values[j]
+                        .ok_or_else(|| format!("the unknown `{}` has no value", dy.unknowns[j]))?
+                }
+                None => {}
+            }
+        }
+        b[r] = -c;
+    }
+    let y = a.lu().solve(&b).ok_or_else(|| {
+        "the equations of motion do not determine their inputs at this sample".to_string()
+    })?;
+    Ok(y[inputs.iter().position(|&u| u == k).expect("an input")])
+}
+
 /// The residual of the equation of motion of coordinate `q` at the sample (q̈ the sample's),
-/// the unknowns solved from the equations without `eom` substituted.
+/// the unknowns solved from the equations without `eom` substituted, and its inputs (a motor
+/// torque) at their `given` values.
 pub(in crate::numeric) fn eom(
     m: &NumericModel,
     st: &State,
     vals: &Values,
     q: &str,
+    given: &BTreeMap<String, f64>,
 ) -> Result<f64, NumericError> {
     let fail = |message: String| NumericError::Quantity {
         quantity: format!("eom({q})"),
@@ -552,6 +602,16 @@ pub(in crate::numeric) fn eom(
     let mut x = r.c;
     for (k, a) in r.a.iter().enumerate() {
         if *a == 0.0 {
+            continue;
+        }
+        let name = &dy.unknowns[k];
+        if solution.inputs.contains(&k) {
+            let v = given.get(name).ok_or_else(|| {
+                fail(format!(
+                    "its input `{name}` is given no value at this sample"
+                ))
+            })?;
+            x += a * v;
             continue;
         }
         let v = solution.values[k].ok_or_else(|| {
@@ -662,9 +722,14 @@ fn solve(
             }
         }
     }
+    let inputs = (dy.given_unknowns.iter().copied())
+        .filter(|k| !cols.contains(k))
+        .filter(|&k| residuals.iter().any(|r| r.a[k] != 0.0))
+        .collect();
     Ok(Ok(Solution {
         values,
         undetermined,
         residuals,
+        inputs,
     }))
 }
