@@ -356,6 +356,8 @@ impl<'m> Doc<'m> {
             super::values::value_within(self.m, &self.names, self.style, l2, v2, None, super::LINE)
         );
         self.record(role, what, body, v1, Some(v2.clone()), boxed_display);
+        // The first side (a theorem's dynamic side) may be cited by a later theorem.
+        self.remember(l1, v1);
     }
 
     /// A law `lhs = b` (Coulomb's T = −f N ε), not boxed: recorded as the equality of the

@@ -115,6 +115,20 @@ fn theorem_at<'d>(
     if k + 2 == steps.len() && unknown_at_once(doc, d, &theorem) {
         return Written::Unknown;
     }
+    // Its dynamic side shown already (a question asked it, or an earlier theorem wrote it)
+    // and longer than half a line: cited, only the actions written (a short one, M ẍ, is
+    // clearer written again).
+    let long = match &theorem.dynamic.1 {
+        Value::Scalar(e) => super::width(&super::expr(e)) > super::LINE / 2,
+        _ => true,
+    };
+    if let Some(place) = doc
+        .cited(&theorem.dynamic.0, &theorem.dynamic.1)
+        .filter(|_| long)
+    {
+        *last_equality = Some(cited_dynamic_side(doc, &ext_step.label, theorem, &place));
+        return Written::Theorem { next: k + 2 };
+    }
     *last_equality = Some(theorem_equality(doc, &dyn_step.label, theorem));
     Written::Theorem { next: k + 2 }
 }
@@ -157,6 +171,27 @@ fn theorem_equality(doc: &mut Doc, what: &str, theorem: Theorem) -> (Value, Valu
     } = theorem;
     let _ = writeln!(doc.o, "{title}, ${dl} = {el}$ :");
     doc.show_equality(DisplayRole::Step, what, &dl, &dv, &el, &ev, false);
+    (dv, ev)
+}
+
+/// A theorem whose dynamic side was shown at `place`: its title and equality, that side
+/// cited, then the actions' side alone on its line; returns their values (dynamic side,
+/// actions).
+fn cited_dynamic_side(doc: &mut Doc, what: &str, theorem: Theorem, place: &str) -> (Value, Value) {
+    let Theorem {
+        title,
+        dynamic: (dl, dv),
+        external: (el, ev),
+    } = theorem;
+    let place = match place {
+        "ce qui précède" => "ci-dessus".to_string(),
+        p => format!("dans {p}"),
+    };
+    let _ = writeln!(
+        doc.o,
+        "{title}, ${dl} = {el}$, avec ${dl}$ établi {place} :"
+    );
+    doc.show_keyed(DisplayRole::Step, what, &el, &el, &ev, false);
     (dv, ev)
 }
 
