@@ -366,7 +366,10 @@ fn motion(s: &str) -> Result<Motion, String> {
     let (a, b) = s
         .split_once('/')
         .ok_or_else(|| format!("expected a motion moving/reference, got `{s}`"))?;
-    check_name(a)?;
+    // Several solids or sets moving together: `1+2` (a carrier with the mass it carries).
+    for part in a.split('+') {
+        check_name(part)?;
+    }
     check_name(b)?;
     Ok(Motion {
         moving: a.to_string(),
