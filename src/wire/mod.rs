@@ -654,6 +654,8 @@ pub struct InertiaSpec {
 /// A solid.
 #[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
+// Its frame, or the solid that carries it (whose frame it takes): an editor asks for one.
+#[schemars(extend("anyOf" = [{"required": ["frame"]}, {"required": ["carried_by"]}]))]
 pub struct SolidSpec {
     /// Solid name: its number (`1`, `2`).
     pub name: String,
