@@ -366,7 +366,7 @@ fn motion(s: &str) -> Result<Motion, String> {
     let (a, b) = s
         .split_once('/')
         .ok_or_else(|| format!("expected a motion moving/reference, got `{s}`"))?;
-    check_name(a)?;
+    check_system(a)?;
     check_name(b)?;
     Ok(Motion {
         moving: a.to_string(),
@@ -379,11 +379,17 @@ fn action(s: &str) -> Result<ActionRef, String> {
         .split_once("->")
         .ok_or_else(|| format!("expected an action from->on, got `{s}`"))?;
     check_name(a)?;
-    check_name(b)?;
+    check_system(b)?;
     Ok(ActionRef {
         from: a.to_string(),
         on: b.to_string(),
     })
+}
+
+/// A system: a solid or a set, or several joined by `+` (`1+2`, a carrier with the mass it
+/// carries), each a name.
+fn check_system(s: &str) -> Result<(), String> {
+    s.split('+').try_for_each(check_name)
 }
 
 /// Names in the notation are ASCII letters, digits and `_`, starting with a letter or digit.
@@ -502,7 +508,7 @@ fn call_kind(core: &str) -> Result<QuantityKind, String> {
             }
         }
         "Pint" => {
-            check_name(args)?;
+            check_system(args)?;
             QuantityKind::InternalPower(args.to_string())
         }
         "J_eq" => {

@@ -486,7 +486,7 @@ pub(super) fn link_graph_with(m: &Mechanism, names: &VectorNames) -> String {
 /// The `tikzpicture` of [`link_graph`] and its printed width in cm; none without links.
 pub(super) fn link_picture(m: &Mechanism, names: &VectorNames) -> Option<(String, f64)> {
     let links = &m.spec.links;
-    if links.is_empty() {
+    if links.is_empty() && m.bodies.iter().all(|b| b.carried_by.is_none()) {
         return None;
     }
     let (nodes, edges) = link_graph_of(m, names, links);
@@ -516,6 +516,21 @@ fn link_graph_of(m: &Mechanism, names: &VectorNames, links: &[LinkSpec]) -> (Vec
             }
         }
     }
+    // A solid carried by another (`carried_by`) hangs from its carrier, with no link: the
+    // two are « solidaires » (fixed together, as an encastrement would hold them).
+    let carried: Vec<(&str, &str)> = (m.bodies.iter())
+        .filter_map(|b| {
+            b.carried_by
+                .map(|c| (m.body(c).name.as_str(), b.name.as_str()))
+        })
+        .collect();
+    for &(c, b) in &carried {
+        for s in [c, b] {
+            if !nodes.iter().any(|n| n == s) {
+                nodes.push(s.to_string());
+            }
+        }
+    }
     let index = |s: &str| nodes.iter().position(|n| n == s).unwrap_or(0);
     let mut edges = Edges::new();
     for l in links {
@@ -524,6 +539,11 @@ fn link_graph_of(m: &Mechanism, names: &VectorNames, links: &[LinkSpec]) -> (Vec
             .entry((a.min(b), a.max(b)))
             .or_default()
             .push(link_text_with(names, l));
+    }
+    for &(c, b) in &carried {
+        let (a, b) = (index(c), index(b));
+        let text = "solidaires (encastrement)".to_string();
+        edges.entry((a.min(b), a.max(b))).or_default().push(text);
     }
     (nodes, edges)
 }

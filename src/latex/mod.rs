@@ -311,8 +311,12 @@ pub fn basis(n: &str) -> String {
     format!("\\mathcal{{B}}_{{{}}}", escape_ident(n))
 }
 
-/// A solid number as is, a name (`pes`, `moteur`) upright.
+/// A solid number as is, a name (`pes`, `moteur`) upright; solids isolated together as
+/// `1+2`.
 pub(crate) fn action_side(n: &str) -> String {
+    if n.contains('+') {
+        return n.split('+').map(action_side).collect::<Vec<_>>().join("+");
+    }
     if n.chars().all(|c| c.is_ascii_digit()) {
         n.to_string()
     } else if n.len() == 1 {
@@ -322,11 +326,21 @@ pub(crate) fn action_side(n: &str) -> String {
     }
 }
 
+/// The exterior of a system written as an action's side (`s` its LaTeX): \bar{1}, and
+/// \overline{1+2} over several solids.
+pub(crate) fn exterior(s: &str) -> String {
+    if s.contains('+') {
+        format!("\\overline{{{s}}}")
+    } else {
+        format!("\\bar{{{s}}}")
+    }
+}
+
 /// An action `from \rightarrow on`, the exterior of `on` written \bar{on}.
 fn action(a: &ActionRef) -> String {
     let on = action_side(&a.on);
     let from = if a.from == "ext" {
-        format!("\\bar{{{on}}}")
+        exterior(&on)
     } else {
         action_side(&a.from)
     };
@@ -334,7 +348,9 @@ fn action(a: &ActionRef) -> String {
 }
 
 fn motion(m: &Motion) -> String {
-    format!("{}/{}", escape_ident(&m.moving), escape_ident(&m.reference))
+    // Several solids moving together (`1+2`) keep their `+`.
+    let moving: Vec<String> = m.moving.split('+').map(escape_ident).collect();
+    format!("{}/{}", moving.join("+"), escape_ident(&m.reference))
 }
 
 /// A quantity in the seed's notation: `\overrightarrow{\delta(O_{2},2/0)}`, `\{\mathcal{D}(2/0)\}_{O_2}`.

@@ -215,8 +215,12 @@ pub(super) fn solids(doc: &mut Doc) {
             continue;
         }
         let mass = super::expr(&b.mass);
+        // A carried solid says what carries it, as the statement does.
+        let carried = (b.carried_by)
+            .map(|c| format!(", porté par ${}$", super::words::solid(&m.body(c).name)))
+            .unwrap_or_default();
         let intro = format!(
-            "Solide ${}$ : masse ${mass}$, centre d'inertie ${}$",
+            "Solide ${}${carried} : masse ${mass}$, centre d'inertie ${}$",
             name(&b.name),
             point(m.point_name(b.centre))
         );

@@ -271,16 +271,18 @@ fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]
         } else {
             format!("celui de {place}")
         };
+        let what = isolated_words(doc.m, isolate, iso_name);
         let _ = writeln!(
             doc.o,
-            "On isole ${iso_name}$ ; le bilan des actions mécaniques extérieures est {place}.\n"
+            "On isole {what} ; le bilan des actions mécaniques extérieures est {place}.\n"
         );
         return;
     }
     let m = doc.m;
+    let what = isolated_words(m, isolate, iso_name);
     let _ = writeln!(
         doc.o,
-        "On isole ${iso_name}$. Bilan des actions mécaniques extérieures à ${iso_name}$ :"
+        "On isole {what}. Bilan des actions mécaniques extérieures à ${iso_name}$ :"
     );
     // Actions already shown (asked as quantities above) are cited, not repeated.
     let mut by_place: Vec<(String, Vec<String>)> = Vec::new();
@@ -318,6 +320,35 @@ fn external_bilan(doc: &mut Doc, isolate: &str, iso_name: &str, actions: &[Step]
     super::coulomb::state_laws(doc, actions);
     let here = doc.here.clone();
     doc.bilans.insert(isolate.to_string(), here);
+}
+
+/// What « On isole » names: the system (`iso_name`), or for a carrier isolated with the
+/// solids it carries (`1+2`), « $S_1$, avec la masse ponctuelle $S_2$ qu'il porte ».
+fn isolated_words(m: &crate::mechanism::Mechanism, isolate: &str, iso_name: &str) -> String {
+    let mut parts = isolate.split('+');
+    let head = parts.next().unwrap_or(isolate);
+    let carried: Vec<String> = parts
+        .filter_map(|c| m.find_body(c))
+        .map(|c| {
+            let body = m.body(c);
+            let noun = if body.inertia.is_none() {
+                "la masse ponctuelle"
+            } else {
+                "le solide"
+            };
+            let by = body.carried_by.map(|k| m.body(k).name.as_str());
+            match by {
+                Some(k) if k == head => format!("{noun} ${}$ qu'il porte", solid(&body.name)),
+                Some(k) => format!("{noun} ${}$ que porte ${}$", solid(&body.name), solid(k)),
+                None => format!("{noun} ${}$", solid(&body.name)),
+            }
+        })
+        .collect();
+    if carried.is_empty() {
+        return format!("${iso_name}$");
+    }
+    let list = super::words::french_list(&carried);
+    format!("${}$, avec {list}", solid(head))
 }
 
 /// The theorem applied to the isolated system, at `at` (moment) or not (resultant), in

@@ -10,6 +10,10 @@ use crate::quantity::QuantityKind;
 
 /// `S_2` for solid `2`, `E` for a set.
 pub(super) fn solid(n: &str) -> String {
+    // A carrier isolated with what it carries: `1+2` is S₁ + S₂.
+    if n.contains('+') {
+        return n.split('+').map(solid).collect::<Vec<_>>().join(" + ");
+    }
     if n.chars().all(|c| c.is_ascii_digit()) {
         format!("S_{{{n}}}")
     } else {
@@ -83,7 +87,7 @@ pub(super) fn step_lhs(names: &super::VectorNames, k: &StepKind) -> String {
             on: (f, a),
         } => {
             let s = action_side(isolate);
-            let arrow = format!("\\bar{{{s}}} \\rightarrow {s}");
+            let arrow = format!("{} \\rightarrow {s}", super::exterior(&s));
             match p {
                 Some(p) => format!(
                     "\\overrightarrow{{M({},{arrow})}} \\cdot {}",

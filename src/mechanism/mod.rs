@@ -37,6 +37,9 @@ pub struct Body {
     pub inertia: Option<Inertia>,
     /// Declared symmetries, in the basis of the inertia matrix.
     pub symmetries: Vec<Symmetry>,
+    /// The solid that carries it (`carried_by`, « le rotor porte une masse ponctuelle »),
+    /// rigidly fixed to it with no link: isolating the carrier isolates it too.
+    pub carried_by: Option<BodyId>,
 }
 
 /// A hypothesis: a named set of substitutions that gives additional simplified forms.
@@ -299,12 +302,52 @@ impl Mechanism {
         self.frames.find(name)
     }
 
-    /// The solids a name refers to: one solid, or a set.
+    /// The solids a name refers to: one solid, a set, or several of them joined by `+`
+    /// (`1+2`, each solid once).
     pub fn solids_of(&self, name: &str) -> Option<Vec<BodyId>> {
         if let Some(b) = self.find_body(name) {
             return Some(vec![b]);
         }
+        if name.contains('+') {
+            let mut out: Vec<BodyId> = Vec::new();
+            for part in name.split('+') {
+                for b in self.solids_of(part)? {
+                    if !out.contains(&b) {
+                        out.push(b);
+                    }
+                }
+            }
+            return Some(out);
+        }
         self.sets.get(name).cloned()
+    }
+
+    /// The system isolated by a theorem on `solids`: these, with every solid they carry
+    /// (`carried_by`), in turn, each after its carrier.
+    pub fn with_carried(&self, solids: &[BodyId]) -> Vec<BodyId> {
+        let mut out = solids.to_vec();
+        let mut k = 0;
+        while k < out.len() {
+            let carrier = out[k];
+            for (i, b) in self.bodies.iter().enumerate() {
+                if b.carried_by == Some(carrier) && !out.contains(&BodyId(i)) {
+                    out.push(BodyId(i));
+                }
+            }
+            k += 1;
+        }
+        out
+    }
+
+    /// The system a theorem on `name` (its `solids`) isolates: with the solids they carry,
+    /// named `name+2+…` after them (`1+2`, the rotor with its balourd), or as it is.
+    pub fn isolated(&self, name: &str, solids: &[BodyId]) -> (String, Vec<BodyId>) {
+        let all = self.with_carried(solids);
+        let mut named = name.to_string();
+        for b in &all[solids.len()..] {
+            named = format!("{named}+{}", self.body(*b).name);
+        }
+        (named, all)
     }
 
     /// Point by name.

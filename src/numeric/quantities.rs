@@ -509,6 +509,24 @@ impl NumericModel {
         if let Some(list) = self.sets.get(name) {
             return Ok(list.clone());
         }
+        // Solids and sets moving together, `1+2`: their union.
+        if name.contains('+') {
+            let mut all: Vec<usize> = Vec::new();
+            for part in name.split('+') {
+                let one = self.solid_index.get(part).map(|s| vec![*s]);
+                let list = one.or_else(|| self.sets.get(part).cloned());
+                let list = list.ok_or_else(|| NumericError::Unknown {
+                    what: "solid or set".into(),
+                    name: part.into(),
+                })?;
+                all.extend(
+                    list.into_iter()
+                        .filter(|s| !all.contains(s))
+                        .collect::<Vec<_>>(),
+                );
+            }
+            return Ok(all);
+        }
         Err(NumericError::Unknown {
             what: "solid or set".into(),
             name: name.into(),

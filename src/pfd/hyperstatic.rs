@@ -29,18 +29,23 @@ pub struct Hyperstatic {
 }
 
 /// The scalar equations of the whole PFD as the course counts them: for every solid isolated
-/// alone, the resultant and the moment at the ground's origin on the ground's three vectors;
+/// alone (with the solids it carries), the resultant and the moment at the ground's origin on the ground's three vectors;
 /// then the Coulomb laws.
 fn every_equation(m: &Mechanism, cache: &mut torsor::Cache) -> Vec<Expr> {
     let ground = m.frames.ground();
     let origin = m.frame_origins[ground.0];
     let mut rows = Vec::new();
+    // A carried solid is counted with its carrier: one solid for the course.
     for (b, body) in m.bodies.iter().enumerate() {
+        if body.carried_by.is_some() {
+            continue;
+        }
+        let (isolate, solids) = m.isolated(&body.name, &[BodyId(b)]);
         for kind in [TheoremKind::Resultant, TheoremKind::Moment] {
             for axis in Axis::ALL {
                 let th = Theorem {
-                    isolate: body.name.clone(),
-                    solids: vec![BodyId(b)],
+                    isolate: isolate.clone(),
+                    solids: solids.clone(),
                     kind,
                     point: origin,
                     on: (ground, axis),

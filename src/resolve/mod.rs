@@ -24,11 +24,13 @@
 use crate::expr::{RESERVED, check_identifier};
 use crate::quantity::check_name;
 use crate::wire::SpecFile;
+use carried::{carriers, isolations, solid_frame};
 pub use constraints::{ClosureNode, HelixNode, RollingNode};
 pub use pfd::{ActionNode, Contact, LinkNode, Side, TheoremNode, Unknowns, unknowns, with_signs};
 use pfd::{Known, actions, links, theorems};
 use std::collections::{BTreeMap, HashSet};
 
+mod carried;
 mod constraints;
 mod pfd;
 
@@ -84,6 +86,8 @@ pub struct SolidNode<'a> {
     pub centre: Option<usize>,
     /// The positions of its inertia operator's point and basis, when it has one.
     pub inertia: Option<(usize, usize)>,
+    /// The position of the solid that carries it (`carried_by`), if one does.
+    pub carried_by: Option<usize>,
 }
 
 /// The names expressions read: parameters, coordinates and aliases (one namespace, each
@@ -469,6 +473,7 @@ pub fn resolve(spec: &SpecFile) -> Result<Resolved<'_>, Refusal> {
     };
     let (links, actions) = (links(&known)?, actions(&known)?);
     let theorems = theorems(&known)?;
+    isolations(&known, &links, &theorems)?;
     let (closures, rolling, helices) = constraints::constraints(&known, &links)?;
     Ok(Resolved {
         names: Names {
@@ -591,7 +596,7 @@ fn frames<'a>(
 }
 
 /// The solids: named once and apart from the ground (a body too), their frame, centre and
-/// inertia operator's point and basis found.
+/// inertia operator's point and basis found, each carrier a solid (see [`carriers`]).
 fn solids<'a>(
     spec: &'a SpecFile,
     frames: &BTreeMap<&str, usize>,
@@ -600,6 +605,7 @@ fn solids<'a>(
     let mut taken = HashSet::from([spec.ground.as_str()]);
     let names = spec.solids.iter().map(|s| s.name.as_str());
     distinct("solid", "solids", names, &mut taken)?;
+    let carried_by = carriers(spec)?;
     let mut solids = Vec::with_capacity(spec.solids.len());
     for (i, s) in spec.solids.iter().enumerate() {
         let path = format!("solids[{i}]");
@@ -612,12 +618,13 @@ fn solids<'a>(
         };
         solids.push(SolidNode {
             name: &s.name,
-            frame: find(frames, "frame", format!("{path}.frame"), &s.frame)?,
+            frame: solid_frame(spec, frames, &carried_by, i)?,
             centre: match &s.centre {
                 Some(c) => Some(find(points, "point", format!("{path}.centre"), c)?),
                 None => None,
             },
             inertia,
+            carried_by: carried_by[i],
         });
     }
     Ok(solids)

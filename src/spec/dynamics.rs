@@ -90,9 +90,12 @@ pub(super) fn build(
     // What each theorem isolates, its point, its vector and its coordinate, as resolved.
     for (t, node) in spec.pfd.iter().zip(&resolved.theorems) {
         let eom = (t.eom.as_ref()).map(|c| m.reg.coord(c).expect("a coordinate, as resolved"));
+        // A carrier is isolated with the solids it carries (`1+2`).
+        let own: Vec<BodyId> = node.isolate.iter().map(|&b| BodyId(b)).collect();
+        let (isolate, solids) = m.isolated(&t.isolate, &own);
         d.theorems.push(Theorem {
-            isolate: t.isolate.clone(),
-            solids: node.isolate.iter().map(|&b| BodyId(b)).collect(),
+            isolate,
+            solids,
             kind: t.theorem,
             point: node.point.map_or(m.points.origin(), PointId),
             on: (FrameId(node.on.0), Axis::ALL[node.on.1]),

@@ -6,7 +6,7 @@ use super::refusal::{at, bounded, expr_err};
 use crate::expr::Registry;
 use crate::frame::{Axis, FrameId, Frames};
 use crate::inertia::{Inertia, Symmetry};
-use crate::mechanism::Body;
+use crate::mechanism::{Body, BodyId};
 use crate::point::PointId;
 use crate::resolve::Resolved;
 use crate::wire::{SpecFile, SymmetrySpec};
@@ -83,6 +83,7 @@ pub(super) fn bodies(
             centre,
             inertia,
             symmetries,
+            carried_by: node.carried_by.map(BodyId),
         });
     }
 

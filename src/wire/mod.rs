@@ -654,11 +654,21 @@ pub struct InertiaSpec {
 /// A solid.
 #[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
+// Its frame, or the solid that carries it (whose frame it takes): an editor asks for one.
+#[schemars(extend("anyOf" = [{"required": ["frame"]}, {"required": ["carried_by"]}]))]
 pub struct SolidSpec {
     /// Solid name: its number (`1`, `2`).
     pub name: String,
-    /// Frame attached to the solid.
-    pub frame: String,
+    /// Frame attached to the solid; for a solid `carried_by` another, its carrier's frame
+    /// when left out (and no other).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub frame: Option<String>,
+    /// The solid that carries this one (« le rotor porte une masse ponctuelle m en P »): it
+    /// is rigidly fixed to it, with no link between them. Isolating the carrier isolates it
+    /// too (and every solid it carries in turn); it is never isolated without its carrier,
+    /// whose action on it is not modelled.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub carried_by: Option<String>,
     /// Mass expression; absent for a body of negligible mass (`"massless": true`). A mass
     /// of `0` declares a body of negligible mass too.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -285,3 +285,30 @@ fn a_first_hours_typos_are_refused_with_the_name_meant() {
         "{line}"
     );
 }
+
+/// Issue 37: the rotor isolated alone while the balourd shares its frame with no link gave
+/// X01 = 0 without a word; now one line names both solids and the fix, exit 2.
+#[test]
+fn a_solid_isolated_without_the_mass_on_its_frame_exits_2_naming_the_fix() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("derivations/rotor_balourd.json")).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    for t in v["pfd"].as_array_mut().unwrap() {
+        t["isolate"] = "1".into();
+    }
+    let d = tmp();
+    let p = d.path().join("rotor.json");
+    std::fs::write(&p, v.to_string()).unwrap();
+    for command in ["derive", "check"] {
+        let line = refused(&run(&[command, p.to_str().unwrap()]));
+        assert!(
+            line.starts_with("torseur: error: at pfd[0].isolate (line 1, column "),
+            "{line}"
+        );
+        assert!(
+            line.contains("the solids `1` and `2` share a frame with no link between them")
+                && line.contains("declare it `\"carried_by\": \"1\"`"),
+            "{line}"
+        );
+    }
+}

@@ -7,6 +7,7 @@
 mod actions;
 mod bilan;
 mod budget;
+mod carried;
 mod chain;
 mod check;
 mod closures;

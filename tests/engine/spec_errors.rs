@@ -511,10 +511,17 @@ fn every_error_message_is_bounded_and_names_its_path() {
 #[test]
 fn a_json_or_syntax_error_says_its_place_once_on_one_line() {
     let mut v = base();
+    v["solids"][1].as_object_mut().unwrap().remove("name");
+    let missing = refused(v).to_string();
+    assert_eq!(missing.matches("line").count(), 1, "{missing}");
+    assert!(missing.contains("missing field `name`"), "{missing}");
+    // A frame left out (a carried solid takes its carrier's) is placed at its solid.
+    let mut v = base();
     v["solids"][1].as_object_mut().unwrap().remove("frame");
     let missing = refused(v).to_string();
     assert_eq!(missing.matches("line").count(), 1, "{missing}");
-    assert!(missing.contains("missing field `frame`"), "{missing}");
+    assert!(missing.starts_with("at solids[1].frame (line"), "{missing}");
+    assert!(missing.contains("\"carried_by\": \"1\""), "{missing}");
     // A mass left out (it may be, for a body of negligible mass) is placed at its solid.
     let mut v = base();
     v["solids"][1].as_object_mut().unwrap().remove("mass");

@@ -212,7 +212,7 @@ fn the_schema_refuses_what_the_loader_refuses() {
             v["links"][0]["between"] = json!(["0", "1", "2"])
         }),
         ("a missing required field", |v| {
-            v["solids"][0].as_object_mut().unwrap().remove("frame");
+            v["solids"][0].as_object_mut().unwrap().remove("name");
         }),
         ("a 2x3 inertia matrix", |v| {
             v["solids"][0]["inertia"]["matrix"]

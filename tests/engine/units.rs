@@ -408,7 +408,7 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
     }
 }
 
-const LIBRARY: [&str; 26] = [
+const LIBRARY: [&str; 27] = [
     "arbre_deux_rotules",
     "bielle_manivelle",
     "bille_tube_tournant",
@@ -422,6 +422,7 @@ const LIBRARY: [&str; 26] = [
     "masse_ressort_forcee",
     "pendule_arbre_tournant",
     "pendule_inverse_ressort",
+    "pendule_masse_portee",
     "pendule_plan_incline",
     "pendule_sur_chariot",
     "quadrilatere_articule",

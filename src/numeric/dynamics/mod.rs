@@ -255,7 +255,7 @@ pub(super) fn build(
     // as resolved.
     for (t, node) in spec.pfd.iter().zip(&trees.theorems) {
         d.theorems.push(TheoremInfo {
-            solids: node.isolate.clone(),
+            solids: with_carried(trees, &node.isolate),
             moment: t.theorem == TheoremKind::Moment,
             energy: t.theorem == TheoremKind::Energy,
             point: node.point.unwrap_or(0),
@@ -264,6 +264,29 @@ pub(super) fn build(
         });
     }
     Ok(d)
+}
+
+/// The solids a theorem on `isolate` isolates: these, and each solid whose chain of carriers
+/// (`carried_by`) reaches one of them (a balourd rides on its rotor).
+fn with_carried(trees: &Resolved, isolate: &[usize]) -> Vec<usize> {
+    let mut out = isolate.to_vec();
+    for s in 0..trees.solids.len() {
+        let mut up = trees.solids[s].carried_by;
+        // A chain of carriers ends (resolve refuses a cycle): at most one step per solid.
+        for _ in 0..trees.solids.len() {
+            match up {
+                Some(c) if isolate.contains(&c) => {
+                    if !out.contains(&s) {
+                        out.push(s);
+                    }
+                    break;
+                }
+                Some(c) => up = trees.solids[c].carried_by,
+                None => break,
+            }
+        }
+    }
+    out
 }
 
 /// Gravity: a vector constant in the ground frame, written on bases that do not turn with
