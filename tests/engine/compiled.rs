@@ -180,8 +180,8 @@ fn the_compiled_equations_of_motion_agree_with_the_exact_ones_on_every_spec() {
         "compared {}: {compared:?}; skipped {skipped:?}; worst relative {worst:e}",
         compared.len()
     );
-    // The library's 21 specs with equations of motion and the 4 planar chains.
-    assert_eq!(compared.len(), 25, "{compared:?}");
+    // The library's 22 specs with equations of motion and the 4 planar chains.
+    assert_eq!(compared.len(), 26, "{compared:?}");
     assert_eq!(
         skipped,
         [
