@@ -125,7 +125,7 @@ fn derivation_json(
 ) -> Json {
     let mut j = output::derive_json(m, std::slice::from_ref(d))["quantities"][0].take();
     let value: Value = match under {
-        Some(h) => d.value.under(h),
+        Some(h) => d.value_under(m, h),
         None => d.value.clone(),
     };
     if let Some(h) = under {

@@ -4,7 +4,7 @@
 use crate::frame::{Axis, FrameId};
 
 use crate::kinematics::{acceleration, omega, velocity};
-use crate::mechanism::{BodyId, Mechanism};
+use crate::mechanism::{BodyId, Hypothesis, Mechanism};
 use crate::point::PointId;
 use crate::quantity::{Motion, Quantity, QuantityKind};
 use crate::torsor::{self, Torsor};
@@ -365,6 +365,23 @@ pub struct Derivation {
     pub steps: Vec<Step>,
     /// The result.
     pub value: Value,
+}
+
+impl Derivation {
+    /// The value under the hypothesis `h`: its substitutions, and its first order in small
+    /// parameters; for a linearisation `lin(...)`, one first order in small parameters and
+    /// small coordinates together ([`crate::pfd::first_order_jointly`]).
+    pub fn value_under(&self, m: &Mechanism, h: &Hypothesis) -> Value {
+        value_under(m, &self.quantity, &self.value, h)
+    }
+}
+
+/// The value `v` of the quantity `q` under the hypothesis `h` (see [`Derivation::value_under`]).
+pub fn value_under(m: &Mechanism, q: &Quantity, v: &Value, h: &Hypothesis) -> Value {
+    match q.linear {
+        true => v.map(&|e| crate::pfd::first_order_jointly(m, e, h)),
+        false => v.under(h),
+    }
 }
 
 fn vec_value(m: &Mechanism, v: &Vector, b: FrameId) -> Value {

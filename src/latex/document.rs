@@ -136,7 +136,7 @@ fn question_equation(
     let lhs = format!("{} = {}", name(&e.lhs), doc.names.quantity_title(&q));
     let id = q.to_string();
     let v = match doc.under {
-        Some(h) => d.value.under(h),
+        Some(h) => d.value_under(doc.m, h),
         None => d.value.clone(),
     };
     let hyp = doc.under.map(|h| h.name.clone());

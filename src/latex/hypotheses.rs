@@ -218,6 +218,21 @@ fn first_order(d: &mut Doc, h: &Hypothesis) {
          en ces petits paramètres sont négligés.\n",
         super::words::french_list(&small)
     );
+    // A linearisation keeps one first order in the small parameters and coordinates together.
+    let m = d.m;
+    if m.dynamics.small.is_empty() || !m.quantities.iter().any(|q| q.linear) {
+        return;
+    }
+    let coordinates: Vec<String> = (m.dynamics.small.iter())
+        .map(|s| format!("${}$", super::name(&m.reg.coord_info(s.coord).name)))
+        .collect();
+    let _ = writeln!(
+        d.o,
+        "Pour les équations linéarisées, ce premier ordre est pris avec les petits mouvements \
+         en {} : le produit d'un petit paramètre par l'une de ces coordonnées ou par sa \
+         dérivée est du second ordre, et négligé.\n",
+        super::words::french_list(&coordinates)
+    );
 }
 
 /// The model's hypotheses, stated once: the reference frame, the links, gravity.

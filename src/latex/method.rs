@@ -483,7 +483,7 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
     let names = torsor_names(&d.quantity.kind);
     for h in result_hypotheses(doc) {
         let v = match h {
-            Some(h) => d.value.under(h),
+            Some(h) => d.value_under(doc.m, h),
             None => d.value.clone(),
         };
         if doc.under.is_none()

@@ -480,21 +480,26 @@ fn eom_result(
     }
     // Under each hypothesis stated so far, as the other results are.
     if doc.under.is_none() {
-        eom_under_stated(doc, id, e);
+        let q = crate::quantity::Quantity::parse(id).expect("the id of a quantity");
+        eom_under_stated(doc, &q, e);
     }
 }
 
-/// The equation of motion `e` under each hypothesis stated so far: unchanged, identically
-/// satisfied (no « 0 = 0 » in a box), or boxed.
-fn eom_under_stated(doc: &mut Doc, id: &str, e: &crate::expr::Expr) {
+/// The equation of motion `e` (of the quantity `q`, linearised or not) under each hypothesis
+/// stated so far: unchanged, identically satisfied (no « 0 = 0 » in a box), or boxed.
+fn eom_under_stated(doc: &mut Doc, q: &crate::quantity::Quantity, e: &crate::expr::Expr) {
     let m = doc.m;
+    let id = &q.to_string();
     let stated: Vec<_> = m
         .hypotheses
         .iter()
         .filter(|h| doc.is_stated(&h.name))
         .collect();
     for h in stated {
-        let eh = h.apply(e);
+        let eh = crate::derivation::value_under(m, q, &Value::Scalar(e.clone()), h);
+        let Value::Scalar(eh) = eh else {
+            unreachable!("a scalar stays one")
+        };
         let hname = super::escape_text(&h.name);
         if eh == *e {
             let _ = writeln!(doc.o, "Sous l'hypothèse {hname}, elle est inchangée.\n");
@@ -574,7 +579,11 @@ fn state_conditions(doc: &mut Doc) {
 /// hypothesis in words, then the linear equation boxed, without repeating the theorem.
 fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
     let m = doc.m;
-    let v = shown_value(doc, &d.value);
+    // Under a hypothesis with small parameters: one combined first order.
+    let v = match doc.under {
+        Some(h) => d.value_under(m, h),
+        None => d.value.clone(),
+    };
     let (QuantityKind::Eom(q), true, Value::Scalar(e)) = (&d.quantity.kind, d.quantity.linear, &v)
     else {
         return false;
@@ -610,6 +619,9 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
         .push((id.clone(), hn.clone(), v.clone(), doc.here.clone()));
     let (lhs, rhs) = upright(split_equation(e));
     doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
+    if doc.under.is_none() {
+        eom_under_stated(doc, &d.quantity, e);
+    }
     true
 }
 

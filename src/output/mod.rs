@@ -112,7 +112,7 @@ pub fn derive_text_in(m: &Mechanism, ds: &[Derivation], form: TextForm) -> Strin
             out.push_str(&format!(
                 "  under {}: {}\n",
                 h.name,
-                value_text_in(m, &d.value.under(h), form)
+                value_text_in(m, &d.value_under(m, h), form)
             ));
         }
     }
@@ -220,7 +220,7 @@ pub fn derive_json(m: &Mechanism, ds: &[Derivation]) -> Json {
             let hs: serde_json::Map<String, Json> = m
                 .hypotheses
                 .iter()
-                .map(|h| (h.name.clone(), value_json(m, &d.value.under(h))))
+                .map(|h| (h.name.clone(), value_json(m, &d.value_under(m, h))))
                 .collect();
             if !hs.is_empty() {
                 o["hypotheses"] = Json::Object(hs);

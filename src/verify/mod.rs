@@ -371,17 +371,22 @@ pub fn verify(
     }
     let mut derived = derived_value(m, &q)?;
     if let Some(h) = h {
-        derived = derived.under(h);
+        derived = crate::derivation::value_under(m, &q, &derived, h);
     }
     let mut reader = Reader::new(m, h);
     // An action of the bilan holds its links' unknowns as declared: so does the text.
     reader.keep_unknowns = q.kind.action().is_some();
     let given = parse_shaped(&mut reader, &q, &derived, text)?;
     // n/d − N/D, multiplied by d D ≠ 0: n D − d N.
+    // A linearisation under small parameters: one combined first order, on the text too.
+    let joint = |e: Expr| match h {
+        Some(h) if q.linear => crate::pfd::first_order_jointly(m, &e, h),
+        _ => e,
+    };
     let difference = given
         .iter()
         .zip(derived.fractions())
-        .map(|((n, den), d)| &(n * &d.den) - &(den * &d.num))
+        .map(|((n, den), d)| joint(&(n * &d.den) - &(den * &d.num)))
         .collect();
     let denominators: Vec<Expr> = given.into_iter().map(|(_, den)| den).collect();
     // A scalar that differs from the derived one but not along the motions (dEc/dt written
@@ -468,11 +473,16 @@ fn equation_of_motion(
 ) -> Result<Verdict, VerifyError> {
     let mut derived = derived_value(m, q)?;
     if let Some(h) = h {
-        derived = derived.under(h);
+        derived = crate::derivation::value_under(m, q, &derived, h);
     }
     let mut reader = Reader::new(m, h);
     // lhs − rhs = given / den over a common denominator (1 when none is typed).
     let (given, den) = reader.read_difference(l, r)?;
+    // A linearisation under small parameters: one combined first order, on the text too.
+    let given = match h {
+        Some(h) if q.linear => crate::pfd::first_order_jointly(m, &given, h),
+        _ => given,
+    };
     let d = derived.exprs()[0].clone();
     // Not equivalent: the difference is shown with the factor that matches most terms (a
     // wrong sign in one term then shows as that term alone).

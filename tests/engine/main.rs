@@ -19,6 +19,7 @@ mod derivative;
 mod energy;
 mod eval;
 mod figures;
+mod first_order;
 mod fourier;
 mod free_texts;
 mod friction;
