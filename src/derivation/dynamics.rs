@@ -169,6 +169,12 @@ pub(super) fn derive(
             }
             Value::Scalar(kinetic_energy(m, &solids))
         }
+        QuantityKind::Unknown(name) if super::trial::trial_of(m, name).is_some() => {
+            let (_, t) = super::trial::trial_of(m, name).expect("a trial's unknown");
+            let c = m.reg.coord_info(t.coord).name.clone();
+            let eom = shared.eom(m, &c).map_err(|e| ResolveError::new(q, e))?;
+            return super::trial::derive(m, q, name, eom, with_steps);
+        }
         QuantityKind::Unknown(name) => {
             if !m.reg.unknowns().contains(name) {
                 return Err(resolve_err(q, not_an_unknown(name)));
