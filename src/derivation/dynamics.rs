@@ -42,11 +42,18 @@ impl Shared {
 
     /// Counts the quantities of a run that ask for each equation of motion, so that the last
     /// request moves it out of the solution.
-    pub fn expect(&mut self, qs: &[Quantity]) {
+    pub fn expect(&mut self, m: &Mechanism, qs: &[Quantity]) {
         for q in qs {
-            if let QuantityKind::Eom(c) = &q.kind {
-                *self.eom_requests.entry(c.clone()).or_insert(0) += 1;
-            }
+            let c = match &q.kind {
+                QuantityKind::Eom(c) => c.clone(),
+                // A trial's unknown is solved from its coordinate's equation.
+                QuantityKind::Unknown(n) => match super::trial::trial_of(m, n) {
+                    Some((_, t)) => m.reg.coord_info(t.coord).name.clone(),
+                    None => continue,
+                },
+                _ => continue,
+            };
+            *self.eom_requests.entry(c).or_insert(0) += 1;
         }
     }
 

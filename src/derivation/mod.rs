@@ -642,7 +642,7 @@ pub fn derive_values_with(
     mut done: impl FnMut(usize, &Quantity),
 ) -> Result<Vec<Derivation>, ResolveError> {
     let mut cache = Shared::default();
-    cache.expect(qs);
+    cache.expect(m, qs);
     let mut out = Vec::with_capacity(qs.len());
     for (k, q) in qs.iter().enumerate() {
         out.push(within_budget(q, || derive_value(m, q, &mut cache))?);

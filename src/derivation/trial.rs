@@ -164,8 +164,8 @@ fn solve(
             q,
             format!(
                 "the harmonic `{h}` of eom({coord}) holds none of the trial's unknowns, so it \
-                 cannot vanish: add a term in `{h}` to the motion (`Y*{h}` with `Y` among its \
-                 unknowns)"
+                 cannot vanish: {}",
+                add_term(h)
             ),
         ));
     }
@@ -198,8 +198,8 @@ fn solve(
             return Err(err(
                 q,
                 format!(
-                    "the harmonic `{h}` of eom({coord}) cannot vanish with the others: add a \
-                     term in `{h}` to the motion, with an unknown of its own"
+                    "the harmonic `{h}` of eom({coord}) cannot vanish with the others: {}",
+                    add_term(h)
                 ),
             ));
         }
@@ -281,6 +281,11 @@ fn value(
     } else {
         Value::Quotient(f)
     })
+}
+
+/// The fix for a harmonic `h` the trial cannot cancel.
+fn add_term(h: &str) -> String {
+    format!("add `Y*{h}` to the trial motion, with `Y` among its unknowns (a name of its own)")
 }
 
 fn rate_label(c: &str, order: u8) -> String {
