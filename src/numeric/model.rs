@@ -560,6 +560,7 @@ fn hypotheses(
                 })?;
                 let node = (names.parse(&t.motion, Context::Instant))
                     .map_err(|m| spec_err(format!("{path}.trial.motion"), m))?;
+                trial_unknowns_held(names, &node, &t.unknowns, &path)?;
                 Some((c, node))
             }
         };
@@ -586,6 +587,27 @@ fn hypotheses(
         );
     }
     Ok(hypotheses)
+}
+
+/// Each unknown of a trial motion named once and held by its motion `node`.
+fn trial_unknowns_held(
+    names: &Names,
+    node: &Node,
+    unknowns: &[String],
+    path: &str,
+) -> Result<(), NumericError> {
+    let mut held = std::collections::BTreeSet::new();
+    expr::params_in(node, &mut held);
+    for (k, u) in unknowns.iter().enumerate() {
+        let field = format!("{path}.trial.unknowns[{k}]");
+        if unknowns[..k].contains(u) {
+            return Err(spec_err(&field, format!("`{u}` is listed twice")));
+        }
+        if !names.params.get(u).is_some_and(|i| held.contains(i)) {
+            return Err(spec_err(&field, format!("the motion does not hold `{u}`")));
+        }
+    }
+    Ok(())
 }
 
 /// The unknowns of the spec's trial motions, in order.
