@@ -266,6 +266,75 @@ pub fn compare(
     Ok(row)
 }
 
+/// Compares a trial motion's unknown `q` with the float backend by the backend's own route:
+/// at each sample drawn under the trial's hypothesis `h`, the exact values of the trial's
+/// unknowns (as numbers) put in the motion, the backend's own eom(q) along it must vanish at
+/// several random times, relative to its value with the unknowns at zero (the forcing).
+pub fn compare_trial(
+    m: &Mechanism,
+    model: &NumericModel,
+    q: &Quantity,
+    h: &Hypothesis,
+    samples: usize,
+    rng: &mut ChaCha8Rng,
+) -> Result<CheckRow, CheckError> {
+    let Some(t) = &h.trial else {
+        return Err(ResolveError::new(q, format!("`{}` poses no trial motion", h.name)).into());
+    };
+    let names: Vec<Quantity> = (t.unknowns.iter())
+        .map(|(n, _)| Quantity::parse(n))
+        .collect::<Result<_, _>>()
+        .map_err(|e| ResolveError::new(q, e.to_string()))?;
+    let exact = derive_values(m, &names)?;
+    let eom = Quantity::parse(&format!("eom({})", m.reg.coord_info(t.coord).name))
+        .map_err(|e| ResolveError::new(q, e.to_string()))?;
+    let default = m.frame_name(m.default_basis).to_string();
+    let none = BTreeMap::new();
+    let mut row = CheckRow {
+        quantity: q.to_string(),
+        hypothesis: Some(h.name.clone()),
+        worst: 0.0,
+        sample: 0,
+    };
+    for k in 0..samples {
+        let mut s = model.sample_under(rng, &h.name)?;
+        let values = Values {
+            parameters: s.parameters.clone(),
+            coordinates: s.coordinates.clone(),
+            unknowns: BTreeMap::new(),
+            time: Some(s.time),
+        };
+        let point = numeric_point(m, &values)?;
+        let mut zero = s.clone();
+        for ((n, _), d) in t.unknowns.iter().zip(&exact) {
+            s.parameters.insert(n.clone(), d.value.numbers(&point)[0]);
+            zero.parameters.insert(n.clone(), 0.0);
+        }
+        let (mut worst, mut scale) = (0.0f64, 1e-3f64);
+        for _ in 0..4 {
+            let time = rng.random_range(0.0..=10.0);
+            let residual = |s: &Sample| -> Result<f64, CheckError> {
+                let on = model.along_trial(&h.name, s, time)?;
+                let v = model.evaluate_with(&eom, &on, &none, &default)?.numbers();
+                Ok(v.first().copied().unwrap_or(f64::NAN))
+            };
+            let r = residual(&s)?.abs();
+            worst = if r.is_nan() { r } else { worst.max(r) };
+            scale = scale.max(residual(&zero)?.abs());
+        }
+        let err = if worst.is_nan() || !worst.is_finite() {
+            f64::INFINITY
+        } else {
+            worst / scale
+        };
+        if err > row.worst {
+            row.worst = err;
+            row.sample = k;
+        }
+    }
+    Ok(row)
+}
+
 /// Checks every requested quantity of the spec, in general and under each hypothesis: against
 /// the float backend, and for its dimension (every term of every component of the quantity's
 /// dimension, [`crate::units::check_value`]; terms holding a parameter without a unit are not
@@ -335,6 +404,15 @@ pub fn check(m: &Mechanism, samples: usize, seed: u64) -> Result<CheckReport, Ch
         // algebra on a checked quantity, tested against hand derivations; the float backend
         // computes full motions only.
         if q.linear {
+            continue;
+        }
+        // A trial's unknown is compared under its hypothesis only, by its own route.
+        if let QuantityKind::Unknown(n) = &q.kind
+            && let Some((h, _)) = crate::derivation::trial_of(m, n)
+        {
+            if !skipped(Some(h)) {
+                rows.push(compare_trial(m, &model, q, h, samples, &mut rng)?);
+            }
             continue;
         }
         for (h, value) in &under {

@@ -42,11 +42,18 @@ impl Shared {
 
     /// Counts the quantities of a run that ask for each equation of motion, so that the last
     /// request moves it out of the solution.
-    pub fn expect(&mut self, qs: &[Quantity]) {
+    pub fn expect(&mut self, m: &Mechanism, qs: &[Quantity]) {
         for q in qs {
-            if let QuantityKind::Eom(c) = &q.kind {
-                *self.eom_requests.entry(c.clone()).or_insert(0) += 1;
-            }
+            let c = match &q.kind {
+                QuantityKind::Eom(c) => c.clone(),
+                // A trial's unknown is solved from its coordinate's equation.
+                QuantityKind::Unknown(n) => match super::trial::trial_of(m, n) {
+                    Some((_, t)) => m.reg.coord_info(t.coord).name.clone(),
+                    None => continue,
+                },
+                _ => continue,
+            };
+            *self.eom_requests.entry(c).or_insert(0) += 1;
         }
     }
 
@@ -168,6 +175,12 @@ pub(super) fn derive(
                 }
             }
             Value::Scalar(kinetic_energy(m, &solids))
+        }
+        QuantityKind::Unknown(name) if super::trial::trial_of(m, name).is_some() => {
+            let (_, t) = super::trial::trial_of(m, name).expect("a trial's unknown");
+            let c = m.reg.coord_info(t.coord).name.clone();
+            let eom = shared.eom(m, &c).map_err(|e| ResolveError::new(q, e))?;
+            return super::trial::derive(m, q, name, eom, with_steps);
         }
         QuantityKind::Unknown(name) => {
             if !m.reg.unknowns().contains(name) {

@@ -1,6 +1,7 @@
 //! Derivations: a requested quantity becomes ordered steps, each a value and the theorem that
 //! produced it, following the course's « méthodologie de calcul ».
 
+use crate::expr::VarId;
 use crate::frame::{Axis, FrameId};
 
 use crate::kinematics::{acceleration, omega, velocity};
@@ -16,10 +17,12 @@ mod dynamics;
 mod energy;
 mod moments;
 mod steps;
+mod trial;
 mod value;
 pub use dynamics::Shared;
 pub(crate) use moments::massless_step;
 use moments::{moment_steps, solids_torsor, torsor_value};
+pub use trial::trial_of;
 pub use value::Value;
 
 /// A quantity that cannot be derived: it names what the spec does not have, or its PFD
@@ -213,7 +216,7 @@ fn resolve_kind(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), Res
         // Named objects checked here, before the PFD is solved: a spec's `quantities` are
         // resolved when it is loaded.
         Unknown(name) => {
-            if !m.reg.unknowns().contains(name) {
+            if !m.reg.unknowns().contains(name) && trial::trial_of(m, name).is_none() {
                 return Err(ResolveError::new(q, dynamics::not_an_unknown(name)));
             }
         }
@@ -333,6 +336,24 @@ pub enum StepKind {
         point: Option<String>,
         /// Projection vector (frame name, axis letter).
         on: (String, char),
+    },
+    /// The posed motion of a trial (« régime forcé »), q(t) = X cos(Ω t), or its derivative of
+    /// this order: its value.
+    TrialMotion {
+        /// The coordinate q.
+        coordinate: String,
+        /// 0 for q itself, 2 for q̈.
+        order: u8,
+    },
+    /// The equation of motion along a trial motion, under its hypothesis: its value is
+    /// eom(q) with q and its rates replaced, to vanish at every t.
+    Balance {
+        /// The coordinate q.
+        coordinate: String,
+        /// The hypothesis that poses the trial motion.
+        hypothesis: String,
+        /// The trial's unknowns.
+        unknowns: Vec<VarId>,
     },
     /// Coulomb's law of a contact while it slides, T = −f N ε: its value is −f N ε.
     Coulomb {
@@ -638,7 +659,7 @@ pub fn derive_values_with(
     mut done: impl FnMut(usize, &Quantity),
 ) -> Result<Vec<Derivation>, ResolveError> {
     let mut cache = Shared::default();
-    cache.expect(qs);
+    cache.expect(m, qs);
     let mut out = Vec::with_capacity(qs.len());
     for (k, q) in qs.iter().enumerate() {
         out.push(within_budget(q, || derive_value(m, q, &mut cache))?);

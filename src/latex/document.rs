@@ -107,6 +107,9 @@ fn question_quantity(doc: &mut Doc, text: &str) -> Result<(), crate::derivation:
         None => title.clone(),
     };
     match &q.kind {
+        QuantityKind::Unknown(n) if crate::derivation::trial_of(doc.m, n).is_some() => {
+            super::trial::trial_block(doc, &d, &title)
+        }
         QuantityKind::Unknown(_) | QuantityKind::Eom(_) => pfd_block(doc, &d, &title),
         k => {
             let lhs = match k {

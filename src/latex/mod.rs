@@ -28,6 +28,7 @@ mod setup;
 mod simulation;
 mod text;
 mod theorems;
+mod trial;
 mod values;
 mod words;
 

@@ -71,7 +71,7 @@ pub struct Inline {
 /// The document being written, the record of its formulas, and what it has shown.
 pub(super) struct Doc<'m> {
     pub(super) m: &'m Mechanism,
-    style: VectorStyle,
+    pub(super) style: VectorStyle,
     /// The statement's names of the basis vectors, which every formula of the page uses.
     pub(super) names: VectorNames,
     pub(super) o: String,

@@ -70,6 +70,15 @@ pub(super) fn step_lhs(names: &super::VectorNames, k: &StepKind) -> String {
             format!("{} \\cdot {}", names.quantity(q), names.basis_vector(*a, f))
         }
         StepKind::Coulomb { tangential, .. } => super::name(tangential),
+        StepKind::TrialMotion { coordinate, order } => {
+            let c = super::name(coordinate);
+            match order {
+                0 => format!("{c}(t)"),
+                1 => format!("\\dot{{{c}}}"),
+                _ => format!("\\ddot{{{c}}}"),
+            }
+        }
+        StepKind::Balance { .. } => "0".to_string(),
         StepKind::Powers { isolate, reference } => format!(
             "{} + {}",
             quantity(&QuantityKind::Power {

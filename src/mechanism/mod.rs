@@ -56,6 +56,20 @@ pub struct Hypothesis {
     /// Small parameters: the results are kept to first order in them (after the
     /// substitutions).
     pub first_order: Vec<VarId>,
+    /// A trial motion (« régime forcé »), whose substitutions are among `substitutions`.
+    pub trial: Option<Trial>,
+}
+
+/// A trial motion q(t) = motion of a hypothesis: its unknowns are solved so that eom(q) holds
+/// at every t.
+#[derive(Debug, Clone)]
+pub struct Trial {
+    /// The coordinate whose motion is posed.
+    pub coord: crate::expr::CoordId,
+    /// The motion, an expression of the phases Ω t, the parameters and the unknowns.
+    pub motion: Expr,
+    /// The unknowns (name, variable), in the spec's order.
+    pub unknowns: Vec<(String, VarId)>,
 }
 
 impl Hypothesis {

@@ -258,6 +258,8 @@ struct Hypothesis {
     motions: Vec<(usize, Option<expr::Node>, Option<expr::Node>)>,
     /// Parameters set from the others.
     relations: Vec<(usize, expr::Node)>,
+    /// A trial motion: (coordinate, its motion, a function of the time).
+    trial: Option<(usize, expr::Node)>,
 }
 
 /// A spec made numeric: built once, then evaluated at any number of samples.
@@ -375,7 +377,11 @@ impl NumericModel {
             .iter()
             .flat_map(|a| [a.resultant.as_ref(), a.moment.as_ref()])
             .flatten();
-        frames.chain(points).chain(actions).any(expr::holds_time)
+        let trials = self
+            .hypotheses
+            .values()
+            .filter_map(|h| h.trial.as_ref().map(|t| &t.1));
+        (frames.chain(points).chain(actions).chain(trials)).any(expr::holds_time)
     }
 
     /// Evaluates a quantity in course notation at `sample`.
@@ -537,6 +543,29 @@ impl NumericModel {
                 name: hypothesis.into(),
             })?;
         self.draw_closed(rng, Some(h))
+    }
+
+    /// The sample moved along the trial motion of hypothesis `name` at the time `t`: its
+    /// coordinate and rates from the motion (with the sample's values of the trial's
+    /// unknowns), the rest kept.
+    pub fn along_trial(&self, name: &str, sample: &Sample, t: f64) -> Result<Sample, NumericError> {
+        let h = (self.hypotheses.get(name)).ok_or_else(|| NumericError::Unknown {
+            what: "hypothesis".into(),
+            name: name.into(),
+        })?;
+        let Some((i, motion)) = &h.trial else {
+            return Err(NumericError::Sampling(format!(
+                "`{name}` poses no trial motion"
+            )));
+        };
+        let params: Vec<f64> = (self.params.iter())
+            .map(|p| sample.parameters.get(&p.name).copied().unwrap_or(0.0))
+            .collect();
+        let at = sample::trial_motion(motion, &params, t).map_err(NumericError::Sampling)?;
+        let mut out = sample.clone();
+        out.time = t;
+        out.coordinates.insert(self.coords[*i].name.clone(), at);
+        Ok(out)
     }
 
     /// Evaluates a scalar expression of the spec's syntax (parameters, coordinates, `dot(q)`,

@@ -161,7 +161,11 @@ pub(super) fn build(spec: &SpecFile, trees: &Resolved) -> Result<NumericModel, N
     let owned = |m: &BTreeMap<&str, usize>| -> BTreeMap<String, usize> {
         m.iter().map(|(n, i)| (n.to_string(), *i)).collect()
     };
-    let param_index = owned(&trees.names.params);
+    let mut param_index = owned(&trees.names.params);
+    // A trial motion's unknowns are scalars drawn as the parameters, after them.
+    for (k, u) in trial_unknowns(spec).into_iter().enumerate() {
+        param_index.insert(u, spec.parameters.len() + k);
+    }
     let coord_index = owned(&trees.names.coords);
     let vectors: BTreeMap<String, (usize, usize)> = (trees.names.vectors.iter())
         .map(|(n, v)| (n.to_string(), *v))
@@ -545,6 +549,21 @@ fn hypotheses(
             constant_rates.push(i);
         }
         let (motions, relations) = held_motions(spec, names, names.coords, names.params, h, &path)?;
+        let trial = match &h.trial {
+            None => None,
+            Some(t) => {
+                let c = *(names.coords.get(&t.coordinate)).ok_or_else(|| {
+                    spec_err(
+                        format!("{path}.trial.coordinate"),
+                        format!("unknown coordinate `{}`", t.coordinate),
+                    )
+                })?;
+                let node = (names.parse(&t.motion, Context::Instant))
+                    .map_err(|m| spec_err(format!("{path}.trial.motion"), m))?;
+                trial_unknowns_held(names, &node, &t.unknowns, &path)?;
+                Some((c, node))
+            }
+        };
         // Small parameters: results kept to first order, which no sample realises; only
         // their names are checked here (`check` does not compare such a hypothesis).
         for (k, p) in h.small_parameters.iter().enumerate() {
@@ -563,13 +582,44 @@ fn hypotheses(
                 constant_rates,
                 motions,
                 relations,
+                trial,
             },
         );
     }
     Ok(hypotheses)
 }
 
-/// The parameters, those drawn positive marked (lengths, masses).
+/// Each unknown of a trial motion named once and held by its motion `node`.
+fn trial_unknowns_held(
+    names: &Names,
+    node: &Node,
+    unknowns: &[String],
+    path: &str,
+) -> Result<(), NumericError> {
+    let mut held = std::collections::BTreeSet::new();
+    expr::params_in(node, &mut held);
+    for (k, u) in unknowns.iter().enumerate() {
+        let field = format!("{path}.trial.unknowns[{k}]");
+        if unknowns[..k].contains(u) {
+            return Err(spec_err(&field, format!("`{u}` is listed twice")));
+        }
+        if !names.params.get(u).is_some_and(|i| held.contains(i)) {
+            return Err(spec_err(&field, format!("the motion does not hold `{u}`")));
+        }
+    }
+    Ok(())
+}
+
+/// The unknowns of the spec's trial motions, in order.
+fn trial_unknowns(spec: &SpecFile) -> Vec<String> {
+    (spec.hypotheses.iter())
+        .filter_map(|h| h.trial.as_ref())
+        .flat_map(|t| t.unknowns.iter().cloned())
+        .collect()
+}
+
+/// The parameters, those drawn positive marked (lengths, masses), then the trial motions'
+/// unknowns.
 fn parameters(spec: &SpecFile, solids: &[SolidInfo]) -> Vec<ParamInfo> {
     let mut in_masses = std::collections::BTreeSet::new();
     for s in solids {
@@ -586,6 +636,10 @@ fn parameters(spec: &SpecFile, solids: &[SolidInfo]) -> Vec<ParamInfo> {
                     || matches!(unit, "m" | "mm" | "cm" | "km" | "kg" | "g"),
             }
         })
+        .chain((trial_unknowns(spec).into_iter()).map(|name| ParamInfo {
+            name,
+            positive: false,
+        }))
         .collect()
 }
 

@@ -317,6 +317,10 @@ pub(super) fn draw(
     if m.uses_time {
         vals.time = rng.random_range(0.0..=10.0);
     }
+    if let Some((i, motion)) = hypothesis.and_then(|h| h.trial.as_ref()) {
+        vals.coords[*i] = trial_motion(motion, &vals.params, vals.time)
+            .map_err(|e| fail(format!("the trial motion of `{}`: {e}", m.coords[*i].name)))?;
+    }
     // Coordinates a loop closure determines: moved onto the loop (after any rate a gear
     // drives, and the time, which the loop may read).
     super::closure::settle(m, &mut vals).map_err(|e| fail(format!("closures: {e}")))?;
@@ -569,6 +573,20 @@ fn draw_coordinates(
         vals.coords.push([q, qd, qdd]);
     }
     Ok(())
+}
+
+/// [q, q̇, q̈] of a trial motion q(t) at the time `t`: the motion evaluated on a dual number
+/// of the time (t, 1, 0), whose parts are the value and its first two derivatives.
+pub(super) fn trial_motion(motion: &Node, params: &[f64], t: f64) -> Result<[f64; 3], String> {
+    let env = expr::Env {
+        params,
+        coords: &[],
+        rates: &[],
+        frames: &[],
+        time: num_dual::Dual2_64::new(t, 1.0, 0.0),
+    };
+    let v = expr::eval_scalar(motion, &env)?;
+    Ok([v.re, v.v1, v.v2])
 }
 
 /// Rates driven by the others' (a gear ratio), once those are drawn; a coefficient may

@@ -11,6 +11,7 @@ mod refusal;
 mod scenarios;
 mod solids;
 mod texts;
+mod trial;
 mod validate;
 /// The wire types, also at [`crate::wire`] (the spec's data, used by every layer).
 pub use crate::wire;

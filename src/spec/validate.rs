@@ -219,7 +219,9 @@ fn registry(
     unknowns: &[String],
     solved: Option<&Solved>,
 ) -> Result<Rc<Registry>, SpecError> {
-    let params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
+    let mut params: Vec<String> = spec.parameters.iter().map(|p| p.name.clone()).collect();
+    // A trial motion's unknowns (X of x = X cos(Ω t)) are scalars as the parameters are.
+    params.extend(super::trial::unknown_names(spec, unknowns)?);
     let angle_params: Vec<String> = spec
         .parameters
         .iter()
@@ -235,6 +237,8 @@ fn registry(
             .iter()
             .filter_map(|f| Some(f.rotation.as_ref()?.angle.as_str())),
     );
+    let trials = (spec.hypotheses.iter()).filter_map(|h| Some(h.trial.as_ref()?.motion.as_str()));
+    let texts = texts.chain(trials);
     for text in texts {
         for w in crate::expr::pulsations_in(text) {
             if params.contains(&w) && !angle_params.contains(&w) && !pulsations.contains(&w) {
@@ -380,6 +384,7 @@ fn hypotheses(
         }
         super::coulomb::signs(spec, reg, h, &path)?;
         super::hypotheses::motions(reg, h, &path, &mut subs, &mut effects)?;
+        let trial = super::trial::trial(reg, h, &path, &mut subs, &mut effects)?;
         let first_order = super::hypotheses::small_parameters(reg, h, &path)?;
         let subs = super::hypotheses::with_inverses(reg, subs, &first_order, &path)?;
         hypotheses.push(Hypothesis {
@@ -388,6 +393,7 @@ fn hypotheses(
             substitutions: subs,
             effects,
             first_order,
+            trial,
         });
     }
 

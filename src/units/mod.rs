@@ -209,6 +209,17 @@ impl Dimensions {
         for ((_, n), dim) in unknowns.iter().zip(found) {
             d.set(n, dim);
         }
+        // A trial's unknown X of q = X cos(Ω t): q's dimension over its coefficient's.
+        for t in m.hypotheses.iter().filter_map(|h| h.trial.as_ref()) {
+            for (n, v) in &t.unknowns {
+                let coefficient = t.motion.derivative(*v);
+                let dim = match dimension(&coefficient, &d) {
+                    Ok(Some(dc)) => Some(d.coordinate(t.coord) / dc),
+                    _ => None,
+                };
+                d.set(n, dim);
+            }
+        }
         d
     }
 
@@ -602,6 +613,12 @@ pub fn check_derivation(
             }
             StepKind::Action { .. } => torsor(Dimension::FORCE, Dimension::MOMENT),
             StepKind::Coulomb { .. } => ExpectedDimension::Components(Some(Dimension::FORCE)),
+            StepKind::TrialMotion { coordinate, order } => ExpectedDimension::Components(
+                m.reg
+                    .coord(coordinate)
+                    .map(|q| dims.coordinate(q) / Dimension::TIME.pow(i32::from(*order))),
+            ),
+            StepKind::Balance { coordinate, .. } => of_kind(&QuantityKind::Eom(coordinate.clone())),
             StepKind::Powers { .. } => ExpectedDimension::Components(Some(Dimension::POWER)),
             StepKind::External { point, .. } => {
                 ExpectedDimension::Components(Some(if point.is_some() {

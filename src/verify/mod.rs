@@ -359,6 +359,15 @@ pub fn verify(
 ) -> Result<Verdict, VerifyError> {
     let q = Quantity::parse(quantity)?;
     let h = hypothesis(m, hypothesis_name)?;
+    // `X = F0/(k - M*Omega^2)` for a trial's unknown X: its value, the right side.
+    let text = match (&q.kind, sides(text)?) {
+        (QuantityKind::Unknown(n), Some((l, r)))
+            if l.trim() == n && crate::derivation::trial_of(m, n).is_some() =>
+        {
+            r
+        }
+        _ => text,
+    };
     if let Some((l, r)) = sides(text)? {
         return match &q.kind {
             QuantityKind::Eom(c) => equation_of_motion(m, &q, c, text, l, r, h),

@@ -741,4 +741,22 @@ pub struct HypothesisSpec {
     /// degree 2 or more in these parameters together dropped.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub small_parameters: Vec<String>,
+    /// A trial motion (« régime forcé »): the coordinate follows the given motion of the time,
+    /// whose new names (`unknowns`) are solved so that the equation of motion holds at every t.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trial: Option<TrialSpec>,
+}
+
+/// A trial motion q(t) = motion (`X*cos(Omega*t)`), its unknowns (`X`) to be determined.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TrialSpec {
+    /// The coordinate whose motion is posed (`x`).
+    pub coordinate: String,
+    /// Its motion, an expression of the time through phases Ω t, the parameters and the
+    /// unknowns (`X*cos(Omega*t) + Y*sin(Omega*t)`).
+    pub motion: String,
+    /// The new names the motion holds, solved so that the equation of motion holds at every
+    /// t (`["X", "Y"]`).
+    pub unknowns: Vec<String>,
 }

@@ -52,6 +52,7 @@ mod simulate;
 mod spec_errors;
 mod spec_schema;
 mod threads;
+mod trial;
 mod units;
 mod verify;
 

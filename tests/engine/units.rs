@@ -347,6 +347,10 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         .chars()
         .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '{')
         .collect();
+    // A trial motion's amplitude (x = X cos(Ω t), x a length): a length.
+    if torseur::derivation::trial_of(m, q).is_some() {
+        return one(d(0, 1, 0));
+    }
     match head.as_str() {
         "Omega" => one(d(0, 0, -1)),
         "V" => one(d(0, 1, -1)),
