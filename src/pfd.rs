@@ -17,17 +17,18 @@
 //! ```
 
 use crate::expr::{Expr, Fraction, VarId};
-use crate::frame::Axis;
 use crate::mechanism::{BodyId, Mechanism};
 use crate::quantity::{Motion, Quantity, QuantityKind};
 use crate::torsor::{self, Torsor};
 use crate::vector::Vector;
-use crate::wire::{LinkKind, TheoremKind};
+use crate::wire::TheoremKind;
 use std::collections::BTreeMap;
 
 mod energy;
 mod hyperstatic;
+mod linear;
 mod motion;
+mod transmitted;
 
 pub use crate::mechanism::{Action, Dynamics, Small, Source, SpringPart, Theorem};
 pub use energy::{
@@ -35,7 +36,9 @@ pub use energy::{
     potential_energy, power,
 };
 pub use hyperstatic::Hyperstatic;
+pub use linear::{first_order_jointly, linearise};
 pub use motion::{CompiledEquations, EquationsOfMotion};
+pub use transmitted::transmitted;
 
 impl Action {
     /// The torsor at its point.
@@ -736,49 +739,6 @@ fn inverse_dynamics(
     }
 }
 
-/// `e` with every small coordinate at its equilibrium and its rates zero (sin θ = 0 and
-/// cos θ = 1 for an angle around 0).
-fn at_equilibrium(m: &Mechanism, e: &Expr) -> Expr {
-    let reg = &m.reg;
-    let mut r = e.clone();
-    for s in &m.dynamics.small {
-        let q = s.coord;
-        if let Some(si) = reg.index_of(crate::expr::VarRole::Sin(q)) {
-            r = r.substitute(si, &reg.zero());
-        }
-        if let Some(c) = reg.index_of(crate::expr::VarRole::Cos(q)) {
-            r = r.substitute(c, &reg.one());
-        }
-        if let Some(v) = reg.coordinates()[q.0].value_var() {
-            r = r.substitute(v, &s.around);
-        }
-        for order in 1..=3u8 {
-            if let Some(i) = reg.index_of(crate::expr::VarRole::Rate(q, order)) {
-                r = r.substitute(i, &reg.zero());
-            }
-        }
-    }
-    r
-}
-
-/// A linearisation [`linearise`] under the hypothesis `h` that keeps results to first order
-/// in small parameters, kept to one combined first order: with ε the small parameters and δ
-/// the small coordinates' deviations and rates, the terms in ε δ are second order and go,
-/// e|ε=0 + e|δ=0 − e|ε=0,δ=0 of e = h(lin(…)) (D = ε(A) and α, β = ε(1) give D α no place).
-pub fn first_order_jointly(m: &Mechanism, e: &Expr, h: &crate::mechanism::Hypothesis) -> Expr {
-    let r = h.apply(e);
-    if h.first_order.is_empty() {
-        return r;
-    }
-    let zero = m.reg.zero();
-    let no_small =
-        |x: &Expr| (h.first_order.iter()).fold(x.clone(), |acc, v| acc.substitute(*v, &zero));
-    let coordinates_only = no_small(&r);
-    let parameters_only = at_equilibrium(m, &r);
-    let neither = no_small(&parameters_only);
-    &(&coordinates_only + &parameters_only) - &neither
-}
-
 /// Unknowns must enter linearly (no term with two unknown factors); else the two that multiply,
 /// the first pair in the unknowns' order (an unknown with itself for a square).
 fn check_linear(m: &Mechanism, r: &Expr) -> Result<(), (String, String)> {
@@ -805,82 +765,4 @@ fn check_linear(m: &Mechanism, r: &Expr) -> Result<(), (String, String)> {
         Some(&(i, j)) => Err((vars[i].0.clone(), vars[j].0.clone())),
         None => Ok(()),
     }
-}
-
-/// Which of the six components (X, Y, Z, L, M, N in the link's basis) a perfect link
-/// transmits, given its axis (or normal) `a` and, for a line contact, its direction `d`; with
-/// Coulomb's law on its unknowns, also the tangential force along its sliding direction
-/// `sliding`.
-pub fn transmitted(k: LinkKind, a: Axis, d: Option<Axis>, sliding: Option<Axis>) -> [bool; 6] {
-    let mut t = perfect(k, a, d);
-    if let Some(s) = sliding {
-        t[s.index()] = true;
-    }
-    t
-}
-
-/// What a perfect link transmits (see [`transmitted`]).
-fn perfect(k: LinkKind, a: Axis, d: Option<Axis>) -> [bool; 6] {
-    let i = a.index();
-    let mut t = [true; 6];
-    match k {
-        LinkKind::Fixed => {}
-        // A helical link's axial moment is no unknown of its own: −p/(2π) times the axial
-        // resultant (added with the torsor, `spec::dynamics`).
-        LinkKind::Pivot | LinkKind::Helical => t[3 + i] = false,
-        LinkKind::Slider => t[i] = false,
-        LinkKind::PivotSlider => {
-            t[i] = false;
-            t[3 + i] = false;
-        }
-        LinkKind::Ball => t[3..].iter_mut().for_each(|x| *x = false),
-        LinkKind::Plane => {
-            for k in 0..3 {
-                t[k] = k == i;
-            }
-            t[3 + i] = false;
-        }
-        LinkKind::Annular => {
-            t[i] = false;
-            t[3..].iter_mut().for_each(|x| *x = false);
-        }
-        LinkKind::Line => {
-            let d = d.map(|d| d.index()).unwrap_or((i + 1) % 3);
-            let third = 3 - i - d;
-            for k in 0..3 {
-                t[k] = k == i;
-                t[3 + k] = k == third;
-            }
-        }
-        LinkKind::Point => {
-            for k in 0..6 {
-                t[k] = k == i;
-            }
-        }
-    }
-    t
-}
-
-/// The small-motion linearisation of `e` around the equilibrium of the `small` coordinates
-/// (their rates and accelerations small too): f(x0) + Σ ∂f/∂xᵢ(x0)·(xᵢ − xᵢ0), exactly, with
-/// sin q ≈ q and cos q ≈ 1 for a small angle. The other coordinates keep their full form.
-pub fn linearise(m: &Mechanism, e: &Expr) -> Expr {
-    let reg = &m.reg;
-    let small = &m.dynamics.small;
-    let at_equilibrium = |f: &Expr| at_equilibrium(m, f);
-    let mut out = at_equilibrium(e);
-    for s in small {
-        let q = s.coord;
-        if let Some(value) = reg.value(q) {
-            let deviation = &value - &s.around;
-            out = &out + &(&at_equilibrium(&e.partial_coordinate(q)) * &deviation);
-        }
-        for order in 1..=2u8 {
-            let d = e.partial_rate(q, order);
-            if !d.is_zero() {
-                out = &out + &(&at_equilibrium(&d) * &reg.rate(q, order));
-            }
-        }
-    }
-    out
 }

@@ -182,43 +182,7 @@ pub(super) fn derive(
             let eom = shared.eom(m, &c).map_err(|e| ResolveError::new(q, e))?;
             return super::trial::derive(m, q, name, eom, with_steps);
         }
-        QuantityKind::Unknown(name) => {
-            if !m.reg.unknowns().contains(name) {
-                return Err(resolve_err(q, not_an_unknown(name)));
-            }
-            let var = unknown_vars(m)
-                .into_iter()
-                .find(|(n, _)| n == name)
-                .map(|(_, v)| v);
-            let (sol, residuals) = shared.pfd(m).map_err(|e| ResolveError::new(q, e))?;
-            let v = (sol.unknowns.get(name).cloned()).ok_or_else(|| {
-                let why = sol.why_undetermined(name);
-                resolve_err(
-                    q,
-                    why.unwrap_or_else(|| format!("no equation of `pfd` determines `{name}`")),
-                )
-            })?;
-            // The theorems that determine the unknown, whose steps are recorded: those that
-            // hold it, and those that hold the other unknowns of these (X_A + X_B = … needs
-            // the moment that gives X_B), in the spec's order.
-            let cited: Vec<usize> = match var {
-                Some(v) if with_steps && sol.inputs.contains(name) => driving(m, residuals, v),
-                Some(v) if with_steps => determining(m, residuals, v),
-                _ => Vec::new(),
-            };
-            let theorems = m.dynamics.theorems.len();
-            for &i in cited.iter().filter(|&&i| i < theorems) {
-                theorem_steps(m, &m.dynamics.theorems[i], &mut shared.centre, &mut steps);
-            }
-            for &i in cited.iter().filter(|&&i| i >= theorems) {
-                steps.push(law_step(m, &m.dynamics.laws[i - theorems]));
-            }
-            if v.is_whole() {
-                Value::Scalar(v.num)
-            } else {
-                Value::Quotient(v)
-            }
-        }
+        QuantityKind::Unknown(name) => unknown_value(m, q, name, shared, (with_steps, &mut steps))?,
         QuantityKind::Eom(c) => {
             let coord = m
                 .reg
@@ -245,6 +209,52 @@ pub(super) fn derive(
         quantity: q.clone(),
         steps,
         value,
+    })
+}
+
+/// The value of the PFD's unknown `name` (a link's component, an action's unknown), with
+/// the steps of the theorems that determine it when `with_steps`.
+fn unknown_value(
+    m: &Mechanism,
+    q: &Quantity,
+    name: &String,
+    shared: &mut Shared,
+    (with_steps, steps): (bool, &mut Vec<Step>),
+) -> Result<Value, ResolveError> {
+    if !m.reg.unknowns().contains(name) {
+        return Err(resolve_err(q, not_an_unknown(name)));
+    }
+    let var = unknown_vars(m)
+        .into_iter()
+        .find(|(n, _)| n == name)
+        .map(|(_, v)| v);
+    let (sol, residuals) = shared.pfd(m).map_err(|e| ResolveError::new(q, e))?;
+    let v = (sol.unknowns.get(name).cloned()).ok_or_else(|| {
+        let why = sol.why_undetermined(name);
+        resolve_err(
+            q,
+            why.unwrap_or_else(|| format!("no equation of `pfd` determines `{name}`")),
+        )
+    })?;
+    // The theorems that determine the unknown, whose steps are recorded: those that
+    // hold it, and those that hold the other unknowns of these (X_A + X_B = … needs
+    // the moment that gives X_B), in the spec's order.
+    let cited: Vec<usize> = match var {
+        Some(v) if with_steps && sol.inputs.contains(name) => driving(m, residuals, v),
+        Some(v) if with_steps => determining(m, residuals, v),
+        _ => Vec::new(),
+    };
+    let theorems = m.dynamics.theorems.len();
+    for &i in cited.iter().filter(|&&i| i < theorems) {
+        theorem_steps(m, &m.dynamics.theorems[i], &mut shared.centre, steps);
+    }
+    for &i in cited.iter().filter(|&&i| i >= theorems) {
+        steps.push(law_step(m, &m.dynamics.laws[i - theorems]));
+    }
+    Ok(if v.is_whole() {
+        Value::Scalar(v.num)
+    } else {
+        Value::Quotient(v)
     })
 }
 

@@ -630,6 +630,15 @@ pub(in crate::numeric) fn eom(
     Ok(x)
 }
 
+/// The given actions' unknowns that no equation without `eom` holds (`cols` are those they
+/// hold) but an equation of motion does: the inputs of the equations of motion.
+fn inputs(dy: &Dynamics, residuals: &[Lin<f64>], cols: &[usize]) -> Vec<usize> {
+    (dy.given_unknowns.iter().copied())
+        .filter(|k| !cols.contains(k))
+        .filter(|&k| residuals.iter().any(|r| r.a[k] != 0.0))
+        .collect()
+}
+
 /// Builds every declared equation at the sample and solves those without `eom`: the outer
 /// error is an evaluation failure, the inner one a system that cannot be solved.
 fn solve(
@@ -722,10 +731,7 @@ fn solve(
             }
         }
     }
-    let inputs = (dy.given_unknowns.iter().copied())
-        .filter(|k| !cols.contains(k))
-        .filter(|&k| residuals.iter().any(|r| r.a[k] != 0.0))
-        .collect();
+    let inputs = inputs(dy, &residuals, &cols);
     Ok(Ok(Solution {
         values,
         undetermined,
