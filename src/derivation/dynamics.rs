@@ -180,6 +180,7 @@ pub(super) fn derive(
             let (_, t) = super::trial::trial_of(m, name).expect("a trial's unknown");
             let c = m.reg.coord_info(t.coord).name.clone();
             let eom = shared.eom(m, &c).map_err(|e| ResolveError::new(q, e))?;
+            let eom = eom.ok_or_else(|| resolve_err(q, no_eom_marked(&c)))?;
             return super::trial::derive(m, q, name, eom, with_steps);
         }
         QuantityKind::Unknown(name) => unknown_value(m, q, name, shared, (with_steps, &mut steps))?,

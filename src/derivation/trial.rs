@@ -212,12 +212,11 @@ pub(super) fn derive(
     m: &Mechanism,
     q: &Quantity,
     name: &str,
-    eom: Option<Expr>,
+    eom: Expr,
     with_steps: bool,
 ) -> Result<Derivation, ResolveError> {
     let (h, t) = trial_of(m, name).ok_or_else(|| err(q, format!("`{name}` is no trial's")))?;
     let coord = m.reg.coord_info(t.coord).name.clone();
-    let eom = eom.ok_or_else(|| err(q, super::dynamics::no_eom_marked(&coord)))?;
     let r = balance(m, q, h, &eom)?;
     let rows = rows(m, q, t, &r)?;
     let k = t.unknowns.iter().position(|(n, _)| n == name).unwrap_or(0);
