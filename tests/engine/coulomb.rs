@@ -191,25 +191,13 @@ fn the_ladder_released_beyond_its_limit_slides_as_integrated_by_hand() {
     let dt = 1e-4;
     for (k, &tk) in ts.iter().enumerate() {
         while t + dt <= tk + 1e-12 {
-            let k1 = f(y);
-            let k2 = f([y[0] + dt / 2.0 * k1[0], y[1] + dt / 2.0 * k1[1]]);
-            let k3 = f([y[0] + dt / 2.0 * k2[0], y[1] + dt / 2.0 * k2[1]]);
-            let k4 = f([y[0] + dt * k3[0], y[1] + dt * k3[1]]);
-            for i in 0..2 {
-                y[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-            }
+            crate::rk4_step(&f, &mut y, dt);
             t += dt;
         }
         // The last partial step, to the output instant.
         let rest = tk - t;
         if rest > 0.0 {
-            let k1 = f(y);
-            let k2 = f([y[0] + rest / 2.0 * k1[0], y[1] + rest / 2.0 * k1[1]]);
-            let k3 = f([y[0] + rest / 2.0 * k2[0], y[1] + rest / 2.0 * k2[1]]);
-            let k4 = f([y[0] + rest * k3[0], y[1] + rest * k3[1]]);
-            for i in 0..2 {
-                y[i] += rest / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-            }
+            crate::rk4_step(&f, &mut y, rest);
             t = tk;
         }
         // The wall still pushes: Coulomb's law with N_B ≥ 0 holds all along.

@@ -85,14 +85,13 @@ fn a_given_torque_drives_the_simulation_as_integrated_by_hand() {
     let f = |y: [f64; 2]| [y[1], acc(y[0])];
     for (k, &tk) in ts.iter().enumerate() {
         while t + dt <= tk + 1e-12 {
-            let k1 = f(y);
-            let k2 = f([y[0] + dt / 2.0 * k1[0], y[1] + dt / 2.0 * k1[1]]);
-            let k3 = f([y[0] + dt / 2.0 * k2[0], y[1] + dt / 2.0 * k2[1]]);
-            let k4 = f([y[0] + dt * k3[0], y[1] + dt * k3[1]]);
-            for i in 0..2 {
-                y[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-            }
+            crate::rk4_step(&f, &mut y, dt);
             t += dt;
+        }
+        // The last partial step, to the output instant.
+        if tk > t {
+            crate::rk4_step(&f, &mut y, tk - t);
+            t = tk;
         }
         assert!(
             (th[k] - y[0]).abs() < 1e-6,

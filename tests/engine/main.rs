@@ -130,3 +130,15 @@ pub fn refused_by_both(v: &serde_json::Value) -> (String, String) {
         torseur::numeric::NumericModel::new(&file).expect_err("the float backend accepted it");
     (exact.to_string(), float.to_string())
 }
+
+/// One classical Runge–Kutta step of length `h` on (q, q̇)' = f(q, q̇): the hand integrations
+/// the simulations are compared with.
+pub fn rk4_step(f: &dyn Fn([f64; 2]) -> [f64; 2], y: &mut [f64; 2], h: f64) {
+    let k1 = f(*y);
+    let k2 = f([y[0] + h / 2.0 * k1[0], y[1] + h / 2.0 * k1[1]]);
+    let k3 = f([y[0] + h / 2.0 * k2[0], y[1] + h / 2.0 * k2[1]]);
+    let k4 = f([y[0] + h * k3[0], y[1] + h * k3[1]]);
+    for i in 0..2 {
+        y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    }
+}
