@@ -46,6 +46,9 @@ pub(super) fn trial_block(doc: &mut Doc, d: &Derivation, title: &str) {
         None => d.value.clone(),
     };
     let id = d.quantity.to_string();
+    // Recorded for the bilan, as every result is.
+    let here = doc.here.clone();
+    doc.results.push((id.clone(), hyp.clone(), v.clone(), here));
     doc.show_result(DisplayRole::Result, &id, hyp.as_deref(), title, &v, None);
 }
 
