@@ -285,7 +285,26 @@ pub fn compare_trial(
         .map(|(n, _)| Quantity::parse(n))
         .collect::<Result<_, _>>()
         .map_err(|e| ResolveError::new(q, e.to_string()))?;
-    let exact = derive_values(m, &names)?;
+    let exact: Vec<Value> = (derive_values(m, &names)?.into_iter())
+        .map(|d| d.value)
+        .collect();
+    compare_trial_values(m, model, q, h, &exact, samples, rng)
+}
+
+/// [`compare_trial`] with the values of the trial's unknowns given, in the trial's order:
+/// they may come from anywhere, and tests use this to prove that a wrong amplitude is caught.
+pub fn compare_trial_values(
+    m: &Mechanism,
+    model: &NumericModel,
+    q: &Quantity,
+    h: &Hypothesis,
+    exact: &[Value],
+    samples: usize,
+    rng: &mut ChaCha8Rng,
+) -> Result<CheckRow, CheckError> {
+    let Some(t) = &h.trial else {
+        return Err(ResolveError::new(q, format!("`{}` poses no trial motion", h.name)).into());
+    };
     let eom = Quantity::parse(&format!("eom({})", m.reg.coord_info(t.coord).name))
         .map_err(|e| ResolveError::new(q, e.to_string()))?;
     let default = m.frame_name(m.default_basis).to_string();
@@ -306,8 +325,8 @@ pub fn compare_trial(
         };
         let point = numeric_point(m, &values)?;
         let mut zero = s.clone();
-        for ((n, _), d) in t.unknowns.iter().zip(&exact) {
-            s.parameters.insert(n.clone(), d.value.numbers(&point)[0]);
+        for ((n, _), d) in t.unknowns.iter().zip(exact) {
+            s.parameters.insert(n.clone(), d.numbers(&point)[0]);
             zero.parameters.insert(n.clone(), 0.0);
         }
         let (mut worst, mut scale) = (0.0f64, 1e-3f64);

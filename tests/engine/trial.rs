@@ -125,3 +125,25 @@ fn a_trial_on_an_unknown_coordinate_is_refused() {
     let e = torseur::spec::from_str(&v.to_string()).unwrap_err();
     assert!(e.to_string().contains("unknown coordinate `y`"), "{e}");
 }
+
+#[test]
+fn the_float_backend_catches_a_wrong_amplitude_by_its_own_route() {
+    use rand::SeedableRng;
+    let m = forced();
+    let model = torseur::numeric::NumericModel::new(m.spec()).unwrap();
+    let h = m.hypotheses().iter().find(|h| h.name == "R").unwrap();
+    let q = Quantity::parse("X").unwrap();
+    let run = |x: &str| {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+        let f = torseur::expr::Fraction::new(ex(&m, x), ex(&m, "k - M*Omega^2")).unwrap();
+        let v = [Value::Quotient(f)];
+        torseur::check::compare_trial_values(&m, &model, &q, h, &v, 10, &mut rng)
+            .unwrap()
+            .worst
+    };
+    // The right amplitude makes the backend's own eom vanish along the motion.
+    assert!(run("F0") < 1e-9, "{}", run("F0"));
+    // Its opposite, or a forgotten factor, leaves the forcing's size in the residual.
+    assert!(run("-F0") > 1e-2, "{}", run("-F0"));
+    assert!(run("2*F0") > 1e-2, "{}", run("2*F0"));
+}
