@@ -733,9 +733,11 @@ fn inverse_dynamics(
     if rows.len() != inputs.len() {
         return Err(refused());
     }
-    match eliminate_unknowns(m, &inputs, rows, names) {
-        Ok((solved, conditions, free)) if free.is_empty() => Ok((solved, conditions)),
-        _ => Err(refused()),
+    // A pivot that depends on the motion is said as such (NoNumericPivot names the input).
+    let (solved, conditions, free) = eliminate_unknowns(m, &inputs, rows, names)?;
+    match free.is_empty() {
+        true => Ok((solved, conditions)),
+        false => Err(refused()),
     }
 }
 

@@ -425,7 +425,7 @@ fn pfd_result(doc: &mut Doc, d: &Derivation, last_equality: Option<(Value, Value
     match &d.quantity.kind {
         QuantityKind::Eom(q) => {
             if let Value::Scalar(e) = &v {
-                eom_result(doc, &id, q, e, &last_equality);
+                eom_result(doc, &d.quantity, q, e, &last_equality);
             }
         }
         _ => {
@@ -443,11 +443,12 @@ fn pfd_result(doc: &mut Doc, d: &Derivation, last_equality: Option<(Value, Value
 /// stated so far.
 fn eom_result(
     doc: &mut Doc,
-    id: &str,
+    quantity: &crate::quantity::Quantity,
     q: &str,
     e: &crate::expr::Expr,
     last_equality: &Option<(Value, Value)>,
 ) {
+    let id = &quantity.to_string();
     let m = doc.m;
     let hn = doc.under.map(|h| h.name.clone());
     if let Some((_, Value::Scalar(actions))) = last_equality
@@ -480,8 +481,7 @@ fn eom_result(
     }
     // Under each hypothesis stated so far, as the other results are.
     if doc.under.is_none() {
-        let q = crate::quantity::Quantity::parse(id).expect("the id of a quantity");
-        eom_under_stated(doc, &q, e);
+        eom_under_stated(doc, quantity, e);
     }
 }
 
