@@ -86,6 +86,16 @@ pub enum QuantityKind {
     /// P_int(E): the power of the actions between the solids of E (the links' friction and
     /// springs), Σ {T(i→j)} ⊗ {V(j/i)}: independent of any reference frame.
     InternalPower(String),
+    /// dot(q), ddot(q): the rate of a coordinate, order 1 or 2. For a coordinate that a loop
+    /// closure, a rolling condition or a screw determines (the slider–crank's λ), the rate
+    /// the loop law gives in terms of the free rates (λ̇ as a function of θ̇); for a free
+    /// coordinate, its own rate; for one whose rate is imposed, the imposed rate.
+    Rate {
+        /// The coordinate's name.
+        coordinate: String,
+        /// 1 for q̇, 2 for q̈.
+        order: u8,
+    },
     /// J_eq(q): the inertia (or mass, for a length) equivalent to the whole mechanism brought
     /// back to coordinate q, Ec(all/0) = ½ J_eq q̇², when every other rate is driven by q̇.
     EquivalentInertia(String),
@@ -267,6 +277,7 @@ impl QuantityKind {
                 | QuantityKind::Power { .. }
                 | QuantityKind::InternalPower(_)
                 | QuantityKind::EquivalentInertia(_)
+                | QuantityKind::Rate { .. }
         )
     }
 
@@ -292,6 +303,7 @@ impl QuantityKind {
             | Power { .. }
             | InternalPower(_)
             | EquivalentInertia(_)
+            | Rate { .. }
             | Derivative { .. } => None,
         }
     }
@@ -321,6 +333,11 @@ impl fmt::Display for QuantityKind {
             Power { action, reference } => write!(f, "P({action}/{reference})"),
             InternalPower(set) => write!(f, "Pint({set})"),
             EquivalentInertia(q) => write!(f, "J_eq({q})"),
+            Rate {
+                coordinate,
+                order: 1,
+            } => write!(f, "dot({coordinate})"),
+            Rate { coordinate, .. } => write!(f, "ddot({coordinate})"),
             Derivative { of, frame } => {
                 write!(f, "d/dt({of})")?;
                 match frame {
@@ -529,6 +546,13 @@ fn call_kind(core: &str) -> Result<QuantityKind, String> {
         "eom" => {
             crate::expr::check_identifier(args)?;
             QuantityKind::Eom(args.to_string())
+        }
+        "dot" | "ddot" => {
+            crate::expr::check_identifier(args)?;
+            QuantityKind::Rate {
+                coordinate: args.to_string(),
+                order: if name == "dot" { 1 } else { 2 },
+            }
         }
         "I" => {
             let (p, solid) = args

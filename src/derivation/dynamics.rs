@@ -84,6 +84,14 @@ pub(super) fn not_an_unknown(name: &str) -> String {
     format!("`{name}` is not an unknown of the PFD (links' components, actions' unknowns)")
 }
 
+/// Why a coordinate's bare name is no quantity: its rates are.
+pub(super) fn a_coordinate(name: &str) -> String {
+    format!(
+        "`{name}` is a coordinate, not an unknown of the PFD: ask for its rate dot({name}) \
+         or ddot({name}) (a loop law keeps the coordinate itself implicit)"
+    )
+}
+
 /// Why `eom(c)` of a coordinate `c` has no equation.
 pub(super) fn no_eom_marked(c: &str) -> String {
     format!("no equation of `pfd` is marked `\"eom\": \"{c}\"`")

@@ -216,6 +216,9 @@ fn resolve_kind(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), Res
         // Named objects checked here, before the PFD is solved: a spec's `quantities` are
         // resolved when it is loaded.
         Unknown(name) => {
+            if m.reg.coord(name).is_some() {
+                return Err(ResolveError::new(q, dynamics::a_coordinate(name)));
+            }
             if !m.reg.unknowns().contains(name) && trial::trial_of(m, name).is_none() {
                 return Err(ResolveError::new(q, dynamics::not_an_unknown(name)));
             }
@@ -232,7 +235,7 @@ fn resolve_kind(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), Res
             r.reference = Some(frame(reference)?);
         }
         InternalPower(set) => r.solids = solids(set)?,
-        EquivalentInertia(c) => {
+        EquivalentInertia(c) | Rate { coordinate: c, .. } => {
             m.reg.coord(c).ok_or_else(|| unknown("coordinate", c))?;
         }
         ActionMoment { point: p, action } | ActionTorsor { action, point: p } => {
@@ -529,6 +532,12 @@ fn found(
             Found::Value(Value::Scalar(j))
         }
         InternalPower(_) => Found::Value(Value::Scalar(actions::internal_power(m, r, steps))),
+        // The registry holds each coordinate's rate: a dependent one's is the loop law's.
+        Rate { coordinate, order } => {
+            let coord = (m.reg.coord(coordinate))
+                .ok_or_else(|| ResolveError::unknown(m, q, "coordinate", coordinate))?;
+            Found::Value(Value::Scalar(m.reg.rate(coord, *order)))
+        }
         Derivative { of, .. } => match derivative::derive(m, q, of, r.reference, b, steps)? {
             derivative::Derived::Scalar(e) => Found::Value(Value::Scalar(e)),
             derivative::Derived::Vector(v) => Found::Vector(v),

@@ -9,7 +9,12 @@ use crate::expr::{
 
 /// A rate: \dot{\theta}_{1}, the accent on the head, the subscript after.
 pub(super) fn rate(reg: &Registry, q: CoordId, order: u8) -> String {
-    let n = name(&reg.coord_info(q).name);
+    rate_of(&reg.coord_info(q).name, order)
+}
+
+/// The rate of order `order` of the coordinate named `coordinate`, as [`rate`] writes it.
+pub(super) fn rate_of(coordinate: &str, order: u8) -> String {
+    let n = name(coordinate);
     let (head, sub) = match n.split_once("_{") {
         Some((h, s)) => (h.to_string(), format!("_{{{s}")),
         None => (n.clone(), String::new()),

@@ -186,3 +186,40 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
         }
     }
 }
+
+/// Before the boxed rate of a coordinate (`dot(x)`, `ddot(x)`), where it comes from: the
+/// loop law, the rolling condition or the screw that determines it, or the paramétrage; for
+/// the second derivative of a determined coordinate, its rate first (cited where the page
+/// already shows it), then « en dérivant par rapport au temps ».
+pub(super) fn rate_note(doc: &mut Doc, d: &crate::derivation::Derivation) {
+    let crate::quantity::QuantityKind::Rate { coordinate, order } = &d.quantity.kind else {
+        return;
+    };
+    let m = doc.m;
+    let Some(q) = m.reg.coord(coordinate) else {
+        return;
+    };
+    let source = match super::omega::rate_source(m, coordinate) {
+        Some(s) => format!("D'après {s}"),
+        None => "D'après le paramétrage".to_string(),
+    };
+    let rate = m.reg.rate(q, 1);
+    if *order == 1 || !m.reg.coord_info(q).is_driven() {
+        let _ = writeln!(doc.o, "{source} :");
+        return;
+    }
+    let lhs = super::expr::rate_of(coordinate, 1);
+    let value = super::words::shown_value(doc, &Value::Scalar(rate));
+    match doc.cited(&lhs, &value) {
+        Some(place) => {
+            let cited = super::words::citation(&[(place, vec![lhs])]);
+            let cited = cited.trim_end().trim_end_matches('.');
+            let _ = writeln!(doc.o, "{cited} ; en dérivant par rapport au temps :");
+        }
+        None => {
+            let _ = writeln!(doc.o, "{source} :");
+            doc.show_keyed(DisplayRole::Step, "rate", &lhs, &lhs, &value, false);
+            let _ = writeln!(doc.o, "D'où, en dérivant par rapport au temps :");
+        }
+    }
+}

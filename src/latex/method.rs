@@ -530,6 +530,7 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
 /// kinetic energy.
 fn method_notes(doc: &mut Doc, d: &Derivation) {
     let m = doc.m;
+    super::loop_law::rate_note(doc, d);
     // I_A(S) at a point other than G: Huygens, named before the result.
     if let QuantityKind::Inertia {
         point: a,

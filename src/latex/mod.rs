@@ -422,6 +422,7 @@ impl VectorNames {
                 format!("\\mathcal{{P}}_{{\\mathrm{{int}}}}({})", escape_ident(set))
             }
             EquivalentInertia(c) => format!("J_{{\\mathrm{{eq}}}}({})", name(c)),
+            Rate { coordinate, order } => expr::rate_of(coordinate, *order),
             Unknown(n) => name(n),
             Eom(q) => format!("\\text{{Équation du mouvement en }} {}", name(q)),
             Derivative { of, frame: r } => self.derivative(of, r.as_deref()),

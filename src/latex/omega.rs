@@ -24,6 +24,27 @@ pub(super) fn chain(m: &Mechanism, f: FrameId, r: FrameId) -> Option<Vec<FrameId
     Some(out)
 }
 
+/// What gives the rate of a coordinate that a loop closure, a rolling condition or a screw
+/// determines, in the course's words (« la loi entrée-sortie »); `None` for another.
+pub(super) fn rate_source(m: &Mechanism, coordinate: &str) -> Option<&'static str> {
+    let named = |d: &Option<String>| d.as_deref() == Some(coordinate);
+    if m.spec
+        .closures
+        .iter()
+        .any(|c| c.dependent.iter().any(|d| d == coordinate))
+    {
+        Some("la loi entrée-sortie")
+    } else if let Some(r) =
+        (m.spec.rolling.iter()).find(|c| c.dependent.iter().any(|d| d == coordinate))
+    {
+        Some(r.course_name())
+    } else if m.spec.links.iter().any(|l| named(&l.dependent)) {
+        Some("la liaison hélicoïdale")
+    } else {
+        None
+    }
+}
+
 /// « Composition des vitesses de rotation : Ω(2/0) = Ω(2/1) + Ω(1/0) » along the frames that
 /// turn, through their common ancestor when neither frame holds the other (Ω(2/1) =
 /// Ω(2/0) + Ω(0/1)), or « D'après le paramétrage » for one rotation.
@@ -66,14 +87,7 @@ pub(super) fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
             b
         };
         let r = m.frames.get(frame).rotation.as_ref()?;
-        let name = &m.reg.coord_info(r.angle.coord).name;
-        if m.spec.closures.iter().any(|c| c.dependent.contains(name)) {
-            Some("la loi entrée-sortie")
-        } else if let Some(r) = m.spec.rolling.iter().find(|c| c.dependent.contains(name)) {
-            Some(r.course_name())
-        } else {
-            None
-        }
+        rate_source(m, &m.reg.coord_info(r.angle.coord).name)
     });
     if turning.len() <= 1 {
         return match source {

@@ -162,6 +162,11 @@ impl At<'_> {
                 reference,
             } => Raw::Scalar(self.power(a, reference)?),
             K::EquivalentInertia(c) => Raw::Scalar(self.equivalent_inertia(c)?),
+            // The sample's own rates: a dependent coordinate's come from this backend's
+            // solution of the loops, not from the exact side's loop law.
+            K::Rate { coordinate, order } => {
+                Raw::Scalar(vals.coords[self.coordinate(coordinate)?][usize::from(*order)])
+            }
             K::InternalPower(set) => Raw::Scalar(self.internal_power(set)?),
             K::Derivative { of, frame } => self.derivative(of, frame.as_deref())?,
         })
@@ -187,16 +192,17 @@ impl At<'_> {
     fn equivalent_inertia(&self, c: &str) -> Result<f64, NumericError> {
         let (m, st, vals) = (self.m, &self.st, &self.vals);
         let all: Vec<usize> = (0..m.solids.len()).collect();
-        let i =
-            m.coords
-                .iter()
-                .position(|x| x.name == c)
-                .ok_or_else(|| NumericError::Quantity {
-                    quantity: self.q.to_string(),
-                    message: format!("unknown coordinate `{c}`"),
-                })?;
+        let i = self.coordinate(c)?;
         let qd = vals.coords[i][1];
         Ok(2.0 * kinetic_energy(m, st, vals, &all, 0)? / (qd * qd))
+    }
+
+    /// The index of the coordinate named `c`.
+    fn coordinate(&self, c: &str) -> Result<usize, NumericError> {
+        (self.m.coords.iter().position(|x| x.name == c)).ok_or_else(|| NumericError::Quantity {
+            quantity: self.q.to_string(),
+            message: format!("unknown coordinate `{c}`"),
+        })
     }
 
     /// The raw value written as asked: in basis `basis_name`, or projected; refused when a

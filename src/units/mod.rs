@@ -418,6 +418,11 @@ pub fn expected_dimension(m: &Mechanism, dims: &Dimensions, q: &Quantity) -> Exp
             moment: Dimension::MOMENT,
         },
         Unknown(name) => Components(dims.scalar(name)),
+        Rate { coordinate, order } => Components(
+            m.reg
+                .coord(coordinate)
+                .map(|q| (0..*order).fold(dims.coordinate(q), |d, _| d / Dimension::TIME)),
+        ),
         // d/dt(Q): Q's dimension over a time.
         Derivative { of, .. } => expected_dimension(m, dims, of).map(|x| x / Dimension::TIME),
         Eom(c) => Components(m.reg.coord(c).and_then(|q| {

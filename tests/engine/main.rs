@@ -45,6 +45,7 @@ mod power;
 mod printed;
 mod printed_names;
 mod properties;
+mod rates;
 mod regulator;
 mod rolling;
 mod sets;

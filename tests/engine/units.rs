@@ -367,6 +367,18 @@ fn by_hand(m: &Mechanism, q: &str) -> (Dimension, Option<Dimension>) {
         // A mass brought back to a length (x, or the screw jack's λ).
         "J_eq" if q.contains("(x)") || q.contains("(lambda)") => one(d(1, 0, 0)),
         "J_eq" => one(d(1, 2, 0)),
+        // A coordinate's rate: its length (or angle, of no dimension) per second, per
+        // second squared.
+        "dot" | "ddot" => {
+            let c = &q[q.find('(').unwrap() + 1..q.find(')').unwrap()];
+            let length = m
+                .spec()
+                .coordinates
+                .iter()
+                .any(|x| x.name == c && x.kind == torseur::expr::CoordinateKind::Length);
+            let per = if head == "dot" { -1 } else { -2 };
+            one(d(0, i32::from(length), per))
+        }
         "{V" => (d(0, 0, -1), Some(d(0, 1, -1))),
         "{C" => (d(1, 1, -1), Some(d(1, 2, -1))),
         "{D" | "{T" => (d(1, 1, -2), Some(d(1, 2, -2))),
