@@ -581,3 +581,23 @@ fn a_prime_names_the_rate_to_write() {
         said("2'")
     );
 }
+
+#[test]
+fn a_completable_square_is_written_as_a_square_plus_the_rest() {
+    // k² − 2 m k L² + m² L⁴ + a term that is no part of it: (k − m L²)² + the rest, read back
+    // by the parser (which shares nothing with the presentation search) to the same value.
+    let r = reg();
+    for (text, written) in [
+        ("k^2 - 2*m*k*L^2 + m^2*L^4 + m^2", "(k - m*L^2)^2"),
+        ("4*k^2 + 4*k*x + x^2 + L^2", "(2*k + x)^2"),
+        ("m^2*x^2 - 2*m*x*L + L^2 + k^2*L^2", "(m*x - L)^2"),
+    ] {
+        let e = r.parse(text).unwrap();
+        let shown = e.presentation().to_string();
+        assert!(shown.contains(written), "{text}: {shown}");
+        assert_eq!(r.parse(&shown).unwrap(), e, "{shown}");
+    }
+    // No square to complete: the cross term's coefficient is not 2 √(c d).
+    let e = r.parse("k^2 - 3*m*k*L^2 + m^2*L^4 + m^2").unwrap();
+    assert!(!e.presentation().to_string().contains(")^2"));
+}

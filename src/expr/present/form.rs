@@ -543,6 +543,13 @@ pub(crate) fn sort_terms(reg: &Registry, terms: &mut Vec<Product>) {
     positive_first(terms);
 }
 
+/// Whether the sum's first term in a teacher's order (lower degree first) is negative: then
+/// a sum whose sign does not matter (a squared one) is better written with its signs changed,
+/// k − M Ω² rather than M Ω² − k.
+pub(crate) fn leads_negative(reg: &Registry, terms: &[Product]) -> bool {
+    (terms.iter().min_by_key(|p| product_key(reg, p))).is_some_and(|p| p.coef.is_negative())
+}
+
 /// Brings the first positive term to the front when the sum starts with a minus sign.
 pub(crate) fn positive_first(terms: &mut Vec<Product>) {
     if terms.first().is_some_and(|p| p.coef.is_negative())

@@ -3,7 +3,7 @@
 //! factorisation (perfect squares, products of sums). Memoised, with a budget.
 
 use super::super::Registry;
-use super::form::{Factor, Form, Leaf, Product, positive_first, sort_terms};
+use super::form::{Factor, Form, Leaf, Product, leads_negative, positive_first, sort_terms};
 use super::rewrite::{Leaves, Mono, normalize};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -139,6 +139,11 @@ impl<'a> Search<'a> {
                 && let Some(f) = self.factored(&ms)
             {
                 consider(f, &mut best);
+            }
+            if ms.len() >= 4 {
+                for f in self.completed_squares(&ms) {
+                    consider(f, &mut best);
+                }
             }
         }
         self.sort(&mut best);
@@ -323,6 +328,105 @@ impl<'a> Search<'a> {
         }
         Some(Form::single(Product { coef, factors }))
     }
+}
+
+impl Search<'_> {
+    /// The sum with a perfect square completed out of three of its terms and the rest
+    /// written after it: c a² + t a b + (t²/4c) b² + r = c (a + t/(2c) b)² + r, the damped
+    /// oscillator's (k − M Ω²)² + c² Ω² instead of k² + (c² − 2 M k + M² Ω²) Ω². Exact: the
+    /// three terms are matched with rational arithmetic (t² = 4 c d), and the form is checked
+    /// against the canonical one like every other.
+    fn completed_squares(&mut self, ms: &[Mono]) -> Vec<Form> {
+        let mut out = Vec::new();
+        for (i, j) in square_pairs(ms) {
+            if self.spent >= BUDGET {
+                break;
+            }
+            let (a, b) = (half(&ms[i]), half(&ms[j]));
+            let cross = product_atoms(&a, &b);
+            let Some(t) = (0..ms.len()).find(|&t| {
+                t != i && t != j && ms[t].atoms == cross && {
+                    let four = Rational::new(4, 1);
+                    &ms[t].coef * &ms[t].coef == &(&four * &ms[i].coef) * &ms[j].coef
+                }
+            }) else {
+                continue;
+            };
+            let c = ms[i].coef.clone();
+            let ratio = &ms[t].coef / &(&Rational::new(2, 1) * &c);
+            let inner = vec![
+                Mono {
+                    coef: Rational::one(),
+                    atoms: a,
+                },
+                Mono {
+                    coef: ratio,
+                    atoms: b,
+                },
+            ];
+            let mut square = self.best(normalize(inner));
+            // (−s)² = s²: the sum is written from a positive first term in a teacher's order.
+            if leads_negative(self.reg, &square.terms) {
+                square
+                    .terms
+                    .iter_mut()
+                    .for_each(|p| p.coef = -p.coef.clone());
+                self.sort(&mut square);
+            }
+            if square.terms.len() < 2 {
+                continue;
+            }
+            let rest: Vec<Mono> = (ms.iter().enumerate())
+                .filter(|(k, _)| ![i, j, t].contains(k))
+                .map(|(_, m)| m.clone())
+                .collect();
+            let rest = self.best(normalize(rest));
+            // A square written first, then what remains.
+            let mut terms = vec![Product {
+                coef: c,
+                factors: vec![(Factor::Sum(square), 2)],
+            }];
+            terms.extend(rest.terms);
+            out.push(Form { terms });
+        }
+        out
+    }
+}
+
+/// The pairs (i, j) of terms that are squares of monomials with a positive coefficient
+/// (every exponent even), both ways: the first one's coefficient goes out of the square,
+/// 4 k² + 4 k x + x² as (2 k + x)² or 4 (k + x/2)², and the cost chooses.
+fn square_pairs(ms: &[Mono]) -> Vec<(usize, usize)> {
+    let square = |m: &Mono| {
+        !m.coef.is_negative() && !m.coef.is_zero() && m.atoms.iter().all(|(_, k)| k % 2 == 0)
+    };
+    let squares: Vec<usize> = (0..ms.len()).filter(|&k| square(&ms[k])).collect();
+    let mut pairs = Vec::new();
+    for (x, &i) in squares.iter().enumerate() {
+        for &j in &squares[x + 1..] {
+            pairs.push((i, j));
+            pairs.push((j, i));
+        }
+    }
+    pairs
+}
+
+/// The leaves of a square monomial, each at half its exponent.
+fn half(m: &Mono) -> Vec<(Leaf, u8)> {
+    m.atoms.iter().map(|(a, k)| (a.clone(), k / 2)).collect()
+}
+
+/// The leaves of a product of two monomials, sorted as a monomial's are.
+fn product_atoms(a: &[(Leaf, u8)], b: &[(Leaf, u8)]) -> Vec<(Leaf, u8)> {
+    let mut out: Vec<(Leaf, u8)> = a.to_vec();
+    for (l, k) in b {
+        match out.iter_mut().find(|x| &x.0 == l) {
+            Some(x) => x.1 += k,
+            None => out.push((l.clone(), *k)),
+        }
+    }
+    out.sort();
+    out
 }
 
 pub(crate) fn negative_majority(f: &Form) -> bool {
