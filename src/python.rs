@@ -237,7 +237,8 @@ impl Loaded {
         } else {
             crate::latex::VectorStyle::Sum
         };
-        let key = crate::latex::answer_key_named(&self.m, style, prefix).map_err(error)?;
+        let runs = crate::simulate::question_runs(&self.m);
+        let key = crate::latex::answer_key_named(&self.m, style, prefix, &runs).map_err(error)?;
         let figures = key
             .figures
             .iter()

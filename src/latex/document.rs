@@ -164,7 +164,7 @@ pub struct AnswerKey {
 /// ([`crate::simulate::question_runs`]: one entry per question of the spec): the document
 /// draws and tabulates them, it runs nothing. The figure files are named after `prefix`, as
 /// [`super::answer_key_named`] says.
-pub fn write_answer_key(
+pub(super) fn write_answer_key(
     m: &Mechanism,
     style: VectorStyle,
     prefix: &str,

@@ -16,7 +16,7 @@ const LOOK_BACK: usize = 20;
 ///
 /// ```
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-/// let tex = torseur::latex::answer_key(&m).unwrap();
+/// let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
 /// // The line of question 3's statement, and the line after it.
 /// let line = 1 + tex.lines().position(|l| l.contains("Déterminer le torseur dynamique de $S_1$")).unwrap();
 /// assert_eq!(
