@@ -34,7 +34,7 @@ pub fn text_at_fault(m: &Mechanism, tex: &str, line: usize) -> Option<String> {
     // Each free text as the key prints it (a question's title also lowercased, as a sentence
     // cites it), lowercased again: a label may start a sentence with a capital.
     let mut printed: Vec<(String, String)> = Vec::new();
-    for (path, text) in crate::wire::free_texts(&m.spec) {
+    for (path, text) in &m.statement.free_texts {
         let mut forms = vec![super::rich_text_or_escaped(text)];
         if path.ends_with(".title") {
             forms.push(super::rich_text_or_escaped(&lowercase_text(text)));

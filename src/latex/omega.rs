@@ -2,7 +2,7 @@
 
 use super::quantity;
 use crate::frame::FrameId;
-use crate::mechanism::Mechanism;
+use crate::mechanism::{DeterminedBy, Mechanism};
 use crate::quantity::{Motion, QuantityKind};
 
 /// `\overrightarrow{\Omega(2/1)}` from frame names.
@@ -66,13 +66,9 @@ pub(super) fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
             b
         };
         let r = m.frames.get(frame).rotation.as_ref()?;
-        let name = &m.reg.coord_info(r.angle.coord).name;
-        if m.spec.closures.iter().any(|c| c.dependent.contains(name)) {
-            Some("la loi entrée-sortie")
-        } else if let Some(r) = m.spec.rolling.iter().find(|c| c.dependent.contains(name)) {
-            Some(r.course_name())
-        } else {
-            None
+        match m.determined_by(r.angle.coord)? {
+            DeterminedBy::Closure => Some("la loi entrée-sortie"),
+            by => by.rolling_name(),
         }
     });
     if turning.len() <= 1 {
