@@ -332,3 +332,39 @@ fn a_value_written_alone_uses_the_statements_vector_names() {
         "{graph}"
     );
 }
+
+/// The answer key draws the runs it is handed and runs nothing itself: a failed run given to
+/// it is the key's error (naming its scenario), and no run at all for a question that shows
+/// a simulation is refused.
+#[test]
+fn the_key_draws_the_runs_it_is_given_and_runs_none() {
+    use torseur::simulate::{QuestionRuns, SimulateError};
+    let m = regulator();
+    let shown = (m.statement().questions.iter())
+        .position(|q| q.simulation.is_some())
+        .expect("the regulator shows a simulation");
+    let scenario = m.statement().questions[shown]
+        .simulation
+        .as_ref()
+        .unwrap()
+        .scenarios[0]
+        .clone();
+    let mut runs: Vec<QuestionRuns> = (m.statement().questions.iter())
+        .map(|_| Ok(Vec::new()))
+        .collect();
+    runs[shown] = Err((
+        scenario.clone(),
+        SimulateError::Scenario("given failure".into()),
+    ));
+    let e = torseur::latex::answer_key(&m, &runs)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains(&scenario) && e.contains("given failure"), "{e}");
+    let e = torseur::latex::answer_key(&m, &runs[..shown])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("the runs of its simulation were not given"),
+        "{e}"
+    );
+}
