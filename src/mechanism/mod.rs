@@ -426,8 +426,10 @@ impl Mechanism {
     /// assert_eq!(m.scenario_label("sans_frottement").as_deref(), Some("sans frottement"));
     /// ```
     pub fn action_label(&self, name: &str) -> Option<String> {
-        let a = self.spec.actions.iter().find(|a| a.name == name)?;
-        Some(a.label())
+        // The given actions follow the links' in the PFD's, each written {T(name→on)}.
+        let given = self.dynamics.actions.get(self.links.len()..)?;
+        let a = given.iter().find(|a| a.from_label == name)?;
+        Some(a.label.clone())
     }
 
     /// How a sentence names the link `name` of the spec: its `label`, or « la liaison pivot

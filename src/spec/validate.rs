@@ -80,19 +80,7 @@ fn build_with(
     (resolved, unknowns): (&Resolved, &Unknowns),
     solved: Option<&Solved>,
 ) -> Result<Mechanism, SpecError> {
-    // Free texts, after the shared resolution: a formula the answer key could not print
-    // safely refuses the spec.
-    for (path, text) in free_texts(spec) {
-        let (max, what) = free_text_limit(&path);
-        let n = text.chars().count();
-        if n > max {
-            return Err(at(
-                path,
-                format!("{n} characters: {what} may hold at most {max}"),
-            ));
-        }
-        crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
-    }
+    texts(spec)?;
     units(spec)?;
     let reg = registry(spec, &unknowns.names, solved)?;
 
@@ -156,9 +144,33 @@ fn build_with(
         }),
     };
     m.dynamics = super::dynamics::build(&m, spec, (resolved, unknowns))?;
-    // Each requested quantity must refer to known objects.
+    requests(&m)?;
+    super::scenarios::check(&m)?;
+    Ok(m)
+}
+
+/// The free texts, after the shared resolution: one too long, or with a formula the answer
+/// key could not print safely, refuses the spec.
+fn texts(spec: &SpecFile) -> Result<(), SpecError> {
+    for (path, text) in free_texts(spec) {
+        let (max, what) = free_text_limit(&path);
+        let n = text.chars().count();
+        if n > max {
+            return Err(at(
+                path,
+                format!("{n} characters: {what} may hold at most {max}"),
+            ));
+        }
+        crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
+    }
+    Ok(())
+}
+
+/// Each requested quantity, and each of the questions' quantities and equations, refers to
+/// known objects of the built mechanism.
+fn requests(m: &Mechanism) -> Result<(), SpecError> {
     for (i, q) in m.quantities.iter().enumerate() {
-        crate::derivation::resolve(&m, q)
+        crate::derivation::resolve(m, q)
             .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
     }
     for (i, qs) in m.statement.questions.iter().enumerate() {
@@ -166,11 +178,10 @@ fn build_with(
         let equations =
             (qs.equations.iter()).map(|e| (format!("questions[{i}].equations"), &e.quantity));
         for (path, q) in quantities.chain(equations) {
-            crate::derivation::resolve(&m, q).map_err(|e| at(&path, e.to_string()))?;
+            crate::derivation::resolve(m, q).map_err(|e| at(&path, e.to_string()))?;
         }
     }
-    super::scenarios::check(&m)?;
-    Ok(m)
+    Ok(())
 }
 
 /// The parameters' units: each a dimension, rad for an angle.
