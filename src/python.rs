@@ -146,7 +146,9 @@ impl Loaded {
         let coords: Vec<&str> = reg.coordinates().iter().map(|c| c.name.as_str()).collect();
         let hyps: Vec<&str> = m.hypotheses().iter().map(|h| h.name.as_str()).collect();
         let qs: Vec<String> = m.quantities().iter().map(|q| q.to_string()).collect();
-        let scenarios: Vec<&str> = m.spec.scenarios.iter().map(|s| s.name.as_str()).collect();
+        let scenarios: Vec<&str> = (m.statement.scenarios.iter())
+            .map(|s| s.name.as_str())
+            .collect();
         to_text(&json!({"title": m.title(), "parameters": reg.parameters(),
             "coordinates": coords, "hypotheses": hyps, "quantities": qs,
             "scenarios": scenarios}))
@@ -237,7 +239,8 @@ impl Loaded {
         } else {
             crate::latex::VectorStyle::Sum
         };
-        let key = crate::latex::answer_key_named(&self.m, style, prefix).map_err(error)?;
+        let runs = crate::simulate::question_runs(&self.m);
+        let key = crate::latex::answer_key_named(&self.m, style, prefix, &runs).map_err(error)?;
         let figures = key
             .figures
             .iter()

@@ -269,7 +269,7 @@ fn unknown_value(
 
 /// Coulomb's law of a contact as a step: T = −f N ε, its value the equation's right side.
 fn law_step(m: &Mechanism, law: &crate::mechanism::CoulombLaw) -> Step {
-    let l = &m.spec.links[law.link];
+    let l = &m.links[law.link];
     Step {
         label: format!("Coulomb({})", l.name),
         kind: StepKind::Coulomb {

@@ -40,7 +40,7 @@ fn inline(doc: &mut Doc, what: String, latex: String, value: crate::expr::Expr) 
 pub(super) fn state_laws(doc: &mut Doc, actions: &[Step]) {
     let m = doc.m;
     for law in &m.dynamics.laws {
-        let l = &m.spec.links[law.link];
+        let l = &m.links[law.link];
         let present = actions.iter().any(|s| match &s.kind {
             StepKind::Action { from, on, point } => {
                 *point == l.point
@@ -61,7 +61,7 @@ pub(super) fn state_laws(doc: &mut Doc, actions: &[Step]) {
 /// and the sliding velocity's value, then the sticking condition.
 fn state_law(doc: &mut Doc, law: &CoulombLaw) {
     let m = doc.m;
-    let l = &m.spec.links[law.link];
+    let l = &m.links[law.link];
     let [t, n] = names(law);
     let p = point(&l.point);
     let id = &l.name;
@@ -132,11 +132,10 @@ pub(super) fn law_steps(doc: &mut Doc, steps: &[Step]) {
         let StepKind::Coulomb { link, tangential } = &s.kind else {
             continue;
         };
-        let Some(law) = (m.dynamics.laws.iter()).find(|l| m.spec.links[l.link].name == *link)
-        else {
+        let Some(law) = (m.dynamics.laws.iter()).find(|l| m.links[l.link].name == *link) else {
             continue;
         };
-        let p = point(&m.spec.links[law.link].point);
+        let p = point(&m.links[law.link].point);
         let v = super::words::shown_value(doc, &s.value);
         let t = name(tangential);
         if let Some(place) = doc.cited(&t, &v) {
@@ -183,7 +182,7 @@ pub(super) fn law_steps(doc: &mut Doc, steps: &[Step]) {
 /// sentence that eliminates the unknowns (« et les lois de Coulomb en $A$ et $B$ »).
 pub(super) fn laws_phrase(m: &Mechanism) -> Option<String> {
     let points: Vec<String> = (m.dynamics.laws.iter())
-        .map(|l| format!("${}$", point(&m.spec.links[l.link].point)))
+        .map(|l| format!("${}$", point(&m.links[l.link].point)))
         .collect();
     match points.len() {
         0 => None,

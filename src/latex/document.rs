@@ -12,10 +12,10 @@ use super::theorems::pfd_block;
 use super::{VectorStyle, basis, escape_text, name};
 use crate::derivation::derive;
 use crate::mechanism::Mechanism;
+use crate::mechanism::{Equation, Question};
 use crate::quantity::Quantity;
 use crate::quantity::QuantityKind;
 use crate::simulate::QuestionRuns;
-use crate::wire::QuestionSpec;
 use std::fmt::Write;
 
 /// The preamble: 10 pt on A4 with 1.5 cm margins, tight display and heading spacing, a
@@ -37,10 +37,10 @@ const PREAMBLE: &str = "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf
 /// A question: its statement, the teacher's answer text, the hypotheses it states, its
 /// quantities (kinematics and kinetics step by step, the PFD as bilan and theorems), its
 /// equations written out.
-fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivation::ResolveError> {
+fn question_block(doc: &mut Doc, qs: &Question) -> Result<(), crate::derivation::ResolveError> {
     question_heading(doc, qs);
-    for text in &qs.quantities {
-        question_quantity(doc, text)?;
+    for q in &qs.quantities {
+        question_quantity(doc, q)?;
     }
     for e in &qs.equations {
         question_equation(doc, e)?;
@@ -51,7 +51,7 @@ fn question_block(doc: &mut Doc, qs: &QuestionSpec) -> Result<(), crate::derivat
 
 /// A question's title, statement and answer text, the hypotheses it states and the one it
 /// works under (kept in `doc.under` for its quantities and equations).
-fn question_heading(doc: &mut Doc, qs: &QuestionSpec) {
+fn question_heading(doc: &mut Doc, qs: &Question) {
     let m = doc.m;
     let _ = writeln!(
         doc.o,
@@ -69,20 +69,10 @@ fn question_heading(doc: &mut Doc, qs: &QuestionSpec) {
     if let Some(a) = &qs.answer {
         let _ = writeln!(doc.o, "{}\n", rich_text_or_escaped(a));
     }
-    for name in &qs.hypotheses {
-        if let Some((h, hs)) = m
-            .hypotheses
-            .iter()
-            .zip(&m.spec.hypotheses)
-            .find(|(h, _)| &h.name == name)
-        {
-            hypothesis_block(doc, h, hs);
-        }
+    for &k in &qs.hypotheses {
+        hypothesis_block(doc, &m.hypotheses[k]);
     }
-    doc.under = qs
-        .under
-        .as_ref()
-        .and_then(|n| m.hypotheses.iter().find(|h| &h.name == n));
+    doc.under = qs.under.map(|k| &m.hypotheses[k]);
     if let Some(h) = doc.under
         && !(qs.quantities.is_empty() && qs.equations.is_empty())
     {
@@ -94,13 +84,11 @@ fn question_heading(doc: &mut Doc, qs: &QuestionSpec) {
     }
 }
 
-/// A quantity of a question (`text`, in the notation): the PFD for an unknown or an equation
-/// of motion, else its method step by step.
-fn question_quantity(doc: &mut Doc, text: &str) -> Result<(), crate::derivation::ResolveError> {
-    let q = Quantity::parse(text)
-        .map_err(|e| crate::derivation::ResolveError::new(&text, e.to_string()))?;
-    let d = derive(doc.m, &q)?;
-    let title = doc.names.quantity_title(&q);
+/// A quantity of a question: the PFD for an unknown or an equation of motion, else its
+/// method step by step.
+fn question_quantity(doc: &mut Doc, q: &Quantity) -> Result<(), crate::derivation::ResolveError> {
+    let d = derive(doc.m, q)?;
+    let title = doc.names.quantity_title(q);
     // The heading names the basis asked: the same vector in B2 and in B1 reads apart.
     let heading = match &q.basis {
         Some(b) => format!("{title} \\text{{ dans }} {}", basis(b)),
@@ -126,17 +114,13 @@ fn question_quantity(doc: &mut Doc, text: &str) -> Result<(), crate::derivation:
 
 /// An equation of a question (`C_m = δ(O1,E/0)·z0`): its reason, then the equation boxed,
 /// under the question's hypothesis.
-fn question_equation(
-    doc: &mut Doc,
-    e: &crate::wire::EquationSpec,
-) -> Result<(), crate::derivation::ResolveError> {
-    let q = Quantity::parse(&e.quantity)
-        .map_err(|er| crate::derivation::ResolveError::new(&e.quantity, er.to_string()))?;
-    let d = derive(doc.m, &q)?;
+fn question_equation(doc: &mut Doc, e: &Equation) -> Result<(), crate::derivation::ResolveError> {
+    let q = &e.quantity;
+    let d = derive(doc.m, q)?;
     if let Some(r) = &e.reason {
         let _ = writeln!(doc.o, "{} :", rich_text_or_escaped(r));
     }
-    let lhs = format!("{} = {}", name(&e.lhs), doc.names.quantity_title(&q));
+    let lhs = format!("{} = {}", name(&e.lhs), doc.names.quantity_title(q));
     let id = q.to_string();
     let v = match doc.under {
         Some(h) => d.value_under(doc.m, h),
@@ -164,7 +148,7 @@ pub struct AnswerKey {
 /// ([`crate::simulate::question_runs`]: one entry per question of the spec): the document
 /// draws and tabulates them, it runs nothing. The figure files are named after `prefix`, as
 /// [`super::answer_key_named`] says.
-pub fn write_answer_key(
+pub(super) fn write_answer_key(
     m: &Mechanism,
     style: VectorStyle,
     prefix: &str,
@@ -214,26 +198,26 @@ fn questions(
 ) -> Result<Vec<(String, crate::simulate::Figure)>, crate::derivation::ResolveError> {
     let m = doc.m;
     let mut figures = Vec::new();
-    if m.spec.questions.is_empty() {
+    if m.statement.questions.is_empty() {
         if !m.hypotheses.is_empty() {
             doc.o.push_str("\\section*{Hypothèses}\n");
-            for (h, hs) in m.hypotheses.iter().zip(&m.spec.hypotheses) {
-                hypothesis_block(doc, h, hs);
+            for h in &m.hypotheses {
+                hypothesis_block(doc, h);
             }
         }
-        let all = QuestionSpec {
+        let all = Question {
             title: "Résultats".to_string(),
             statement: None,
             answer: None,
             hypotheses: vec![],
             under: None,
-            quantities: m.quantities.iter().map(|q| q.to_string()).collect(),
+            quantities: m.quantities.clone(),
             equations: vec![],
             simulation: None,
         };
         question_block(doc, &all)?;
     } else {
-        for (k, qs) in m.spec.questions.iter().enumerate() {
+        for (k, qs) in m.statement.questions.iter().enumerate() {
             question_block(doc, qs)?;
             if let Some(sim) = &qs.simulation {
                 let file = format!("{prefix}simulation-{}.png", k + 1);

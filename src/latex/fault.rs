@@ -16,7 +16,7 @@ const LOOK_BACK: usize = 20;
 ///
 /// ```
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-/// let tex = torseur::latex::answer_key(&m).unwrap();
+/// let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
 /// // The line of question 3's statement, and the line after it.
 /// let line = 1 + tex.lines().position(|l| l.contains("Déterminer le torseur dynamique de $S_1$")).unwrap();
 /// assert_eq!(
@@ -34,7 +34,7 @@ pub fn text_at_fault(m: &Mechanism, tex: &str, line: usize) -> Option<String> {
     // Each free text as the key prints it (a question's title also lowercased, as a sentence
     // cites it), lowercased again: a label may start a sentence with a capital.
     let mut printed: Vec<(String, String)> = Vec::new();
-    for (path, text) in crate::wire::free_texts(&m.spec) {
+    for (path, text) in &m.statement.free_texts {
         let mut forms = vec![super::rich_text_or_escaped(text)];
         if path.ends_with(".title") {
             forms.push(super::rich_text_or_escaped(&lowercase_text(text)));

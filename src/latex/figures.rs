@@ -7,8 +7,9 @@
 use super::{VectorNames, name, point};
 use crate::expr::{CoordId, Registry};
 use crate::frame::{Axis, Rotation};
+use crate::mechanism::Link;
 use crate::mechanism::Mechanism;
-use crate::wire::{LinkKind, LinkSpec};
+use crate::wire::LinkKind;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -396,16 +397,16 @@ pub(super) fn spec_vector(names: &VectorNames, s: &str) -> String {
 /// ```
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// assert_eq!(
-///     torseur::latex::link_text(&m.spec().links[1]),
+///     torseur::latex::link_text(&m.links()[1]),
 ///     "pivot d'axe $(O_{2}, \\vec{x}_{1})$, avec frottement visqueux"
 /// );
 /// ```
-pub fn link_text(l: &LinkSpec) -> String {
+pub fn link_text(l: &Link) -> String {
     link_text_with(&VectorNames::default(), l)
 }
 
 /// [`link_text`], the basis vectors by the statement's `names`.
-pub(super) fn link_text_with(names: &VectorNames, l: &LinkSpec) -> String {
+pub(super) fn link_text_with(names: &VectorNames, l: &Link) -> String {
     let p = point(&l.point);
     let spec_vector = |s: &str| spec_vector(names, s);
     let axis = l.axis.as_deref().map(spec_vector);
@@ -425,14 +426,12 @@ pub(super) fn link_text_with(names: &VectorNames, l: &LinkSpec) -> String {
         },
         (LinkKind::Point, Some(a)) => format!("ponctuelle de normale $({p}, {a})$"),
         // The pitch by its name when it is one (a longer pitch is written with the relation).
-        (LinkKind::Helical, Some(a)) => match l.pitch.as_deref().map(str::trim) {
-            Some(n) if crate::expr::check_identifier(n).is_ok() => {
-                format!(
-                    "hélicoïdale d'axe $({p}, {a})$ et de pas ${}$",
-                    super::name(n)
-                )
-            }
-            _ => format!("hélicoïdale d'axe $({p}, {a})$"),
+        (LinkKind::Helical, Some(a)) => match &l.pitch_name {
+            Some(n) => format!(
+                "hélicoïdale d'axe $({p}, {a})$ et de pas ${}$",
+                super::name(n)
+            ),
+            None => format!("hélicoïdale d'axe $({p}, {a})$"),
         },
         (kind, None) => {
             let n = kind.course_name();
@@ -442,10 +441,10 @@ pub(super) fn link_text_with(names: &VectorNames, l: &LinkSpec) -> String {
             )
         }
     };
-    if l.friction.is_some() {
+    if l.viscous.is_some() {
         t.push_str(", avec frottement visqueux");
     }
-    if l.coulomb.is_some() || l.contact_friction.is_some() {
+    if l.dry.is_some() || l.coefficient.is_some() {
         t.push_str(", avec frottement sec");
     }
     if l.spring.is_some() {
@@ -485,7 +484,7 @@ pub(super) fn link_graph_with(m: &Mechanism, names: &VectorNames) -> String {
 
 /// The `tikzpicture` of [`link_graph`] and its printed width in cm; none without links.
 pub(super) fn link_picture(m: &Mechanism, names: &VectorNames) -> Option<(String, f64)> {
-    let links = &m.spec.links;
+    let links = &m.links;
     if links.is_empty() && m.bodies.iter().all(|b| b.carried_by.is_none()) {
         return None;
     }
@@ -506,7 +505,7 @@ pub(super) fn link_picture(m: &Mechanism, names: &VectorNames) -> Option<(String
 type Edges = BTreeMap<(usize, usize), Vec<String>>;
 
 /// The solids in order of appearance, the ground first, and the edges between them.
-fn link_graph_of(m: &Mechanism, names: &VectorNames, links: &[LinkSpec]) -> (Vec<String>, Edges) {
+fn link_graph_of(m: &Mechanism, names: &VectorNames, links: &[Link]) -> (Vec<String>, Edges) {
     let ground = m.frame_name(m.frames.ground()).to_string();
     let mut nodes: Vec<String> = vec![ground];
     for l in links {

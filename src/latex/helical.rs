@@ -6,10 +6,11 @@
 use super::page::{DisplayRole, Doc, Inline};
 use super::words::solid;
 use crate::derivation::Value;
+use crate::mechanism::Link;
 use crate::mechanism::{HelicalLaw, Mechanism};
 use crate::quantity::Quantity;
 use crate::vector::Vector;
-use crate::wire::{LinkKind, LinkSpec};
+use crate::wire::LinkKind;
 use std::fmt::Write as _;
 
 /// Display lines of a broken formula, continued under its sign.
@@ -19,7 +20,7 @@ fn lines(l: &[String]) -> String {
 
 /// A helical link's quantities of the relative motion, as the course writes them:
 /// (V(P,2/1)·u, Ω(2/1)·u), the motion of its second solid on its first.
-fn motion_quantities(m: &Mechanism, names: &super::VectorNames, l: &LinkSpec) -> (String, String) {
+fn motion_quantities(m: &Mechanism, names: &super::VectorNames, l: &Link) -> (String, String) {
     let [a, b] = &l.between;
     let axis = l.axis.as_deref().unwrap_or("z0");
     let u = m
@@ -39,8 +40,8 @@ fn motion_quantities(m: &Mechanism, names: &super::VectorNames, l: &LinkSpec) ->
 }
 
 /// The link's pitch in the key's notation, recorded as an inline formula.
-fn pitch_math(doc: &mut Doc, l: &LinkSpec) -> String {
-    let Some(p) = l.pitch.as_deref().and_then(|t| doc.m.reg.parse(t).ok()) else {
+fn pitch_math(doc: &mut Doc, l: &Link) -> String {
+    let Some(p) = l.pitch.clone() else {
         return String::new();
     };
     let latex = super::expr(&p);
@@ -53,7 +54,7 @@ fn pitch_math(doc: &mut Doc, l: &LinkSpec) -> String {
 }
 
 /// The sentence that states a helical link's screw motion, and its axis' vector.
-fn statement(doc: &mut Doc, l: &LinkSpec) -> String {
+fn statement(doc: &mut Doc, l: &Link) -> String {
     let m = doc.m;
     let p = pitch_math(doc, l);
     let (v, w) = motion_quantities(m, &doc.names, l);
@@ -96,7 +97,7 @@ pub(super) fn kinematics(doc: &mut Doc, laws: &[HelicalLaw]) {
     };
     let _ = writeln!(doc.o, "\\noindent\\textbf{{{title}}} ");
     for law in laws {
-        let l = &m.spec.links[law.link];
+        let l = &m.links[law.link];
         let sentence = statement(doc, l);
         let _ = writeln!(doc.o, "{sentence}, avec :");
         let (v, w) = motion_quantities(m, &doc.names, l);
@@ -145,7 +146,7 @@ pub(super) fn kinematics(doc: &mut Doc, laws: &[HelicalLaw]) {
 /// moment is −p/(2π) times its axial resultant, by zero power.
 pub(super) fn links(doc: &mut Doc) {
     let m = doc.m;
-    let helical: Vec<usize> = (m.spec.links.iter().enumerate())
+    let helical: Vec<usize> = (m.links.iter().enumerate())
         .filter(|(_, l)| l.kind == LinkKind::Helical)
         .map(|(i, _)| i)
         .collect();
@@ -176,7 +177,7 @@ pub(super) fn links(doc: &mut Doc) {
 /// satisfy the relation already.
 fn free_motion(doc: &mut Doc, i: usize) {
     let m = doc.m;
-    let l = &m.spec.links[i];
+    let l = &m.links[i];
     let sentence = statement(doc, l);
     let _ = writeln!(doc.o, "{sentence} ; le paramétrage la vérifie :");
     let Some(action) = m.dynamics.actions.get(i) else {
@@ -216,7 +217,7 @@ fn free_motion(doc: &mut Doc, i: usize) {
 /// relation of its axial moment to its axial resultant (zero power along the screw motion).
 fn torsor(doc: &mut Doc, i: usize) {
     let m = doc.m;
-    let l = &m.spec.links[i];
+    let l = &m.links[i];
     let Some(action) = m.dynamics.actions.get(i) else {
         return;
     };

@@ -7,7 +7,6 @@ use super::{escape_text, name, point, rich_text_or_escaped};
 use crate::derivation::Value;
 use crate::inertia::Symmetry;
 use crate::mechanism::{Hypothesis, Mechanism};
-use crate::wire::HypothesisSpec;
 use std::fmt::Write;
 
 fn symmetry_text(
@@ -45,7 +44,7 @@ fn symmetry_text(
 /// A hypothesis, stated once: its text, the zeros its symmetries give (each justified by
 /// its plane or axis) and the particular inertia matrices; a later hypothesis with the same
 /// symmetries refers to the first and adds only what is new (constant rates).
-pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec) {
+pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis) {
     if d.stated.iter().any(|(n, _, _)| n == &h.name) {
         return;
     }
@@ -61,7 +60,7 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
     let same = d
         .stated
         .iter()
-        .find(|(_, solids, _)| !solids.is_empty() && *solids == hs.symmetric_solids)
+        .find(|(_, solids, _)| !solids.is_empty() && *solids == h.symmetric_solids)
         .map(|(n, _, e)| (n.clone(), e.clone()));
     let old_effects: Vec<String> = if let Some((other, effects)) = same {
         let _ = writeln!(
@@ -71,11 +70,11 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
         );
         effects
     } else {
-        symmetric_matrices(d, h, hs);
+        symmetric_matrices(d, h);
         // The symmetries' zeros are what the matrices show.
         h.effects
             .iter()
-            .filter(|e| !hs.symmetric_solids.is_empty() && !e.contains("dot("))
+            .filter(|e| !h.symmetric_solids.is_empty() && !e.contains("dot("))
             .cloned()
             .collect()
     };
@@ -83,21 +82,20 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &Hypo
     first_order(d, h);
     d.stated.push((
         h.name.clone(),
-        hs.symmetric_solids.clone(),
+        h.symmetric_solids.clone(),
         h.effects.clone(),
     ));
 }
 
 /// Each symmetric solid's symmetries and its particular inertia matrix under `h`, side by
 /// side.
-fn symmetric_matrices<'m>(d: &mut Doc<'m>, h: &'m Hypothesis, hs: &HypothesisSpec) {
+fn symmetric_matrices<'m>(d: &mut Doc<'m>, h: &'m Hypothesis) {
     let m = d.m;
     let mut cells = Vec::new();
     let mut widths = Vec::new();
-    for sname in &hs.symmetric_solids {
-        let Some(b) = m.bodies.iter().find(|b| &b.name == sname) else {
-            continue;
-        };
+    for &id in &h.symmetric_solids {
+        let b = m.body(id);
+        let sname = b.name.as_str();
         let Some(i) = &b.inertia else { continue };
         cells.push(d.capture(|d| {
             let bn = m.frame_name(i.basis).to_string();
@@ -246,48 +244,44 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
             super::values::vector_over_bases(m, &doc.names, g)
         ));
     }
-    if !m.spec.links.is_empty() {
+    if !m.links.is_empty() {
         // Friction makes a link imperfect (it dissipates); a spring mounted on it does not.
         let mut said = Vec::new();
-        let mut tex = |what: String, t: &str| match m.reg.parse(t) {
-            Ok(e) => {
-                let latex = super::expr(&e);
+        let mut tex = |what: String, e: Option<&crate::expr::Expr>| match e {
+            Some(e) => {
+                let latex = super::expr(e);
                 said.push(Inline {
                     what,
                     latex: latex.clone(),
-                    value: Value::Scalar(e),
+                    value: Value::Scalar(e.clone()),
                 });
                 latex
             }
-            Err(_) => String::new(),
+            None => String::new(),
         };
-        let lossy: Vec<String> = m
-            .spec
-            .links
-            .iter()
+        let lossy: Vec<String> = (m.links.iter())
             .flat_map(|l| {
-                let viscous = l.friction.as_deref().map(|f| {
+                let viscous = l.viscous.as_ref().map(|f| {
                     format!(
                         "la liaison {} (frottement visqueux de coefficient ${}$)",
                         escape_text(&l.name),
-                        tex(format!("friction of {}", l.name), f)
+                        tex(format!("friction of {}", l.name), Some(f))
                     )
                 });
-                let dry = l.coulomb.as_deref().map(|c| {
-                    let sign = l.sign_parameter().unwrap_or_default();
+                let dry = l.dry.as_ref().map(|c| {
                     format!(
                         "la liaison {} (frottement sec d'intensité ${}$, opposé au glissement : \
                          ${}$ est le signe de la vitesse relative)",
                         escape_text(&l.name),
-                        tex(format!("dry friction of {}", l.name), c),
-                        tex(format!("sign of {}", l.name), &sign)
+                        tex(format!("dry friction of {}", l.name), Some(c)),
+                        tex(format!("sign of {}", l.name), l.sign.as_ref())
                     )
                 });
-                let contact = l.contact_friction.as_ref().map(|c| {
+                let contact = l.coefficient.as_ref().map(|c| {
                     format!(
                         "la liaison {} (frottement sec de coefficient ${}$, loi de Coulomb)",
                         escape_text(&l.name),
-                        tex(format!("coefficient of {}", l.name), &c.coefficient)
+                        tex(format!("coefficient of {}", l.name), Some(c))
                     )
                 });
                 viscous.into_iter().chain(dry).chain(contact)
@@ -298,12 +292,12 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
         } else {
             format!("les liaisons sont parfaites, sauf {}", lossy.join(" et "))
         });
-        for l in &m.spec.links {
+        for l in &m.links {
             if let Some(sp) = &l.spring {
-                let torsion = m.reg.angle(&sp.coordinate).map_or("", |_| " de torsion");
+                let torsion = if sp.torsion { " de torsion" } else { "" };
                 parts.push(format!(
                     "un ressort{torsion} de raideur ${}$ agit dans la liaison {}",
-                    tex(format!("stiffness of {}", l.name), &sp.stiffness),
+                    tex(format!("stiffness of {}", l.name), Some(&sp.stiffness)),
                     escape_text(&l.name)
                 ));
             }

@@ -19,7 +19,7 @@ fn lines(l: &[String]) -> String {
 pub(super) fn loop_law(doc: &mut Doc) {
     let m = doc.m;
     let Some(law) = &m.loop_law else { return };
-    if !m.spec.closures.is_empty() {
+    if !m.closures.is_empty() {
         closures(doc, &law.derivatives);
     }
     if !law.rolling.is_empty() {
@@ -43,12 +43,7 @@ pub(super) fn loop_law(doc: &mut Doc) {
         _ => String::new(),
     };
     let _ = writeln!(doc.o, "D'où{condition} :");
-    let helical = (law.helical.iter()).filter_map(|h| m.spec.links[h.link].dependent.as_ref());
-    let dependent = (m.spec.closures.iter().map(|c| &c.dependent))
-        .chain(m.spec.rolling.iter().map(|r| &r.dependent))
-        .flatten()
-        .chain(helical);
-    for q in dependent.filter_map(|n| m.reg.coord(n)) {
+    for q in m.dependent.iter().map(|d| d.coord) {
         let rate = m.reg.dot(q);
         let body = format!(
             "{} &= {}",
@@ -72,11 +67,12 @@ fn closures(doc: &mut Doc, derivatives: &[crate::expr::Expr]) {
     let m = doc.m;
     let ground = m.frames.ground();
     let _ = writeln!(doc.o, "\\noindent\\textbf{{Loi entrée-sortie.}} ");
-    for (c, v) in m.spec.closures.iter().zip(m.closure_vectors()) {
+    for c in &m.closures {
+        let v = &c.vector;
         let comps = v.express_in(&m.frames, ground);
         let latex = format!(
             "\\vec{{0}} = {}",
-            super::values::vector_over_bases(m, &doc.names, &v)
+            super::values::vector_over_bases(m, &doc.names, v)
         );
         let _ = writeln!(
             doc.o,
@@ -84,7 +80,7 @@ fn closures(doc: &mut Doc, derivatives: &[crate::expr::Expr]) {
             super::basis(m.frame_name(ground))
         );
         doc.inline.push(Inline {
-            what: format!("closure {}", c.vector),
+            what: format!("closure {}", c.written),
             latex,
             value: Value::Vector {
                 basis: ground,
@@ -122,7 +118,7 @@ fn closures(doc: &mut Doc, derivatives: &[crate::expr::Expr]) {
 /// relations linear in the rates, which read 0 once the solved rates stand in.
 fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
     let m = doc.m;
-    let whole = m.spec.rolling.iter().all(|r| r.on.is_empty());
+    let whole = laws.iter().all(|r| r.on.is_empty());
     let title = match (whole, laws.len()) {
         (true, 1) => "Roulement sans glissement.",
         (true, _) => "Roulements sans glissement.",
@@ -131,12 +127,12 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
     };
     let _ = writeln!(doc.o, "\\noindent\\textbf{{{title}}} ");
     let zero = m.reg.zero();
-    for (r, law) in m.spec.rolling.iter().zip(laws) {
+    for law in laws {
         let v = doc.names.quantity(&law.velocity.kind);
         let ground = m.frames.ground();
         let [i, j] = law.motion;
         let velocity = crate::kinematics::velocity(m, law.point, i, j);
-        let written = &r.velocity;
+        let written = &law.written;
         let mut stated = Vec::new();
         if law.on.is_empty() {
             let latex = format!("{v} = \\vec{{0}}");
@@ -199,7 +195,7 @@ pub(super) fn rate_note(doc: &mut Doc, d: &crate::derivation::Derivation) {
     let Some(q) = m.reg.coord(coordinate) else {
         return;
     };
-    let source = match super::omega::rate_source(m, coordinate) {
+    let source = match super::omega::rate_source(m, q) {
         Some(s) => format!("D'après {s}"),
         None => "D'après le paramétrage".to_string(),
     };

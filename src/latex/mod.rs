@@ -32,7 +32,7 @@ mod trial;
 mod values;
 mod words;
 
-pub use document::{AnswerKey, write_answer_key};
+pub use document::AnswerKey;
 pub use expr::{expr, expr_lines, fraction};
 pub use fault::text_at_fault;
 pub use figures::{link_graph, link_text, rotation_figures};
@@ -45,21 +45,35 @@ use crate::derivation::Value;
 use crate::expr::Expr;
 use crate::mechanism::Mechanism;
 use crate::quantity::{ActionRef, Motion, QuantityKind};
+use crate::simulate::QuestionRuns;
 use greek::greek;
 use std::fmt::Write as _;
 
 /// The complete answer key of a mechanism as a LaTeX document: the set-up, then either each
-/// question of the spec with its answer, or the hypotheses and every requested quantity.
-pub fn answer_key(m: &Mechanism) -> Result<String, crate::derivation::ResolveError> {
-    answer_key_with(m, VectorStyle::Sum)
+/// question of the spec with its answer, or the hypotheses and every requested quantity. The
+/// simulations the questions show are drawn from `runs`, which the caller ran
+/// ([`crate::simulate::question_runs`]: one entry per question); the key runs nothing.
+///
+/// ```
+/// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+/// let runs = torseur::simulate::question_runs(&m);
+/// let tex = torseur::latex::answer_key(&m, &runs).unwrap();
+/// assert!(tex.contains("\\includegraphics"));
+/// ```
+pub fn answer_key(
+    m: &Mechanism,
+    runs: &[QuestionRuns],
+) -> Result<String, crate::derivation::ResolveError> {
+    answer_key_with(m, VectorStyle::Sum, runs)
 }
 
 /// [`answer_key`] with vectors written in the given style.
 pub fn answer_key_with(
     m: &Mechanism,
     style: VectorStyle,
+    runs: &[QuestionRuns],
 ) -> Result<String, crate::derivation::ResolveError> {
-    answer_key_document(m, style).map(|k| k.tex)
+    answer_key_document(m, style, runs).map(|k| k.tex)
 }
 
 /// [`answer_key_with`], with the figures of the simulations the questions show
@@ -67,20 +81,20 @@ pub fn answer_key_with(
 pub fn answer_key_document(
     m: &Mechanism,
     style: VectorStyle,
+    runs: &[QuestionRuns],
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
-    answer_key_named(m, style, "")
+    answer_key_named(m, style, "", runs)
 }
 
 /// [`answer_key_document`], its figure files named after the key's own file: `prefix`
 /// (`corrige-`) before each name (`corrige-simulation-7.png`), so that two keys written in
 /// one directory do not share their figures.
 ///
-/// The one place of `latex/` that has the simulations run (every other entry point comes
-/// here): it runs them, then hands the runs to [`write_answer_key`], which runs nothing.
-///
 /// ```
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
-/// let key = torseur::latex::answer_key_named(&m, torseur::latex::VectorStyle::Sum, "k-").unwrap();
+/// let runs = torseur::simulate::question_runs(&m);
+/// let style = torseur::latex::VectorStyle::Sum;
+/// let key = torseur::latex::answer_key_named(&m, style, "k-", &runs).unwrap();
 /// assert!(key.figures.iter().all(|(n, _)| n.starts_with("k-simulation-")));
 /// for (n, _) in &key.figures {
 ///     assert!(key.tex.contains(&format!("{{{n}}}")));
@@ -90,9 +104,9 @@ pub fn answer_key_named(
     m: &Mechanism,
     style: VectorStyle,
     prefix: &str,
+    runs: &[QuestionRuns],
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
-    let runs = crate::simulate::question_runs(m);
-    write_answer_key(m, style, prefix, &runs)
+    document::write_answer_key(m, style, prefix, runs)
 }
 
 const GREEK: &[&str] = &[

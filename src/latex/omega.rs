@@ -2,7 +2,7 @@
 
 use super::quantity;
 use crate::frame::FrameId;
-use crate::mechanism::Mechanism;
+use crate::mechanism::{DeterminedBy, Mechanism};
 use crate::quantity::{Motion, QuantityKind};
 
 /// `\overrightarrow{\Omega(2/1)}` from frame names.
@@ -26,22 +26,11 @@ pub(super) fn chain(m: &Mechanism, f: FrameId, r: FrameId) -> Option<Vec<FrameId
 
 /// What gives the rate of a coordinate that a loop closure, a rolling condition or a screw
 /// determines, in the course's words (« la loi entrée-sortie »); `None` for another.
-pub(super) fn rate_source(m: &Mechanism, coordinate: &str) -> Option<&'static str> {
-    let named = |d: &Option<String>| d.as_deref() == Some(coordinate);
-    if m.spec
-        .closures
-        .iter()
-        .any(|c| c.dependent.iter().any(|d| d == coordinate))
-    {
-        Some("la loi entrée-sortie")
-    } else if let Some(r) =
-        (m.spec.rolling.iter()).find(|c| c.dependent.iter().any(|d| d == coordinate))
-    {
-        Some(r.course_name())
-    } else if m.spec.links.iter().any(|l| named(&l.dependent)) {
-        Some("la liaison hélicoïdale")
-    } else {
-        None
+pub(super) fn rate_source(m: &Mechanism, q: crate::expr::CoordId) -> Option<&'static str> {
+    match m.determined_by(q)? {
+        DeterminedBy::Closure => Some("la loi entrée-sortie"),
+        DeterminedBy::Helical(_) => Some("la liaison hélicoïdale"),
+        by => by.rolling_name(),
     }
 }
 
@@ -87,7 +76,7 @@ pub(super) fn omega_sentence(m: &Mechanism, mo: &Motion) -> String {
             b
         };
         let r = m.frames.get(frame).rotation.as_ref()?;
-        rate_source(m, &m.reg.coord_info(r.angle.coord).name)
+        rate_source(m, r.angle.coord)
     });
     if turning.len() <= 1 {
         return match source {

@@ -5,7 +5,7 @@
 use super::page::{DisplayRole, Doc, Inline};
 use super::{basis, name, point, rich_text_or_escaped, rotation_figures};
 use crate::derivation::Value;
-use crate::mechanism::Mechanism;
+use crate::mechanism::{Coordinate, DeterminedBy, Mechanism};
 use std::fmt::Write;
 
 /// The « Paramétrage » section: an item per coordinate, alias, frame and point in two
@@ -25,16 +25,14 @@ pub(super) fn parametrage(doc: &mut Doc) {
 /// (closure, rolling, imposed); an imposed rate's formula is recorded.
 fn coordinate_items(doc: &mut Doc) {
     let m = doc.m;
-    for c in &m.spec.coordinates {
+    for c in &m.statement.coordinates {
         let desc = c
             .description
             .as_deref()
             .map(rich_text_or_escaped)
             .unwrap_or_default();
-        // A coordinate held constant (rate 0) is a constant, not a function of t.
-        let constant = c.rate.as_deref().is_some_and(|r| r.trim() == "0");
-        let t = if constant { "" } else { "(t)" };
-        let (imposed, rate) = rate_clause(m, c, constant);
+        let t = if c.constant { "" } else { "(t)" };
+        let (imposed, rate) = rate_clause(m, c);
         let _ = writeln!(doc.o, "\\item ${}{t}$ : {desc}{imposed}", name(&c.name));
         doc.inline.extend(rate);
     }
@@ -42,36 +40,23 @@ fn coordinate_items(doc: &mut Doc) {
 
 /// How a coordinate's rate is known, as a clause of its item (« , de vitesse imposée
 /// $\dot\psi = \omega$ »), and the imposed rate's formula to record.
-fn rate_clause(
-    m: &Mechanism,
-    c: &crate::wire::CoordinateSpec,
-    constant: bool,
-) -> (String, Option<Inline>) {
+fn rate_clause(m: &Mechanism, c: &Coordinate) -> (String, Option<Inline>) {
     // An imposed rate is stated where the coordinate is: ψ̇ = ω.
-    let closed = m
-        .spec
-        .closures
-        .iter()
-        .any(|l| l.dependent.contains(&c.name));
-    let rolls = m
-        .spec
-        .rolling
-        .iter()
-        .find(|l| l.dependent.contains(&c.name));
-    match m.reg.coord(&c.name) {
+    let by = c.coord.and_then(|q| m.determined_by(q));
+    match (c.coord, by) {
         // Its rate is the loop law's, written after the paramétrage.
-        Some(_) if closed => (
+        (Some(_), Some(DeterminedBy::Closure)) => (
             ", déterminée par la fermeture géométrique".to_string(),
             None,
         ),
-        Some(_) if rolls.is_some() => (
+        (Some(_), Some(by @ DeterminedBy::Rolling { .. })) => (
             format!(
                 ", de vitesse déterminée par {}",
-                rolls.map_or("", |r| r.course_name())
+                by.rolling_name().unwrap_or_default()
             ),
             None,
         ),
-        Some(q) if !constant && m.reg.coord_info(q).has_imposed_rate() => {
+        (Some(q), _) if !c.constant && m.reg.coord_info(q).has_imposed_rate() => {
             let rate = m.reg.dot(q);
             let math = format!(
                 "{} = {}",
@@ -98,10 +83,9 @@ fn rate_clause(
 /// The aliases the statement poses: « On pose K = C ω », each formula recorded.
 fn alias_items(doc: &mut Doc) {
     let m = doc.m;
-    for (a, (n, v)) in m.spec.aliases.iter().zip(m.reg.aliases()) {
+    for (a, (n, v)) in m.statement.aliases.iter().zip(m.reg.aliases()) {
         let math = format!("{} = {}", name(n), super::expr(&v));
         let desc = a
-            .description
             .as_deref()
             .map(|d| format!(" : {}", rich_text_or_escaped(d)))
             .unwrap_or_default();

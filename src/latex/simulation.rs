@@ -51,7 +51,7 @@ fn assumed_values(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSp
     let Some(first) = sim
         .scenarios
         .first()
-        .and_then(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
+        .and_then(|n| m.statement.scenarios.iter().find(|s| &s.name == n))
     else {
         return;
     };
@@ -62,7 +62,7 @@ fn assumed_values(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSp
     let others: Vec<&crate::wire::ScenarioSpec> = sim
         .scenarios
         .iter()
-        .filter_map(|n| m.spec.scenarios.iter().find(|s| &s.name == n))
+        .filter_map(|n| m.statement.scenarios.iter().find(|s| &s.name == n))
         .collect();
     let cells: Vec<String> = first
         .values
@@ -88,7 +88,7 @@ fn assumed_values(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSp
 /// Each scenario's description, under its label.
 fn scenario_descriptions(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSpec) {
     for (name, sc) in sim.scenarios.iter().filter_map(|n| {
-        m.spec
+        m.statement
             .scenarios
             .iter()
             .find(|s| &s.name == n)

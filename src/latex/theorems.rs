@@ -635,11 +635,11 @@ fn bilan_text(
     s: &crate::derivation::Step,
 ) -> String {
     if let StepKind::Action { from, on, point } = &s.kind {
-        let between = |l: &&crate::wire::LinkSpec| {
+        let between = |l: &&crate::mechanism::Link| {
             (l.between[0] == *from && l.between[1] == *on)
                 || (l.between[0] == *on && l.between[1] == *from)
         };
-        let mut links: Vec<_> = m.spec.links.iter().filter(between).collect();
+        let mut links: Vec<_> = m.links.iter().filter(between).collect();
         // Two bearings between the same solids: each is reduced at its own centre.
         if links.len() > 1 {
             links.retain(|l| l.point == *point);

@@ -10,7 +10,11 @@ use std::collections::BTreeMap;
 use std::rc::Rc;
 
 mod dynamics;
+mod statement;
 pub use dynamics::{Action, CoulombLaw, DryFriction, Dynamics, Small, Source, SpringPart, Theorem};
+pub use statement::{
+    Closure, Coordinate, Dependent, DeterminedBy, Equation, Link, LinkSpring, Question, Statement,
+};
 
 /// Typed index of a solid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -49,6 +53,8 @@ pub struct Hypothesis {
     pub name: String,
     /// Statement as written in the spec.
     pub text: Option<String>,
+    /// The solids it declares symmetric (« symétries »).
+    pub symmetric_solids: Vec<BodyId>,
     /// The variable and the value it takes.
     pub substitutions: Vec<(VarId, Expr)>,
     /// Human-readable list of what is set (`D2 = 0`, `ddot(theta1) = 0`).
@@ -127,6 +133,15 @@ pub struct Mechanism {
     pub(crate) quantities: Vec<Quantity>,
     /// Actions, links and the declared equations of the PFD.
     pub(crate) dynamics: Dynamics,
+    /// The links, as the statement describes them.
+    pub(crate) links: Vec<Link>,
+    /// The loop closures.
+    pub(crate) closures: Vec<Closure>,
+    /// The dependent coordinates: the closures', then the rolling conditions', then the
+    /// helical links'.
+    pub(crate) dependent: Vec<Dependent>,
+    /// The statement's words and questions.
+    pub(crate) statement: Statement,
     /// The spec it was built from (the float backend works from it).
     pub(crate) spec: SpecFile,
     /// How the loop closures were solved, for the answer key (None without closures).
@@ -181,6 +196,8 @@ pub struct HelicalLaw {
 pub struct RollingLaw {
     /// The velocity that is zero, as the course writes it.
     pub velocity: Quantity,
+    /// The velocity as the statement writes it, to name the condition.
+    pub written: String,
     /// The contact point.
     pub point: PointId,
     /// The moving frame and the reference frame.
@@ -254,6 +271,36 @@ impl Mechanism {
         &self.dynamics
     }
 
+    /// The links, in the statement's order.
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
+    /// assert_eq!(m.links()[0].name, "01");
+    /// ```
+    pub fn links(&self) -> &[Link] {
+        &self.links
+    }
+
+    /// The loop closures, in the statement's order.
+    pub fn closures(&self) -> &[Closure] {
+        &self.closures
+    }
+
+    /// The dependent coordinates and what determines each.
+    pub fn dependent(&self) -> &[Dependent] {
+        &self.dependent
+    }
+
+    /// What determines the rate of the coordinate `q`, if it is a dependent one.
+    pub fn determined_by(&self, q: crate::expr::CoordId) -> Option<DeterminedBy> {
+        self.dependent.iter().find(|d| d.coord == q).map(|d| d.by)
+    }
+
+    /// The statement's words and questions.
+    pub fn statement(&self) -> &Statement {
+        &self.statement
+    }
+
     /// The spec as written.
     pub fn spec(&self) -> &SpecFile {
         &self.spec
@@ -278,19 +325,7 @@ impl Mechanism {
     /// the motion), read with the mechanism's bases; a closure the spec validated always
     /// reads.
     pub fn closure_vectors(&self) -> Vec<crate::vector::Vector> {
-        let bv = |s: &str| self.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
-        self.spec
-            .closures
-            .iter()
-            .filter_map(|c| self.reg.parse_vector(&c.vector, &bv).ok())
-            .map(|parts| {
-                let mut v = crate::vector::Vector::zero();
-                for (f, comps) in parts {
-                    v.add_part(f, comps);
-                }
-                v
-            })
-            .collect()
+        self.closures.iter().map(|c| c.vector.clone()).collect()
     }
 
     /// Solid by id.
@@ -391,21 +426,23 @@ impl Mechanism {
     /// assert_eq!(m.scenario_label("sans_frottement").as_deref(), Some("sans frottement"));
     /// ```
     pub fn action_label(&self, name: &str) -> Option<String> {
-        let a = self.spec.actions.iter().find(|a| a.name == name)?;
-        Some(a.label())
+        // The given actions follow the links' in the PFD's, each written {T(name→on)}.
+        let given = self.dynamics.actions.get(self.links.len()..)?;
+        let a = given.iter().find(|a| a.from_label == name)?;
+        Some(a.label.clone())
     }
 
     /// How a sentence names the link `name` of the spec: its `label`, or « la liaison pivot
     /// entre 0 et 1 » (see [`Mechanism::action_label`]).
     pub fn link_label(&self, name: &str) -> Option<String> {
-        let l = self.spec.links.iter().find(|l| l.name == name)?;
-        Some(l.label())
+        let l = self.links.iter().find(|l| l.name == name)?;
+        Some(l.label.clone())
     }
 
     /// How the answer key and the plots name the scenario `name`: its `label`, or its name
     /// with spaces for underscores (see [`Mechanism::action_label`]).
     pub fn scenario_label(&self, name: &str) -> Option<String> {
-        let s = self.spec.scenarios.iter().find(|s| s.name == name)?;
+        let s = (self.statement.scenarios.iter()).find(|s| s.name == name)?;
         Some(s.label())
     }
 }

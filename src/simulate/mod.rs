@@ -134,12 +134,14 @@ fn unknown_unit(m: &Mechanism, id: &str) -> String {
 /// Runs the scenario `name` of the spec.
 pub fn simulate(m: &Mechanism, name: &str) -> Result<Run, SimulateError> {
     let sc = m
-        .spec
+        .statement
         .scenarios
         .iter()
         .find(|s| s.name == name)
         .ok_or_else(|| {
-            let known: Vec<&str> = m.spec.scenarios.iter().map(|s| s.name.as_str()).collect();
+            let known: Vec<&str> = (m.statement.scenarios.iter())
+                .map(|s| s.name.as_str())
+                .collect();
             SimulateError::Scenario(format!(
                 "no scenario `{name}` in the spec (scenarios: {})",
                 if known.is_empty() {
@@ -160,7 +162,7 @@ pub type QuestionRuns = Result<Vec<Run>, (String, SimulateError)>;
 /// one entry per question, in order (no run for a question without one): what the answer key
 /// draws and tabulates, run here so that the key's writer runs nothing itself.
 pub fn question_runs(m: &Mechanism) -> Vec<QuestionRuns> {
-    m.spec
+    m.statement
         .questions
         .iter()
         .map(|q| {

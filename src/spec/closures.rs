@@ -487,6 +487,7 @@ fn rolling_rows(
     };
     let law = RollingLaw {
         velocity: node.velocity.clone(),
+        written: r.velocity.clone(),
         point: p,
         motion: [fi, fj],
         on: (node.on.iter())

@@ -10,6 +10,7 @@ mod pipeline;
 mod refusal;
 mod scenarios;
 mod solids;
+mod statement;
 mod texts;
 mod trial;
 mod validate;

@@ -13,9 +13,9 @@ use crate::simulate::{TimeLaw, duration_refusal};
 pub(super) fn check(m: &Mechanism) -> Result<(), SpecError> {
     let reg = &m.reg;
     let sign = |p: &str| m.dynamics.dry.iter().any(|d| d.sign == p);
-    for (i, sc) in m.spec.scenarios.iter().enumerate() {
+    for (i, sc) in m.statement.scenarios.iter().enumerate() {
         let path = format!("scenarios[{i}]");
-        if m.spec.scenarios[..i].iter().any(|s| s.name == sc.name) {
+        if m.statement.scenarios[..i].iter().any(|s| s.name == sc.name) {
             return Err(at(
                 format!("{path}.name"),
                 format!("a second scenario named `{}`", sc.name),
@@ -90,7 +90,7 @@ pub(super) fn check(m: &Mechanism) -> Result<(), SpecError> {
             }
         }
     }
-    for (i, q) in m.spec.questions.iter().enumerate() {
+    for (i, q) in m.statement.questions.iter().enumerate() {
         if let Some(sim) = &q.simulation {
             simulation(m, sim, &format!("questions[{i}].simulation"))?;
         }
@@ -107,7 +107,7 @@ fn simulation(
 ) -> Result<(), SpecError> {
     let mut runs = Vec::new();
     for (k, name) in sim.scenarios.iter().enumerate() {
-        let sc = (m.spec.scenarios.iter())
+        let sc = (m.statement.scenarios.iter())
             .find(|s| &s.name == name)
             .ok_or_else(|| {
                 at(

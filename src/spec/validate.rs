@@ -2,7 +2,7 @@
 //! parsed, every error naming the JSON path of the offending value.
 
 use super::SpecError;
-use super::refusal::{at, bounded, expr_err, name_ok, refused};
+use super::refusal::{at, bounded, expr_err, refused};
 use super::solids::bodies;
 use super::texts::{expression_texts, free_text_limit, free_texts};
 use crate::expr::{ExprError, Registry};
@@ -80,19 +80,7 @@ fn build_with(
     (resolved, unknowns): (&Resolved, &Unknowns),
     solved: Option<&Solved>,
 ) -> Result<Mechanism, SpecError> {
-    // Free texts, after the shared resolution: a formula the answer key could not print
-    // safely refuses the spec.
-    for (path, text) in free_texts(spec) {
-        let (max, what) = free_text_limit(&path);
-        let n = text.chars().count();
-        if n > max {
-            return Err(at(
-                path,
-                format!("{n} characters: {what} may hold at most {max}"),
-            ));
-        }
-        crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
-    }
+    texts(spec)?;
     units(spec)?;
     let reg = registry(spec, &unknowns.names, solved)?;
 
@@ -122,7 +110,10 @@ fn build_with(
             .push(Quantity::parse(q).map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?);
     }
 
-    questions(spec, &hypotheses)?;
+    let statement = super::statement::statement(written, &reg, &hypotheses)?;
+    let links = super::statement::links(written, &reg)?;
+    let closures = super::statement::closures(written, &reg, &frames)?;
+    let dependent = super::statement::dependent(written, &reg, solved);
     // The determinant the solved rates divide by, over this registry's variables (none when
     // it names a helical link's lead, an alias of the geometry only).
     let determinant = solved.and_then(|s| reg.parse(&s.determinant).ok());
@@ -140,6 +131,10 @@ fn build_with(
         default_basis,
         quantities,
         dynamics: Default::default(),
+        links,
+        closures,
+        dependent,
+        statement,
         spec: written.clone(),
         loop_law: solved.map(|s| crate::mechanism::LoopLaw {
             derivatives: s.derivatives.clone(),
@@ -149,28 +144,44 @@ fn build_with(
         }),
     };
     m.dynamics = super::dynamics::build(&m, spec, (resolved, unknowns))?;
-    // Each requested quantity must refer to known objects.
-    for (i, q) in m.quantities.iter().enumerate() {
-        crate::derivation::resolve(&m, q)
-            .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
-    }
-    for (i, qs) in m.spec.questions.iter().enumerate() {
-        let texts = qs
-            .quantities
-            .iter()
-            .map(|q| (format!("questions[{i}].quantities"), q))
-            .chain(
-                qs.equations
-                    .iter()
-                    .map(|e| (format!("questions[{i}].equations"), &e.quantity)),
-            );
-        for (path, q) in texts {
-            let parsed = Quantity::parse(q).map_err(|e| at(&path, e.to_string()))?;
-            crate::derivation::resolve(&m, &parsed).map_err(|e| at(&path, e.to_string()))?;
-        }
-    }
+    requests(&m)?;
     super::scenarios::check(&m)?;
     Ok(m)
+}
+
+/// The free texts, after the shared resolution: one too long, or with a formula the answer
+/// key could not print safely, refuses the spec.
+fn texts(spec: &SpecFile) -> Result<(), SpecError> {
+    for (path, text) in free_texts(spec) {
+        let (max, what) = free_text_limit(&path);
+        let n = text.chars().count();
+        if n > max {
+            return Err(at(
+                path,
+                format!("{n} characters: {what} may hold at most {max}"),
+            ));
+        }
+        crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
+    }
+    Ok(())
+}
+
+/// Each requested quantity, and each of the questions' quantities and equations, refers to
+/// known objects of the built mechanism.
+fn requests(m: &Mechanism) -> Result<(), SpecError> {
+    for (i, q) in m.quantities.iter().enumerate() {
+        crate::derivation::resolve(m, q)
+            .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
+    }
+    for (i, qs) in m.statement.questions.iter().enumerate() {
+        let quantities = (qs.quantities.iter()).map(|q| (format!("questions[{i}].quantities"), q));
+        let equations =
+            (qs.equations.iter()).map(|e| (format!("questions[{i}].equations"), &e.quantity));
+        for (path, q) in quantities.chain(equations) {
+            crate::derivation::resolve(m, q).map_err(|e| at(&path, e.to_string()))?;
+        }
+    }
+    Ok(())
 }
 
 /// The parameters' units: each a dimension, rad for an angle.
@@ -390,6 +401,7 @@ fn hypotheses(
         hypotheses.push(Hypothesis {
             name: h.name.clone(),
             text: h.text.clone(),
+            symmetric_solids: node.symmetric_solids.iter().map(|&b| BodyId(b)).collect(),
             substitutions: subs,
             effects,
             first_order,
@@ -464,47 +476,6 @@ fn symmetric_solid(
             }
         }
     }
-    Ok(())
-}
-
-/// What a refusal of the hypothesis `h` suggests among the declared ones.
-fn hypothesis_hint(h: &str, hypotheses: &[Hypothesis]) -> String {
-    let declared: Vec<&str> = hypotheses.iter().map(|x| x.name.as_str()).collect();
-    crate::hint::suggestion(h, &declared)
-}
-
-/// The questions: their hypotheses known, their quantities and equations readable (their
-/// text is escaped when printed; the quantities are resolved once the mechanism is built).
-fn questions(spec: &SpecFile, hypotheses: &[Hypothesis]) -> Result<(), SpecError> {
-    // Questions: names and quantities must resolve (their text is escaped when printed).
-    for (i, qs) in spec.questions.iter().enumerate() {
-        let path = format!("questions[{i}]");
-        for (k, h) in qs.hypotheses.iter().enumerate() {
-            if !hypotheses.iter().any(|x: &Hypothesis| &x.name == h) {
-                return Err(at(
-                    format!("{path}.hypotheses[{k}]"),
-                    format!("unknown hypothesis `{h}`{}", hypothesis_hint(h, hypotheses)),
-                ));
-            }
-        }
-        if let Some(h) = &qs.under
-            && !hypotheses.iter().any(|x: &Hypothesis| &x.name == h)
-        {
-            return Err(at(
-                format!("{path}.under"),
-                format!("unknown hypothesis `{h}`{}", hypothesis_hint(h, hypotheses)),
-            ));
-        }
-        for (k, q) in qs.quantities.iter().enumerate() {
-            Quantity::parse(q).map_err(|e| at(format!("{path}.quantities[{k}]"), e.to_string()))?;
-        }
-        for (k, e) in qs.equations.iter().enumerate() {
-            name_ok(&format!("{path}.equations[{k}].lhs"), &e.lhs)?;
-            Quantity::parse(&e.quantity)
-                .map_err(|er| at(format!("{path}.equations[{k}].quantity"), er.to_string()))?;
-        }
-    }
-
     Ok(())
 }
 

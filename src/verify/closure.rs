@@ -84,7 +84,7 @@ fn relations(reader: &Reader) -> Vec<(String, Expr)> {
 /// are parameters): `None` when the spec has none.
 pub(super) fn modulo_closure(reader: &Reader, e: &Expr) -> Result<Option<Closed>, VerifyError> {
     let m = reader.m;
-    if m.spec.closures.is_empty() {
+    if m.closures.is_empty() {
         return Ok(None);
     }
     let all = relations(reader);

@@ -91,7 +91,7 @@ pub(super) fn along_motions(
         return Ok(Along::No);
     }
     let out = |why: &str| Err(VerifyError::OutOfReach(why.to_string()));
-    if !m.spec.closures.is_empty() {
+    if !m.closures.is_empty() {
         return out(
             "lhs − rhs is not zero along the motions once the accelerations are replaced, but \
              the loop closure's relations between the coordinates themselves are not used \

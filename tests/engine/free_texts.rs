@@ -323,7 +323,7 @@ fn a_title_prints_its_formulas() {
     v["title"] = "Bloc $S_2$ sur un plan, 5 \\$".into();
     v["questions"][0]["title"] = "Question 1 : $\\Omega$ et $S_2$".into();
     let m = load(&v).unwrap();
-    let tex = torseur::latex::answer_key(&m).unwrap();
+    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     assert!(
         tex.contains("{\\Large\\bfseries Corrigé -- Bloc $S_2$ sur un plan, 5 \\$\\par}"),
         "{}",
@@ -347,7 +347,7 @@ fn the_text_at_fault_is_found_by_its_line() {
     let mut v = bloc();
     v["questions"][1]["statement"] = "Déterminer la puissance (100 % utile) de $S_2$.".into();
     let m = load(&v).unwrap();
-    let tex = torseur::latex::answer_key(&m).unwrap();
+    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     let line_of = |needle: &str| 1 + tex.lines().position(|l| l.contains(needle)).unwrap();
     let at = |line| torseur::latex::text_at_fault(&m, &tex, line);
     let statement = line_of("Déterminer la puissance (100 \\% utile)");
@@ -513,7 +513,12 @@ fn an_answer_key_of_hostile_accepted_texts_compiles() {
         assert_eq!(check(&rich_text(t).unwrap()), Ok(()), "{t}");
     }
 
-    let key = torseur::latex::answer_key_document(&m, torseur::latex::VectorStyle::Sum).unwrap();
+    let key = torseur::latex::answer_key_document(
+        &m,
+        torseur::latex::VectorStyle::Sum,
+        &torseur::simulate::question_runs(&m),
+    )
+    .unwrap();
     for needle in [
         "\\textbackslash{}input\\{x\\}",
         "\\textbackslash{}write18",

@@ -71,7 +71,7 @@ fn motions_fixed_by_hypotheses_agree_with_the_float_backend() {
 #[test]
 fn the_key_states_what_a_motion_hypothesis_sets() {
     let m = torseur::spec::load("derivations/pendule_arbre_tournant.json").unwrap();
-    let tex = torseur::latex::answer_key(&m).unwrap();
+    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     assert!(
         tex.contains(
             "Sous cette hypothèse : $\\theta = \\beta$, $\\dot{\\theta} = 0$, $\\ddot{\\theta} = 0$."

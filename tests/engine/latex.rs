@@ -15,7 +15,7 @@ fn every_answer_key_matches_its_golden_file() {
     assert!(specs.len() >= 10);
     for p in specs {
         let m = torseur::spec::load(&p).unwrap();
-        let tex = torseur::latex::answer_key(&m).unwrap();
+        let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
         let stem = p.file_stem().unwrap().to_str().unwrap();
         golden(&format!("{stem}.tex"), &tex);
     }
@@ -42,7 +42,8 @@ fn the_answer_key_depends_on_the_problem_alone() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let named =
         torseur::spec::load(root.join("tests/specs/pendule_support_oscillant.json")).unwrap();
-    let before = torseur::latex::answer_key(&named).unwrap();
+    let before =
+        torseur::latex::answer_key(&named, &torseur::simulate::question_runs(&named)).unwrap();
     assert!(before.contains("\\vec{u}"), "the pendulum's key names x2 u");
     let path = "derivations/regulateur_centrifuge.json";
     let text = std::fs::read_to_string(root.join(path)).unwrap();
@@ -51,14 +52,15 @@ fn the_answer_key_depends_on_the_problem_alone() {
     let turned = reversed(spec.clone());
     assert_ne!(first(&turned), first(&spec), "the keys are turned round");
     let m = torseur::spec::from_str(&serde_json::to_string_pretty(&turned).unwrap()).unwrap();
-    let key = torseur::latex::answer_key(&m).unwrap();
+    let key = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     let golden = std::fs::read_to_string(root.join("latex/regulateur_centrifuge.tex")).unwrap();
     super::golden::assert_same_text("latex/regulateur_centrifuge.tex", &golden, &key);
 }
 
 #[test]
 fn the_key_shows_the_course_notation() {
-    let tex = torseur::latex::answer_key(&regulator()).unwrap();
+    let m = regulator();
+    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     for needle in [
         "\\overrightarrow{\\delta(O_{2},2/0)}",
         "\\left\\{\\mathcal{D}(2/0)\\right\\}_{O_{2}}",
@@ -106,7 +108,7 @@ fn spec_text_cannot_inject_latex() {
     assert!(e.to_string().contains("at title"), "{e}");
     assert!(e.to_string().contains("`\\input` is not allowed"), "{e}");
     let m = torseur::spec::from_str(&v.to_string()).unwrap();
-    let tex = torseur::latex::answer_key(&m).unwrap();
+    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     assert!(!tex.contains("\\input{"));
     assert!(!tex.contains("\\write18"));
     assert!(!tex.contains("\\immediate"));
@@ -133,7 +135,12 @@ fn first_integrals_are_stated_with_the_textbook_quantities() {
         "/derivations/toupie.json"
     ))
     .unwrap();
-    let key = torseur::latex::answer_key_document(&m, torseur::latex::VectorStyle::Sum).unwrap();
+    let key = torseur::latex::answer_key_document(
+        &m,
+        torseur::latex::VectorStyle::Sum,
+        &torseur::simulate::question_runs(&m),
+    )
+    .unwrap();
     let found = |id: &str| {
         key.inline
             .iter()
@@ -156,7 +163,12 @@ fn first_integrals_are_stated_with_the_textbook_quantities() {
         "/derivations/pendule_sur_chariot.json"
     ))
     .unwrap();
-    let key = torseur::latex::answer_key_document(&cart, torseur::latex::VectorStyle::Sum).unwrap();
+    let key = torseur::latex::answer_key_document(
+        &cart,
+        torseur::latex::VectorStyle::Sum,
+        &torseur::simulate::question_runs(&cart),
+    )
+    .unwrap();
     assert!(!key.tex.contains("Intégrale première"));
 }
 
@@ -226,7 +238,7 @@ fn a_citation_names_the_latest_value_of_each_solid_only() {
         "/derivations/toupie.json"
     ))
     .unwrap();
-    let tex = torseur::latex::answer_key(&m).unwrap();
+    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     let citations: Vec<&str> = tex
         .lines()
         .filter(|l| l.starts_with("On reprend "))
@@ -267,7 +279,7 @@ fn every_stated_composition_of_rotations_holds() {
     let mut checked = 0;
     for p in specs_in(&["derivations"]) {
         let m = torseur::spec::load(&p).unwrap();
-        let tex = torseur::latex::answer_key(&m).unwrap();
+        let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
         for line in tex
             .lines()
             .filter(|l| l.starts_with("Composition des vitesses de rotation, $"))
@@ -318,5 +330,41 @@ fn a_value_written_alone_uses_the_statements_vector_names() {
     assert!(
         graph.contains("\\vec{z})") && !graph.contains("\\vec{z}_{0}"),
         "{graph}"
+    );
+}
+
+/// The answer key draws the runs it is handed and runs nothing itself: a failed run given to
+/// it is the key's error (naming its scenario), and no run at all for a question that shows
+/// a simulation is refused.
+#[test]
+fn the_key_draws_the_runs_it_is_given_and_runs_none() {
+    use torseur::simulate::{QuestionRuns, SimulateError};
+    let m = regulator();
+    let shown = (m.statement().questions.iter())
+        .position(|q| q.simulation.is_some())
+        .expect("the regulator shows a simulation");
+    let scenario = m.statement().questions[shown]
+        .simulation
+        .as_ref()
+        .unwrap()
+        .scenarios[0]
+        .clone();
+    let mut runs: Vec<QuestionRuns> = (m.statement().questions.iter())
+        .map(|_| Ok(Vec::new()))
+        .collect();
+    runs[shown] = Err((
+        scenario.clone(),
+        SimulateError::Scenario("given failure".into()),
+    ));
+    let e = torseur::latex::answer_key(&m, &runs)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains(&scenario) && e.contains("given failure"), "{e}");
+    let e = torseur::latex::answer_key(&m, &runs[..shown])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("the runs of its simulation were not given"),
+        "{e}"
     );
 }

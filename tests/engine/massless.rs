@@ -180,7 +180,12 @@ fn a_massless_body_is_said_so_and_never_derived() {
 #[test]
 fn the_key_of_a_massless_gimbal_reads_as_the_course() {
     let m = gyroscope();
-    let key = torseur::latex::answer_key_document(&m, torseur::latex::VectorStyle::Sum).unwrap();
+    let key = torseur::latex::answer_key_document(
+        &m,
+        torseur::latex::VectorStyle::Sum,
+        &torseur::simulate::question_runs(&m),
+    )
+    .unwrap();
     let tex = &key.tex;
     assert!(
         tex.contains("Le solide $S_{1}$ est de masse négligeable"),

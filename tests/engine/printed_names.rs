@@ -186,7 +186,12 @@ pub(super) fn check(ctx: &Ctx, d: &Display) -> Result<(), String> {
 fn a_complementary_term_printed_with_another_solids_mass_is_caught() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let m = torseur::spec::load(root.join("tests/specs/porteur_centre_commun.json")).unwrap();
-    let key = torseur::latex::answer_key_document(&m, torseur::latex::VectorStyle::Sum).unwrap();
+    let key = torseur::latex::answer_key_document(
+        &m,
+        torseur::latex::VectorStyle::Sum,
+        &torseur::simulate::question_runs(&m),
+    )
+    .unwrap();
     let ctx = Ctx::new(&m);
     let terms: Vec<&Display> = key.displays.iter().filter(|d| d.solid.is_some()).collect();
     // One term per solid with a mass (1 and 3), none for the body of zero mass (2).

@@ -83,7 +83,7 @@ fn the_key_derives_the_inertia_of_a_set_solid_by_solid() {
         {"title": "Inertie", "statement": "Opérateur d'inertie de E en O1.", "quantities": ["I(O1,E)"]}
     ]);
     let m = torseur::spec::from_str(&spec.to_string()).unwrap();
-    let tex = torseur::latex::answer_key(&m).unwrap();
+    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     let at = |s: &str| {
         tex.find(s)
             .unwrap_or_else(|| panic!("`{s}` not in the key"))

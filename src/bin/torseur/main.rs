@@ -245,7 +245,9 @@ fn key_with_figures(
         Some(_) => figure_prefix(io.target(tex)),
         None => String::new(),
     };
-    let key = torseur::latex::answer_key_named(m, style, &prefix).map_err(bad_input)?;
+    // The simulations the questions show are run here: the key only draws their runs.
+    let runs = torseur::simulate::question_runs(m);
+    let key = torseur::latex::answer_key_named(m, style, &prefix, &runs).map_err(bad_input)?;
     let pngs = render_figures(&key)?;
     let mut figures = Vec::new();
     match dir {
