@@ -75,7 +75,7 @@ fn closures(doc: &mut Doc, derivatives: &[crate::expr::Expr]) {
     for (c, v) in m.spec.closures.iter().zip(m.closure_vectors()) {
         let comps = v.express_in(&m.frames, ground);
         let latex = format!(
-            "\\vec{{0}} = {}",
+            "\\TVec{{0}} = {}",
             super::values::vector_over_bases(m, &doc.names, &v)
         );
         let _ = writeln!(
@@ -139,7 +139,7 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
         let written = &r.velocity;
         let mut stated = Vec::new();
         if law.on.is_empty() {
-            let latex = format!("{v} = \\vec{{0}}");
+            let latex = format!("{v} = \\TVec{{0}}");
             doc.inline.push(Inline {
                 what: format!("rolling condition {written}"),
                 latex: latex.clone(),

@@ -181,7 +181,7 @@ fn a_massless_body_is_said_so_and_never_derived() {
 fn the_key_of_a_massless_gimbal_reads_as_the_course() {
     let m = gyroscope();
     let key = torseur::latex::answer_key_document(&m, torseur::latex::VectorStyle::Sum).unwrap();
-    let tex = &key.tex;
+    let tex = &super::printed::course(&key.tex);
     assert!(
         tex.contains("Le solide $S_{1}$ est de masse négligeable"),
         "{tex}"
@@ -192,7 +192,7 @@ fn the_key_of_a_massless_gimbal_reads_as_the_course() {
     );
     assert!(
         tex.contains(
-            "$S_{2}$ est de masse négligeable : $\\left\\{\\mathcal{D}(2/0)\\right\\} = \\left\\{0\\right\\}$"
+            "$S_{2}$ est de masse négligeable : $\\left\\{\\mathcal{D}(2/0)\\right\\}_{} = \\left\\{0\\right\\}$"
         ),
         "{tex}"
     );

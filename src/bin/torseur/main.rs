@@ -228,13 +228,15 @@ fn figure_prefix(tex: &Target) -> String {
 /// Output files, each the index of its resolved target in [`Io`] and its bytes.
 type Files = Vec<(usize, Vec<u8>)>;
 
-/// The answer key of `m`, its figures named after `tex` when it is a file (they are written
-/// beside it, where `\includegraphics` finds them), else not written (said on stderr).
+/// The answer key of `m` (or, with `fragment`, the bodies of those questions: all when it is
+/// empty), its figures named after `tex` when it is a file (they are written beside it, where
+/// `\includegraphics` finds them), else not written (said on stderr).
 fn key_with_figures(
     m: &Mechanism,
     style: torseur::latex::VectorStyle,
     io: &mut Io,
     tex: usize,
+    fragment: Option<&[usize]>,
 ) -> Result<(torseur::latex::AnswerKey, Files), Failure> {
     let dir = io
         .target(tex)
@@ -245,7 +247,11 @@ fn key_with_figures(
         Some(_) => figure_prefix(io.target(tex)),
         None => String::new(),
     };
-    let key = torseur::latex::answer_key_named(m, style, &prefix).map_err(bad_input)?;
+    let key = match fragment {
+        Some(chosen) => torseur::latex::answer_key_fragment(m, style, &prefix, chosen),
+        None => torseur::latex::answer_key_named(m, style, &prefix),
+    }
+    .map_err(bad_input)?;
     let pngs = render_figures(&key)?;
     let mut figures = Vec::new();
     match dir {
@@ -423,7 +429,7 @@ fn prepare_derive(a: DeriveArgs) -> Result<Job, Failure> {
         if let Some(k) = latex_out {
             let mq = m.asking(qs.clone());
             let (key, figures) =
-                key_with_figures(&mq, torseur::latex::VectorStyle::Sum, &mut io, k)?;
+                key_with_figures(&mq, torseur::latex::VectorStyle::Sum, &mut io, k, None)?;
             files.extend(figures);
             files.push((k, key.tex.into_bytes()));
         }
@@ -494,11 +500,18 @@ fn prepare_answer_key(a: AnswerKeyArgs) -> Result<Job, Failure> {
         pdf,
         vectors,
         manifest,
+        fragment,
+        questions,
     } = a;
     let mut io = Io::read(&spec)?;
     let given = output.unwrap_or_else(|| PathBuf::from("-"));
     let tex_out = io.output(format!("-o {}", given.display()), &given)?;
     let pdf_out = if pdf {
+        if fragment {
+            return Err(bad_input(anyhow!(
+                "--pdf compiles a whole document: a --fragment has none (paste it into yours)"
+            )));
+        }
         if io.target(tex_out).file().is_none() {
             return Err(bad_input(anyhow!(
                 "--pdf writes FILE.pdf beside -o FILE.tex: give -o the name of a file"
@@ -519,7 +532,8 @@ fn prepare_answer_key(a: AnswerKeyArgs) -> Result<Job, Failure> {
             Vectors::Sum => torseur::latex::VectorStyle::Sum,
             Vectors::Column => torseur::latex::VectorStyle::Column,
         };
-        let (key, figures) = key_with_figures(&m, style, &mut io, tex_out)?;
+        let chosen = fragment.then_some(questions.as_slice());
+        let (key, figures) = key_with_figures(&m, style, &mut io, tex_out, chosen)?;
         let mut files: Files = Vec::new();
         if let Some(k) = manifest_out {
             let text = serde_json::to_string_pretty(&output::manifest_json(&m, &key))
