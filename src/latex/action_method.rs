@@ -1,7 +1,7 @@
 //! The method's sentence of a quantity that is no theorem's result: an action asked as a
 //! quantity (the sum of the bilan's actions at the point asked), a power, a kinetic energy.
 
-use super::{point, quantity};
+use super::{point, quantity_tex};
 use crate::derivation::{Derivation, StepKind};
 use crate::quantity::QuantityKind;
 
@@ -52,14 +52,14 @@ pub(super) fn action_sentence(m: &crate::mechanism::Mechanism, d: &Derivation) -
                 .join(", ");
             Some(if many {
                 format!(
-                    "Chaque action est réduite en ${a}$ par $\\vec{{M}}({a}) = \\vec{{M}}(P) + \
-                     \\overrightarrow{{{a}P}}\\wedge\\vec{{R}}$ ($P$ = {list}){sum} :"
+                    "Chaque action est réduite en ${a}$ par $\\TVec{{M}}({a}) = \\TVec{{M}}(P) + \
+                     \\TVecLong{{{a}P}}\\wedge\\TVec{{R}}$ ($P$ = {list}){sum} :"
                 )
             } else {
                 let p = &moved[0];
                 format!(
-                    "Changement de point, de ${p}$ à ${a}$ ($\\vec{{M}}({a}) = \\vec{{M}}({p}) + \
-                     \\overrightarrow{{{a}{p}}}\\wedge\\vec{{R}}$) :"
+                    "Changement de point, de ${p}$ à ${a}$ ($\\TVec{{M}}({a}) = \\TVec{{M}}({p}) + \
+                     \\TVecLong{{{a}{p}}}\\wedge\\TVec{{R}}$) :"
                 )
             })
         }
@@ -79,11 +79,11 @@ fn power_sentence(m: &crate::mechanism::Mechanism, d: &Derivation) -> Option<Str
         QuantityKind::Power { reference, .. } => {
             let r = super::escape_ident(reference);
             Some(format!(
-                "Puissance {} : ${} = {sum}\\left\\{{\\mathcal{{T}}\\right\\}}\\otimes\\left\\{{\\mathcal{{V}}(S/{r})\\right\\}}$, \
+                "Puissance {} : ${} = {sum}\\TTorseur{{\\mathcal{{T}}}}{{}}\\otimes\\TTorseur{{\\mathcal{{V}}(\\TMvt{{S}}{{{r}}})}}{{}}$, \
                  produit du torseur de chaque action par le torseur cinématique du solide $S$ qui la \
                  reçoit, réduits au même point{} :",
                 if many { "des actions" } else { "de l'action" },
-                quantity(&d.quantity.kind),
+                quantity_tex(&d.quantity.kind),
                 if many { ", puis on somme" } else { "" }
             ))
         }
@@ -95,8 +95,8 @@ fn power_sentence(m: &crate::mechanism::Mechanism, d: &Derivation) -> Option<Str
                 "Les vitesses des autres coordonnées se déduisent de ${dq}$ : l'énergie \
                  cinétique du mécanisme s'écrit $E_c = \\frac{{1}}{{2}}\\,{}\\,{dq}^{{2}}$, \
                  où ${}$ est {} ramenée à ${q}$ :",
-                quantity(&d.quantity.kind),
-                quantity(&d.quantity.kind),
+                quantity_tex(&d.quantity.kind),
+                quantity_tex(&d.quantity.kind),
                 if length {
                     "la masse équivalente"
                 } else {
@@ -106,13 +106,13 @@ fn power_sentence(m: &crate::mechanism::Mechanism, d: &Derivation) -> Option<Str
         }
         QuantityKind::InternalPower(_) if d.steps.is_empty() => Some(format!(
             "Aucune action n'est déclarée entre les solides de l'ensemble : ${} = 0$.",
-            quantity(&d.quantity.kind)
+            quantity_tex(&d.quantity.kind)
         )),
         QuantityKind::InternalPower(_) => Some(format!(
-            "Puissance des inter-efforts : ${} = {sum}\\left\\{{\\mathcal{{T}}(i\\rightarrow j)\\right\\}}\\otimes\\left\\{{\\mathcal{{V}}(j/i)\\right\\}}$ \
+            "Puissance des inter-efforts : ${} = {sum}\\TTorseur{{\\mathcal{{T}}(i\\rightarrow j)}}{{}}\\otimes\\TTorseur{{\\mathcal{{V}}(\\TMvt{{j}}{{i}})}}{{}}$ \
              pour chaque liaison entre deux solides $i$, $j$ de l'ensemble (nulle pour une liaison \
              parfaite) :",
-            quantity(&d.quantity.kind)
+            quantity_tex(&d.quantity.kind)
         )),
         _ => None,
     }
@@ -142,7 +142,7 @@ pub(super) fn kinetic_energy_sentence(
         .iter()
         .map(|&s| {
             let b = m.body(s);
-            let of = |k: QuantityKind| quantity(&k);
+            let of = |k: QuantityKind| quantity_tex(&k);
             let motion = crate::quantity::Motion {
                 moving: b.name.clone(),
                 reference: mo.reference.clone(),
@@ -165,7 +165,7 @@ pub(super) fn kinetic_energy_sentence(
             format!("{translation} + \\frac{{1}}{{2}}\\,{w}\\cdot {i}\\,{w}")
         })
         .collect();
-    let ec = quantity(&d.quantity.kind);
+    let ec = quantity_tex(&d.quantity.kind);
     Some(format!(
         "Théorème de König{} : ${ec} = {}$ :",
         if solids.len() > 1 {

@@ -5,7 +5,7 @@
 
 use super::page::Doc;
 use super::words::solid;
-use super::{Inline, name, point, quantity};
+use super::{Inline, name, point, quantity_tex};
 use crate::derivation::{Step, StepKind, Value};
 use crate::mechanism::{CoulombLaw, Mechanism};
 use crate::quantity::{Motion, QuantityKind};
@@ -88,7 +88,7 @@ fn state_law(doc: &mut Doc, law: &CoulombLaw) {
         &Value::Scalar(law.values[0].clone()),
         &Value::Scalar(law.friction()),
     );
-    let velocity = quantity(&QuantityKind::Velocity {
+    let velocity = quantity_tex(&QuantityKind::Velocity {
         point: l.point.clone(),
         motion: Motion {
             moving: l.between[1].clone(),

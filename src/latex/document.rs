@@ -22,9 +22,11 @@ use std::fmt::Write;
 /// quantity's heading run into its first line (a corrigé is photocopied: every line counts).
 /// A page break just after a display costs a little (`\postdisplaypenalty`), so that a boxed
 /// result is not left alone at the top of a page when a break between paragraphs is near.
+/// Its run-in headings are its own sections', defined before the macro block [`MACROS`] (whose
+/// class-independent headings serve a fragment).
 const PREAMBLE: &str = "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf8]{inputenc}\n\
 \\usepackage[T1]{fontenc}\n\\usepackage[french]{babel}\n\\usepackage{lmodern}\n\
-\\usepackage{amsmath,amssymb,graphicx,empheq,multicol,tikz,needspace}\n\\usepackage[margin=1.5cm]{geometry}\n\
+\\usepackage{amsmath,amssymb,graphicx,multicol,tikz,needspace}\n\\usepackage[margin=1.5cm]{geometry}\n\
 \\allowdisplaybreaks[1]\n\\postdisplaypenalty=300\n\\emergencystretch=3em\n\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{0.3em}\n\
 \\setlength{\\fboxsep}{3pt}\n\\setlength{\\multicolsep}{2pt}\n\\makeatletter\n\
 \\g@addto@macro\\normalsize{\\setlength{\\abovedisplayskip}{3pt plus 2pt}\\setlength{\\belowdisplayskip}{3pt plus 2pt}\
@@ -32,7 +34,24 @@ const PREAMBLE: &str = "\\documentclass[a4paper,10pt]{article}\n\\usepackage[utf
 \\renewcommand\\section{\\@startsection{section}{1}{\\z@}{-1.8ex \\@plus -.5ex \\@minus -.2ex}{0.6ex \\@plus .2ex}{\\normalfont\\large\\bfseries}}\n\
 \\renewcommand\\subsubsection{\\@startsection{subsubsection}{3}{\\z@}{-1.2ex \\@plus -.5ex \\@minus -.2ex}{-0.8em}{\\normalfont\\normalsize\\bfseries}}\n\
 \\renewcommand\\paragraph{\\@startsection{paragraph}{4}{\\z@}{1ex \\@plus .5ex \\@minus .2ex}{-1em}{\\normalfont\\normalsize\\bfseries}}\n\
-\\makeatother\n";
+\\makeatother\n\
+\\newcommand\\TTitre[1]{\\subsubsection*{#1}}\n\\newcommand\\TParagraphe[1]{\\paragraph{#1}}\n";
+
+/// The notation of the answer key, one macro per notion, each defined only where the document
+/// does not define it already (`\providecommand`): the full document writes the block in its
+/// preamble, a fragment at its top, so a teacher's own definitions, made before, win. The
+/// heading macros do not depend on the class's sectioning (a run-in heading stays run in).
+pub const MACROS: &str = "% Notation du corrigé (torseur) : chaque macro peut être redéfinie avant ce bloc.\n\
+\\providecommand\\TVec[1]{\\vec{#1}}% vecteur de base, vecteur nul, résultante\n\
+\\providecommand\\TVecLong[1]{\\overrightarrow{#1}}% vecteur nommé : V(G,2/0), OA\n\
+\\providecommand\\TMvt[2]{#1/#2}% mouvement de #1 par rapport à #2\n\
+\\providecommand\\TTorseur[2]{\\left\\{#1\\right\\}_{#2}}% torseur #1 au point #2\n\
+\\providecommand\\TElements[3]{\\left\\{ \\begin{array}{c|c} #1 \\end{array} \\right\\}_{#2,\\,#3}}% éléments de réduction en #2, base #3\n\
+\\providecommand\\TDeriv[2]{\\left[\\frac{\\mathrm{d}}{\\mathrm{d}t}#2\\right]_{#1}}% dérivée dans le repère #1\n\
+\\providecommand\\TResultat[1]{\\[\\boxed{\\begin{aligned}#1\\end{aligned}}\\]}% résultat encadré\n\
+\\providecommand\\TQuestion[1]{\\ifdefined\\needspace\\needspace{8\\baselineskip}\\fi\\section*{#1}}\n\
+\\providecommand\\TTitre[1]{\\par\\addvspace{1.2ex}\\noindent\\textbf{#1}\\hspace{0.8em}\\ignorespaces}% titre en ligne\n\
+\\providecommand\\TParagraphe[1]{\\par\\addvspace{1ex}\\noindent\\textbf{#1}\\hspace{1em}\\ignorespaces}\n";
 
 /// A question: its statement, the teacher's answer text, the hypotheses it states, its
 /// quantities (kinematics and kinetics step by step, the PFD as bilan and theorems), its
@@ -53,11 +72,7 @@ fn question_block(doc: &mut Doc, qs: &Question) -> Result<(), crate::derivation:
 /// works under (kept in `doc.under` for its quantities and equations).
 fn question_heading(doc: &mut Doc, qs: &Question) {
     let m = doc.m;
-    let _ = writeln!(
-        doc.o,
-        "\\needspace{{8\\baselineskip}}\n\\section*{{{}}}",
-        rich_text_or_escaped(&qs.title)
-    );
+    let _ = writeln!(doc.o, "\\TQuestion{{{}}}", rich_text_or_escaped(&qs.title));
     // A title may hold formulas ($S_1$), which keep their case.
     doc.here = format!(
         "la {}",
@@ -155,13 +170,8 @@ pub(super) fn write_answer_key(
     runs: &[QuestionRuns],
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
     let mut doc = Doc::new(m, style);
-    title_block(&mut doc);
-    super::setup::parametrage(&mut doc);
-    super::loop_law::loop_law(&mut doc);
-    super::helical::links(&mut doc);
-    super::setup::solids(&mut doc);
-    super::hypotheses::model_hypotheses(&mut doc);
-    let figures = questions(&mut doc, prefix, runs)?;
+    set_up(&mut doc);
+    let figures = questions(&mut doc, prefix, runs, &|_| true)?;
     super::bilan::bilan(&mut doc);
     doc.o.push_str("\\end{document}\n");
     Ok(AnswerKey {
@@ -172,12 +182,78 @@ pub(super) fn write_answer_key(
     })
 }
 
+/// The width of a fragment's line, in characters: a page of 12 pt with margins of 2.5 cm on
+/// A4 (16 cm of text) holds about 52 of the full document's (10 pt on 18 cm: [`super::LINE`]),
+/// a few less taken as the width of a formula is an estimate.
+pub const FRAGMENT_LINE: usize = 48;
+
+/// A fragment of the answer key, to paste into a teacher's own document: the bodies of the
+/// questions `chosen` (numbered from 1; all when empty), without `\documentclass`, preamble or
+/// `\begin{document}`, headed by the packages they need (in a comment) and the macro block
+/// [`MACROS`]. Their lines are broken for a narrower page ([`FRAGMENT_LINE`]). The questions
+/// are written as in the full key (a result shown by an earlier question is cited), only the
+/// chosen ones kept; the record of displays holds theirs.
+pub(super) fn write_fragment(
+    m: &Mechanism,
+    style: VectorStyle,
+    prefix: &str,
+    runs: &[QuestionRuns],
+    chosen: &[usize],
+) -> Result<AnswerKey, crate::derivation::ResolveError> {
+    let n = m.statement.questions.len();
+    if let Some(k) = chosen.iter().find(|&&k| k == 0 || k > n) {
+        return Err(crate::derivation::ResolveError::new(
+            &format!("question {k}"),
+            format!("the spec has {n} question(s), numbered from 1"),
+        ));
+    }
+    let mut doc = Doc::new(m, style);
+    doc.line = FRAGMENT_LINE;
+    set_up(&mut doc);
+    doc.o.clear();
+    doc.displays.clear();
+    doc.inline.clear();
+    let keep = |k: usize| chosen.is_empty() || chosen.contains(&(k + 1));
+    let figures = questions(&mut doc, prefix, runs, &keep)?;
+    let asked: Vec<String> = (1..=n)
+        .filter(|k| keep(k - 1))
+        .map(|k| k.to_string())
+        .collect();
+    let graphics = if figures.is_empty() { "" } else { ", graphicx" };
+    let head = format!(
+        "% Corrigé de « {} » (torseur), question(s) {} : fragment à coller dans un document.\n\
+         % Paquets nécessaires : amsmath{graphics}.\n\
+         % Un groupe : les macros et la souplesse des lignes ne valent que pour le fragment.\n\
+         \\begingroup\\setlength{{\\emergencystretch}}{{3em}}\n{MACROS}",
+        m.title.replace(['\n', '\r'], " "),
+        asked.join(", ")
+    );
+    Ok(AnswerKey {
+        tex: head + doc.o.as_str() + "\\par\\endgroup\n",
+        figures,
+        displays: doc.displays,
+        inline: doc.inline,
+    })
+}
+
+/// What comes before the questions: the preamble and title, the paramétrage, the closure
+/// law, the links, the solids and the model's hypotheses.
+fn set_up(doc: &mut Doc) {
+    title_block(doc);
+    super::setup::parametrage(doc);
+    super::loop_law::loop_law(doc);
+    super::helical::links(doc);
+    super::setup::solids(doc);
+    super::hypotheses::model_hypotheses(doc);
+}
+
 /// The preamble, the title as a teacher's handout has it (one line, no page of its own) and
 /// the problem's description.
 fn title_block(doc: &mut Doc) {
     let m = doc.m;
     let o = &mut doc.o;
     o.push_str(PREAMBLE);
+    o.push_str(MACROS);
     let _ = writeln!(
         o,
         "\\begin{{document}}\n\\begin{{center}}\n{{\\Large\\bfseries Corrigé -- {}\\par}}\n\\end{{center}}",
@@ -190,11 +266,13 @@ fn title_block(doc: &mut Doc) {
 
 /// The questions of the spec with their simulations (`runs`, one entry per question; figure
 /// files named after `prefix`),
-/// or, without questions, the hypotheses and every requested quantity.
+/// or, without questions, the hypotheses and every requested quantity. A question whose
+/// position `keep` refuses is written (what it shows is cited later) and taken out again.
 fn questions(
     doc: &mut Doc,
     prefix: &str,
     runs: &[QuestionRuns],
+    keep: &dyn Fn(usize) -> bool,
 ) -> Result<Vec<(String, crate::simulate::Figure)>, crate::derivation::ResolveError> {
     let m = doc.m;
     let mut figures = Vec::new();
@@ -218,6 +296,7 @@ fn questions(
         question_block(doc, &all)?;
     } else {
         for (k, qs) in m.statement.questions.iter().enumerate() {
+            let at = (doc.o.len(), doc.displays.len(), doc.inline.len());
             question_block(doc, qs)?;
             if let Some(sim) = &qs.simulation {
                 let file = format!("{prefix}simulation-{}.png", k + 1);
@@ -227,10 +306,16 @@ fn questions(
                         "the runs of its simulation were not given".to_string(),
                     )
                 })?;
-                figures.push((
-                    file.clone(),
-                    simulation_block(&mut doc.o, m, sim, runs, &file)?,
-                ));
+                let line = doc.line;
+                let figure = simulation_block(&mut doc.o, m, sim, runs, (&file, line))?;
+                if keep(k) {
+                    figures.push((file, figure));
+                }
+            }
+            if !keep(k) {
+                doc.o.truncate(at.0);
+                doc.displays.truncate(at.1);
+                doc.inline.truncate(at.2);
             }
         }
     }

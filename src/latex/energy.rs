@@ -25,8 +25,8 @@ pub(super) fn energy_theorem(doc: &mut Doc, group: &[Step]) -> Option<(Value, Va
     let _ = writeln!(
         doc.o,
         "Puissance de chaque action extérieure à ${e}$ dans son mouvement par rapport à ${r}$, \
-         $\\mathcal{{P}} = \\vec{{R}}\\cdot\\overrightarrow{{V(A\\in S/{reference})}} + \
-         \\vec{{M}}(A)\\cdot\\overrightarrow{{\\Omega(S/{reference})}}$ au point $A$ de l'action :"
+         $\\mathcal{{P}} = \\TVec{{R}}\\cdot\\TVecLong{{V(A\\in S/{reference})}} + \
+         \\TVec{{M}}(A)\\cdot\\TVecLong{{\\Omega(S/{reference})}}$ au point $A$ de l'action :"
     );
     side_by_side(doc, &powers);
     for s in rest

@@ -46,10 +46,10 @@ pub fn rotation_figures(m: &Mechanism) -> String {
     if pictures.is_empty() {
         return String::new();
     }
-    format!(
+    super::plain(&format!(
         "\\begin{{center}}\n{}\\end{{center}}\n",
         pictures.join("\\hspace{1.5em}\n")
-    )
+    ))
 }
 
 /// Printed width of one figure plane, in cm (arrows of 1.4 cm and their labels).
@@ -402,7 +402,7 @@ pub(super) fn spec_vector(names: &VectorNames, s: &str) -> String {
 /// );
 /// ```
 pub fn link_text(l: &Link) -> String {
-    link_text_with(&VectorNames::default(), l)
+    super::plain(&link_text_with(&VectorNames::default(), l))
 }
 
 /// [`link_text`], the basis vectors by the statement's `names`.
@@ -471,7 +471,7 @@ const BRANCH: f64 = 2.0;
 /// assert!(tex.contains("bâti"));
 /// ```
 pub fn link_graph(m: &Mechanism) -> String {
-    link_graph_with(m, &VectorNames::of(m))
+    super::plain(&link_graph_with(m, &VectorNames::of(m)))
 }
 
 /// [`link_graph`], the basis vectors by the statement's `names`.

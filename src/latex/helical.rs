@@ -30,7 +30,7 @@ fn motion_quantities(m: &Mechanism, names: &super::VectorNames, l: &Link) -> (St
         .unwrap_or_default();
     let q = |text: String| {
         Quantity::parse(&text)
-            .map(|q| super::quantity(&q.kind))
+            .map(|q| super::quantity_tex(&q.kind))
             .unwrap_or_default()
     };
     (
@@ -249,7 +249,7 @@ fn torsor(doc: &mut Doc, i: usize) {
         super::name(&moment_name),
     );
     let lhs = format!(
-        "\\left\\{{\\mathcal{{T}}({} \\rightarrow {})\\right\\}}_{{{}}}",
+        "\\TTorseur{{\\mathcal{{T}}({} \\rightarrow {})}}{{{}}}",
         super::action_side(&l.between[0]),
         super::action_side(&l.between[1]),
         super::point(&l.point)

@@ -50,7 +50,7 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis) {
     }
     let _ = writeln!(
         d.o,
-        "\\paragraph{{Hypothèse {}.}} {}\n",
+        "\\TParagraphe{{Hypothèse {}.}} {}\n",
         escape_text(&h.name),
         h.text
             .as_deref()
@@ -308,5 +308,5 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
     if let Some(c) = text.get(..1) {
         text = c.to_uppercase() + &text[1..];
     }
-    let _ = writeln!(doc.o, "\\paragraph{{Hypothèses du modèle.}} {text}.\n");
+    let _ = writeln!(doc.o, "\\TParagraphe{{Hypothèses du modèle.}} {text}.\n");
 }

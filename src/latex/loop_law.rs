@@ -71,7 +71,7 @@ fn closures(doc: &mut Doc, derivatives: &[crate::expr::Expr]) {
         let v = &c.vector;
         let comps = v.express_in(&m.frames, ground);
         let latex = format!(
-            "\\vec{{0}} = {}",
+            "\\TVec{{0}} = {}",
             super::values::vector_over_bases(m, &doc.names, v)
         );
         let _ = writeln!(
@@ -135,7 +135,7 @@ fn rolling(doc: &mut Doc, laws: &[RollingLaw]) {
         let written = &law.written;
         let mut stated = Vec::new();
         if law.on.is_empty() {
-            let latex = format!("{v} = \\vec{{0}}");
+            let latex = format!("{v} = \\TVec{{0}}");
             doc.inline.push(Inline {
                 what: format!("rolling condition {written}"),
                 latex: latex.clone(),

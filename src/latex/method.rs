@@ -11,7 +11,7 @@ use super::routes::{
 };
 use super::sentences::sentence;
 use super::words::{citation, french_list, mass_of, shown_value, solid, step_lhs};
-use super::{frame, point, quantity};
+use super::{frame, point, quantity_tex};
 use crate::derivation::{Derivation, StepKind, Value, derive};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::quantity::{Motion, Quantity, QuantityKind};
@@ -48,7 +48,7 @@ pub(super) fn torsor_names(k: &QuantityKind) -> Option<(String, String)> {
         _ => return None,
     };
     let _ = p;
-    Some((quantity(&r), quantity(&mo)))
+    Some((quantity_tex(&r), quantity_tex(&mo)))
 }
 
 /// Writes the steps of a kinematic or kinetic derivation as the course shows them. Returns
@@ -425,7 +425,7 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
         return false;
     }
     let vq = format!("V({g},{}/{r}) in B{bn}", mo.moving);
-    let vlhs = quantity(&QuantityKind::Velocity {
+    let vlhs = quantity_tex(&QuantityKind::Velocity {
         point: g.clone(),
         motion: mo.clone(),
     });
@@ -438,7 +438,7 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
         if doc.cited(&vlhs, &vv).is_none() {
             let _ = writeln!(
                 doc.o,
-                "${}$ est fixe dans ${}$ : ${} = \\vec{{0}}$, donc la résultante est nulle.\n",
+                "${}$ est fixe dans ${}$ : ${} = \\TVec{{0}}$, donc la résultante est nulle.\n",
                 point(&g),
                 frame(r),
                 vlhs
@@ -451,21 +451,18 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
         return false;
     }
     let aq = format!("Gamma({g},{}/{r}) in B{bn}", mo.moving);
-    let alhs = quantity(&QuantityKind::Acceleration {
+    let alhs = quantity_tex(&QuantityKind::Acceleration {
         point: g.clone(),
         motion: mo.clone(),
     });
-    let sentence = format!(
-        "${alhs} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vlhs}\\right]_{{{}}}$ :",
-        frame(r)
-    );
+    let sentence = format!("${alhs} = \\TDeriv{{{}}}{{{vlhs}}}$ :", frame(r));
     derived_step(doc, &aq, &alhs, &sentence);
     false
 }
 
 /// A requested quantity of the kinematics or kinetics: its steps, then the boxed result.
 pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &str) {
-    let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
+    let _ = writeln!(doc.o, "\\TTitre{{${title}$}}");
     // A projection asked alone is computed by the short route when all its steps were not
     // already shown.
     let all_shown = d.steps.iter().all(|s| {
@@ -642,7 +639,7 @@ fn torsor_by_its_elements(
     }
     let _ = writeln!(
         doc.o,
-        "D'où ${lhs} = \\left\\{{ \\begin{{array}}{{l}} {rn} \\\\ {mn} \\end{{array}} \\right\\}}_{{{}}}$, ses éléments de réduction étant encadrés ci-dessus.\n",
+        "D'où ${lhs} = \\TTorseur{{\\begin{{array}}{{l}} {rn} \\\\ {mn} \\end{{array}}}}{{{}}}$, ses éléments de réduction étant encadrés ci-dessus.\n",
         point(doc.m.point_name(*p))
     );
     doc.remember(lhs, v);

@@ -32,7 +32,7 @@ mod trial;
 mod values;
 mod words;
 
-pub use document::AnswerKey;
+pub use document::{AnswerKey, FRAGMENT_LINE, MACROS};
 pub use expr::{expr, expr_lines, fraction};
 pub use fault::text_at_fault;
 pub use figures::{link_graph, link_text, rotation_figures};
@@ -107,6 +107,29 @@ pub fn answer_key_named(
     runs: &[QuestionRuns],
 ) -> Result<AnswerKey, crate::derivation::ResolveError> {
     document::write_answer_key(m, style, prefix, runs)
+}
+
+/// The bodies of the questions `chosen` (from 1; all when empty) as a fragment to paste into
+/// another document: no preamble, the notation's macros as `\providecommand` at its top (a
+/// teacher's own definitions win), lines broken for a narrower page; the simulations' runs
+/// handed in as [`answer_key_named`] takes them.
+///
+/// ```
+/// let m = torseur::spec::load("derivations/treuil.json").unwrap();
+/// let runs = torseur::simulate::question_runs(&m);
+/// let style = torseur::latex::VectorStyle::Sum;
+/// let f = torseur::latex::answer_key_fragment(&m, style, "", &[1], &runs).unwrap();
+/// assert!(!f.tex.contains("\\documentclass") && !f.tex.contains("\\begin{document}"));
+/// assert!(f.tex.contains("\\providecommand\\TVec"));
+/// ```
+pub fn answer_key_fragment(
+    m: &Mechanism,
+    style: VectorStyle,
+    prefix: &str,
+    chosen: &[usize],
+    runs: &[QuestionRuns],
+) -> Result<AnswerKey, crate::derivation::ResolveError> {
+    document::write_fragment(m, style, prefix, runs, chosen)
 }
 
 const GREEK: &[&str] = &[
@@ -293,11 +316,11 @@ impl VectorNames {
             Some(n) => {
                 let latex = name(n);
                 match latex.split_once("_{") {
-                    Some((head, sub)) => format!("\\vec{{{head}}}_{{{sub}"),
-                    None => format!("\\vec{{{latex}}}"),
+                    Some((head, sub)) => format!("\\TVec{{{head}}}_{{{sub}"),
+                    None => format!("\\TVec{{{latex}}}"),
                 }
             }
-            None => format!("\\vec{{{axis}}}_{{{}}}", escape_ident(frame)),
+            None => format!("\\TVec{{{axis}}}_{{{}}}", escape_ident(frame)),
         }
     }
 }
@@ -305,7 +328,7 @@ impl VectorNames {
 /// Basis vector `\vec{x}_{2}` (the statement's names of the vectors are the answer key's:
 /// its writers hold them).
 pub fn basis_vector(axis: char, frame: &str) -> String {
-    VectorNames::default().basis_vector(axis, frame)
+    plain(&VectorNames::default().basis_vector(axis, frame))
 }
 
 pub(crate) fn escape_ident(s: &str) -> String {
@@ -365,25 +388,99 @@ fn action(a: &ActionRef) -> String {
 fn motion(m: &Motion) -> String {
     // Several solids moving together (`1+2`) keep their `+`.
     let moving: Vec<String> = m.moving.split('+').map(escape_ident).collect();
-    format!("{}/{}", moving.join("+"), escape_ident(&m.reference))
+    format!(
+        "\\TMvt{{{}}}{{{}}}",
+        moving.join("+"),
+        escape_ident(&m.reference)
+    )
 }
 
-/// A quantity in the seed's notation: `\overrightarrow{\delta(O_{2},2/0)}`, `\{\mathcal{D}(2/0)\}_{O_2}`.
+/// A quantity in the seed's notation: `\overrightarrow{\delta(O_{2},2/0)}`, `\{\mathcal{D}(2/0)\}_{O_2}`
+/// (the course's LaTeX, without the key's notation macros: see [`plain`]).
+///
+/// ```
+/// use torseur::quantity::Quantity;
+/// let q = Quantity::parse("{D(2/0)}_O2").unwrap();
+/// assert_eq!(torseur::latex::quantity(&q.kind), "\\left\\{\\mathcal{D}(2/0)\\right\\}_{O_{2}}");
+/// ```
 pub fn quantity(k: &QuantityKind) -> String {
+    plain(&quantity_tex(k))
+}
+
+/// [`quantity`] in the key's notation macros (`\TVecLong{…}`), as the key's writers print it.
+pub(crate) fn quantity_tex(k: &QuantityKind) -> String {
     VectorNames::default().quantity(k)
+}
+
+/// The notation macros of [`MACROS`]: name, number of arguments, definition.
+fn macro_definitions() -> Vec<(&'static str, usize, &'static str)> {
+    MACROS
+        .lines()
+        .filter_map(|l| {
+            let rest = l.strip_prefix("\\providecommand\\")?;
+            let (name, rest) = rest.split_once('[')?;
+            let (n, rest) = rest.split_once("]{")?;
+            let end = group_end(rest)?;
+            Some((name, n.parse().ok()?, &rest[..end]))
+        })
+        .collect()
+}
+
+/// `s` with the key's notation macros ([`MACROS`]) replaced by their definitions: the course's
+/// plain LaTeX, for a formula written outside the key (a value alone, a figure, Python).
+///
+/// ```
+/// assert_eq!(
+///     torseur::latex::plain("\\TVecLong{V(G,\\TMvt{2}{0})} = v\\,\\TVec{x}_{1}"),
+///     "\\overrightarrow{V(G,2/0)} = v\\,\\vec{x}_{1}"
+/// );
+/// ```
+pub fn plain(s: &str) -> String {
+    let defs = macro_definitions();
+    let mut out = String::with_capacity(s.len());
+    let mut rest = s;
+    while let Some(at) = rest.find('\\') {
+        out.push_str(&rest[..at]);
+        let after = &rest[at + 1..];
+        let len = after
+            .find(|c: char| !c.is_ascii_alphabetic())
+            .unwrap_or(after.len());
+        let Some((_, k, body)) = defs.iter().find(|d| len > 0 && d.0 == &after[..len]) else {
+            // Not a macro of the block: the command (or the escaped character) as it is.
+            let take = match len {
+                0 => after.chars().next().map_or(0, char::len_utf8),
+                n => n,
+            };
+            out.push('\\');
+            out.push_str(&after[..take]);
+            rest = &after[take..];
+            continue;
+        };
+        let mut tail = &after[len..];
+        let mut expansion = body.to_string();
+        for i in 1..=*k {
+            let Some(inner) = tail.strip_prefix('{') else {
+                break;
+            };
+            let end = group_end(inner).unwrap_or(inner.len());
+            expansion = expansion.replace(&format!("#{i}"), &inner[..end]);
+            tail = inner.get(end + 1..).unwrap_or("");
+        }
+        out.push_str(&plain(&expansion));
+        rest = tail;
+    }
+    out.push_str(rest);
+    out
 }
 
 impl VectorNames {
     /// [`quantity`], a basis vector (of a derivative's projection) by the statement's name.
     pub(crate) fn quantity(&self, k: &QuantityKind) -> String {
         use QuantityKind::*;
-        let arrow = |s: String| format!("\\overrightarrow{{{s}}}");
+        let arrow = |s: String| format!("\\TVecLong{{{s}}}");
         // A torsor {𝒯(of)} at the point p.
         let torsor = |t: char, of: String, p: &str| {
-            format!(
-                "\\left\\{{\\mathcal{{{t}}}({of})\\right\\}}_{{{}}}",
-                point(p)
-            )
+            format!("\\TTorseur{{\\mathcal{{{t}}}({of})}}{{{}}}", point(p))
         };
         match k {
             Omega(mo) => arrow(format!("\\Omega({})", motion(mo))),
@@ -449,10 +546,7 @@ impl VectorNames {
         let d = "\\mathrm{d}";
         let inner = self.quantity(&of.kind);
         match (r, &of.projection) {
-            (Some(r), _) => format!(
-                "\\left[\\frac{{{d}}}{{{d}t}}{inner}\\right]_{{{}}}",
-                frame(r)
-            ),
+            (Some(r), _) => format!("\\TDeriv{{{}}}{{{inner}}}", frame(r)),
             (None, Some((f, a))) => format!(
                 "\\frac{{{d}}}{{{d}t}}\\left({inner} \\cdot {}\\right)",
                 self.basis_vector(*a, f)
@@ -479,7 +573,10 @@ pub(crate) fn width(s: &str) -> usize {
                     }
                 }
                 w += match cmd.as_str() {
-                    "" | "left" | "right" | "mathrm" | "dot" | "ddot" | "dddot" | "vec" => 0,
+                    "" | "left" | "right" | "mathrm" | "dot" | "ddot" | "dddot" | "vec"
+                    | "TVec" | "TTorseur" | "TElements" | "TResultat" => 0,
+                    // [d/dt …]_R: the brackets and d/dt.
+                    "TDeriv" => 6,
                     "frac" => 1,
                     "sin" | "cos" => 3,
                     _ => 1,
@@ -500,7 +597,7 @@ pub(crate) fn width(s: &str) -> usize {
 /// Approximate printed width of a display body, in characters: its widest line; for an
 /// array or a matrix, what stands before it plus its widest row (and the subscript after).
 pub(crate) fn display_width(body: &str) -> usize {
-    let Some(at) = ["\\begin{array}", "\\begin{pmatrix}"]
+    let Some(at) = ["\\begin{array}", "\\begin{pmatrix}", "\\TElements{"]
         .iter()
         .filter_map(|e| body.find(e))
         .min()
@@ -508,13 +605,34 @@ pub(crate) fn display_width(body: &str) -> usize {
         return body.split("\\\\").map(width).max().unwrap_or(0);
     };
     let (head, inner) = body.split_at(at);
+    // A torsor's elements are the first argument of \TElements, closed by its brace.
+    let end_of = |inner: &str| match body[at..].starts_with("\\TElements{") {
+        true => group_end(inner),
+        false => inner.find("\\end{"),
+    };
     let inner = inner
         .strip_prefix("\\begin{array}{c|c}")
+        .or_else(|| inner.strip_prefix("\\TElements{"))
         .or_else(|| inner.strip_prefix("\\begin{pmatrix}"))
         .unwrap_or(inner);
-    let end = inner.find("\\end{").unwrap_or(inner.len());
+    let end = end_of(inner).unwrap_or(inner.len());
     let rows = inner[..end].split("\\\\").map(width).max().unwrap_or(0);
     width(head) + rows + 6
+}
+
+/// Where the group that `s` is inside closes (`s` starts just after its `{`): the position of
+/// its `}`, if it closes.
+fn group_end(s: &str) -> Option<usize> {
+    let mut depth = 0usize;
+    for (i, c) in s.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' if depth == 0 => return Some(i),
+            '}' => depth -= 1,
+            _ => {}
+        }
+    }
+    None
 }
 
 /// Width (in characters) beyond which a vector is written over several lines.

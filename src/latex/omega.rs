@@ -1,13 +1,13 @@
 //! Ω by the composition of rotations along the frames, as the corrigé states it.
 
-use super::quantity;
+use super::quantity_tex;
 use crate::frame::FrameId;
 use crate::mechanism::{DeterminedBy, Mechanism};
 use crate::quantity::{Motion, QuantityKind};
 
 /// `\overrightarrow{\Omega(2/1)}` from frame names.
 pub(super) fn omega_of(a: &str, b: &str) -> String {
-    quantity(&QuantityKind::Omega(Motion {
+    quantity_tex(&QuantityKind::Omega(Motion {
         moving: a.to_string(),
         reference: b.to_string(),
     }))

@@ -15,9 +15,11 @@ fn align(body: &str) -> String {
     format!("\\begin{{align*}}\n{body}\n\\end{{align*}}\n")
 }
 
-/// A boxed display (the results): `empheq`'s frame around an `align*`.
+/// A boxed display (the results): the macro `\TResultat` of the preamble's block (a frame
+/// around an `aligned`, which a teacher may redefine), its argument the lines as an `align*`
+/// has them.
 fn boxed(body: &str) -> String {
-    format!("\\begin{{empheq}}[box=\\fbox]{{align*}}\n{body}\n\\end{{empheq}}\n")
+    format!("\\TResultat{{\n{body}\n}}\n")
 }
 
 /// What a displayed formula shows.
@@ -94,6 +96,9 @@ pub(super) struct Doc<'m> {
     pub(super) conditions_stated: bool,
     /// The links whose Coulomb's law is stated (positions in the spec's `links`).
     pub(super) laws_stated: Vec<usize>,
+    /// The width of a line, in characters (see [`super::LINE`]): narrower for a fragment
+    /// pasted into a teacher's page.
+    pub(super) line: usize,
 }
 
 impl<'m> Doc<'m> {
@@ -114,6 +119,7 @@ impl<'m> Doc<'m> {
             results: Vec::new(),
             conditions_stated: false,
             laws_stated: Vec::new(),
+            line: super::LINE,
         }
     }
 
@@ -225,9 +231,9 @@ impl<'m> Doc<'m> {
     /// beside its display. A corrigé uses the width of the page.
     pub(super) fn rows(&mut self, cells: &[String], widths: &[usize], most: usize) {
         let w = widths.iter().copied().max().unwrap_or(0);
-        let per_row = if cells.len() > 2 && w + 4 <= super::LINE / 3 {
+        let per_row = if cells.len() > 2 && w + 4 <= self.line / 3 {
             3
-        } else if w + 4 <= super::LINE / 2 {
+        } else if w + 4 <= self.line / 2 {
             2
         } else {
             1
@@ -289,9 +295,9 @@ impl<'m> Doc<'m> {
         boxed_display: bool,
     ) {
         let line = if boxed_display {
-            super::LINE - 6
+            self.line - 6
         } else {
-            super::LINE
+            self.line
         };
         let body = super::values::value_within(self.m, &self.names, self.style, lhs, v, None, line);
         self.record(role, what, body, v, None, boxed_display);
@@ -315,7 +321,7 @@ impl<'m> Doc<'m> {
             lhs,
             v,
             names.map(|(r, mo)| (r.as_str(), mo.as_str())),
-            super::LINE - 6,
+            self.line - 6,
         );
         self.record(role, what, body, v, None, true);
         if let Some(d) = self.displays.last_mut() {
@@ -352,8 +358,8 @@ impl<'m> Doc<'m> {
     ) {
         let body = format!(
             "{} \\\\\n{}",
-            super::values::value_within(self.m, &self.names, self.style, l1, v1, None, super::LINE),
-            super::values::value_within(self.m, &self.names, self.style, l2, v2, None, super::LINE)
+            super::values::value_within(self.m, &self.names, self.style, l1, v1, None, self.line),
+            super::values::value_within(self.m, &self.names, self.style, l2, v2, None, self.line)
         );
         self.record(role, what, body, v1, Some(v2.clone()), boxed_display);
         // The first side (a theorem's dynamic side) may be cited by a later theorem.
@@ -364,7 +370,7 @@ impl<'m> Doc<'m> {
     /// unknown `a` that `lhs` names and `b`, and remembered.
     pub(super) fn show_law(&mut self, what: &str, lhs: &str, a: &Value, b: &Value) {
         let body =
-            super::values::value_within(self.m, &self.names, self.style, lhs, b, None, super::LINE);
+            super::values::value_within(self.m, &self.names, self.style, lhs, b, None, self.line);
         self.record(DisplayRole::Step, what, body, a, Some(b.clone()), false);
         self.remember(lhs, b);
     }
@@ -379,7 +385,7 @@ impl<'m> Doc<'m> {
         b: &crate::expr::Expr,
     ) {
         let a_tex = super::expr(a);
-        let (l, r, lhs) = if super::width(&a_tex) <= super::LINE / 2 {
+        let (l, r, lhs) = if super::width(&a_tex) <= self.line / 2 {
             (a, b, a_tex)
         } else {
             (b, a, super::expr(b))
@@ -388,8 +394,8 @@ impl<'m> Doc<'m> {
         // The lines of the right side are aligned after the left side. A wide left side over
         // a right side of several lines goes on a line of its own, the right side's lines
         // starting at the margin with its `=` (else they would run into the margin).
-        let own_line = super::width(&lhs) > super::LINE / 4
-            && super::width(&super::expr(r)) + super::width(&lhs) > super::LINE - 6;
+        let own_line = super::width(&lhs) > self.line / 4
+            && super::width(&super::expr(r)) + super::width(&lhs) > self.line - 6;
         let lhs = if own_line {
             format!("&{lhs} \\\\\n")
         } else {
@@ -402,7 +408,7 @@ impl<'m> Doc<'m> {
             &lhs,
             &rv,
             None,
-            super::LINE - 6,
+            self.line - 6,
         );
         self.record(role, what, body, &Value::Scalar(l.clone()), Some(rv), true);
         if let Some(d) = self.displays.last_mut() {
@@ -411,14 +417,15 @@ impl<'m> Doc<'m> {
     }
 }
 
-/// A quantity as a heading: \\overrightarrow{\\delta(O_2,2/0)}\\cdot\\vec{x}_2 for a projection.
+/// A quantity as a heading: \\overrightarrow{\\delta(O_2,2/0)}\\cdot\\vec{x}_2 for a projection
+/// (the course's LaTeX, without the key's notation macros).
 ///
 /// ```
 /// let q = torseur::Quantity::parse("Omega(2/0)").unwrap();
 /// assert_eq!(torseur::latex::quantity_title(&q), "\\overrightarrow{\\Omega(2/0)}");
 /// ```
 pub fn quantity_title(q: &Quantity) -> String {
-    VectorNames::default().quantity_title(q)
+    super::plain(&VectorNames::default().quantity_title(q))
 }
 
 impl VectorNames {

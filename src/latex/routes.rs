@@ -6,7 +6,7 @@
 use super::omega::{omega_of, omega_sentence};
 use super::page::{DisplayRole, Doc};
 use super::words::{mass_of, shown_value, solid};
-use super::{frame, point, quantity};
+use super::{frame, point, quantity_tex};
 use crate::derivation::{Derivation, Value, derive};
 use crate::frame::FrameId;
 use crate::mechanism::Mechanism;
@@ -130,7 +130,7 @@ impl<'d> ProjectedMoment<'d> {
             u: crate::vector::Vector::along(uf, ua, m.reg.one()),
             ul: names.basis_vector(ua.letter(), m.frame_name(uf)),
             rl: frame(&mo.reference),
-            sigma_a: quantity(&QuantityKind::KineticMoment {
+            sigma_a: quantity_tex(&QuantityKind::KineticMoment {
                 point: a.clone(),
                 motion: mo.clone(),
             }),
@@ -184,7 +184,7 @@ fn fixed_point_route(doc: &mut Doc, pm: &ProjectedMoment) -> bool {
         )
     } else {
         format!(
-            "${sigma_a} = {il}\\cdot{oml} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
+            "${sigma_a} = {il}\\cdot{oml} + {}\\,\\TVecLong{{{}{}}}\\wedge\\TVecLong{{V({},\\TMvt{{{}}}{{{}}})}}$ :",
             mass_of(m, &mo.moving),
             point(a),
             point(&gn),
@@ -207,7 +207,7 @@ fn fixed_point_route(doc: &mut Doc, pm: &ProjectedMoment) -> bool {
         &format!(
             "${}$ est fixe dans ${rl}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_a}\\cdot {ul}\\right)$, avec :",
             point(a),
-            quantity(pm.kind)
+            quantity_tex(pm.kind)
         ),
         &format!("{sigma_a}\\cdot {ul}"),
         proj,
@@ -275,16 +275,16 @@ fn centre_route_intro(doc: &mut Doc, pm: &ProjectedMoment, t: &CentreTerms) {
     let mass = mass_of(m, &mo.moving);
     let _ = writeln!(
         doc.o,
-        "Changement de point vers le centre d'inertie :\n\\[{} \\cdot {ul} = {} \\cdot {ul} + \\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}\\]",
-        quantity(pm.kind),
-        quantity(&delta_g),
+        "Changement de point vers le centre d'inertie :\n\\[{} \\cdot {ul} = {} \\cdot {ul} + \\left(\\TVecLong{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}\\]",
+        quantity_tex(pm.kind),
+        quantity_tex(&delta_g),
         point(a),
         point(gn),
-        quantity(&gamma)
+        quantity_tex(&gamma)
     );
     pm.show_omega(doc);
     let oml = omega_of(&mo.moving, &mo.reference);
-    let sigma_g = quantity(&QuantityKind::KineticMoment {
+    let sigma_g = quantity_tex(&QuantityKind::KineticMoment {
         point: gn.clone(),
         motion: mo.clone(),
     });
@@ -310,7 +310,7 @@ fn centre_route_terms(doc: &mut Doc, pm: &ProjectedMoment, t: CentreTerms) {
     let (a, mo, ul, rl, gn) = (pm.a, pm.mo, &pm.ul, &pm.rl, &t.gn);
     let (delta_g, gamma) = centre_kinds(pm, gn);
     let mass = mass_of(m, &mo.moving);
-    let sigma_g = quantity(&QuantityKind::KineticMoment {
+    let sigma_g = quantity_tex(&QuantityKind::KineticMoment {
         point: gn.clone(),
         motion: mo.clone(),
     });
@@ -318,17 +318,17 @@ fn centre_route_terms(doc: &mut Doc, pm: &ProjectedMoment, t: CentreTerms) {
         doc,
         &format!("delta({gn},{mo}).{}{}", pm.ua.letter(), m.frame_name(pm.uf)),
         &format!(
-            "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{sigma_g}\\right]_{{{rl}}}$ (centre d'inertie), projeté sur ${ul}$ :",
-            quantity(&delta_g)
+            "${} = \\TDeriv{{{rl}}}{{{sigma_g}}}$ (centre d'inertie), projeté sur ${ul}$ :",
+            quantity_tex(&delta_g)
         ),
-        &format!("{} \\cdot {ul}", quantity(&delta_g)),
+        &format!("{} \\cdot {ul}", quantity_tex(&delta_g)),
         t.dg,
     );
     show_vector(
         doc,
         &format!("Gamma({gn},{mo})"),
         &format!("Accélération de ${}$ :", point(gn)),
-        &quantity(&gamma),
+        &quantity_tex(&gamma),
         &t.gam,
         pm.basis,
     );
@@ -337,10 +337,10 @@ fn centre_route_terms(doc: &mut Doc, pm: &ProjectedMoment, t: CentreTerms) {
         "transport",
         "Terme de transport :",
         &format!(
-            "\\left(\\overrightarrow{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}",
+            "\\left(\\TVecLong{{{}{}}}\\wedge {mass}\\,{}\\right)\\cdot {ul}",
             point(a),
             point(gn),
-            quantity(&gamma)
+            quantity_tex(&gamma)
         ),
         t.transport,
     );
@@ -375,7 +375,7 @@ pub(super) fn position_route(doc: &mut Doc, d: &Derivation) {
         point: p.clone(),
         motion: mo.clone(),
     };
-    let vl = quantity(&vk);
+    let vl = quantity_tex(&vk);
     if !accel {
         let _ = writeln!(doc.o, "{}", position_sentence(&vl, &o, p, &mo.reference));
         return;
@@ -395,18 +395,18 @@ pub(super) fn position_route(doc: &mut Doc, d: &Derivation) {
     }
     let _ = writeln!(
         doc.o,
-        "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{vl}\\right]_{{{rl}}}$ :",
-        quantity(&d.quantity.kind)
+        "${} = \\TDeriv{{{rl}}}{{{vl}}}$ :",
+        quantity_tex(&d.quantity.kind)
     );
 }
 
 /// « V(P,S/R) = [d/dt O0P]_R (O0 fixe dans R) : », the velocity of a point fixed in its solid.
 pub(super) fn position_sentence(vl: &str, o: &str, p: &str, r: &str) -> String {
     format!(
-        "${vl} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\overrightarrow{{{}{}}}\\right]_{{{}}}$ (${}$ fixe dans ${}$) :",
+        "${vl} = \\TDeriv{{{}}}{{\\TVecLong{{{}{}}}}}$ (${}$ fixe dans ${}$) :",
+        frame(r),
         point(o),
         point(p),
-        frame(r),
         point(o),
         frame(r)
     )
@@ -453,7 +453,7 @@ fn kinetic_projections(
             moving: m.body(s).name.clone(),
             reference: reference.to_string(),
         };
-        let sigma = quantity(&QuantityKind::KineticMoment {
+        let sigma = quantity_tex(&QuantityKind::KineticMoment {
             point: a.clone(),
             motion: mo.clone(),
         });
@@ -495,12 +495,12 @@ fn kinetic_moment_formula(
     if body.inertia.is_none() {
         let p = m.point_name(body.centre).to_string();
         format!(
-            "${}$ est une masse ponctuelle : ${sigma} = \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+            "${}$ est une masse ponctuelle : ${sigma} = \\TVecLong{{{}{}}}\\wedge {}\\,{}$ :",
             point(&p),
             point(&a),
             point(&p),
             mass_of(m, &mo.moving),
-            quantity(&QuantityKind::Velocity {
+            quantity_tex(&QuantityKind::Velocity {
                 point: p.clone(),
                 motion: mo.clone()
             })
@@ -522,15 +522,15 @@ fn kinetic_moment_formula(
     } else {
         let g = m.point_name(body.centre).to_string();
         format!(
-            "${sigma} = {} + \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
-            quantity(&QuantityKind::KineticMoment {
+            "${sigma} = {} + \\TVecLong{{{}{}}}\\wedge {}\\,{}$ :",
+            quantity_tex(&QuantityKind::KineticMoment {
                 point: g.clone(),
                 motion: mo.clone()
             }),
             point(&a),
             point(&g),
             mass_of(m, &mo.moving),
-            quantity(&QuantityKind::Velocity {
+            quantity_tex(&QuantityKind::Velocity {
                 point: g.clone(),
                 motion: mo.clone()
             })
@@ -609,7 +609,7 @@ impl<'d> ProjectedSet<'d> {
         let rf = r.reference.unwrap_or(m.frames.ground());
         let u = crate::vector::Vector::along(uf, ua, m.reg.one());
         let ul = names.basis_vector(ua.letter(), m.frame_name(uf));
-        let sigma_e = quantity(&QuantityKind::KineticMoment {
+        let sigma_e = quantity_tex(&QuantityKind::KineticMoment {
             point: a.clone(),
             motion: mo.clone(),
         });
@@ -660,7 +660,7 @@ fn kinetic_set_route(doc: &mut Doc, ps: &ProjectedSet) -> bool {
         .solids
         .iter()
         .map(|&s| {
-            quantity(&QuantityKind::KineticMoment {
+            quantity_tex(&QuantityKind::KineticMoment {
                 point: a.to_string(),
                 motion: Motion {
                     moving: m.body(s).name.clone(),
@@ -701,7 +701,7 @@ fn dynamic_set_route(doc: &mut Doc, ps: &ProjectedSet) -> bool {
         "${}$ est fixe dans ${}$ et ${ul}$ aussi : ${} \\cdot {ul} = \\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}\\left({sigma_e}\\cdot {ul}\\right)${}.\n",
         point(a),
         frame(&mo.reference),
-        quantity(ps.kind),
+        quantity_tex(ps.kind),
         ps.light_note
     );
     let v = shown_value(doc, &Value::Scalar(ps.sum.clone()));

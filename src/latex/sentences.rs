@@ -4,7 +4,7 @@
 
 use super::omega::{omega_of, omega_sentence};
 use super::words::{mass_of, solid};
-use super::{frame, point, quantity};
+use super::{frame, point, quantity_tex};
 use crate::derivation::{Step, StepKind};
 use crate::mechanism::Mechanism;
 use crate::quantity::{Motion, QuantityKind};
@@ -24,7 +24,7 @@ pub(super) fn sentence(m: &Mechanism, names: &super::VectorNames, s: &Step) -> S
             motion: mo,
         }) => kinetic_moment_sentence(m, t, a, mo),
         StepKind::Derivative(_, r) => format!(
-            "Dérivée dans ${}$ (formule de Bour, $\\left[\\frac{{\\mathrm{{d}}\\vec u}}{{\\mathrm{{d}}t}}\\right]_{{{}}} = \\left[\\frac{{\\mathrm{{d}}\\vec u}}{{\\mathrm{{d}}t}}\\right]_{{\\mathcal{{R}}_k}} + \\overrightarrow{{\\Omega(k/{r})}}\\wedge\\vec u$) :",
+            "Dérivée dans ${}$ (formule de Bour, $\\TDeriv{{{}}}{{\\TVec{{u}}}} = \\TDeriv{{\\mathcal{{R}}_k}}{{\\TVec{{u}}}} + \\TVecLong{{\\Omega(k/{r})}}\\wedge\\TVec{{u}}$) :",
             frame(r),
             frame(r)
         ),
@@ -66,7 +66,7 @@ fn inertia_sentence(m: &Mechanism, t: &str, a: &str, sn: &str) -> String {
             "Théorème de Huygens, de ${}$ en ${}$ (${} = I_{{{}}}({sn})$ + terme de transport de ${}$) :",
             point(g),
             point(a),
-            quantity(&QuantityKind::Inertia {
+            quantity_tex(&QuantityKind::Inertia {
                 point: a.to_string(),
                 solid: sn.to_string()
             }),
@@ -83,7 +83,7 @@ fn inertia_sentence(m: &Mechanism, t: &str, a: &str, sn: &str) -> String {
 /// The sentence of σ(A,S/R) (theorem `t`): a point mass, at G, at a point fixed or of zero
 /// velocity (I_A Ω), or the general formula.
 fn kinetic_moment_sentence(m: &Mechanism, t: &str, a: &str, mo: &Motion) -> String {
-    let sigma = quantity(&QuantityKind::KineticMoment {
+    let sigma = quantity_tex(&QuantityKind::KineticMoment {
         point: a.to_string(),
         motion: mo.clone(),
     });
@@ -98,12 +98,12 @@ fn kinetic_moment_sentence(m: &Mechanism, t: &str, a: &str, mo: &Motion) -> Stri
     if let Some(p) = point_mass {
         // σ(A) = AP ∧ m V(P): no inertia operator for a point mass.
         format!(
-            "${}$ est une masse ponctuelle : ${sigma} = \\overrightarrow{{{}{}}}\\wedge {}\\,{}$ :",
+            "${}$ est une masse ponctuelle : ${sigma} = \\TVecLong{{{}{}}}\\wedge {}\\,{}$ :",
             point(&p),
             point(a),
             point(&p),
             mass_of(m, &mo.moving),
-            quantity(&QuantityKind::Velocity {
+            quantity_tex(&QuantityKind::Velocity {
                 point: p.clone(),
                 motion: mo.clone()
             })
@@ -131,7 +131,7 @@ fn kinetic_moment_sentence(m: &Mechanism, t: &str, a: &str, mo: &Motion) -> Stri
     } else {
         let g = centre_name(m, &mo.moving);
         format!(
-            "${sigma} = {i}\\cdot{om} + {}\\,\\overrightarrow{{{}{}}}\\wedge\\overrightarrow{{V({},{}/{})}}$ :",
+            "${sigma} = {i}\\cdot{om} + {}\\,\\TVecLong{{{}{}}}\\wedge\\TVecLong{{V({},\\TMvt{{{}}}{{{}}})}}$ :",
             mass_of(m, &mo.moving),
             point(a),
             point(&g),
@@ -144,19 +144,19 @@ fn kinetic_moment_sentence(m: &Mechanism, t: &str, a: &str, mo: &Motion) -> Stri
 
 /// The sentence of δ(A,S/R): the derivative of σ(A) plus the term of a moving point.
 fn dynamic_moment_sentence(m: &Mechanism, a: &str, mo: &Motion) -> String {
-    let delta = quantity(&QuantityKind::DynamicMoment {
+    let delta = quantity_tex(&QuantityKind::DynamicMoment {
         point: a.to_string(),
         motion: mo.clone(),
     });
-    let sigma = quantity(&QuantityKind::KineticMoment {
+    let sigma = quantity_tex(&QuantityKind::KineticMoment {
         point: a.to_string(),
         motion: mo.clone(),
     });
     format!(
-        "${} = \\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}} + \\overrightarrow{{V({}/{})}}\\wedge {}\\,\\overrightarrow{{V({}/{})}}$ :",
+        "${} = \\TDeriv{{{}}}{{{}}} + \\TVecLong{{V({}/{})}}\\wedge {}\\,\\TVecLong{{V({}/{})}}$ :",
         delta,
-        sigma,
         frame(&mo.reference),
+        sigma,
         point(a),
         frame(&mo.reference),
         mass_of(m, &mo.moving),
@@ -187,9 +187,9 @@ fn resultant_sentence(m: &Mechanism, mo: &Motion, dynamic: bool) -> String {
     };
     format!(
         "${} = {}\\,{}$ :",
-        quantity(&r),
+        quantity_tex(&r),
         mass_of(m, &mo.moving),
-        quantity(&v)
+        quantity_tex(&v)
     )
 }
 
@@ -208,7 +208,7 @@ fn change_of_point_sentence(t: &str, k: &QuantityKind) -> String {
         _ => "B".into(),
     };
     format!(
-        "Changement de point, de ${}$ à ${}$ ($\\vec{{M}}({}) = \\vec{{M}}({}) + \\overrightarrow{{{}{}}}\\wedge\\vec{{R}}$) :",
+        "Changement de point, de ${}$ à ${}$ ($\\TVec{{M}}({}) = \\TVec{{M}}({}) + \\TVecLong{{{}{}}}\\wedge\\TVec{{R}}$) :",
         point(&from),
         point(&to),
         point(&to),

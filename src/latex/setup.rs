@@ -142,11 +142,7 @@ fn position_items(doc: &mut Doc) {
         let pt = m.points.get(p);
         let from = m.point_name(pt.parent.unwrap_or(m.points.origin()));
         let rhs = super::values::vector_over_bases(m, &doc.names, &pt.offset);
-        let math = format!(
-            "\\overrightarrow{{{}{}}} = {rhs}",
-            point(from),
-            point(&pt.name)
-        );
+        let math = format!("\\TVecLong{{{}{}}} = {rhs}", point(from), point(&pt.name));
         let _ = writeln!(doc.o, "\\item ${math}$.");
         let ground = m.frames.ground();
         doc.inline.push(Inline {

@@ -15,18 +15,19 @@ fn french(v: f64) -> String {
 }
 
 /// The simulations of a question from their runs (run by the caller): the assumed values,
-/// the curves, the maxima against the statement's.
+/// the curves, the maxima against the statement's; `line`, the width of the page's line in
+/// characters (see [`super::LINE`]).
 pub(super) fn simulation_block(
     o: &mut String,
     m: &Mechanism,
     sim: &crate::wire::SimulationSpec,
     runs: &crate::simulate::QuestionRuns,
-    file: &str,
+    (file, line): (&str, usize),
 ) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
     let runs = runs
         .as_ref()
         .map_err(|(name, e)| fail(name, e.to_string()))?;
-    assumed_values(o, m, sim);
+    assumed_values(o, m, sim, line);
     scenario_descriptions(o, m, sim);
     let figure = simulation_figure(sim, runs);
     let _ = writeln!(
@@ -45,9 +46,10 @@ fn fail(what: &str, e: String) -> crate::derivation::ResolveError {
 }
 
 /// The values the simulations use (the statement may give some of them, or none), six to a
-/// row; a value that differs between the scenarios (the friction f) is given for each, in
-/// the order of the scenarios.
-fn assumed_values(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSpec) {
+/// row of the full line ([`super::LINE`]), fewer on a narrower one (`line`); a value that
+/// differs between the scenarios (the friction f) is given for each, in the order of the
+/// scenarios.
+fn assumed_values(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSpec, line: usize) {
     let Some(first) = sim
         .scenarios
         .first()
@@ -55,9 +57,12 @@ fn assumed_values(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSp
     else {
         return;
     };
-    o.push_str(
-        "Les simulations utilisent les valeurs suivantes (unités SI).\n\n\\begin{center}\n\
-         \\begin{tabular}{llllll}\n",
+    let per = (6 * line / super::LINE).clamp(2, 6);
+    let _ = writeln!(
+        o,
+        "Les simulations utilisent les valeurs suivantes (unités SI).\n\n\\begin{{center}}\n\
+         \\begin{{tabular}}{{{}}}",
+        "l".repeat(per)
     );
     let others: Vec<&crate::wire::ScenarioSpec> = sim
         .scenarios
@@ -79,7 +84,7 @@ fn assumed_values(o: &mut String, m: &Mechanism, sim: &crate::wire::SimulationSp
             format!("${} = {}$", name(k), vals.join(" \\text{ ou } "))
         })
         .collect();
-    for row in cells.chunks(6) {
+    for row in cells.chunks(per) {
         let _ = writeln!(o, "{} \\\\", row.join(" & "));
     }
     o.push_str("\\end{tabular}\n\\end{center}\n");

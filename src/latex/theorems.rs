@@ -12,7 +12,7 @@ use std::fmt::Write;
 /// the theorem as one equality (dynamic side, actions), then the unknown or the equation of
 /// motion.
 pub(super) fn pfd_block(doc: &mut Doc, d: &Derivation, title: &str) {
-    let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
+    let _ = writeln!(doc.o, "\\TTitre{{${title}$}}");
     if linearised_from_above(doc, d) {
         return;
     }
@@ -119,7 +119,7 @@ fn theorem_at<'d>(
     // and longer than half a line: cited, only the actions written (a short one, M ẍ, is
     // clearer written again).
     let long = match &theorem.dynamic.1 {
-        Value::Scalar(e) => super::width(&super::expr(e)) > super::LINE / 2,
+        Value::Scalar(e) => super::width(&super::expr(e)) > doc.line / 2,
         _ => true,
     };
     if let Some(place) = doc
@@ -237,7 +237,7 @@ fn massless_theorem(
 ) {
     let m = doc.m;
     let dynamic = format!(
-        "\\left\\{{\\mathcal{{D}}({}/{})\\right\\}} = \\left\\{{0\\right\\}}",
+        "\\TTorseur{{\\mathcal{{D}}(\\TMvt{{{}}}{{{}}})}}{{}} = \\left\\{{0\\right\\}}",
         super::escape_ident(isolate),
         super::escape_ident(m.frame_name(m.frames.ground()))
     );

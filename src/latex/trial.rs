@@ -14,7 +14,7 @@ fn step(d: &Derivation, f: impl Fn(&StepKind) -> bool) -> Option<&Step> {
 /// The block of a trial's unknown: « On cherche le régime forcé sous la forme x(t) = … :
 /// ẍ = …. En reportant dans l'équation du mouvement : … pour tout t, d'où » and the result.
 pub(super) fn trial_block(doc: &mut Doc, d: &Derivation, title: &str) {
-    let _ = writeln!(doc.o, "\\subsubsection*{{${title}$}}");
+    let _ = writeln!(doc.o, "\\TTitre{{${title}$}}");
     let hyp = doc.under.map(|h| h.name.clone());
     let motion = step(d, |k| matches!(k, StepKind::TrialMotion { order: 0, .. }));
     let second = step(d, |k| matches!(k, StepKind::TrialMotion { order: 2, .. }));
@@ -66,7 +66,6 @@ fn balance_display(doc: &mut Doc, s: &Step) {
     let right = -&rest;
     let lhs = super::expr(&left);
     let rv = Value::Scalar(right);
-    let body =
-        super::values::value_within(doc.m, &doc.names, doc.style, &lhs, &rv, None, super::LINE);
+    let body = super::values::value_within(doc.m, &doc.names, doc.style, &lhs, &rv, None, doc.line);
     doc.record_equality(DisplayRole::Step, &s.label, body, &Value::Scalar(left), rv);
 }

@@ -19,7 +19,13 @@ pub fn vector_sum(
     max: usize,
 ) -> String {
     let _ = m;
-    vector_sum_with(&VectorNames::default(), lhs, basis_frame, c, max)
+    plain(&vector_sum_with(
+        &VectorNames::default(),
+        lhs,
+        basis_frame,
+        c,
+        max,
+    ))
 }
 
 /// [`vector_sum`], the basis vectors by the statement's names.
@@ -42,7 +48,7 @@ fn vector_sum_with(
         first = false;
     }
     if lines.is_empty() {
-        return format!("{lhs} &= \\vec{{0}}");
+        return format!("{lhs} &= \\TVec{{0}}");
     }
     let total: usize = lines.iter().map(|l| width(l)).sum();
     if total <= max && lines.iter().all(|l| !l.contains("\\Big")) {
@@ -196,7 +202,15 @@ pub fn value_named(
     v: &Value,
     torsor_names: Option<(&str, &str)>,
 ) -> String {
-    value_within(m, &VectorNames::of(m), style, lhs, v, torsor_names, LINE)
+    plain(&value_within(
+        m,
+        &VectorNames::of(m),
+        style,
+        lhs,
+        v,
+        torsor_names,
+        LINE,
+    ))
 }
 
 /// The width left for the right side of `lhs` on a line of `line` characters: a wide left
@@ -294,7 +308,7 @@ fn torsor_value(
             .map(|k| format!("{} & {}", expr(&resultant[k]), expr(&moment[k])))
             .collect();
         format!(
-            "{lhs} &= \\left\\{{ \\begin{{array}}{{c|c}} {} \\end{{array}} \\right\\}}_{{{pn},\\,{}}}",
+            "{lhs} &= \\TElements{{{}}}{{{pn}}}{{{}}}",
             rows.join(" \\\\ "),
             basis(m.frame_name(b))
         )
@@ -302,7 +316,7 @@ fn torsor_value(
         let bn = m.frame_name(b);
         let (rn, mn) = match torsor_names {
             Some((r, mo)) => (r.to_string(), mo.to_string()),
-            None => ("\\vec{R}".to_string(), format!("\\vec{{M}}({pn})")),
+            None => ("\\TVec{R}".to_string(), format!("\\TVec{{M}}({pn})")),
         };
         format!(
             "{}\\\\\n{}",
@@ -342,7 +356,7 @@ pub(super) fn vector_over_bases(
         })
         .collect();
     if parts.is_empty() {
-        "\\vec{0}".to_string()
+        "\\TVec{0}".to_string()
     } else {
         parts.join(" + ").replace("+ -", "- ")
     }

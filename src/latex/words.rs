@@ -3,7 +3,7 @@
 //! cites values already shown.
 
 use super::page::Doc;
-use super::{action_side, frame, name, point, quantity};
+use super::{action_side, frame, name, point, quantity_tex};
 use crate::derivation::{StepKind, Value};
 use crate::mechanism::Mechanism;
 use crate::quantity::QuantityKind;
@@ -42,18 +42,14 @@ pub(super) fn mass_of(m: &Mechanism, s: &str) -> String {
 pub(super) fn step_lhs(names: &super::VectorNames, k: &StepKind) -> String {
     match k {
         StepKind::Quantity(q) => names.quantity(q),
-        StepKind::Derivative(q, r) => format!(
-            "\\left[\\frac{{\\mathrm{{d}}}}{{\\mathrm{{d}}t}}{}\\right]_{{{}}}",
-            names.quantity(q),
-            frame(r)
-        ),
+        StepKind::Derivative(q, r) => format!("\\TDeriv{{{}}}{{{}}}", frame(r), names.quantity(q)),
         StepKind::Complementary {
             point: a,
             centre: g,
             reference: r,
             ..
         } => format!(
-            "\\overrightarrow{{V({}/{})}} \\wedge m\\,\\overrightarrow{{V({}/{})}}",
+            "\\TVecLong{{V({}/{})}} \\wedge m\\,\\TVecLong{{V({}/{})}}",
             point(a),
             frame(r),
             point(g),
@@ -61,7 +57,7 @@ pub(super) fn step_lhs(names: &super::VectorNames, k: &StepKind) -> String {
         ),
         StepKind::Massless(q) => names.quantity(q),
         StepKind::Action { from, on, point: p } => format!(
-            "\\left\\{{\\mathcal{{T}}({} \\rightarrow {})\\right\\}}_{{{}}}",
+            "\\TTorseur{{\\mathcal{{T}}({} \\rightarrow {})}}{{{}}}",
             action_side(from),
             action_side(on),
             point(p)
@@ -81,14 +77,14 @@ pub(super) fn step_lhs(names: &super::VectorNames, k: &StepKind) -> String {
         StepKind::Balance { .. } => "0".to_string(),
         StepKind::Powers { isolate, reference } => format!(
             "{} + {}",
-            quantity(&QuantityKind::Power {
+            quantity_tex(&QuantityKind::Power {
                 action: crate::quantity::ActionRef {
                     from: "ext".into(),
                     on: isolate.clone(),
                 },
                 reference: reference.clone(),
             }),
-            quantity(&QuantityKind::InternalPower(isolate.clone()))
+            quantity_tex(&QuantityKind::InternalPower(isolate.clone()))
         ),
         StepKind::External {
             isolate,
@@ -99,12 +95,12 @@ pub(super) fn step_lhs(names: &super::VectorNames, k: &StepKind) -> String {
             let arrow = format!("{} \\rightarrow {s}", super::exterior(&s));
             match p {
                 Some(p) => format!(
-                    "\\overrightarrow{{M({},{arrow})}} \\cdot {}",
+                    "\\TVecLong{{M({},{arrow})}} \\cdot {}",
                     point(p),
                     names.basis_vector(*a, f)
                 ),
                 None => format!(
-                    "\\overrightarrow{{R({arrow})}} \\cdot {}",
+                    "\\TVecLong{{R({arrow})}} \\cdot {}",
                     names.basis_vector(*a, f)
                 ),
             }

@@ -9,6 +9,7 @@ mod corpus;
 mod eval;
 mod hostile;
 mod messages;
+mod paste;
 mod readme;
 mod verify;
 
@@ -228,10 +229,10 @@ fn vectors_can_be_written_as_columns_with_their_basis() {
     assert!(o.status.success(), "{}", stderr(&o));
     let t = std::fs::read_to_string(&tex).unwrap();
     assert!(t.contains(
-        "\\overrightarrow{\\Omega(2/0)} &= \\begin{pmatrix} \\dot{\\theta}_{2} \\\\ \\dot{\\theta}_{1}\\,\\sin\\theta_{2} \\\\ \\dot{\\theta}_{1}\\,\\cos\\theta_{2} \\end{pmatrix}_{\\mathcal{B}_{2}}"
+        "\\TVecLong{\\Omega(\\TMvt{2}{0})} &= \\begin{pmatrix} \\dot{\\theta}_{2} \\\\ \\dot{\\theta}_{1}\\,\\sin\\theta_{2} \\\\ \\dot{\\theta}_{1}\\,\\cos\\theta_{2} \\end{pmatrix}_{\\mathcal{B}_{2}}"
     ));
     // Long vectors stay sums over the basis vectors, so nothing overflows the page.
-    assert!(t.contains("\\right]\\,\\dot{\\theta}_{1}^{2}\\,\\vec{x}_{1} \\\\"));
+    assert!(t.contains("\\right]\\,\\dot{\\theta}_{1}^{2}\\,\\TVec{x}_{1} \\\\"));
     assert!(!stderr(&o).contains("Overfull"), "{}", stderr(&o));
     let o = run(&[
         "answer-key",
@@ -442,7 +443,7 @@ fn answer_key_manifest_lists_every_display_as_printed() {
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&man).unwrap()).unwrap();
     let ds = v["displays"].as_array().unwrap();
-    let boxed = "\\begin{empheq}[box=\\fbox]{align*}";
+    let boxed = "\\TResultat{";
     assert_eq!(
         ds.len(),
         text.matches("\\begin{align*}").count() + text.matches(boxed).count()
@@ -451,7 +452,7 @@ fn answer_key_manifest_lists_every_display_as_printed() {
         let latex = disp["latex"].as_str().unwrap();
         assert!(
             text.contains(&format!("\\begin{{align*}}\n{latex}\n\\end{{align*}}"))
-                || text.contains(&format!("{boxed}\n{latex}\n\\end{{empheq}}"))
+                || text.contains(&format!("{boxed}\n{latex}\n}}"))
         );
         assert!(disp["what"].is_string() && disp["role"].is_string());
         assert!(disp["value"]["kind"].is_string());

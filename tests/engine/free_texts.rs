@@ -329,7 +329,7 @@ fn a_title_prints_its_formulas() {
         "{}",
         &tex[..2000.min(tex.len())]
     );
-    assert!(tex.contains("\\section*{Question 1 : $\\Omega$ et $S_2$}"));
+    assert!(tex.contains("\\TQuestion{Question 1 : $\\Omega$ et $S_2$}"));
     assert!(!tex.contains("\\$S\\_2\\$"));
     assert_eq!(check_document_texts(&tex), Ok(()));
 }

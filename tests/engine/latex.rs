@@ -42,8 +42,9 @@ fn the_answer_key_depends_on_the_problem_alone() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let named =
         torseur::spec::load(root.join("tests/specs/pendule_support_oscillant.json")).unwrap();
-    let before =
-        torseur::latex::answer_key(&named, &torseur::simulate::question_runs(&named)).unwrap();
+    let before = super::printed::course(
+        &torseur::latex::answer_key(&named, &torseur::simulate::question_runs(&named)).unwrap(),
+    );
     assert!(before.contains("\\vec{u}"), "the pendulum's key names x2 u");
     let path = "derivations/regulateur_centrifuge.json";
     let text = std::fs::read_to_string(root.join(path)).unwrap();
@@ -60,7 +61,9 @@ fn the_answer_key_depends_on_the_problem_alone() {
 #[test]
 fn the_key_shows_the_course_notation() {
     let m = regulator();
-    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
+    let tex = super::printed::course(
+        &torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap(),
+    );
     for needle in [
         "\\overrightarrow{\\delta(O_{2},2/0)}",
         "\\left\\{\\mathcal{D}(2/0)\\right\\}_{O_{2}}",
@@ -78,7 +81,7 @@ fn the_key_shows_the_course_notation() {
         "Composition des vitesses de rotation",
         "Bilan des actions mécaniques extérieures à $E$",
         "(question 3)",
-        "\\begin{empheq}[box=\\fbox]{align*}",
+        "\\TResultat{\n",
         "Hypothèses du modèle.} Le référentiel $\\mathcal{R}_{0}$ est galiléen",
         "On se place sous l'hypothèse H2.",
     ] {
@@ -238,7 +241,9 @@ fn a_citation_names_the_latest_value_of_each_solid_only() {
         "/derivations/toupie.json"
     ))
     .unwrap();
-    let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
+    let tex = super::printed::course(
+        &torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap(),
+    );
     let citations: Vec<&str> = tex
         .lines()
         .filter(|l| l.starts_with("On reprend "))
@@ -279,7 +284,9 @@ fn every_stated_composition_of_rotations_holds() {
     let mut checked = 0;
     for p in specs_in(&["derivations"]) {
         let m = torseur::spec::load(&p).unwrap();
-        let tex = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
+        let tex = super::printed::course(
+            &torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap(),
+        );
         for line in tex
             .lines()
             .filter(|l| l.starts_with("Composition des vitesses de rotation, $"))

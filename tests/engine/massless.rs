@@ -186,7 +186,7 @@ fn the_key_of_a_massless_gimbal_reads_as_the_course() {
         &torseur::simulate::question_runs(&m),
     )
     .unwrap();
-    let tex = &key.tex;
+    let tex = &super::printed::course(&key.tex);
     assert!(
         tex.contains("Le solide $S_{1}$ est de masse négligeable"),
         "{tex}"
@@ -197,7 +197,7 @@ fn the_key_of_a_massless_gimbal_reads_as_the_course() {
     );
     assert!(
         tex.contains(
-            "$S_{2}$ est de masse négligeable : $\\left\\{\\mathcal{D}(2/0)\\right\\} = \\left\\{0\\right\\}$"
+            "$S_{2}$ est de masse négligeable : $\\left\\{\\mathcal{D}(2/0)\\right\\}_{} = \\left\\{0\\right\\}$"
         ),
         "{tex}"
     );

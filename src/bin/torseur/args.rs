@@ -88,6 +88,15 @@ pub struct AnswerKeyArgs {
     /// its LaTeX exactly as printed, and the engine's value (canonical text).
     #[arg(long)]
     pub manifest: Option<PathBuf>,
+    /// Write only the bodies of the questions, to paste into your own document: no
+    /// \documentclass, no \begin{document}; the packages they need in a comment, then the
+    /// notation's macros as \providecommand (your own definitions win); lines broken for a
+    /// 12 pt page with 2.5 cm margins.
+    #[arg(long)]
+    pub fragment: bool,
+    /// With --fragment: the questions to write, numbered from 1 (`2,4`); all by default.
+    #[arg(long, value_delimiter = ',', requires = "fragment")]
+    pub questions: Vec<usize>,
 }
 
 // The arguments of `torseur eval`.

@@ -228,13 +228,15 @@ fn figure_prefix(tex: &Target) -> String {
 /// Output files, each the index of its resolved target in [`Io`] and its bytes.
 type Files = Vec<(usize, Vec<u8>)>;
 
-/// The answer key of `m`, its figures named after `tex` when it is a file (they are written
-/// beside it, where `\includegraphics` finds them), else not written (said on stderr).
+/// The answer key of `m` (or, with `fragment`, the bodies of those questions: all when it is
+/// empty), its figures named after `tex` when it is a file (they are written beside it, where
+/// `\includegraphics` finds them), else not written (said on stderr).
 fn key_with_figures(
     m: &Mechanism,
     style: torseur::latex::VectorStyle,
     io: &mut Io,
     tex: usize,
+    fragment: Option<&[usize]>,
 ) -> Result<(torseur::latex::AnswerKey, Files), Failure> {
     let dir = io
         .target(tex)
@@ -247,7 +249,11 @@ fn key_with_figures(
     };
     // The simulations the questions show are run here: the key only draws their runs.
     let runs = torseur::simulate::question_runs(m);
-    let key = torseur::latex::answer_key_named(m, style, &prefix, &runs).map_err(bad_input)?;
+    let key = match fragment {
+        Some(chosen) => torseur::latex::answer_key_fragment(m, style, &prefix, chosen, &runs),
+        None => torseur::latex::answer_key_named(m, style, &prefix, &runs),
+    }
+    .map_err(bad_input)?;
     let pngs = render_figures(&key)?;
     let mut figures = Vec::new();
     match dir {
@@ -425,7 +431,7 @@ fn prepare_derive(a: DeriveArgs) -> Result<Job, Failure> {
         if let Some(k) = latex_out {
             let mq = m.asking(qs.clone());
             let (key, figures) =
-                key_with_figures(&mq, torseur::latex::VectorStyle::Sum, &mut io, k)?;
+                key_with_figures(&mq, torseur::latex::VectorStyle::Sum, &mut io, k, None)?;
             files.extend(figures);
             files.push((k, key.tex.into_bytes()));
         }
@@ -496,11 +502,18 @@ fn prepare_answer_key(a: AnswerKeyArgs) -> Result<Job, Failure> {
         pdf,
         vectors,
         manifest,
+        fragment,
+        questions,
     } = a;
     let mut io = Io::read(&spec)?;
     let given = output.unwrap_or_else(|| PathBuf::from("-"));
     let tex_out = io.output(format!("-o {}", given.display()), &given)?;
     let pdf_out = if pdf {
+        if fragment {
+            return Err(bad_input(anyhow!(
+                "--pdf compiles a whole document: a --fragment has none (paste it into yours)"
+            )));
+        }
         if io.target(tex_out).file().is_none() {
             return Err(bad_input(anyhow!(
                 "--pdf writes FILE.pdf beside -o FILE.tex: give -o the name of a file"
@@ -521,7 +534,8 @@ fn prepare_answer_key(a: AnswerKeyArgs) -> Result<Job, Failure> {
             Vectors::Sum => torseur::latex::VectorStyle::Sum,
             Vectors::Column => torseur::latex::VectorStyle::Column,
         };
-        let (key, figures) = key_with_figures(&m, style, &mut io, tex_out)?;
+        let chosen = fragment.then_some(questions.as_slice());
+        let (key, figures) = key_with_figures(&m, style, &mut io, tex_out, chosen)?;
         let mut files: Files = Vec::new();
         if let Some(k) = manifest_out {
             let text = serde_json::to_string_pretty(&output::manifest_json(&m, &key))
