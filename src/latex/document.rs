@@ -221,12 +221,16 @@ pub(super) fn write_fragment(
         .collect();
     let graphics = if figures.is_empty() { "" } else { ", graphicx" };
     let head = format!(
-        "% Corrigé de « {} » (torseur), question(s) {} : fragment à coller dans un document.\n\
+        "% Corrigé de « {} » (torseur), {} : fragment à coller dans un document.\n\
          % Paquets nécessaires : amsmath{graphics}.\n\
          % Un groupe : les macros et la souplesse des lignes ne valent que pour le fragment.\n\
          \\begingroup\\setlength{{\\emergencystretch}}{{3em}}\n{MACROS}",
         m.title.replace(['\n', '\r'], " "),
-        asked.join(", ")
+        if asked.is_empty() {
+            "aucune question (la spec n'en pose pas)".to_string()
+        } else {
+            format!("question(s) {}", asked.join(", "))
+        }
     );
     Ok(AnswerKey {
         tex: head + doc.o.as_str() + "\\par\\endgroup\n",

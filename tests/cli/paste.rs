@@ -94,3 +94,40 @@ fn a_fragment_asks_for_questions_the_spec_has() {
     let o = run(&["answer-key", spec().to_str().unwrap(), "--questions", "2"]);
     assert_eq!(o.status.code(), Some(2), "--questions without --fragment");
 }
+
+/// A fragment's head names the questions it holds, and says so when the spec poses none.
+#[test]
+fn a_fragment_names_its_questions_or_says_there_are_none() {
+    let (d, p) = edited_regulator(|j| {
+        j.as_object_mut().unwrap().remove("questions");
+    });
+    let out = d.path().join("body.tex");
+    let o = run(&[
+        "answer-key",
+        p.to_str().unwrap(),
+        "--fragment",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let head = std::fs::read_to_string(&out).unwrap();
+    let first = head.lines().next().unwrap();
+    assert!(first.contains("aucune question"), "{first}");
+    let out = d.path().join("two.tex");
+    let spec = spec();
+    let o = run(&[
+        "answer-key",
+        spec.to_str().unwrap(),
+        "--fragment",
+        "--questions",
+        "2,4",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let head = std::fs::read_to_string(&out).unwrap();
+    assert!(
+        head.lines().next().unwrap().contains("question(s) 2, 4"),
+        "{head:.200}"
+    );
+}
