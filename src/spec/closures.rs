@@ -10,7 +10,8 @@
 
 use super::SpecError;
 use super::refusal::{at, expr_err};
-use super::validate::{Solved, build_solving};
+use super::solved::Solved;
+use super::validate::build_solving;
 use crate::expr::{CoordId, Expr, Registry, VarRole};
 use crate::frame::{Axis, FrameId};
 use crate::mechanism::{HelicalLaw, Mechanism, RollingLaw};

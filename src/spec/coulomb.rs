@@ -3,8 +3,8 @@
 //! sliding velocity V(P ∈ second/first)·t, which must slide along t and along t only.
 
 use super::SpecError;
-use super::dynamics::{constant, frame_of_side, source};
 use super::refusal::at;
+use super::sides::{constant, frame_of_side, source};
 use crate::expr::{Expr, VarRole};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::velocity;

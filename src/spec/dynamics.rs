@@ -4,13 +4,14 @@
 
 use super::SpecError;
 use super::refusal::{at, expr_err};
+use super::sides::{constant, frame_of_side, source};
 use crate::expr::{Expr, Registry};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::{omega, velocity};
 use crate::mechanism::{BodyId, DryFriction, Mechanism};
-use crate::pfd::{Action, Dynamics, Small, Source, SpringPart, Theorem};
+use crate::pfd::{Action, Dynamics, Small, SpringPart, Theorem};
 use crate::point::PointId;
-use crate::resolve::{LinkNode, Resolved, Side, Unknowns};
+use crate::resolve::{LinkNode, Resolved, Unknowns};
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, LinkKind, LinkSpec, SpecFile};
 use std::rc::Rc;
@@ -28,29 +29,6 @@ fn vector(m: &Mechanism, path: &str, text: &str) -> Result<(Vector, FrameId), Sp
         v.add_part(f, c);
     }
     Ok((v, basis.unwrap_or(m.frames.ground())))
-}
-
-pub(super) fn constant(reg: &Rc<Registry>, path: &str, text: &str) -> Result<Expr, SpecError> {
-    let e = reg.parse(text).map_err(|e| expr_err(path, e))?;
-    if !e.is_time_independent() {
-        return Err(at(path, "a constant is expected (parameters only)"));
-    }
-    Ok(e)
-}
-
-pub(super) fn frame_of_side(m: &Mechanism, s: &Source) -> FrameId {
-    match s {
-        Source::Body(b) => m.body(*b).frame,
-        Source::Outside => m.frames.ground(),
-    }
-}
-
-/// The side of a link or an action, as resolved.
-pub(super) fn source(s: Side) -> Source {
-    match s {
-        Side::Ground => Source::Outside,
-        Side::Solid(b) => Source::Body(BodyId(b)),
-    }
 }
 
 /// Builds the actions and theorems of the spec on the validated mechanism.

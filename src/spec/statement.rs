@@ -4,7 +4,7 @@
 
 use super::SpecError;
 use super::refusal::{at, expr_err, name_ok};
-use super::validate::Solved;
+use super::solved::Solved;
 use crate::expr::Registry;
 use crate::frame::Frames;
 use crate::mechanism::{

@@ -4,39 +4,17 @@
 use super::SpecError;
 use super::refusal::{at, bounded, expr_err, refused};
 use super::solids::bodies;
+use super::solved::Solved;
 use super::texts::{expression_texts, free_text_limit, free_texts};
 use crate::expr::{ExprError, Registry};
 use crate::frame::{Angle, Axis, FrameId, Frames, Rotation};
-use crate::mechanism::{Body, BodyId, HelicalLaw, Hypothesis, Mechanism};
+use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
 use crate::point::{PointId, Points};
 use crate::quantity::Quantity;
 use crate::resolve::{Resolved, Unknowns};
 use crate::vector::Vector;
 use crate::wire::{CoordinateKind, ParameterKind, SpecFile};
 use std::rc::Rc;
-
-/// What the loop closures give the registry: the dependent coordinates' rates and what they
-/// divide by, and how the answer key writes the loop law (built by `spec/closures.rs`).
-pub(super) struct Solved {
-    /// (index in `coordinates`, the rate as a text of the free rates).
-    pub rates: Vec<(usize, String)>,
-    /// The angles whose cosine the rates divide by.
-    pub secants: Vec<String>,
-    /// The angles whose sine the rates divide by.
-    pub cosecants: Vec<String>,
-    /// The parameters the rates divide by.
-    pub inverses: Vec<String>,
-    /// The coordinates a loop closure determines (holonomic driven rates).
-    pub dependent: Vec<String>,
-    /// Each relation's time derivative, the dependent rates as symbols (over the geometry).
-    pub derivatives: Vec<crate::expr::Expr>,
-    /// Each rolling condition as the answer key writes it.
-    pub rolling: Vec<crate::mechanism::RollingLaw>,
-    /// Each helical link that determines a coordinate, as the answer key writes its relation.
-    pub helical: Vec<HelicalLaw>,
-    /// The determinant the rates divide by, in the spec syntax.
-    pub determinant: String,
-}
 
 /// Solves a spec's loop closures and rolling conditions from the resolved spec (the
 /// pipeline passes `spec/closures.rs`'s solver, which builds the loop's geometry through

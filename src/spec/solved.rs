@@ -1,0 +1,27 @@
+//! What solving the loop closures hands the build (`spec/closures.rs` produces it,
+//! `spec/validate.rs` and `spec/statement.rs` read it).
+
+use crate::mechanism::HelicalLaw;
+
+/// What the loop closures give the registry: the dependent coordinates' rates and what they
+/// divide by, and how the answer key writes the loop law (built by `spec/closures.rs`).
+pub(super) struct Solved {
+    /// (index in `coordinates`, the rate as a text of the free rates).
+    pub rates: Vec<(usize, String)>,
+    /// The angles whose cosine the rates divide by.
+    pub secants: Vec<String>,
+    /// The angles whose sine the rates divide by.
+    pub cosecants: Vec<String>,
+    /// The parameters the rates divide by.
+    pub inverses: Vec<String>,
+    /// The coordinates a loop closure determines (holonomic driven rates).
+    pub dependent: Vec<String>,
+    /// Each relation's time derivative, the dependent rates as symbols (over the geometry).
+    pub derivatives: Vec<crate::expr::Expr>,
+    /// Each rolling condition as the answer key writes it.
+    pub rolling: Vec<crate::mechanism::RollingLaw>,
+    /// Each helical link that determines a coordinate, as the answer key writes its relation.
+    pub helical: Vec<HelicalLaw>,
+    /// The determinant the rates divide by, in the spec syntax.
+    pub determinant: String,
+}
