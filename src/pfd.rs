@@ -28,6 +28,8 @@ mod energy;
 mod hyperstatic;
 mod linear;
 mod motion;
+pub mod named;
+pub mod structured;
 mod transmitted;
 
 pub use crate::mechanism::{Action, Dynamics, Small, Source, SpringPart, Theorem};

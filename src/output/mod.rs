@@ -2,6 +2,7 @@
 
 mod display;
 mod eval;
+mod structured;
 
 pub use crate::atomic::{
     OutputError, Sink, Target, distinct, forget_pending, register_pending, remove_pending, target,
@@ -12,6 +13,7 @@ pub use eval::{
     Values, ValuesError, eval_json, eval_value, numeric_point, numeric_point_for, solve_unknowns,
     try_eval_value,
 };
+pub use structured::{structured_json, structured_text};
 
 use crate::derivation::{Derivation, Value};
 use crate::expr::{Expr, Fraction};

@@ -41,7 +41,7 @@ pub(super) struct Plan {
     /// Registry variable values that do not change (parameters); the rest is filled per call.
     pub base: Vec<f64>,
     /// M (row-major, n×n) then h: M q̈ + h = 0 over the free coordinates.
-    pub dynamics: Compiled,
+    pub dynamics: Dynamics,
     /// The recorded expressions (unknowns, integrands), evaluated once q̈ is known.
     pub recorded: Compiled,
     /// What each recorded expression is multiplied by: 1 / its denominator at the parameters
@@ -574,13 +574,63 @@ fn given_inputs(
     Ok(())
 }
 
+/// M q̈ + h = 0 over the free coordinates, compiled: over the structured form's names when it
+/// holds exactly these equations (a chain's equations are then never expanded into the
+/// evaluator), else from the expanded equations.
+pub(super) enum Dynamics {
+    /// M (row-major) then h − Q, one compiled list.
+    Expanded(Compiled),
+    /// M and Q − h over the names ([`pfd::structured`]).
+    Named(pfd::structured::CompiledMotion),
+}
+
+impl Dynamics {
+    /// M (row-major, n×n) then h − Q at a registry point, into `out`.
+    fn evaluate(&mut self, point: &[f64], out: &mut [f64]) {
+        match self {
+            Dynamics::Expanded(c) => c.evaluate(point, out),
+            Dynamics::Named(c) => {
+                let (mass, rhs) = c.evaluate(point);
+                let n = rhs.len();
+                for i in 0..n {
+                    for j in 0..n {
+                        out[i * n + j] = mass[(i, j)];
+                    }
+                    out[n * n + i] = -rhs[i];
+                }
+            }
+        }
+    }
+}
+
+/// The equations of motion of `free` over the structured form's names, when that form holds
+/// exactly these equations (each from a resultant or moment theorem free of the links'
+/// unknowns; its rows then are the solution's, as `tests/engine/structured.rs` proves).
+fn named_dynamics(m: &Mechanism, free: &[CoordId]) -> Option<Dynamics> {
+    let qs: Vec<crate::quantity::Quantity> = free
+        .iter()
+        .map(|&q| crate::quantity::Quantity {
+            kind: crate::quantity::QuantityKind::Eom(m.reg.coord_info(q).name.clone()),
+            basis: None,
+            projection: None,
+            linear: false,
+        })
+        .collect();
+    let s = pfd::structured::Structured::of(m, &qs).ok()?;
+    let motion = s.motion.as_ref().filter(|e| e.coordinates == free)?;
+    motion.compile(&s.program).ok().map(Dynamics::Named)
+}
+
 /// M (row-major) then h of M q̈ + h = 0 over the free coordinates, compiled; every eom is
 /// linear in the q̈.
 fn compile_dynamics(
     m: &Mechanism,
     sol: &pfd::Solution,
     free: &[CoordId],
-) -> Result<Compiled, String> {
+) -> Result<Dynamics, String> {
+    if let Some(d) = named_dynamics(m, free) {
+        return Ok(d);
+    }
     let eq = pfd::EquationsOfMotion::over(m, sol, free)
         .map_err(|_| "an equation of motion is not linear in the accelerations".to_string())?;
     // M, then h − Q: M q̈ + (h − Q) = 0 over the free coordinates.
@@ -593,6 +643,7 @@ fn compile_dynamics(
     let refs: Vec<&Expr> = exprs.iter().collect();
     m.reg
         .compile(&refs)
+        .map(Dynamics::Expanded)
         .map_err(|e| format!("compiling the equations of motion: {e}"))
 }
 

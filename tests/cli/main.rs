@@ -672,6 +672,71 @@ fn derive_prints_the_form_asked() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// `derive --form structured`: the names first, each quantity of the spec once, the equations
+/// of motion over the names; the text and the JSON agree line for line; `--latex` with it is
+/// refused (exit 2) and writes nothing.
+#[test]
+fn derive_writes_the_structured_form() {
+    let d = tmp();
+    let json = d.path().join("s.json");
+    let tex = d.path().join("s.tex");
+    let spec = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("derivations/chain/planar_3.json")
+        .to_string_lossy()
+        .into_owned();
+    let o = run(&[
+        "derive",
+        &spec,
+        "--form",
+        "structured",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let j: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let names = j["names"].as_array().unwrap();
+    assert!(names.len() >= 6, "{text}");
+    for (k, n) in names.iter().enumerate() {
+        let line = format!(
+            "N{} = {}  # {}",
+            k + 1,
+            n["value"].as_str().unwrap(),
+            n["meaning"].as_str().unwrap()
+        );
+        assert!(text.lines().any(|l| l == line), "{line} not in\n{text}");
+    }
+    for q in j["quantities"].as_array().unwrap() {
+        assert!(q["named"].as_bool().unwrap(), "{q}");
+        let line = format!(
+            "{} = {}",
+            q["id"].as_str().unwrap(),
+            q["value"].as_str().unwrap()
+        );
+        assert!(text.lines().any(|l| l == line), "{line}");
+    }
+    let eq = &j["equations_of_motion"];
+    assert_eq!(eq["coordinates"].as_array().unwrap().len(), 4);
+    assert_eq!(eq["mass"][3][3].as_str(), Some("m3*l2^2"));
+    assert!(text.contains("\nM(q3,q3) = m3*l2^2\n"), "{text}");
+    let o = run(&[
+        "derive",
+        &spec,
+        "--form",
+        "structured",
+        "--latex",
+        tex.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        error_line(&o).contains("--form structured"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!tex.exists());
+}
+
 /// Issue 12's length: the regulator's corrigé in at most 5 pages with its seven questions,
 /// the two-axis robot's in 4 (inverse and direct dynamics), every other key of the library in
 /// at most 3, counted by pdflatex itself.

@@ -52,6 +52,7 @@ mod sets;
 mod simulate;
 mod spec_errors;
 mod spec_schema;
+mod structured;
 mod threads;
 mod trial;
 mod units;

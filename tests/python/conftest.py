@@ -16,6 +16,8 @@ import pytest
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SPECS = sorted((ROOT / "derivations").glob("*.json"))
 NOTEBOOK = ROOT / "examples" / "regulateur.ipynb"
+# Specs whose structured form is read back by sympy (tests/python/test_structured.py).
+STRUCTURED = ["chain/planar_3", "chain/chain_3", "regulateur_centrifuge", "double_pendule"]
 
 
 def torseur_bin() -> pathlib.Path:
@@ -36,6 +38,16 @@ def pytest_sessionstart(session):
         r = run_cli(["derive", str(spec), "--json", str(target)])
         assert r.returncode == 0, f"torseur derive {spec.name}: {r.stderr}"
         cli[spec.stem] = json.loads(target.read_text())
+    # The structured form (--form structured) of a few specs, beside their canonical JSON.
+    structured = {}
+    for rel in STRUCTURED:
+        spec = ROOT / "derivations" / f"{rel}.json"
+        named, canonical = out / f"{spec.stem}.structured.json", out / f"{spec.stem}.canonical.json"
+        r = run_cli(["derive", str(spec), "--form", "structured", "--json", str(named)])
+        assert r.returncode == 0, f"torseur derive {rel} --form structured: {r.stderr}"
+        r = run_cli(["derive", str(spec), "--json", str(canonical)])
+        assert r.returncode == 0, r.stderr
+        structured[rel] = (json.loads(named.read_text()), json.loads(canonical.read_text()))
     # On stdout (no -o): the figures keep their bare names, as from Python without a PDF.
     r = run_cli(["answer-key", "derivations/regulateur_centrifuge.json"])
     assert r.returncode == 0, r.stderr
@@ -54,6 +66,7 @@ def pytest_sessionstart(session):
     )
     session.config._torseur = {
         "cli": cli,
+        "structured": structured,
         "tex": tex,
         "csv": csv.read_text(),
         "notebook": (r.returncode, r.stderr, executed),

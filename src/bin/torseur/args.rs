@@ -173,6 +173,10 @@ pub enum Form {
     Presentation,
     /// The canonical polynomial, expanded
     Canonical,
+    /// Named subexpressions (each nested set's dynamic resultant and moment, once), each
+    /// quantity over them, and the equations of motion M(q) q'' + h = Q over them: the form
+    /// that stays small for a long chain
+    Structured,
 }
 
 /// How vectors are written in the answer key.

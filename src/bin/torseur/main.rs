@@ -422,6 +422,11 @@ fn prepare_derive(a: DeriveArgs) -> Result<Job, Failure> {
     Ok(Box::new(move |out| {
         let m = load(&io)?;
         let qs = quantities(&m, &qs)?;
+        if let Form::Structured = form {
+            return derive_structured(
+                &m, &qs, &io, text_out, latex_out, json_out, out, stats, start,
+            );
+        }
         let ds = if json_out.is_some() {
             derive_all(&m, &qs)?
         } else {
@@ -441,8 +446,8 @@ fn prepare_derive(a: DeriveArgs) -> Result<Job, Failure> {
             files.push((k, text.into_bytes()));
         }
         let form = match form {
-            Form::Presentation => output::TextForm::Presentation,
             Form::Canonical => output::TextForm::Canonical,
+            _ => output::TextForm::Presentation,
         };
         files.push((text_out, output::derive_text_in(&m, &ds, form).into_bytes()));
         let items: Vec<(&Target, &[u8])> = files
@@ -471,6 +476,65 @@ fn prepare_derive(a: DeriveArgs) -> Result<Job, Failure> {
         }
         Ok(())
     }))
+}
+
+/// `derive --form structured`: the named form of the quantities that have one (each nested
+/// set's dynamic torsor once, the equations of motion over the names), the engine's values of
+/// the others; `--latex` is refused (the answer key writes each result in full).
+#[allow(clippy::too_many_arguments)]
+fn derive_structured(
+    m: &Mechanism,
+    qs: &[Quantity],
+    io: &Io,
+    text_out: usize,
+    latex_out: Option<usize>,
+    json_out: Option<usize>,
+    out: &mut File,
+    stats: bool,
+    start: std::time::Instant,
+) -> Result<(), Failure> {
+    if latex_out.is_some() {
+        return Err(bad_input(anyhow!(
+            "--latex writes each result in full: it does not go with --form structured"
+        )));
+    }
+    let s = torseur::pfd::structured::Structured::of(m, qs).map_err(|e| bad_input(anyhow!(e)))?;
+    let rest: Vec<Quantity> = qs
+        .iter()
+        .filter(|q| s.value(q).is_none())
+        .cloned()
+        .collect();
+    let others = values_only(m, &rest)?;
+    let mut files: Files = Vec::new();
+    if let Some(k) = json_out {
+        let j = output::structured_json(m, &s, qs, &others);
+        let text = serde_json::to_string_pretty(&j).map_err(bad_input)? + "\n";
+        files.push((k, text.into_bytes()));
+    }
+    files.push((
+        text_out,
+        output::structured_text(m, &s, qs, &others).into_bytes(),
+    ));
+    let items: Vec<(&Target, &[u8])> = files
+        .iter()
+        .map(|(k, b)| (io.target(*k), b.as_slice()))
+        .collect();
+    write(&items, out)?;
+    if stats {
+        let named: usize = s
+            .program
+            .definitions()
+            .iter()
+            .map(|d| d.value.nterms())
+            .sum();
+        let values: usize = s.values.iter().map(|(_, v)| v.nterms()).sum();
+        eprintln!(
+            "structured: {} names of {named} terms, {values} terms in the values; {:.3} s",
+            s.program.definitions().len(),
+            start.elapsed().as_secs_f64()
+        );
+    }
+    Ok(())
 }
 
 /// `torseur eval`: numbers at the values of a JSON file.
