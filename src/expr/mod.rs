@@ -10,6 +10,7 @@
 
 pub mod budget;
 mod builder;
+mod carry;
 mod compile;
 mod eval;
 mod factor;
