@@ -158,7 +158,7 @@ pub enum ExprError {
         name: String,
         /// The text given.
         input: String,
-        /// `did you mean `theta1`?` when a declared name is close ([`crate::hint`]), else
+        /// `did you mean `theta1`?` when a declared name is close (the crate's `hint`), else
         /// empty.
         hint: String,
     },

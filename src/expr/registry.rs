@@ -154,7 +154,7 @@ impl Registry {
             vars.inverses(&inverses, &parameters, n_params, &param_var, (pi, pi_var))?;
         let reciprocals = vars.reciprocals(&secants, &cosecants, &mut infos, n_declared)?;
         for (n, _) in &aliases {
-            names.check(n)?;
+            names.claim(n)?;
         }
         // Constant angle parameters are found by `angle`, not by `coord`.
         let coord_by_name = infos
@@ -325,7 +325,7 @@ impl Registry {
         &self.coords[..self.n_coords]
     }
     /// ` (did you mean `theta1`?)` after a refusal of the coordinate `name`, or the few
-    /// declared coordinates ([`crate::hint::suggestion`]).
+    /// declared coordinates (the crate's `hint::suggestion`).
     pub fn coordinate_hint(&self, name: &str) -> String {
         let declared: Vec<&str> = self.coordinates().iter().map(|c| c.name.as_str()).collect();
         crate::hint::suggestion(name, &declared)

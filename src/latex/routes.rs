@@ -103,7 +103,7 @@ impl<'d> ProjectedMoment<'d> {
         else {
             return None;
         };
-        let r = crate::derivation::resolve(m, q).ok()?;
+        let r = crate::derivation::bind(m, q).ok()?;
         let (Some((uf, ua)), [s], Some(pa)) = (r.projection, r.solids.as_slice(), r.point) else {
             return None;
         };
@@ -594,7 +594,7 @@ impl<'d> ProjectedSet<'d> {
             QuantityKind::DynamicMoment { point, motion } => (point, motion, true),
             _ => return None,
         };
-        let r = crate::derivation::resolve(m, q).ok()?;
+        let r = crate::derivation::bind(m, q).ok()?;
         let (Some((uf, ua)), Some(pa)) = (r.projection, r.point) else {
             return None;
         };

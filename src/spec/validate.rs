@@ -144,7 +144,7 @@ fn build_with(
     };
     m.dynamics = super::dynamics::build(&m, spec, (resolved, unknowns))?;
     requests(&m)?;
-    super::scenarios::check(&m)?;
+    super::scenarios::validate(&m)?;
     Ok(m)
 }
 
@@ -169,15 +169,14 @@ fn texts(spec: &SpecFile) -> Result<(), SpecError> {
 /// known objects of the built mechanism.
 fn requests(m: &Mechanism) -> Result<(), SpecError> {
     for (i, q) in m.quantities.iter().enumerate() {
-        crate::derivation::resolve(m, q)
-            .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
+        crate::derivation::bind(m, q).map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
     }
     for (i, qs) in m.statement.questions.iter().enumerate() {
         let quantities = (qs.quantities.iter()).map(|q| (format!("questions[{i}].quantities"), q));
         let equations =
             (qs.equations.iter()).map(|e| (format!("questions[{i}].equations"), &e.quantity));
         for (path, q) in quantities.chain(equations) {
-            crate::derivation::resolve(m, q).map_err(|e| at(&path, e.to_string()))?;
+            crate::derivation::bind(m, q).map_err(|e| at(&path, e.to_string()))?;
         }
     }
     Ok(())

@@ -39,7 +39,7 @@ pub(super) struct Names(HashMap<String, ()>);
 
 impl Names {
     /// Refuses `n` if it is not an identifier, is reserved, or was declared before.
-    pub(super) fn check(&mut self, n: &str) -> Result<(), ExprError> {
+    pub(super) fn claim(&mut self, n: &str) -> Result<(), ExprError> {
         check_identifier(n).map_err(ExprError::Declaration)?;
         if RESERVED.contains(&n) {
             return Err(ExprError::Declaration(reserved_word(n)));
@@ -105,7 +105,7 @@ impl Variables {
                     Atom::var(symbolica::symbol!(w.as_str())) * Atom::var(symbolica::symbol!("t"))
                 }
                 None => {
-                    names.check(name)?;
+                    names.claim(name)?;
                     Atom::var(symbolica::symbol!(name.as_str()))
                 }
             };
@@ -193,7 +193,7 @@ impl Variables {
     ) -> Result<HashMap<String, usize>, ExprError> {
         let mut param_var = HashMap::new();
         for (i, p) in declared.iter().enumerate() {
-            names.check(p)?;
+            names.claim(p)?;
             let v = self.push(
                 PolyVariable::Symbol(symbolica::symbol!(p.as_str())),
                 VarRole::Parameter(ParamId(i)),
