@@ -2,7 +2,7 @@
 //! valid samples (bodies realised as random point clouds, random angles, rates, accelerations),
 //! and every result homogeneous, of its quantity's dimension ([`crate::units`]).
 
-use crate::derivation::{ResolveError, Value, derive_values, resolve};
+use crate::derivation::{ResolveError, Value, bind, derive_values};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::numeric::{NumericError, NumericModel, Sample};
 use crate::output::{Values, ValuesError, numeric_point};
@@ -204,7 +204,7 @@ fn as_evaluated(m: &Mechanism, q: &Quantity) -> Result<Quantity, ResolveError> {
     if q.projection.is_some() {
         return Ok(q.clone());
     }
-    let r = resolve(m, q)?;
+    let r = bind(m, q)?;
     Ok(q.with_basis(m.frame_name(r.basis)))
 }
 

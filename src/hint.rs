@@ -7,16 +7,6 @@
 //! without case and with the letter O read as the digit 0; a name is suggested when it is at
 //! most one edit away (two for names of five characters or more, none for a one-letter name:
 //! `Q` is no more `G` than `O`), and no other declared name is as close.
-//!
-//! ```
-//! use torseur::hint::suggestion;
-//! let declared = ["theta1", "theta2", "psi"];
-//! assert_eq!(suggestion("thta1", &declared), " (did you mean `theta1`?)");
-//! assert_eq!(suggestion("Psi", &declared), " (did you mean `psi`?)");
-//! // Two names are as close: no guess, and more than a few names: no list.
-//! assert_eq!(suggestion("theta", &declared), " (declared: `theta1`, `theta2`, `psi`)");
-//! assert_eq!(suggestion("m", &["A", "B", "C", "D", "E", "F", "G"]), "");
-//! ```
 
 /// How many declared names a refusal lists when none is close.
 const LISTED: usize = 6;
@@ -72,6 +62,19 @@ pub fn suggestion(typed: &str, declared: &[&str]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_suggestion_names_the_close_name_or_lists_a_few() {
+        let declared = ["theta1", "theta2", "psi"];
+        assert_eq!(suggestion("thta1", &declared), " (did you mean `theta1`?)");
+        assert_eq!(suggestion("Psi", &declared), " (did you mean `psi`?)");
+        // Two names are as close: no guess, and more than a few names: no list.
+        assert_eq!(
+            suggestion("theta", &declared),
+            " (declared: `theta1`, `theta2`, `psi`)"
+        );
+        assert_eq!(suggestion("m", &["A", "B", "C", "D", "E", "F", "G"]), "");
+    }
 
     #[test]
     fn a_close_name_is_suggested_and_a_far_one_is_not() {

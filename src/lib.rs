@@ -24,11 +24,16 @@
 //! # Ok::<(), torseur::Error>(())
 //! ```
 //!
-//! The public surface, in layer order (ARCHITECTURE.md, « Layers », checked by a test):
+//! The public surface, in layer order (ARCHITECTURE.md, « Layers », checked by a test): each
+//! module listed here is API (the command line, the Python module, the tests, the examples
+//! and the doc tests use it); the rest (`point`, the points' arena behind
+//! [`mechanism::Mechanism`]; `hint`, the « did you mean » of refusals) is private, and the
+//! items most callers need are re-exported at the root ([`derive()`], [`Derivation`],
+//! [`Value`], [`Expr`], [`Registry`], [`Mechanism`], [`Quantity`], [`Error`], [`Result`]):
 //! - [`expr`]: the only module that uses symbolica (the canonical polynomial form, parsing,
 //!   printing, the presentation form); [`wire`]: the spec's JSON data types; [`resolve`]:
 //!   its names, trees and every section's references resolved once for both sides;
-//! - mechanics: [`frame`], [`vector`], [`point`], [`inertia`], [`quantity`] (the course's
+//! - mechanics: [`frame`], [`vector`], [`inertia`], [`quantity`] (the course's
 //!   notation), [`mechanism`] (the store, read through its accessors), [`kinematics`],
 //!   [`torsor`];
 //! - [`pfd`] (actions, the Fundamental Principle of Dynamics, Lagrange), [`derivation`]
@@ -41,6 +46,18 @@
 //! (inputs read with a bound) and [`excerpt`] (bounded quotes in messages). Output files
 //! (what an output path may name, written once a run has succeeded) are exposed in
 //! [`output`]: [`output::target`], [`output::write_outputs`], [`output::write_atomic`].
+//!
+//! One word per concept, through the crate:
+//! - **validate**: refuse what a spec may not say, naming where it says it: the exact side's
+//!   build of a [`mechanism::Mechanism`] ([`spec::build`], `spec/validate.rs`, its scenarios
+//!   included) and the float backend's own reading (`numeric/validate.rs`);
+//! - **verify**: compare a formula someone wrote (a student's, a teacher's) with the engine's
+//!   value, exactly ([`verify`], `torseur verify`);
+//! - **check**: compare the exact engine with the independent float backend on sampled
+//!   states ([`check`], `torseur check`);
+//! - **resolve**: the spec's names, trees and references, read once for both sides
+//!   ([`resolve`]); a quantity's names are **bound** to a mechanism's ids
+//!   ([`derivation::bind`]).
 //!
 //! The command line's own dependencies (clap, anyhow, signal-hook, mimalloc) sit behind the
 //! default feature `cli`; a library user leaves them out with
@@ -55,7 +72,7 @@ pub mod derivation;
 pub mod excerpt;
 pub mod expr;
 pub mod frame;
-pub mod hint;
+mod hint;
 pub mod inertia;
 pub mod input;
 pub mod kinematics;
@@ -65,7 +82,7 @@ pub mod mechanism;
 pub mod numeric;
 pub mod output;
 pub mod pfd;
-pub mod point;
+mod point;
 #[cfg(feature = "python")]
 mod python;
 pub mod quantity;

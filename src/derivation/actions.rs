@@ -3,7 +3,7 @@
 //! power P(from→on/R) and the power of the actions inside a set, P_int(E).
 
 use super::steps::action_step;
-use super::{ResolveError, Resolved, Step};
+use super::{Bound, ResolveError, Step};
 use crate::mechanism::Mechanism;
 use crate::quantity::{ActionRef, Quantity};
 use crate::torsor::Torsor;
@@ -15,7 +15,7 @@ pub(super) fn total(
     m: &Mechanism,
     q: &Quantity,
     action: &ActionRef,
-    r: &Resolved,
+    r: &Bound,
     steps: &mut Vec<Step>,
 ) -> Result<Torsor, ResolveError> {
     let a = r.point.unwrap_or(m.points.origin());
@@ -41,7 +41,7 @@ pub(super) fn power(
     m: &Mechanism,
     q: &Quantity,
     action: &ActionRef,
-    r: &Resolved,
+    r: &Bound,
     reference: crate::frame::FrameId,
     steps: &mut Vec<Step>,
 ) -> Result<crate::expr::Expr, ResolveError> {
@@ -57,11 +57,7 @@ pub(super) fn power(
 
 /// P_int(E) = Σ {T(i→j)} ⊗ {V(j/i)} over the actions between two solids of E, each recorded
 /// as a step.
-pub(super) fn internal_power(
-    m: &Mechanism,
-    r: &Resolved,
-    steps: &mut Vec<Step>,
-) -> crate::expr::Expr {
+pub(super) fn internal_power(m: &Mechanism, r: &Bound, steps: &mut Vec<Step>) -> crate::expr::Expr {
     for act in crate::pfd::internal_actions(m, &r.solids) {
         steps.push(action_step(m, act));
     }

@@ -62,7 +62,7 @@ pub enum Unresolved {
         /// The name as written.
         name: String,
         /// ` (did you mean `G2`?)` when a declared name of that kind is close
-        /// ([`crate::hint::suggestion`]), or the few declared ones; else empty.
+        /// (the crate's `hint::suggestion`), or the few declared ones; else empty.
         hint: String,
     },
     /// The PFD cannot be solved as declared.
@@ -140,9 +140,9 @@ impl From<String> for Unresolved {
     }
 }
 
-/// A quantity with its names resolved to ids.
+/// A quantity bound to the mechanism: the ids of what its names name.
 #[derive(Debug, Clone)]
-pub struct Resolved {
+pub struct Bound {
     /// Point involved (if any).
     pub point: Option<PointId>,
     /// Frame of the moving solid or frame (for Ω, V, Γ, {V}).
@@ -157,9 +157,10 @@ pub struct Resolved {
     pub projection: Option<(FrameId, Axis)>,
 }
 
-/// Resolves the names of a quantity in a mechanism.
-pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
-    let mut r = Resolved {
+/// Binds the names of a quantity to the mechanism's ids (its point, solids, frames, basis);
+/// why not, for a name the mechanism does not have.
+pub fn bind(m: &Mechanism, q: &Quantity) -> Result<Bound, ResolveError> {
+    let mut r = Bound {
         point: None,
         moving_frame: None,
         solids: vec![],
@@ -167,29 +168,29 @@ pub fn resolve(m: &Mechanism, q: &Quantity) -> Result<Resolved, ResolveError> {
         basis: m.default_basis,
         projection: None,
     };
-    resolve_kind(m, q, &mut r)?;
+    bind_kind(m, q, &mut r)?;
     // The action must be in the bilan of what it acts on.
     if let Some(a) = q.kind.action() {
         crate::pfd::actions_of(m, &a.from, &r.solids, &a.on)
             .map_err(|e| ResolveError::new(q, e))?;
     }
-    resolve_basis(m, q, &mut r)?;
+    bind_basis(m, q, &mut r)?;
     Ok(r)
 }
 
 /// The objects the quantity's kind names (its point, solids, frames), into `r`; a set's
 /// inertia in the basis of its first solid's operator.
-fn resolve_kind(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), ResolveError> {
+fn bind_kind(m: &Mechanism, q: &Quantity, r: &mut Bound) -> Result<(), ResolveError> {
     let unknown = |what: &'static str, n: &str| ResolveError::unknown(m, q, what, n);
     let frame = |n: &str| m.frame_of(n).ok_or_else(|| unknown("solid or frame", n));
     let point = |n: &str| m.point(n).ok_or_else(|| unknown("point", n));
     let solids = |n: &str| m.solids_of(n).ok_or_else(|| unknown("solid or set", n));
-    let kinetic = |mo: &Motion, r: &mut Resolved| -> Result<(), ResolveError> {
+    let kinetic = |mo: &Motion, r: &mut Bound| -> Result<(), ResolveError> {
         r.solids = solids(&mo.moving)?;
         r.reference = Some(frame(&mo.reference)?);
         Ok(())
     };
-    let kinematic = |mo: &Motion, r: &mut Resolved| -> Result<(), ResolveError> {
+    let kinematic = |mo: &Motion, r: &mut Bound| -> Result<(), ResolveError> {
         r.moving_frame = Some(frame(&mo.moving)?);
         r.reference = Some(frame(&mo.reference)?);
         Ok(())
@@ -244,7 +245,7 @@ fn resolve_kind(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), Res
         }
         // The inner quantity's names, then the frame of the derivative.
         Derivative { of, frame: f } => {
-            let inner = resolve(m, of)?;
+            let inner = bind(m, of)?;
             r.basis = inner.basis;
             r.reference = f
                 .as_deref()
@@ -264,7 +265,7 @@ fn resolve_kind(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), Res
 
 /// The basis the quantity asks for (`in B2`) and its projection vector (`.x2`), into `r`;
 /// without a basis, the projection's is used.
-fn resolve_basis(m: &Mechanism, q: &Quantity, r: &mut Resolved) -> Result<(), ResolveError> {
+fn bind_basis(m: &Mechanism, q: &Quantity, r: &mut Bound) -> Result<(), ResolveError> {
     let unknown = |what: &'static str, n: &str| ResolveError::unknown(m, q, what, n);
     if let Some(b) = &q.basis {
         r.basis = m
@@ -481,7 +482,7 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
             )?,
         );
     }
-    let r = resolve(m, q)?;
+    let r = bind(m, q)?;
     let mut steps = Vec::new();
     let Some(found) = found(m, q, &r, &mut steps)? else {
         return dynamics::derive(m, q, &mut Shared::default(), true);
@@ -510,7 +511,7 @@ fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveEr
 fn found(
     m: &Mechanism,
     q: &Quantity,
-    r: &Resolved,
+    r: &Bound,
     steps: &mut Vec<Step>,
 ) -> Result<Option<Found>, ResolveError> {
     use QuantityKind::*;
@@ -600,7 +601,7 @@ fn found(
 /// and a step of its own), then their sum.
 fn set_inertia(
     m: &Mechanism,
-    r: &Resolved,
+    r: &Bound,
     point: &str,
     steps: &mut Vec<Step>,
 ) -> crate::inertia::Inertia {
@@ -628,7 +629,7 @@ fn set_inertia(
 }
 
 /// Rc or Rd of the solids `r` holds (a step when all are massless, it is then zero).
-fn resultant(m: &Mechanism, q: &Quantity, r: &Resolved, steps: &mut Vec<Step>) -> Vector {
+fn resultant(m: &Mechanism, q: &Quantity, r: &Bound, steps: &mut Vec<Step>) -> Vector {
     let reference = r.reference.unwrap_or(m.frames.ground());
     let v = if matches!(q.kind, QuantityKind::DynamicResultant(_)) {
         torsor::dynamic_resultant(m, &r.solids, reference)
@@ -705,7 +706,7 @@ fn derive_value(
         return linearised(m, q, derive_value(m, &inner, cache)?);
     }
     use QuantityKind::*;
-    let r = resolve(m, q)?;
+    let r = bind(m, q)?;
     let reference = r.reference.unwrap_or(m.frames.ground());
     let a = r.point.unwrap_or(m.points.origin());
     let b = r.basis;

@@ -1,7 +1,6 @@
 //! The declarations a [`Registry`] is built from.
 
-use super::ExprError;
-use super::{CoordinateKind, Registry};
+use super::{CoordinateKind, Expr, ExprError, Registry};
 use std::rc::Rc;
 
 /// The declarations of a [`Registry`], which [`RegistryBuilder::build`] turns into the
@@ -26,7 +25,7 @@ use std::rc::Rc;
 #[derive(Debug, Clone, Default)]
 pub struct RegistryBuilder {
     pub(super) parameters: Vec<String>,
-    pub(super) coords: Vec<(String, CoordinateKind, Option<String>)>,
+    pub(super) coords: Vec<(String, CoordinateKind, Option<ImposedRate>)>,
     pub(super) unknowns: Vec<String>,
     pub(super) raw_angles: Vec<String>,
     pub(super) angle_parameters: Vec<String>,
@@ -55,8 +54,23 @@ impl RegistryBuilder {
     /// A time coordinate whose rate is imposed: q̇ is `rate`, an expression in the parameters
     /// (`omega`), and q̈ = 0.
     pub fn coordinate_with_rate(mut self, name: &str, kind: CoordinateKind, rate: &str) -> Self {
-        self.coords
-            .push((name.to_string(), kind, Some(rate.to_string())));
+        let rate = ImposedRate::Text(rate.to_string());
+        self.coords.push((name.to_string(), kind, Some(rate)));
+        self
+    }
+
+    /// A time coordinate whose rate a loop closure determines: `numerator / denominator`,
+    /// two expressions of another registry (the loop's geometry, where Cramer's rule solved
+    /// them; the denominator a monomial this registry can invert), carried onto this one's
+    /// variables by name when it is built ([`Expr::carried`]).
+    pub(crate) fn coordinate_with_quotient(
+        mut self,
+        name: &str,
+        kind: CoordinateKind,
+        (numerator, denominator): (Expr, Expr),
+    ) -> Self {
+        let rate = ImposedRate::Quotient(numerator, denominator);
+        self.coords.push((name.to_string(), kind, Some(rate)));
         self
     }
 
@@ -224,5 +238,26 @@ impl RegistryBuilder {
     /// The registry: its variables, in a fixed order.
     pub fn build(self) -> Result<Rc<Registry>, ExprError> {
         Registry::build(self)
+    }
+}
+
+/// An imposed rate as declared: a text of the spec syntax (`omega`, `-r1/r2*dot(theta1)`),
+/// or a quotient of two expressions of another registry (see
+/// [`RegistryBuilder::coordinate_with_quotient`]).
+#[derive(Debug, Clone)]
+pub(crate) enum ImposedRate {
+    /// A text, parsed against the registry's parameters and free rates.
+    Text(String),
+    /// Numerator and denominator, over another registry.
+    Quotient(Expr, Expr),
+}
+
+impl ImposedRate {
+    /// The text, for a rate declared as one.
+    pub(super) fn text(&self) -> Option<&str> {
+        match self {
+            ImposedRate::Text(t) => Some(t),
+            ImposedRate::Quotient(..) => None,
+        }
     }
 }

@@ -10,6 +10,7 @@
 
 pub mod budget;
 mod builder;
+mod carry;
 mod compile;
 mod eval;
 mod factor;
@@ -157,7 +158,7 @@ pub enum ExprError {
         name: String,
         /// The text given.
         input: String,
-        /// `did you mean `theta1`?` when a declared name is close ([`crate::hint`]), else
+        /// `did you mean `theta1`?` when a declared name is close (the crate's `hint`), else
         /// empty.
         hint: String,
     },

@@ -1,7 +1,7 @@
 //! The variables of one mechanism (parameters, unknowns, coordinates and their rates) and the
 //! guard that keeps symbolica on one thread.
 
-use super::builder::RegistryBuilder;
+use super::builder::{ImposedRate, RegistryBuilder};
 use super::guard::ThreadGuard;
 use super::*;
 
@@ -154,7 +154,7 @@ impl Registry {
             vars.inverses(&inverses, &parameters, n_params, &param_var, (pi, pi_var))?;
         let reciprocals = vars.reciprocals(&secants, &cosecants, &mut infos, n_declared)?;
         for (n, _) in &aliases {
-            names.check(n)?;
+            names.claim(n)?;
         }
         // Constant angle parameters are found by `angle`, not by `coord`.
         let coord_by_name = infos
@@ -230,44 +230,37 @@ impl Registry {
     /// whether it is driven and whether its rate is nonholonomic.
     fn impose_rates(
         &mut self,
-        coords: &[(String, CoordinateKind, Option<String>)],
+        coords: &[(String, CoordinateKind, Option<ImposedRate>)],
         holonomic: &[String],
     ) -> Result<(), ExprError> {
         if !coords.iter().any(|c| c.2.is_some()) {
             return Ok(());
         }
         let base = self.snapshot()?;
+        let imposed: Vec<&str> = (coords.iter())
+            .filter(|c| c.2.is_some())
+            .map(|c| c.0.as_str())
+            .collect();
         for (i, (_, _, rate)) in coords.iter().enumerate() {
-            if let Some(r) = rate {
-                // The rate of a coordinate whose rate is itself imposed reads as 0 in
-                // `base`: refused by name rather than silently dropped.
-                let compact: String = r.chars().filter(|c| !c.is_whitespace()).collect();
-                if let Some((other, _, _)) = coords
-                    .iter()
-                    .find(|(n, _, w)| w.is_some() && compact.contains(&format!("dot({n})")))
-                {
-                    return Err(ExprError::Unsupported {
-                        input: r.clone(),
-                        reason: format!(
-                            "the rate of `{other}` is imposed too: write the rate with the \
-                             coordinates whose rates are free"
-                        ),
-                    });
+            let Some(rate) = rate else {
+                continue;
+            };
+            let (e, input) = match rate {
+                ImposedRate::Text(r) => (imposed_text(&base, r, &imposed)?, r.clone()),
+                ImposedRate::Quotient(n, d) => {
+                    let e = quotient(&base, n, d, &imposed)?;
+                    let input = e.to_string();
+                    (e, input)
                 }
-                let e = base.parse(r)?;
-                let driven = super::rates::driven_by(&base, CoordId(i), &e).map_err(|reason| {
-                    ExprError::Unsupported {
-                        input: r.clone(),
-                        reason,
-                    }
-                })?;
-                self.coords[i].imposed_rate = Some(e.into_poly());
-                self.coords[i].driven = driven.is_some();
-                // A rate solved from a loop closure f(q) = 0 is holonomic, whatever its
-                // coefficients hold.
-                self.coords[i].nonholonomic =
-                    driven == Some(false) && !holonomic.contains(&self.coords[i].name);
-            }
+            };
+            let driven = super::rates::driven_by(&base, CoordId(i), &e)
+                .map_err(|reason| ExprError::Unsupported { input, reason })?;
+            self.coords[i].imposed_rate = Some(e.into_poly());
+            self.coords[i].driven = driven.is_some();
+            // A rate solved from a loop closure f(q) = 0 is holonomic, whatever its
+            // coefficients hold.
+            self.coords[i].nonholonomic =
+                driven == Some(false) && !holonomic.contains(&self.coords[i].name);
         }
         Ok(())
     }
@@ -332,7 +325,7 @@ impl Registry {
         &self.coords[..self.n_coords]
     }
     /// ` (did you mean `theta1`?)` after a refusal of the coordinate `name`, or the few
-    /// declared coordinates ([`crate::hint::suggestion`]).
+    /// declared coordinates (the crate's `hint::suggestion`).
     pub fn coordinate_hint(&self, name: &str) -> String {
         let declared: Vec<&str> = self.coordinates().iter().map(|c| c.name.as_str()).collect();
         crate::hint::suggestion(name, &declared)
@@ -583,4 +576,52 @@ impl Registry {
     pub fn parse_angle(self: &Rc<Self>, s: &str) -> Result<LinearAngle, ExprError> {
         parse::parse_angle(self, s)
     }
+}
+
+/// The refusal of a rate that holds the rate of `other`, a coordinate whose rate is imposed
+/// too (it would read as 0 in the registry the rates are read with).
+fn imposed_too(input: String, other: &str) -> ExprError {
+    ExprError::Unsupported {
+        input,
+        reason: format!(
+            "the rate of `{other}` is imposed too: write the rate with the coordinates whose \
+             rates are free"
+        ),
+    }
+}
+
+/// An imposed rate given as a text, read with `base` (the registry before any rate is
+/// imposed); `imposed` names the coordinates whose rates are imposed.
+fn imposed_text(base: &Rc<Registry>, r: &str, imposed: &[&str]) -> Result<Expr, ExprError> {
+    // The rate of a coordinate whose rate is itself imposed reads as 0 in `base`: refused
+    // by name rather than silently dropped.
+    let compact: String = r.chars().filter(|c| !c.is_whitespace()).collect();
+    if let Some(other) = (imposed.iter()).find(|n| compact.contains(&format!("dot({n})"))) {
+        return Err(imposed_too(r.to_string(), other));
+    }
+    base.parse(r)
+}
+
+/// A rate given as numerator / denominator over another registry, carried onto `base`: the
+/// denominator a monomial `base` inverts; a rate of an imposed coordinate is refused as in a
+/// text.
+fn quotient(base: &Rc<Registry>, n: &Expr, d: &Expr, imposed: &[&str]) -> Result<Expr, ExprError> {
+    let from = n.registry();
+    for v in from.var_ids().filter(|&v| n.contains_var(v)) {
+        if let VarRole::Rate(q, _) = from.role(v)
+            && let Some(other) = imposed.iter().find(|n| **n == from.coord_info(q).name)
+        {
+            return Err(imposed_too(n.to_string(), other));
+        }
+    }
+    let (n, d) = (n.carried(base)?, d.carried(base)?);
+    let inverse = match d.as_rational() {
+        Some(r) if !r.is_zero() => Ok(base.constant(r.inv())),
+        _ => d.monomial_inverse(),
+    };
+    let inverse = inverse.map_err(|reason| ExprError::Unsupported {
+        input: d.to_string(),
+        reason,
+    })?;
+    Ok(&n * &inverse)
 }

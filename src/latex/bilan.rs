@@ -57,11 +57,9 @@ fn bilan_entries(doc: &Doc) -> (Vec<Entry>, Vec<Inline>) {
     // A short list is one table, with room for a one-line result; a long one may be split
     // into tables side by side, where only short results fit.
     let longest = if doc.results.len() <= 6 { 60 } else { 34 };
-    for (what, hyp, v, place) in &doc.results {
-        let Ok(q) = Quantity::parse(what) else {
-            continue;
-        };
-        let unit = unit_of(m, &dims, &q);
+    for (q, hyp, v, place) in &doc.results {
+        let what = &q.to_string();
+        let unit = unit_of(m, &dims, q);
         // A short scalar is repeated (and recorded); a long result or an equation of motion
         // is found where it is boxed.
         let short = match (v, &q.kind) {
@@ -94,7 +92,7 @@ fn bilan_entries(doc: &Doc) -> (Vec<Entry>, Vec<Inline>) {
         {
             Some(r) => r.unders.push(under),
             None => merged.push(Entry {
-                title: bilan_title(&doc.names, &q),
+                title: bilan_title(&doc.names, q),
                 unders: vec![under],
                 value,
                 unit,

@@ -8,7 +8,7 @@ use super::words::solid;
 use crate::derivation::Value;
 use crate::mechanism::Link;
 use crate::mechanism::{HelicalLaw, Mechanism};
-use crate::quantity::Quantity;
+use crate::quantity::{Motion, QuantityKind};
 use crate::vector::Vector;
 use crate::wire::LinkKind;
 use std::fmt::Write as _;
@@ -28,14 +28,20 @@ fn motion_quantities(m: &Mechanism, names: &super::VectorNames, l: &Link) -> (St
         .basis_vector(axis)
         .map(|(f, x)| names.basis_vector(x.letter(), m.frame_name(f)))
         .unwrap_or_default();
-    let q = |text: String| {
-        Quantity::parse(&text)
-            .map(|q| super::quantity_tex(&q.kind))
-            .unwrap_or_default()
+    let motion = Motion {
+        moving: b.clone(),
+        reference: a.clone(),
+    };
+    let velocity = QuantityKind::Velocity {
+        point: l.point.clone(),
+        motion: motion.clone(),
     };
     (
-        format!("{} \\cdot {u}", q(format!("V({},{b}/{a})", l.point))),
-        format!("{} \\cdot {u}", q(format!("Omega({b}/{a})"))),
+        format!("{} \\cdot {u}", super::quantity_tex(&velocity)),
+        format!(
+            "{} \\cdot {u}",
+            super::quantity_tex(&QuantityKind::Omega(motion))
+        ),
     )
 }
 

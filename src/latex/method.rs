@@ -230,7 +230,8 @@ impl StepRun<'_> {
                 let id = d.quantity.to_string();
                 let hn = doc.under.map(|h| h.name.clone());
                 let here = doc.here.clone();
-                doc.results.push((id.clone(), hn.clone(), v.clone(), here));
+                doc.results
+                    .push((d.quantity.clone(), hn.clone(), v.clone(), here));
                 doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, &v, None);
                 doc.remember(&delta, &v);
                 self.last_is_result = true;
@@ -424,14 +425,19 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
     if m.frames.find(r) != Some(m.frames.ground()) {
         return false;
     }
-    let vq = format!("V({g},{}/{r}) in B{bn}", mo.moving);
-    let vlhs = quantity_tex(&QuantityKind::Velocity {
+    let in_b = |kind: QuantityKind| Quantity {
+        kind,
+        basis: Some(bn.clone()),
+        projection: None,
+        linear: false,
+    };
+    let vq = in_b(QuantityKind::Velocity {
         point: g.clone(),
         motion: mo.clone(),
     });
+    let vlhs = quantity_tex(&vq.kind);
     // G fixed: one sentence says the resultant is zero.
-    if let Ok(vd) = Quantity::parse(&vq).map(|q| derive(m, &q))
-        && let Ok(vd) = vd
+    if let Ok(vd) = derive(m, &vq)
         && vd.value.exprs().iter().all(|e| e.is_zero())
     {
         let vv = shown_value(doc, &vd.value);
@@ -450,11 +456,11 @@ fn kinematics_of_centre(doc: &mut Doc, mo: &Motion, dynamic: bool, res: &Value) 
     if derived_step(doc, &vq, &vlhs, &position_sentence(&vlhs, &o, &g, r)).is_none() || !dynamic {
         return false;
     }
-    let aq = format!("Gamma({g},{}/{r}) in B{bn}", mo.moving);
-    let alhs = quantity_tex(&QuantityKind::Acceleration {
+    let aq = in_b(QuantityKind::Acceleration {
         point: g.clone(),
         motion: mo.clone(),
     });
+    let alhs = quantity_tex(&aq.kind);
     let sentence = format!("${alhs} = \\TDeriv{{{}}}{{{vlhs}}}$ :", frame(r));
     derived_step(doc, &aq, &alhs, &sentence);
     false
@@ -509,7 +515,8 @@ pub(super) fn quantity_block(doc: &mut Doc, d: &Derivation, title: &str, lhs: &s
         let id = d.quantity.to_string();
         if names.is_none() || !matches!(v, Value::Torsor { .. }) {
             let here = doc.here.clone();
-            doc.results.push((id.clone(), hn.clone(), v.clone(), here));
+            doc.results
+                .push((d.quantity.clone(), hn.clone(), v.clone(), here));
         }
         doc.show_result(
             DisplayRole::Result,
@@ -628,8 +635,7 @@ fn torsor_by_its_elements(
         components: moment.clone(),
     };
     let here = doc.here.clone();
-    doc.results
-        .push((d.quantity.to_string(), hn, v.clone(), here));
+    doc.results.push((d.quantity.clone(), hn, v.clone(), here));
     let short = resultant
         .iter()
         .chain(moment.iter())

@@ -89,8 +89,8 @@ pub(super) struct Doc<'m> {
     pub(super) here: String,
     /// The hypothesis the current question works under.
     pub(super) under: Option<&'m Hypothesis>,
-    /// The results, for the closing bilan: quantity id, hypothesis, value, where.
-    pub(super) results: Vec<(String, Option<String>, Value, String)>,
+    /// The results, for the closing bilan: quantity, hypothesis, value, where.
+    pub(super) results: Vec<(crate::quantity::Quantity, Option<String>, Value, String)>,
     /// Whether the conditions of the PFD's solution (its pivots that are not numbers,
     /// L ≠ 0) are stated.
     pub(super) conditions_stated: bool,

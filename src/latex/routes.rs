@@ -103,7 +103,7 @@ impl<'d> ProjectedMoment<'d> {
         else {
             return None;
         };
-        let r = crate::derivation::resolve(m, q).ok()?;
+        let r = crate::derivation::bind(m, q).ok()?;
         let (Some((uf, ua)), [s], Some(pa)) = (r.projection, r.solids.as_slice(), r.point) else {
             return None;
         };
@@ -384,12 +384,12 @@ pub(super) fn position_route(doc: &mut Doc, d: &Derivation) {
     let Value::Vector { basis, .. } = &d.value else {
         return;
     };
-    let vq = format!(
-        "V({p},{}/{}) in B{}",
-        mo.moving,
-        mo.reference,
-        m.frame_name(*basis)
-    );
+    let vq = Quantity {
+        kind: vk.clone(),
+        basis: Some(m.frame_name(*basis).to_string()),
+        projection: None,
+        linear: false,
+    };
     if derived_step(doc, &vq, &vl, &position_sentence(&vl, &o, p, &mo.reference)).is_none() {
         return;
     }
@@ -414,9 +414,14 @@ pub(super) fn position_sentence(vl: &str, o: &str, p: &str, r: &str) -> String {
 
 /// A quantity derived by the engine (`V(G2,2/0) in B2`) shown with its sentence, or cited
 /// where it was shown already; its value as shown, or None when it does not derive.
-pub(super) fn derived_step(doc: &mut Doc, text: &str, lhs: &str, sentence: &str) -> Option<Value> {
-    let q = Quantity::parse(text).ok()?;
-    let d = derive(doc.m, &q).ok()?;
+pub(super) fn derived_step(
+    doc: &mut Doc,
+    q: &Quantity,
+    lhs: &str,
+    sentence: &str,
+) -> Option<Value> {
+    let d = derive(doc.m, q).ok()?;
+    let text = q.to_string();
     let v = shown_value(doc, &d.value);
     match doc.cited(lhs, &v) {
         Some(place) => {
@@ -428,7 +433,7 @@ pub(super) fn derived_step(doc: &mut Doc, text: &str, lhs: &str, sentence: &str)
         }
         None => {
             let _ = writeln!(doc.o, "{sentence}");
-            doc.show_keyed(DisplayRole::Step, text, lhs, lhs, &v, false);
+            doc.show_keyed(DisplayRole::Step, &text, lhs, lhs, &v, false);
         }
     }
     Some(v)
@@ -589,7 +594,7 @@ impl<'d> ProjectedSet<'d> {
             QuantityKind::DynamicMoment { point, motion } => (point, motion, true),
             _ => return None,
         };
-        let r = crate::derivation::resolve(m, q).ok()?;
+        let r = crate::derivation::bind(m, q).ok()?;
         let (Some((uf, ua)), Some(pa)) = (r.projection, r.point) else {
             return None;
         };

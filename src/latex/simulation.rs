@@ -14,9 +14,9 @@ fn french(v: f64) -> String {
     format!("{v:.digits$}").replace('.', "{,}")
 }
 
-/// The simulations of a question from their runs (run by the caller): the assumed values,
-/// the curves, the maxima against the statement's; `line`, the width of the page's line in
-/// characters (see [`super::LINE`]).
+/// The simulations of a question from their runs and figure (run and drawn by the caller):
+/// the assumed values, the curves, the maxima against the statement's; `line`, the width of
+/// the page's line in characters (see [`super::LINE`]).
 pub(super) fn simulation_block(
     o: &mut String,
     m: &Mechanism,
@@ -24,20 +24,19 @@ pub(super) fn simulation_block(
     runs: &crate::simulate::QuestionRuns,
     (file, line): (&str, usize),
 ) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
-    let runs = runs
+    let simulated = runs
         .as_ref()
         .map_err(|(name, e)| fail(name, e.to_string()))?;
     assumed_values(o, m, sim, line);
     scenario_descriptions(o, m, sim);
-    let figure = simulation_figure(sim, runs);
     let _ = writeln!(
         o,
         "\\begin{{center}}\n\\includegraphics[width=0.9\\textwidth]{{{file}}}\n\\end{{center}}"
     );
     if let Some(col) = &sim.maximum {
-        maxima_table(o, m, sim, runs, col)?;
+        maxima_table(o, m, sim, &simulated.runs, col)?;
     }
-    Ok(figure)
+    Ok(simulated.figure.clone())
 }
 
 /// The error of a simulation that fails, naming its scenario.
@@ -108,21 +107,6 @@ fn scenario_descriptions(o: &mut String, m: &Mechanism, sim: &crate::wire::Simul
             );
         }
     }
-}
-
-/// The figure of the runs: wide and short panels (the curves are read across time, and the
-/// page is the limit), the legend naming each run by its scenario's label (« sans
-/// frottement »). The document's title is above; the figure needs none of its own.
-fn simulation_figure(
-    sim: &crate::wire::SimulationSpec,
-    runs: &[crate::simulate::Run],
-) -> crate::simulate::Figure {
-    let pairs: Vec<(&str, &crate::simulate::Run)> =
-        runs.iter().map(|r| (r.label.as_str(), r)).collect();
-    let ids: Vec<&str> = sim.plot.iter().map(String::as_str).collect();
-    let figure = crate::simulate::figure("", &pairs, &ids, true);
-    let panels = u32::try_from(figure.panels.len()).unwrap_or(1);
-    figure.size(1100, 60 + 160 * panels)
 }
 
 /// The maximum of `col` in each run against the statement's.

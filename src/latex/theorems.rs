@@ -403,12 +403,14 @@ fn unknown_at_once(doc: &mut Doc, d: &Derivation, theorem: &Theorem) -> bool {
             "{title}, ${dl} = {el}$, soit ${} = {dl}$ (valeur {place}).\n",
             name(u)
         );
-        doc.results.push((id, hn, dv.clone(), doc.here.clone()));
+        doc.results
+            .push((d.quantity.clone(), hn, dv.clone(), doc.here.clone()));
         return true;
     }
     let _ = writeln!(doc.o, "{title}, ${dl} = {el}$, soit :");
     let here = doc.here.clone();
-    doc.results.push((id.clone(), hn.clone(), dv.clone(), here));
+    doc.results
+        .push((d.quantity.clone(), hn.clone(), dv.clone(), here));
     let lhs = format!("{} = {dl}", name(u));
     doc.show_result(DisplayRole::Result, &id, hn.as_deref(), &lhs, dv, None);
     true
@@ -421,7 +423,8 @@ fn pfd_result(doc: &mut Doc, d: &Derivation, last_equality: Option<(Value, Value
     let v = shown_value(doc, &d.value);
     let hn = doc.under.map(|h| h.name.clone());
     let here = doc.here.clone();
-    doc.results.push((id.clone(), hn.clone(), v.clone(), here));
+    doc.results
+        .push((d.quantity.clone(), hn.clone(), v.clone(), here));
     match &d.quantity.kind {
         QuantityKind::Eom(q) => {
             if let Value::Scalar(e) = &v {
@@ -518,7 +521,7 @@ fn eom_under_stated(doc: &mut Doc, q: &crate::quantity::Quantity, e: &crate::exp
         let _ = writeln!(doc.o, "Sous l'hypothèse {hname} :");
         let (lhs, rhs) = upright(split_equation(&eh));
         doc.results.push((
-            id.to_string(),
+            q.clone(),
             Some(h.name.clone()),
             Value::Scalar(eh.clone()),
             doc.here.clone(),
@@ -594,7 +597,11 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
     }
     .to_string();
     let hn = doc.under.map(|h| h.name.clone());
-    if !doc.results.iter().any(|r| r.0 == full && r.1 == hn) {
+    if !doc
+        .results
+        .iter()
+        .any(|r| r.0.to_string() == full && r.1 == hn)
+    {
         return false;
     }
     let small: Vec<String> = m
@@ -616,7 +623,7 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
     );
     let id = d.quantity.to_string();
     doc.results
-        .push((id.clone(), hn.clone(), v.clone(), doc.here.clone()));
+        .push((d.quantity.clone(), hn.clone(), v.clone(), doc.here.clone()));
     let (lhs, rhs) = upright(split_equation(e));
     doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
     if doc.under.is_none() {

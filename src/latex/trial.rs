@@ -48,7 +48,8 @@ pub(super) fn trial_block(doc: &mut Doc, d: &Derivation, title: &str) {
     let id = d.quantity.to_string();
     // Recorded for the bilan, as every result is.
     let here = doc.here.clone();
-    doc.results.push((id.clone(), hyp.clone(), v.clone(), here));
+    doc.results
+        .push((d.quantity.clone(), hyp.clone(), v.clone(), here));
     doc.show_result(DisplayRole::Result, &id, hyp.as_deref(), title, &v, None);
 }
 

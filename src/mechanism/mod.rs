@@ -312,7 +312,7 @@ impl Mechanism {
     }
 
     /// The same problem asking for the quantities `qs` instead of the spec's. They are not
-    /// checked here: derive each (or resolve it, [`crate::derivation::resolve`]) to know it
+    /// checked here: derive each (or bind it, [`crate::derivation::bind`]) to know it
     /// names this mechanism's objects.
     pub fn asking(&self, qs: Vec<Quantity>) -> Mechanism {
         Mechanism {

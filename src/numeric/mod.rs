@@ -31,7 +31,6 @@
 //! assert!(matches!(model.evaluate(&q, &sample, "0").unwrap(), NumValue::Torsor { .. }));
 //! ```
 
-mod checks;
 mod closure;
 mod cloud;
 mod dynamics;
@@ -47,6 +46,7 @@ mod tests;
 mod tests_pfd;
 #[cfg(test)]
 mod tests_regulator;
+mod validate;
 
 use crate::quantity::Quantity;
 use crate::wire::{CoordinateKind, SpecFile};

@@ -1,9 +1,9 @@
 //! Building a [`NumericModel`] from a spec: names, frame and point trees, parsed expressions.
 
-use super::checks::{
+use super::expr::{self, Kind, Name, Node};
+use super::validate::{
     divisors, fixed_in_solid, linear_angle, rate_degree, symmetric, symmetries_hold,
 };
-use super::expr::{self, Kind, Name, Node};
 use super::{
     CoordInfo, FrameInfo, Hypothesis, InertiaInfo, NumericError, NumericModel, ParamInfo,
     PointInfo, SolidInfo, Symmetry,

@@ -236,7 +236,7 @@ fn fit(
 
 /// The value of a constant node at `params`, `None` if it has none.
 fn value(node: &Node, params: &[f64]) -> Option<f64> {
-    super::checks::at(node, params, &[])
+    super::validate::at(node, params, &[])
         .ok()
         .filter(|v| v.is_finite())
 }

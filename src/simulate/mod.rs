@@ -154,24 +154,50 @@ pub fn simulate(m: &Mechanism, name: &str) -> Result<Run, SimulateError> {
     simulate_with(m, sc, &[])
 }
 
-/// The runs of one question's simulation, its scenarios in order; or the first scenario that
-/// failed, with its error (the scenarios after it are not run).
-pub type QuestionRuns = Result<Vec<Run>, (String, SimulateError)>;
+/// The runs of one question's simulation, its scenarios in order, with the figure the
+/// answer key includes; or the first scenario that failed, with its error (the scenarios
+/// after it are not run).
+pub type QuestionRuns = Result<Simulated, (String, SimulateError)>;
+
+/// One question's simulation, run: its runs and the figure drawn from them.
+#[derive(Debug, Clone)]
+pub struct Simulated {
+    /// The runs, one per scenario, in order.
+    pub runs: Vec<Run>,
+    /// The curves the question plots ([`question_figure`]).
+    pub figure: Figure,
+}
 
 /// The runs of the simulation each question of the spec shows (`questions[k].simulation`),
-/// one entry per question, in order (no run for a question without one): what the answer key
-/// draws and tabulates, run here so that the key's writer runs nothing itself.
+/// one entry per question, in order (no run for a question without one), and their figure:
+/// what the answer key draws and tabulates, run and plotted here so that the key's writer
+/// only writes.
 pub fn question_runs(m: &Mechanism) -> Vec<QuestionRuns> {
     m.statement
         .questions
         .iter()
         .map(|q| {
             let names = q.simulation.iter().flat_map(|s| &s.scenarios);
-            names
+            let runs = names
                 .map(|n| simulate(m, n).map_err(|e| (n.clone(), e)))
-                .collect()
+                .collect::<Result<Vec<Run>, _>>()?;
+            let plot = q.simulation.as_ref().map_or(&[][..], |s| &s.plot[..]);
+            let figure = question_figure(plot, &runs);
+            Ok(Simulated { runs, figure })
         })
         .collect()
+}
+
+/// The figure of a question's runs, as the answer key includes it: one wide and short
+/// panel per column of `plot` (the curves are read across time, and the page is the limit),
+/// the legend naming each run by its scenario's label (« sans frottement »), in the course's
+/// units. The document's title is above; the figure needs none of its own.
+pub fn question_figure(plot: &[String], runs: &[Run]) -> Figure {
+    let pairs: Vec<(&str, &Run)> = runs.iter().map(|r| (r.label.as_str(), r)).collect();
+    let ids: Vec<&str> = plot.iter().map(String::as_str).collect();
+    let figure = figure("", &pairs, &ids, true);
+    let panels = u32::try_from(figure.panels.len()).unwrap_or(1);
+    figure.size(1100, 60 + 160 * panels)
 }
 
 /// Longest scenario, in seconds: the run is output every millisecond (every thousandth of

@@ -234,7 +234,7 @@ pub fn integrate(
     t_end: f64,
     opts: &Options,
 ) -> Result<Trajectory, SimError> {
-    let pieces = validate(y0, t_end, opts)?;
+    let pieces = piece_bounds(y0, t_end, opts)?;
     let grid = match opts.output {
         Output::Interval(dt) => Some(Grid::new(opts.t0, t_end, dt)?),
         Output::Steps => None,
@@ -426,8 +426,8 @@ impl Trajectory {
     }
 }
 
-/// Checks the arguments; returns the piece boundaries `t0 = p_0 < p_1 < … < p_n = t_end`.
-fn validate(y0: &[f64], t_end: f64, opts: &Options) -> Result<Vec<f64>, SimError> {
+/// Refuses arguments the integrator cannot take; returns the piece boundaries `t0 = p_0 < p_1 < … < p_n = t_end`.
+fn piece_bounds(y0: &[f64], t_end: f64, opts: &Options) -> Result<Vec<f64>, SimError> {
     let bad = |msg: String| Err(SimError::InvalidInput(msg));
     if y0.is_empty() {
         return bad("empty initial state".into());

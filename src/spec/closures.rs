@@ -11,7 +11,7 @@
 use super::SpecError;
 use super::refusal::{at, expr_err};
 use super::solved::Solved;
-use super::validate::build_solving;
+use super::validate::geometry as geometry_of;
 use crate::expr::{CoordId, Expr, Registry, VarRole};
 use crate::frame::{Axis, FrameId};
 use crate::mechanism::{HelicalLaw, Mechanism, RollingLaw};
@@ -113,7 +113,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         .collect();
     let (geometry, leads) = geometry(spec, &resolved.helices);
     // A pitch the geometry cannot read as a constant is refused at the link, in its words.
-    let m = build_solving(&geometry, &solve).map_err(|e| at_pitch(spec, &helices, e))?;
+    let m = geometry_of(&geometry, resolved).map_err(|e| at_pitch(spec, &helices, e))?;
     let reg = m.reg.clone();
     let zero = reg.zero();
     let ids: Vec<CoordId> = dependent
@@ -165,9 +165,11 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
                 r
             })
             .collect();
-        let n = det(&replaced, &zero);
-        rates.push((*k, format!("({n})/({d})")));
+        rates.push((*k, det(&replaced, &zero)));
     }
+    let divisors = (rates.iter())
+        .map(|(k, n)| (*k, written_divisors(n, &d)))
+        .collect();
     let Divisors {
         secants,
         cosecants,
@@ -178,6 +180,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         secants,
         cosecants,
         inverses,
+        divisors,
         dependent: dependent
             .into_iter()
             .map(|d| d.0)
@@ -186,7 +189,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         derivatives,
         rolling,
         helical,
-        determinant: d.to_string(),
+        determinant: d,
     }))
 }
 
@@ -498,4 +501,26 @@ fn rolling_rows(
         rows: rows.clone(),
     };
     Ok((law, rows))
+}
+
+/// The names the rate `n / d` writes below a division line: the determinant's parameters
+/// (π among them) and those it divides by, then those the numerator divides by, each once.
+fn written_divisors(n: &Expr, d: &Expr) -> Vec<String> {
+    let reg = d.registry();
+    let mut out: Vec<String> = Vec::new();
+    let names = |e: &Expr, whole: bool| -> Vec<String> {
+        (reg.var_ids().filter(|&v| e.contains_var(v)))
+            .filter_map(|v| match reg.role(v) {
+                VarRole::Parameter(p) if whole => Some(reg.scalar_name(p).to_string()),
+                VarRole::Inverse(p) => Some(reg.scalar_name(p).to_string()),
+                _ => None,
+            })
+            .collect()
+    };
+    for name in names(d, true).into_iter().chain(names(n, false)) {
+        if !out.contains(&name) {
+            out.push(name);
+        }
+    }
+    out
 }

@@ -10,7 +10,7 @@ use crate::simulate::{TimeLaw, duration_refusal};
 /// Checks every scenario (duration, the names of its values and initial state, imposed laws
 /// evaluated where each piece starts, recorded unknowns) and every question's simulation (scenarios, plotted
 /// columns, the column of the maximum).
-pub(super) fn check(m: &Mechanism) -> Result<(), SpecError> {
+pub(super) fn validate(m: &Mechanism) -> Result<(), SpecError> {
     let reg = &m.reg;
     let sign = |p: &str| m.dynamics.dry.iter().any(|d| d.sign == p);
     for (i, sc) in m.statement.scenarios.iter().enumerate() {

@@ -76,18 +76,21 @@ pub(crate) use crate::wire::free_texts;
 /// [`expression_texts`], the aliases and the hypotheses.
 /// A divisor that is an alias brings the parameters of its value, and a hypothesis relation
 /// that sets a divisor brings those of the value it gives (k = k2 divides by k2 too).
-pub(super) fn divisors(spec: &SpecFile, params: &[String]) -> Vec<String> {
-    let mut texts: Vec<&str> = expression_texts(spec).into_iter().map(|(_, t)| t).collect();
-    texts.extend(spec.aliases.iter().map(|a| a.value.as_str()));
+/// `solved` gives, per coordinate whose rate a loop closure determines, the names its rate
+/// divides by.
+pub(super) fn divisors(
+    spec: &SpecFile,
+    params: &[String],
+    solved: &[(usize, Vec<String>)],
+) -> Vec<String> {
+    let mut found = solved_in_place(spec, solved);
+    let mut texts: Vec<&str> = spec.aliases.iter().map(|a| a.value.as_str()).collect();
     for h in &spec.hypotheses {
         texts.extend(h.equilibrium.values().map(String::as_str));
         texts.extend(h.rates.values().map(String::as_str));
         texts.extend(h.relations.values().map(String::as_str));
     }
-    let mut found: Vec<String> = texts
-        .iter()
-        .flat_map(|t| crate::expr::divisors_in(t))
-        .collect();
+    found.extend(texts.iter().flat_map(|t| crate::expr::divisors_in(t)));
     // Aliases and relations bring the names of their values, until nothing new comes.
     let mut k = 0;
     while k < found.len() {
@@ -122,6 +125,33 @@ pub(super) fn divisors(spec: &SpecFile, params: &[String]) -> Vec<String> {
         }
     }
     out
+}
+
+/// The names below a division line in the expression texts, in their order, with those of
+/// each solved rate (`solved`: coordinate index, its divisors) where that coordinate's rate
+/// stands: after the points' and the rates of the coordinates before it.
+fn solved_in_place(spec: &SpecFile, solved: &[(usize, Vec<String>)]) -> Vec<String> {
+    let mut found: Vec<String> = Vec::new();
+    let mut placed = 0;
+    let mut place = |upto: usize, found: &mut Vec<String>| {
+        for (_, names) in solved.iter().filter(|(k, _)| (placed..upto).contains(k)) {
+            found.extend(names.iter().cloned());
+        }
+        placed = placed.max(upto);
+    };
+    for (path, text) in expression_texts(spec) {
+        let coordinate = (path.strip_prefix("coordinates["))
+            .and_then(|r| r.split(']').next()?.parse::<usize>().ok());
+        let upto = match coordinate {
+            Some(k) => k,
+            None if path.starts_with("points[") => 0,
+            None => spec.coordinates.len(),
+        };
+        place(upto, &mut found);
+        found.extend(crate::expr::divisors_in(text));
+    }
+    place(spec.coordinates.len(), &mut found);
+    found
 }
 
 /// A registry that could not be built, placed at the text at fault: the first alias whose

@@ -17,8 +17,7 @@ use crate::wire::{CoordinateKind, ParameterKind, SpecFile};
 use std::rc::Rc;
 
 /// Solves a spec's loop closures and rolling conditions from the resolved spec (the
-/// pipeline passes `spec/closures.rs`'s solver, which builds the loop's geometry through
-/// [`build_solving`] itself).
+/// pipeline passes `spec/closures.rs`'s solver, which reads the loop on [`geometry`]).
 pub(super) type Solver<'a> = &'a dyn Fn(&SpecFile, &Resolved) -> Result<Option<Solved>, SpecError>;
 
 /// Builds the mechanism described by a spec, its closures solved by `solve`.
@@ -37,21 +36,43 @@ pub(super) fn build_solving(spec: &SpecFile, solve: Solver) -> Result<Mechanism,
         crate::pfd::transmitted(kind, axis(a), d.map(axis), s.map(axis))
     };
     let unknowns = crate::resolve::unknowns(spec, &resolved, &transmitted).map_err(refused)?;
-    let shared = (&resolved, &unknowns);
-    match solve(spec, &resolved)? {
-        None => build_with(spec, written, shared, None),
-        Some(solved) => {
-            let mut with_rates = spec.clone();
-            for (k, rate) in &solved.rates {
-                with_rates.coordinates[*k].rate = Some(rate.clone());
-            }
-            build_with(&with_rates, written, shared, Some(&solved))
-        }
-    }
+    let solved = solve(spec, &resolved)?;
+    build_with(spec, written, (&resolved, &unknowns), solved.as_ref())
 }
 
-/// [`build_solving`] from a spec whose dependent coordinates have their rates, resolved; `written` is
-/// the spec as the user wrote it, kept in the mechanism.
+/// The loop's geometry: the frames and points of `spec` (the closures' spec, which keeps
+/// only what places them, see `spec/closures.rs`) over a registry of their own, and nothing
+/// else. It exists because the dependent coordinates' rates are read on it: the mechanism's
+/// registry imposes those rates, so it can only be built once they are solved, and it
+/// inverts what they divide by.
+pub(super) fn geometry(spec: &SpecFile, resolved: &Resolved) -> Result<Mechanism, SpecError> {
+    let reg = registry(spec, &[], None)?;
+    let frames = frames(spec, &reg, resolved)?;
+    let points = points(spec, &reg, &frames, resolved)?;
+    Ok(Mechanism {
+        title: spec.title.clone(),
+        description: None,
+        frame_origins: resolved.frames.iter().map(|f| PointId(f.origin)).collect(),
+        default_basis: frames.ground(),
+        reg,
+        frames,
+        points,
+        bodies: Vec::new(),
+        sets: Default::default(),
+        hypotheses: Vec::new(),
+        quantities: Vec::new(),
+        dynamics: Default::default(),
+        links: Vec::new(),
+        closures: Vec::new(),
+        dependent: Vec::new(),
+        statement: Default::default(),
+        spec: spec.clone(),
+        loop_law: None,
+    })
+}
+
+/// [`build_solving`] once the closures are solved (`solved`, their dependent coordinates'
+/// rates), resolved; `written` is the spec as the user wrote it, kept in the mechanism.
 fn build_with(
     spec: &SpecFile,
     written: &SpecFile,
@@ -93,8 +114,8 @@ fn build_with(
     let closures = super::statement::closures(written, &reg, &frames)?;
     let dependent = super::statement::dependent(written, &reg, solved);
     // The determinant the solved rates divide by, over this registry's variables (none when
-    // it names a helical link's lead, an alias of the geometry only).
-    let determinant = solved.and_then(|s| reg.parse(&s.determinant).ok());
+    // it divides by what this registry does not invert: π, through a helical link's lead).
+    let determinant = solved.and_then(|s| s.determinant.carried(&reg).ok());
 
     let mut m = Mechanism {
         title: spec.title.clone(),
@@ -123,7 +144,7 @@ fn build_with(
     };
     m.dynamics = super::dynamics::build(&m, spec, (resolved, unknowns))?;
     requests(&m)?;
-    super::scenarios::check(&m)?;
+    super::scenarios::validate(&m)?;
     Ok(m)
 }
 
@@ -148,15 +169,14 @@ fn texts(spec: &SpecFile) -> Result<(), SpecError> {
 /// known objects of the built mechanism.
 fn requests(m: &Mechanism) -> Result<(), SpecError> {
     for (i, q) in m.quantities.iter().enumerate() {
-        crate::derivation::resolve(m, q)
-            .map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
+        crate::derivation::bind(m, q).map_err(|e| at(format!("quantities[{i}]"), e.to_string()))?;
     }
     for (i, qs) in m.statement.questions.iter().enumerate() {
         let quantities = (qs.quantities.iter()).map(|q| (format!("questions[{i}].quantities"), q));
         let equations =
             (qs.equations.iter()).map(|e| (format!("questions[{i}].equations"), &e.quantity));
         for (path, q) in quantities.chain(equations) {
-            crate::derivation::resolve(m, q).map_err(|e| at(&path, e.to_string()))?;
+            crate::derivation::bind(m, q).map_err(|e| at(&path, e.to_string()))?;
         }
     }
     Ok(())
@@ -235,16 +255,22 @@ fn registry(
             }
         }
     }
-    let divisors = super::texts::divisors(spec, &params);
-    let builder = spec
-        .coordinates
-        .iter()
-        .fold(Registry::builder().parameters(&params), |b, c| {
-            match &c.rate {
-                Some(rate) => b.coordinate_with_rate(&c.name, c.kind, rate),
-                None => b.coordinate(&c.name, c.kind),
-            }
-        })
+    let solved_divisors = solved.map_or(&[][..], |s| &s.divisors);
+    let divisors = super::texts::divisors(spec, &params, solved_divisors);
+    let solved_rate = |k: usize| {
+        let s = solved?;
+        let n = s.rates.iter().find(|r| r.0 == k)?;
+        Some((n.1.clone(), s.determinant.clone()))
+    };
+    let builder = (spec.coordinates.iter().enumerate())
+        .fold(
+            Registry::builder().parameters(&params),
+            |b, (k, c)| match (&c.rate, solved_rate(k)) {
+                (Some(rate), _) => b.coordinate_with_rate(&c.name, c.kind, rate),
+                (None, Some(quotient)) => b.coordinate_with_quotient(&c.name, c.kind, quotient),
+                (None, None) => b.coordinate(&c.name, c.kind),
+            },
+        )
         .unknowns(unknowns)
         .raw_angles(&raw_angles)
         .angle_parameters(&angle_params)

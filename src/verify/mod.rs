@@ -63,7 +63,7 @@ pub enum VerifyError {
         /// The text given.
         input: String,
         /// ` (did you mean `theta`?)` for each name a declared one is close to
-        /// ([`crate::hint`]), else empty.
+        /// (the crate's `hint`), else empty.
         hint: String,
     },
     /// The PFD, needed for an unknown or an equation of motion, cannot be solved.

@@ -3,7 +3,7 @@
 //! complementary term, the PFD through its theorems) and `derive_values` (the fast route:
 //! transport from the centres of inertia, one cache for the run).
 //!
-//! `printed.rs` proves the key's displayed formulas equal to the fast route's values; here every
+//! `printed/mod.rs` proves the key's displayed formulas equal to the fast route's values; here every
 //! quantity of every spec is compared, shown in the key or not, in general and under every
 //! hypothesis. The chain family is compared in `chain.rs`.
 

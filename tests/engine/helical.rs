@@ -195,7 +195,7 @@ fn screw_jack_by_hand() {
         "-2*pi*C_m*dot(lambda)/p - M*g*dot(lambda)"
     );
     torseur::assert_equivalent!(m, "Pint(E)", "0");
-    // The key's formulas are proven by `printed.rs`; the float backend agrees with all of it.
+    // The key's formulas are proven by `printed/mod.rs`; the float backend agrees with all of it.
     let report = torseur::check::check(&m, 10, 1).unwrap();
     assert!(report.passed(), "{report}");
 }

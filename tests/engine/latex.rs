@@ -345,7 +345,7 @@ fn a_value_written_alone_uses_the_statements_vector_names() {
 /// a simulation is refused.
 #[test]
 fn the_key_draws_the_runs_it_is_given_and_runs_none() {
-    use torseur::simulate::{QuestionRuns, SimulateError};
+    use torseur::simulate::{QuestionRuns, SimulateError, Simulated};
     let m = regulator();
     let shown = (m.statement().questions.iter())
         .position(|q| q.simulation.is_some())
@@ -356,8 +356,12 @@ fn the_key_draws_the_runs_it_is_given_and_runs_none() {
         .unwrap()
         .scenarios[0]
         .clone();
+    let none = || Simulated {
+        runs: Vec::new(),
+        figure: torseur::simulate::question_figure(&[], &[]),
+    };
     let mut runs: Vec<QuestionRuns> = (m.statement().questions.iter())
-        .map(|_| Ok(Vec::new()))
+        .map(|_| Ok(none()))
         .collect();
     runs[shown] = Err((
         scenario.clone(),

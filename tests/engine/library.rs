@@ -723,7 +723,7 @@ fn aliases_are_written_once_and_read_by_name_everywhere() {
         m.reg().parse("A + m*a^2 - C").unwrap()
     );
     assert_checked(&m);
-    // The key states them, and printed.rs proves the statement with the rest.
+    // The key states them, and printed/mod.rs proves the statement with the rest.
     let key = torseur::latex::answer_key(&m, &torseur::simulate::question_runs(&m)).unwrap();
     assert!(key.contains("On pose $J = A + m\\,a^{2}$"), "{key}");
     // Refused, with the place: a coordinate in an alias, a name taken, an alias used before

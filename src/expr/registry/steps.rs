@@ -2,15 +2,16 @@
 //! variables in their order.
 
 use super::*;
+use crate::expr::builder::ImposedRate;
 
 /// The declared coordinates followed by one coordinate `w*t` per pulsation `w` (each a
 /// parameter that is not an angle), whose imposed rate field holds `w`.
 pub(super) fn with_phases(
-    mut coords: Vec<(String, CoordinateKind, Option<String>)>,
+    mut coords: Vec<(String, CoordinateKind, Option<ImposedRate>)>,
     phases: &[String],
     parameters: &[String],
     angle_parameters: &[String],
-) -> Result<Vec<(String, CoordinateKind, Option<String>)>, ExprError> {
+) -> Result<Vec<(String, CoordinateKind, Option<ImposedRate>)>, ExprError> {
     for w in phases {
         if !parameters.contains(w) || angle_parameters.contains(w) {
             return Err(ExprError::Declaration(format!(
@@ -22,7 +23,11 @@ pub(super) fn with_phases(
     for w in phases {
         let name = format!("{w}*t");
         if !coords.iter().any(|c| c.0 == name) {
-            coords.push((name, CoordinateKind::Angle, Some(w.clone())));
+            coords.push((
+                name,
+                CoordinateKind::Angle,
+                Some(ImposedRate::Text(w.clone())),
+            ));
         }
     }
     Ok(coords)
@@ -34,7 +39,7 @@ pub(super) struct Names(HashMap<String, ()>);
 
 impl Names {
     /// Refuses `n` if it is not an identifier, is reserved, or was declared before.
-    pub(super) fn check(&mut self, n: &str) -> Result<(), ExprError> {
+    pub(super) fn claim(&mut self, n: &str) -> Result<(), ExprError> {
         check_identifier(n).map_err(ExprError::Declaration)?;
         if RESERVED.contains(&n) {
             return Err(ExprError::Declaration(reserved_word(n)));
@@ -83,14 +88,16 @@ impl Variables {
     /// `n_declared` on are the phases `w*t`.
     pub(super) fn coordinates(
         &mut self,
-        coords: &[(String, CoordinateKind, Option<String>)],
+        coords: &[(String, CoordinateKind, Option<ImposedRate>)],
         n_declared: usize,
         raw_angles: &[String],
         names: &mut Names,
     ) -> Result<Vec<CoordInfo>, ExprError> {
         let mut infos = Vec::new();
         for (i, (name, kind, rate)) in coords.iter().enumerate() {
-            let phase = (i >= n_declared).then(|| rate.clone()).flatten();
+            let phase = (i >= n_declared)
+                .then(|| rate.as_ref()?.text().map(str::to_string))
+                .flatten();
             let id = CoordId(i);
             let q = match &phase {
                 // The atom Ω t itself: no symbol of the user's can clash with it.
@@ -98,7 +105,7 @@ impl Variables {
                     Atom::var(symbolica::symbol!(w.as_str())) * Atom::var(symbolica::symbol!("t"))
                 }
                 None => {
-                    names.check(name)?;
+                    names.claim(name)?;
                     Atom::var(symbolica::symbol!(name.as_str()))
                 }
             };
@@ -186,7 +193,7 @@ impl Variables {
     ) -> Result<HashMap<String, usize>, ExprError> {
         let mut param_var = HashMap::new();
         for (i, p) in declared.iter().enumerate() {
-            names.check(p)?;
+            names.claim(p)?;
             let v = self.push(
                 PolyVariable::Symbol(symbolica::symbol!(p.as_str())),
                 VarRole::Parameter(ParamId(i)),
