@@ -57,16 +57,24 @@ fn consistent_point(m: &torseur::Mechanism, rng: &mut ChaCha8Rng) -> Vec<f64> {
         .collect()
 }
 
+/// Every library spec and small chain, loaded, with the structured form of its quantities.
+fn library() -> Vec<(std::path::PathBuf, torseur::Mechanism, Structured)> {
+    crate::specs_in(&["derivations", "derivations/chain"])
+        .into_iter()
+        .filter(|p| small_enough(p))
+        .map(|path| {
+            let m = torseur::spec::load(&path).unwrap();
+            let s = Structured::of(&m, m.quantities()).unwrap();
+            (path, m, s)
+        })
+        .collect()
+}
+
 #[test]
 fn every_structured_value_expands_to_the_engines() {
     let mut held = 0;
     let mut rng = ChaCha8Rng::seed_from_u64(36);
-    for path in crate::specs_in(&["derivations", "derivations/chain"]) {
-        if !small_enough(&path) {
-            continue;
-        }
-        let m = torseur::spec::load(&path).unwrap();
-        let s = Structured::of(&m, m.quantities()).unwrap();
+    for (path, m, s) in library() {
         let qs: Vec<_> = s.values.iter().map(|(q, _)| q.clone()).collect();
         let ds = derive_values(&m, &qs).unwrap();
         let point = consistent_point(&m, &mut rng);
@@ -94,12 +102,7 @@ fn every_structured_value_expands_to_the_engines() {
 #[test]
 fn the_named_split_expands_to_the_equations_of_motion() {
     let mut seen = 0;
-    for path in crate::specs_in(&["derivations", "derivations/chain"]) {
-        if !small_enough(&path) {
-            continue;
-        }
-        let m = torseur::spec::load(&path).unwrap();
-        let s = Structured::of(&m, m.quantities()).unwrap();
+    for (path, m, s) in library() {
         let Some(named) = &s.motion else { continue };
         let eq = EquationsOfMotion::of(&m).unwrap();
         let ids: Vec<_> = (0..eq.coordinates().len())
@@ -177,12 +180,7 @@ fn the_compiled_named_equations_give_the_expanded_accelerations() {
     // (Expr::eval, double-double), solved by nalgebra; against the names compiled.
     let mut seen = 0;
     let mut rng = ChaCha8Rng::seed_from_u64(48);
-    for path in crate::specs_in(&["derivations", "derivations/chain"]) {
-        if !small_enough(&path) {
-            continue;
-        }
-        let m = torseur::spec::load(&path).unwrap();
-        let s = Structured::of(&m, m.quantities()).unwrap();
+    for (path, m, s) in library() {
         let Some(named) = &s.motion else { continue };
         let eq = EquationsOfMotion::of(&m).unwrap();
         let mut compiled = named.compile(&s.program).unwrap();

@@ -228,6 +228,15 @@ fn figure_prefix(tex: &Target) -> String {
 /// Output files, each the index of its resolved target in [`Io`] and its bytes.
 type Files = Vec<(usize, Vec<u8>)>;
 
+/// Writes every file of a command to its output, all or none ([`write`]).
+fn write_files(io: &Io, files: &Files, out: &mut File) -> Result<(), Failure> {
+    let items: Vec<(&Target, &[u8])> = files
+        .iter()
+        .map(|(k, b)| (io.target(*k), b.as_slice()))
+        .collect();
+    write(&items, out)
+}
+
 /// The answer key of `m` (or, with `fragment`, the bodies of those questions: all when it is
 /// empty), its figures named after `tex` when it is a file (they are written beside it, where
 /// `\includegraphics` finds them), else not written (said on stderr).
@@ -450,11 +459,7 @@ fn prepare_derive(a: DeriveArgs) -> Result<Job, Failure> {
             _ => output::TextForm::Presentation,
         };
         files.push((text_out, output::derive_text_in(&m, &ds, form).into_bytes()));
-        let items: Vec<(&Target, &[u8])> = files
-            .iter()
-            .map(|(k, b)| (io.target(*k), b.as_slice()))
-            .collect();
-        write(&items, out)?;
+        write_files(&io, &files, out)?;
         if stats {
             let mut total = 0;
             for d in &ds {
@@ -515,11 +520,7 @@ fn derive_structured(
         text_out,
         output::structured_text(m, &s, qs, &others).into_bytes(),
     ));
-    let items: Vec<(&Target, &[u8])> = files
-        .iter()
-        .map(|(k, b)| (io.target(*k), b.as_slice()))
-        .collect();
-    write(&items, out)?;
+    write_files(io, &files, out)?;
     if stats {
         let named: usize = s
             .program
@@ -618,11 +619,7 @@ fn prepare_answer_key(a: AnswerKeyArgs) -> Result<Job, Failure> {
         }
         files.extend(figures);
         files.push((tex_out, key.tex.into_bytes()));
-        let items: Vec<(&Target, &[u8])> = files
-            .iter()
-            .map(|(k, b)| (io.target(*k), b.as_slice()))
-            .collect();
-        write(&items, out)
+        write_files(&io, &files, out)
     }))
 }
 
@@ -740,11 +737,7 @@ fn prepare_simulate(a: SimulateArgs) -> Result<Job, Failure> {
                 None => String::new(),
             }
         );
-        let items: Vec<(&Target, &[u8])> = files
-            .iter()
-            .map(|(k, b)| (io.target(*k), b.as_slice()))
-            .collect();
-        write(&items, out)
+        write_files(&io, &files, out)
     }))
 }
 
