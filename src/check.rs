@@ -2,7 +2,7 @@
 //! valid samples (bodies realised as random point clouds, random angles, rates, accelerations),
 //! and every result homogeneous, of its quantity's dimension ([`crate::units`]).
 
-use crate::derivation::{ResolveError, Value, bind, derive_values};
+use crate::derivation::{DeriveError, Value, bind, derive_values};
 use crate::mechanism::{Hypothesis, Mechanism};
 use crate::numeric::{NumericError, NumericModel, Sample};
 use crate::output::{Values, ValuesError, numeric_point};
@@ -24,7 +24,7 @@ pub enum CheckError {
     Numeric(#[from] NumericError),
     /// A quantity does not resolve.
     #[error(transparent)]
-    Resolve(#[from] ResolveError),
+    Resolve(#[from] DeriveError),
     /// A sample does not fit the mechanism.
     #[error(transparent)]
     Values(#[from] ValuesError),
@@ -200,7 +200,7 @@ fn relative_error(sym: &[f64], num: &[f64]) -> f64 {
 }
 
 /// The quantity as the float backend must evaluate it: in the basis the symbolic side used.
-fn as_evaluated(m: &Mechanism, q: &Quantity) -> Result<Quantity, ResolveError> {
+fn as_evaluated(m: &Mechanism, q: &Quantity) -> Result<Quantity, DeriveError> {
     if q.projection.is_some() {
         return Ok(q.clone());
     }
@@ -279,12 +279,12 @@ pub fn compare_trial(
     rng: &mut ChaCha8Rng,
 ) -> Result<CheckRow, CheckError> {
     let Some(t) = &h.trial else {
-        return Err(ResolveError::new(q, format!("`{}` poses no trial motion", h.name)).into());
+        return Err(DeriveError::new(q, format!("`{}` poses no trial motion", h.name)).into());
     };
     let names: Vec<Quantity> = (t.unknowns.iter())
         .map(|(n, _)| Quantity::parse(n))
         .collect::<Result<_, _>>()
-        .map_err(|e| ResolveError::new(q, e.to_string()))?;
+        .map_err(|e| DeriveError::new(q, e.to_string()))?;
     let exact: Vec<Value> = (derive_values(m, &names)?.into_iter())
         .map(|d| d.value)
         .collect();
@@ -303,10 +303,10 @@ pub fn compare_trial_values(
     rng: &mut ChaCha8Rng,
 ) -> Result<CheckRow, CheckError> {
     let Some(t) = &h.trial else {
-        return Err(ResolveError::new(q, format!("`{}` poses no trial motion", h.name)).into());
+        return Err(DeriveError::new(q, format!("`{}` poses no trial motion", h.name)).into());
     };
     let eom = Quantity::parse(&format!("eom({})", m.reg.coord_info(t.coord).name))
-        .map_err(|e| ResolveError::new(q, e.to_string()))?;
+        .map_err(|e| DeriveError::new(q, e.to_string()))?;
     let default = m.frame_name(m.default_basis).to_string();
     let none = BTreeMap::new();
     let mut row = CheckRow {

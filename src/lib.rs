@@ -128,7 +128,7 @@ pub enum Error {
     Notation(#[from] quantity::NotationError),
     /// A quantity naming what the spec does not have.
     #[error(transparent)]
-    Resolve(#[from] derivation::ResolveError),
+    Resolve(#[from] derivation::DeriveError),
     /// A PFD that cannot be solved as declared.
     #[error(transparent)]
     Pfd(#[from] pfd::PfdError),

@@ -3,7 +3,7 @@
 //! power P(from→on/R) and the power of the actions inside a set, P_int(E).
 
 use super::steps::action_step;
-use super::{Bound, ResolveError, Step};
+use super::{Bound, DeriveError, Step};
 use crate::mechanism::Mechanism;
 use crate::quantity::{ActionRef, Quantity};
 use crate::torsor::Torsor;
@@ -17,10 +17,10 @@ pub(super) fn total(
     action: &ActionRef,
     r: &Bound,
     steps: &mut Vec<Step>,
-) -> Result<Torsor, ResolveError> {
+) -> Result<Torsor, DeriveError> {
     let a = r.point.unwrap_or(m.points.origin());
     let actions = crate::pfd::actions_of(m, &action.from, &r.solids, &action.on)
-        .map_err(|e| ResolveError::new(q, e))?;
+        .map_err(|e| DeriveError::new(q, e))?;
     let mut sum = Torsor {
         point: a,
         resultant: Vector::zero(),
@@ -44,9 +44,9 @@ pub(super) fn power(
     r: &Bound,
     reference: crate::frame::FrameId,
     steps: &mut Vec<Step>,
-) -> Result<crate::expr::Expr, ResolveError> {
+) -> Result<crate::expr::Expr, DeriveError> {
     let actions = crate::pfd::actions_of(m, &action.from, &r.solids, &action.on)
-        .map_err(|e| ResolveError::new(q, e))?;
+        .map_err(|e| DeriveError::new(q, e))?;
     let mut sum = m.reg.zero();
     for act in &actions {
         steps.push(action_step(m, act));

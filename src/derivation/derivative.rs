@@ -3,7 +3,7 @@
 //! derivative in the frame R, each basis vector turning by Ω(b/R) ∧ (the Bour formula,
 //! [`Vector::derivative_in`]).
 
-use super::{Derivation, ResolveError, Step, StepKind, Value, vec_value};
+use super::{Derivation, DeriveError, Step, StepKind, Value, vec_value};
 use crate::frame::FrameId;
 use crate::mechanism::Mechanism;
 use crate::quantity::Quantity;
@@ -17,14 +17,14 @@ pub(super) enum Derived {
 }
 
 /// The frame `r` of [d/dt Q]_r, by name: a solid's frame or a frame (`R0` is named `0`).
-pub(super) fn frame(m: &Mechanism, q: &Quantity, r: &str) -> Result<FrameId, ResolveError> {
+pub(super) fn frame(m: &Mechanism, q: &Quantity, r: &str) -> Result<FrameId, DeriveError> {
     m.frame_of(r).ok_or_else(|| {
         let named = r
             .strip_prefix('R')
             .filter(|n| m.frame_of(n).is_some())
             .map(|n| format!(" (the frame R{n} is written |{n})"))
             .unwrap_or_default();
-        ResolveError::new(q, format!("unknown frame `{r}`{named}"))
+        DeriveError::new(q, format!("unknown frame `{r}`{named}"))
     })
 }
 
@@ -37,7 +37,7 @@ pub(super) fn derive(
     r: Option<FrameId>,
     b: FrameId,
     steps: &mut Vec<Step>,
-) -> Result<Derived, ResolveError> {
+) -> Result<Derived, DeriveError> {
     // A vector is derived in the basis asked, so that its steps are written there.
     let inner = match (r, &of.projection) {
         (Some(_), None) => of.with_basis(m.frame_name(b)),
@@ -73,7 +73,7 @@ pub(super) fn derive(
             });
             Ok(Derived::Vector(v))
         }
-        _ => Err(ResolveError::new(
+        _ => Err(DeriveError::new(
             q,
             format!("{of}: d/dt takes a scalar, or a vector in a frame"),
         )),

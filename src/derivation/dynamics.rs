@@ -3,7 +3,7 @@
 //! The PFD itself (actions, theorems, the linear solve) is [`crate::pfd`]; this module only
 //! records its steps, and shares one run's cache of δ(G), m Γ(G) and the solved system.
 
-use super::{Derivation, ResolveError, Step, StepKind, Value};
+use super::{Derivation, DeriveError, Step, StepKind, Value};
 use crate::expr::{Expr, VarId};
 use crate::mechanism::Mechanism;
 use crate::pfd::{
@@ -75,8 +75,8 @@ impl Shared {
     }
 }
 
-fn resolve_err(q: &Quantity, message: String) -> ResolveError {
-    ResolveError::new(q, message)
+fn derive_err(q: &Quantity, message: String) -> DeriveError {
+    DeriveError::new(q, message)
 }
 
 /// Why a name is not an unknown of the PFD.
@@ -155,15 +155,15 @@ pub(super) fn derive(
     q: &Quantity,
     shared: &mut Shared,
     with_steps: bool,
-) -> Result<Derivation, ResolveError> {
+) -> Result<Derivation, DeriveError> {
     let mut steps = Vec::new();
     let value = match &q.kind {
         QuantityKind::KineticEnergy(mo) => {
             let solids = m
                 .solids_of(&mo.moving)
-                .ok_or_else(|| ResolveError::unknown(m, q, "solid or set", &mo.moving))?;
+                .ok_or_else(|| DeriveError::unknown(m, q, "solid or set", &mo.moving))?;
             if m.frames.find(&mo.reference) != Some(m.frames.ground()) {
-                return Err(resolve_err(
+                return Err(derive_err(
                     q,
                     format!(
                         "the kinetic energy is taken relative to the ground `{}`",
@@ -187,8 +187,8 @@ pub(super) fn derive(
         QuantityKind::Unknown(name) if super::trial::trial_of(m, name).is_some() => {
             let (_, t) = super::trial::trial_of(m, name).expect("a trial's unknown");
             let c = m.reg.coord_info(t.coord).name.clone();
-            let eom = shared.eom(m, &c).map_err(|e| ResolveError::new(q, e))?;
-            let eom = eom.ok_or_else(|| resolve_err(q, no_eom_marked(&c)))?;
+            let eom = shared.eom(m, &c).map_err(|e| DeriveError::new(q, e))?;
+            let eom = eom.ok_or_else(|| derive_err(q, no_eom_marked(&c)))?;
             return super::trial::derive(m, q, name, eom, with_steps);
         }
         QuantityKind::Unknown(name) => unknown_value(m, q, name, shared, (with_steps, &mut steps))?,
@@ -196,23 +196,23 @@ pub(super) fn derive(
             let coord = m
                 .reg
                 .coord(c)
-                .ok_or_else(|| ResolveError::unknown(m, q, "coordinate", c))?;
+                .ok_or_else(|| DeriveError::unknown(m, q, "coordinate", c))?;
             let th = m
                 .dynamics
                 .theorems
                 .iter()
                 .find(|t| t.eom == Some(coord))
-                .ok_or_else(|| resolve_err(q, no_eom_marked(c)))?;
+                .ok_or_else(|| derive_err(q, no_eom_marked(c)))?;
             let value = shared
                 .eom(m, c)
-                .map_err(|e| ResolveError::new(q, e))?
-                .ok_or_else(|| resolve_err(q, format!("no equation of motion for `{c}`")))?;
+                .map_err(|e| DeriveError::new(q, e))?
+                .ok_or_else(|| derive_err(q, format!("no equation of motion for `{c}`")))?;
             if with_steps {
                 theorem_steps(m, th, &mut shared.centre, &mut steps);
             }
             Value::Scalar(value)
         }
-        _ => return Err(resolve_err(q, "not a PFD quantity".to_string())),
+        _ => return Err(derive_err(q, "not a PFD quantity".to_string())),
     };
     Ok(Derivation {
         quantity: q.clone(),
@@ -229,18 +229,18 @@ fn unknown_value(
     name: &String,
     shared: &mut Shared,
     (with_steps, steps): (bool, &mut Vec<Step>),
-) -> Result<Value, ResolveError> {
+) -> Result<Value, DeriveError> {
     if !m.reg.unknowns().contains(name) {
-        return Err(resolve_err(q, not_an_unknown(name)));
+        return Err(derive_err(q, not_an_unknown(name)));
     }
     let var = unknown_vars(m)
         .into_iter()
         .find(|(n, _)| n == name)
         .map(|(_, v)| v);
-    let (sol, residuals) = shared.pfd(m).map_err(|e| ResolveError::new(q, e))?;
+    let (sol, residuals) = shared.pfd(m).map_err(|e| DeriveError::new(q, e))?;
     let v = (sol.unknowns.get(name).cloned()).ok_or_else(|| {
         let why = sol.why_undetermined(name);
-        resolve_err(
+        derive_err(
             q,
             why.unwrap_or_else(|| format!("no equation of `pfd` determines `{name}`")),
         )

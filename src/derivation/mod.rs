@@ -29,11 +29,11 @@ pub use value::Value;
 /// cannot be solved.
 ///
 /// ```
-/// use torseur::derivation::{Unresolved, derive};
+/// use torseur::derivation::{NotDerivable, derive};
 /// use torseur::quantity::Quantity;
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json").unwrap();
 /// let e = derive(&m, &Quantity::parse("V(Q,2/0)").unwrap()).unwrap_err();
-/// assert!(matches!(&e.reason, Unresolved::UnknownName { what: "point", name, .. } if name == "Q"));
+/// assert!(matches!(&e.reason, NotDerivable::UnknownName { what: "point", name, .. } if name == "Q"));
 /// assert_eq!(
 ///     e.to_string(),
 ///     "V(Q,2/0): unknown point `Q` (declared: `O0`, `O1`, `G1`, `O2`, `G2`)"
@@ -44,16 +44,16 @@ pub use value::Value;
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("{}", message(.quantity, .reason))]
-pub struct ResolveError {
+pub struct DeriveError {
     /// The quantity as written.
     pub quantity: String,
     /// Why it cannot be derived.
-    pub reason: Unresolved,
+    pub reason: NotDerivable,
 }
 
 /// Why a quantity cannot be derived.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum Unresolved {
+pub enum NotDerivable {
     /// A name the spec does not declare.
     #[error("unknown {what} `{name}`{hint}")]
     UnknownName {
@@ -79,17 +79,17 @@ pub enum Unresolved {
 
 /// `quantity: reason`, or for a derivation that outgrew the budget, the budget's sentence,
 /// which names the quantity itself.
-fn message(quantity: &str, reason: &Unresolved) -> String {
+fn message(quantity: &str, reason: &NotDerivable) -> String {
     match reason {
-        Unresolved::Budget(e) => e.to_string(),
+        NotDerivable::Budget(e) => e.to_string(),
         reason => format!("{quantity}: {reason}"),
     }
 }
 
-impl ResolveError {
+impl DeriveError {
     /// `quantity` cannot be derived, for `reason`.
-    pub fn new(quantity: &impl std::fmt::Display, reason: impl Into<Unresolved>) -> Self {
-        ResolveError {
+    pub fn new(quantity: &impl std::fmt::Display, reason: impl Into<NotDerivable>) -> Self {
+        DeriveError {
             quantity: quantity.to_string(),
             reason: reason.into(),
         }
@@ -123,9 +123,9 @@ impl ResolveError {
                 .collect(),
             _ => Vec::new(),
         };
-        ResolveError::new(
+        DeriveError::new(
             quantity,
-            Unresolved::UnknownName {
+            NotDerivable::UnknownName {
                 what,
                 name: name.to_string(),
                 hint: crate::hint::suggestion(name, &declared),
@@ -134,9 +134,9 @@ impl ResolveError {
     }
 }
 
-impl From<String> for Unresolved {
+impl From<String> for NotDerivable {
     fn from(s: String) -> Self {
-        Unresolved::Other(s)
+        NotDerivable::Other(s)
     }
 }
 
@@ -159,7 +159,7 @@ pub struct Bound {
 
 /// Binds the names of a quantity to the mechanism's ids (its point, solids, frames, basis);
 /// why not, for a name the mechanism does not have.
-pub fn bind(m: &Mechanism, q: &Quantity) -> Result<Bound, ResolveError> {
+pub fn bind(m: &Mechanism, q: &Quantity) -> Result<Bound, DeriveError> {
     let mut r = Bound {
         point: None,
         moving_frame: None,
@@ -171,8 +171,7 @@ pub fn bind(m: &Mechanism, q: &Quantity) -> Result<Bound, ResolveError> {
     bind_kind(m, q, &mut r)?;
     // The action must be in the bilan of what it acts on.
     if let Some(a) = q.kind.action() {
-        crate::pfd::actions_of(m, &a.from, &r.solids, &a.on)
-            .map_err(|e| ResolveError::new(q, e))?;
+        crate::pfd::actions_of(m, &a.from, &r.solids, &a.on).map_err(|e| DeriveError::new(q, e))?;
     }
     bind_basis(m, q, &mut r)?;
     Ok(r)
@@ -180,17 +179,17 @@ pub fn bind(m: &Mechanism, q: &Quantity) -> Result<Bound, ResolveError> {
 
 /// The objects the quantity's kind names (its point, solids, frames), into `r`; a set's
 /// inertia in the basis of its first solid's operator.
-fn bind_kind(m: &Mechanism, q: &Quantity, r: &mut Bound) -> Result<(), ResolveError> {
-    let unknown = |what: &'static str, n: &str| ResolveError::unknown(m, q, what, n);
+fn bind_kind(m: &Mechanism, q: &Quantity, r: &mut Bound) -> Result<(), DeriveError> {
+    let unknown = |what: &'static str, n: &str| DeriveError::unknown(m, q, what, n);
     let frame = |n: &str| m.frame_of(n).ok_or_else(|| unknown("solid or frame", n));
     let point = |n: &str| m.point(n).ok_or_else(|| unknown("point", n));
     let solids = |n: &str| m.solids_of(n).ok_or_else(|| unknown("solid or set", n));
-    let kinetic = |mo: &Motion, r: &mut Bound| -> Result<(), ResolveError> {
+    let kinetic = |mo: &Motion, r: &mut Bound| -> Result<(), DeriveError> {
         r.solids = solids(&mo.moving)?;
         r.reference = Some(frame(&mo.reference)?);
         Ok(())
     };
-    let kinematic = |mo: &Motion, r: &mut Bound| -> Result<(), ResolveError> {
+    let kinematic = |mo: &Motion, r: &mut Bound| -> Result<(), DeriveError> {
         r.moving_frame = Some(frame(&mo.moving)?);
         r.reference = Some(frame(&mo.reference)?);
         Ok(())
@@ -218,16 +217,16 @@ fn bind_kind(m: &Mechanism, q: &Quantity, r: &mut Bound) -> Result<(), ResolveEr
         // resolved when it is loaded.
         Unknown(name) => {
             if m.reg.coord(name).is_some() {
-                return Err(ResolveError::new(q, dynamics::a_coordinate(name)));
+                return Err(DeriveError::new(q, dynamics::a_coordinate(name)));
             }
             if !m.reg.unknowns().contains(name) && trial::trial_of(m, name).is_none() {
-                return Err(ResolveError::new(q, dynamics::not_an_unknown(name)));
+                return Err(DeriveError::new(q, dynamics::not_an_unknown(name)));
             }
         }
         Eom(c) => {
             let coord = m.reg.coord(c).ok_or_else(|| unknown("coordinate", c))?;
             if !m.dynamics.theorems.iter().any(|t| t.eom == Some(coord)) {
-                return Err(ResolveError::new(q, dynamics::no_eom_marked(c)));
+                return Err(DeriveError::new(q, dynamics::no_eom_marked(c)));
             }
         }
         ActionResultant(a) => r.solids = solids(&a.on)?,
@@ -265,8 +264,8 @@ fn bind_kind(m: &Mechanism, q: &Quantity, r: &mut Bound) -> Result<(), ResolveEr
 
 /// The basis the quantity asks for (`in B2`) and its projection vector (`.x2`), into `r`;
 /// without a basis, the projection's is used.
-fn bind_basis(m: &Mechanism, q: &Quantity, r: &mut Bound) -> Result<(), ResolveError> {
-    let unknown = |what: &'static str, n: &str| ResolveError::unknown(m, q, what, n);
+fn bind_basis(m: &Mechanism, q: &Quantity, r: &mut Bound) -> Result<(), DeriveError> {
+    let unknown = |what: &'static str, n: &str| DeriveError::unknown(m, q, what, n);
     if let Some(b) = &q.basis {
         r.basis = m
             .frames
@@ -437,8 +436,8 @@ enum Found {
 /// ```
 ///
 /// The derivation runs under the budget of terms ([`crate::expr::budget`]): one that outgrows
-/// it stops with [`Unresolved::Budget`].
-pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
+/// it stops with [`NotDerivable::Budget`].
+pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, DeriveError> {
     within_budget(q, || derive_unbounded(m, q))
 }
 
@@ -446,8 +445,8 @@ pub fn derive(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
 /// stops `f` with an error that names `q`.
 fn within_budget<T>(
     q: &Quantity,
-    f: impl FnOnce() -> Result<T, ResolveError>,
-) -> Result<T, ResolveError> {
+    f: impl FnOnce() -> Result<T, DeriveError>,
+) -> Result<T, DeriveError> {
     match crate::expr::budget::bounded(f) {
         Ok(r) => r,
         Err(crate::expr::ExprError::Budget {
@@ -455,20 +454,20 @@ fn within_budget<T>(
             terms,
             limit,
             ..
-        }) => Err(ResolveError::new(
+        }) => Err(DeriveError::new(
             q,
-            Unresolved::Budget(crate::expr::ExprError::Budget {
+            NotDerivable::Budget(crate::expr::ExprError::Budget {
                 what: format!("the derivation of {q}"),
                 detail,
                 terms,
                 limit,
             }),
         )),
-        Err(e) => Err(ResolveError::new(q, Unresolved::Budget(e))),
+        Err(e) => Err(DeriveError::new(q, NotDerivable::Budget(e))),
     }
 }
 
-fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, ResolveError> {
+fn derive_unbounded(m: &Mechanism, q: &Quantity) -> Result<Derivation, DeriveError> {
     if q.linear {
         return linearised(
             m,
@@ -513,7 +512,7 @@ fn found(
     q: &Quantity,
     r: &Bound,
     steps: &mut Vec<Step>,
-) -> Result<Option<Found>, ResolveError> {
+) -> Result<Option<Found>, DeriveError> {
     use QuantityKind::*;
     let reference = r.reference.unwrap_or(m.frames.ground());
     let b = r.basis;
@@ -527,16 +526,15 @@ fn found(
             let coord = m
                 .reg
                 .coord(c)
-                .ok_or_else(|| ResolveError::unknown(m, q, "coordinate", c))?;
-            let j =
-                crate::pfd::equivalent_inertia(m, coord).map_err(|e| ResolveError::new(q, e))?;
+                .ok_or_else(|| DeriveError::unknown(m, q, "coordinate", c))?;
+            let j = crate::pfd::equivalent_inertia(m, coord).map_err(|e| DeriveError::new(q, e))?;
             Found::Value(Value::Scalar(j))
         }
         InternalPower(_) => Found::Value(Value::Scalar(actions::internal_power(m, r, steps))),
         // The registry holds each coordinate's rate: a dependent one's is the loop law's.
         Rate { coordinate, order } => {
             let coord = (m.reg.coord(coordinate))
-                .ok_or_else(|| ResolveError::unknown(m, q, "coordinate", coordinate))?;
+                .ok_or_else(|| DeriveError::unknown(m, q, "coordinate", coordinate))?;
             Found::Value(Value::Scalar(m.reg.rate(coord, *order)))
         }
         Derivative { of, .. } => match derivative::derive(m, q, of, r.reference, b, steps)? {
@@ -657,7 +655,7 @@ fn resultant(m: &Mechanism, q: &Quantity, r: &Bound, steps: &mut Vec<Step>) -> V
 ///     assert_eq!(d.value.exprs(), derive(&m, q).unwrap().value.exprs());
 /// }
 /// ```
-pub fn derive_values(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, ResolveError> {
+pub fn derive_values(m: &Mechanism, qs: &[Quantity]) -> Result<Vec<Derivation>, DeriveError> {
     derive_values_with(m, qs, |_, _| {})
 }
 
@@ -667,7 +665,7 @@ pub fn derive_values_with(
     m: &Mechanism,
     qs: &[Quantity],
     mut done: impl FnMut(usize, &Quantity),
-) -> Result<Vec<Derivation>, ResolveError> {
+) -> Result<Vec<Derivation>, DeriveError> {
     let mut cache = Shared::default();
     cache.expect(m, qs);
     let mut out = Vec::with_capacity(qs.len());
@@ -679,9 +677,9 @@ pub fn derive_values_with(
 }
 
 /// The linearised value of a derivation (its steps are kept as derived).
-fn linearised(m: &Mechanism, q: &Quantity, d: Derivation) -> Result<Derivation, ResolveError> {
+fn linearised(m: &Mechanism, q: &Quantity, d: Derivation) -> Result<Derivation, DeriveError> {
     if m.dynamics.small.is_empty() {
-        return Err(ResolveError::new(
+        return Err(DeriveError::new(
             q,
             "the spec declares no small coordinates (`small`) to linearise around".to_string(),
         ));
@@ -697,7 +695,7 @@ fn derive_value(
     m: &Mechanism,
     q: &Quantity,
     cache: &mut Shared,
-) -> Result<Derivation, ResolveError> {
+) -> Result<Derivation, DeriveError> {
     if q.linear {
         let inner = Quantity {
             linear: false,

@@ -3,7 +3,7 @@
 //! coefficient of each harmonic (cos Ω t, sin Ω t, the constant) vanishes: a linear system in
 //! the unknowns, solved exactly (X = F0/(k − M Ω²)).
 
-use super::{Derivation, ResolveError, Step, StepKind, Value};
+use super::{Derivation, DeriveError, Step, StepKind, Value};
 use crate::expr::{Expr, Fraction, Registry, Trig, VarRole};
 use crate::mechanism::{Hypothesis, Mechanism, Trial};
 use crate::quantity::Quantity;
@@ -17,8 +17,8 @@ pub fn trial_of<'a>(m: &'a Mechanism, name: &str) -> Option<(&'a Hypothesis, &'a
     })
 }
 
-fn err(q: &Quantity, message: String) -> ResolveError {
-    ResolveError::new(q, message)
+fn err(q: &Quantity, message: String) -> DeriveError {
+    DeriveError::new(q, message)
 }
 
 /// The text of a harmonic: `cos(Omega*t)`, `sin(2*Omega*t)`, `1` for the constant.
@@ -42,7 +42,7 @@ fn harmonic_text(reg: &Rc<Registry>, angle: &[(crate::expr::CoordId, i32)], f: T
 
 /// The residual of eom(q) under the trial's hypothesis, refused when a coordinate, a rate or
 /// an angle other than a phase Ω t is left in it.
-fn balance(m: &Mechanism, q: &Quantity, h: &Hypothesis, eom: &Expr) -> Result<Expr, ResolveError> {
+fn balance(m: &Mechanism, q: &Quantity, h: &Hypothesis, eom: &Expr) -> Result<Expr, DeriveError> {
     let reg = &m.reg;
     let r = h.apply(eom);
     for v in reg.var_ids().filter(|v| r.contains_var(*v)) {
@@ -73,7 +73,7 @@ fn balance(m: &Mechanism, q: &Quantity, h: &Hypothesis, eom: &Expr) -> Result<Ex
 type Row = (String, Vec<Expr>, Expr);
 
 /// The rows of the residual `r`, refused when it is not linear in the unknowns.
-fn rows(m: &Mechanism, q: &Quantity, t: &Trial, r: &Expr) -> Result<Vec<Row>, ResolveError> {
+fn rows(m: &Mechanism, q: &Quantity, t: &Trial, r: &Expr) -> Result<Vec<Row>, DeriveError> {
     let reg = &m.reg;
     let f = r.to_fourier().ok_or_else(|| {
         err(
@@ -156,7 +156,7 @@ fn solve(
     q: &Quantity,
     t: &Trial,
     rows: &[Row],
-) -> Result<(Vec<Expr>, Expr), ResolveError> {
+) -> Result<(Vec<Expr>, Expr), DeriveError> {
     let reg = &m.reg;
     let coord = &reg.coord_info(t.coord).name;
     if let Some((h, _, _)) = rows.iter().find(|(_, a, _)| a.iter().all(Expr::is_zero)) {
@@ -214,7 +214,7 @@ pub(super) fn derive(
     name: &str,
     eom: Expr,
     with_steps: bool,
-) -> Result<Derivation, ResolveError> {
+) -> Result<Derivation, DeriveError> {
     let (h, t) = trial_of(m, name).ok_or_else(|| err(q, format!("`{name}` is no trial's")))?;
     let coord = m.reg.coord_info(t.coord).name.clone();
     let r = balance(m, q, h, &eom)?;
@@ -264,7 +264,7 @@ fn value(
     t: &Trial,
     rows: &[Row],
     k: usize,
-) -> Result<Value, ResolveError> {
+) -> Result<Value, DeriveError> {
     let (nums, det) = solve(m, q, t, rows)?;
     let f = Fraction::new(nums[k].clone(), det.clone()).ok_or_else(|| {
         err(

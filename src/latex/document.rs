@@ -56,7 +56,7 @@ pub const MACROS: &str = "% Notation du corrigé (torseur) : chaque macro peut �
 /// A question: its statement, the teacher's answer text, the hypotheses it states, its
 /// quantities (kinematics and kinetics step by step, the PFD as bilan and theorems), its
 /// equations written out.
-fn question_block(doc: &mut Doc, qs: &Question) -> Result<(), crate::derivation::ResolveError> {
+fn question_block(doc: &mut Doc, qs: &Question) -> Result<(), crate::derivation::DeriveError> {
     question_heading(doc, qs);
     for q in &qs.quantities {
         question_quantity(doc, q)?;
@@ -101,7 +101,7 @@ fn question_heading(doc: &mut Doc, qs: &Question) {
 
 /// A quantity of a question: the PFD for an unknown or an equation of motion, else its
 /// method step by step.
-fn question_quantity(doc: &mut Doc, q: &Quantity) -> Result<(), crate::derivation::ResolveError> {
+fn question_quantity(doc: &mut Doc, q: &Quantity) -> Result<(), crate::derivation::DeriveError> {
     let d = derive(doc.m, q)?;
     let title = doc.names.quantity_title(q);
     // The heading names the basis asked: the same vector in B2 and in B1 reads apart.
@@ -129,7 +129,7 @@ fn question_quantity(doc: &mut Doc, q: &Quantity) -> Result<(), crate::derivatio
 
 /// An equation of a question (`C_m = δ(O1,E/0)·z0`): its reason, then the equation boxed,
 /// under the question's hypothesis.
-fn question_equation(doc: &mut Doc, e: &Equation) -> Result<(), crate::derivation::ResolveError> {
+fn question_equation(doc: &mut Doc, e: &Equation) -> Result<(), crate::derivation::DeriveError> {
     let q = &e.quantity;
     let d = derive(doc.m, q)?;
     if let Some(r) = &e.reason {
@@ -168,7 +168,7 @@ pub(super) fn write_answer_key(
     style: VectorStyle,
     prefix: &str,
     runs: &[QuestionRuns],
-) -> Result<AnswerKey, crate::derivation::ResolveError> {
+) -> Result<AnswerKey, crate::derivation::DeriveError> {
     let mut doc = Doc::new(m, style);
     set_up(&mut doc);
     let figures = questions(&mut doc, prefix, runs, &|_| true)?;
@@ -199,10 +199,10 @@ pub(super) fn write_fragment(
     prefix: &str,
     runs: &[QuestionRuns],
     chosen: &[usize],
-) -> Result<AnswerKey, crate::derivation::ResolveError> {
+) -> Result<AnswerKey, crate::derivation::DeriveError> {
     let n = m.statement.questions.len();
     if let Some(k) = chosen.iter().find(|&&k| k == 0 || k > n) {
-        return Err(crate::derivation::ResolveError::new(
+        return Err(crate::derivation::DeriveError::new(
             &format!("question {k}"),
             format!("the spec has {n} question(s), numbered from 1"),
         ));
@@ -277,7 +277,7 @@ fn questions(
     prefix: &str,
     runs: &[QuestionRuns],
     keep: &dyn Fn(usize) -> bool,
-) -> Result<Vec<(String, crate::simulate::Figure)>, crate::derivation::ResolveError> {
+) -> Result<Vec<(String, crate::simulate::Figure)>, crate::derivation::DeriveError> {
     let m = doc.m;
     let mut figures = Vec::new();
     if m.statement.questions.is_empty() {
@@ -305,7 +305,7 @@ fn questions(
             if let Some(sim) = &qs.simulation {
                 let file = format!("{prefix}simulation-{}.png", k + 1);
                 let runs = runs.get(k).ok_or_else(|| {
-                    crate::derivation::ResolveError::new(
+                    crate::derivation::DeriveError::new(
                         &qs.title,
                         "the runs of its simulation were not given".to_string(),
                     )

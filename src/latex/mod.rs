@@ -63,7 +63,7 @@ use std::fmt::Write as _;
 pub fn answer_key(
     m: &Mechanism,
     runs: &[QuestionRuns],
-) -> Result<String, crate::derivation::ResolveError> {
+) -> Result<String, crate::derivation::DeriveError> {
     answer_key_with(m, VectorStyle::Sum, runs)
 }
 
@@ -72,7 +72,7 @@ pub fn answer_key_with(
     m: &Mechanism,
     style: VectorStyle,
     runs: &[QuestionRuns],
-) -> Result<String, crate::derivation::ResolveError> {
+) -> Result<String, crate::derivation::DeriveError> {
     answer_key_document(m, style, runs).map(|k| k.tex)
 }
 
@@ -82,7 +82,7 @@ pub fn answer_key_document(
     m: &Mechanism,
     style: VectorStyle,
     runs: &[QuestionRuns],
-) -> Result<AnswerKey, crate::derivation::ResolveError> {
+) -> Result<AnswerKey, crate::derivation::DeriveError> {
     answer_key_named(m, style, "", runs)
 }
 
@@ -105,7 +105,7 @@ pub fn answer_key_named(
     style: VectorStyle,
     prefix: &str,
     runs: &[QuestionRuns],
-) -> Result<AnswerKey, crate::derivation::ResolveError> {
+) -> Result<AnswerKey, crate::derivation::DeriveError> {
     document::write_answer_key(m, style, prefix, runs)
 }
 
@@ -128,7 +128,7 @@ pub fn answer_key_fragment(
     prefix: &str,
     chosen: &[usize],
     runs: &[QuestionRuns],
-) -> Result<AnswerKey, crate::derivation::ResolveError> {
+) -> Result<AnswerKey, crate::derivation::DeriveError> {
     document::write_fragment(m, style, prefix, runs, chosen)
 }
 

@@ -23,7 +23,7 @@ pub(super) fn simulation_block(
     sim: &crate::wire::SimulationSpec,
     runs: &crate::simulate::QuestionRuns,
     (file, line): (&str, usize),
-) -> Result<crate::simulate::Figure, crate::derivation::ResolveError> {
+) -> Result<crate::simulate::Figure, crate::derivation::DeriveError> {
     let simulated = runs
         .as_ref()
         .map_err(|(name, e)| fail(name, e.to_string()))?;
@@ -40,8 +40,8 @@ pub(super) fn simulation_block(
 }
 
 /// The error of a simulation that fails, naming its scenario.
-fn fail(what: &str, e: String) -> crate::derivation::ResolveError {
-    crate::derivation::ResolveError::new(&what, e)
+fn fail(what: &str, e: String) -> crate::derivation::DeriveError {
+    crate::derivation::DeriveError::new(&what, e)
 }
 
 /// The values the simulations use (the statement may give some of them, or none), six to a
@@ -116,7 +116,7 @@ fn maxima_table(
     sim: &crate::wire::SimulationSpec,
     runs: &[crate::simulate::Run],
     col: &str,
-) -> Result<(), crate::derivation::ResolveError> {
+) -> Result<(), crate::derivation::DeriveError> {
     let unit = runs
         .first()
         .and_then(|r| r.columns.iter().find(|c| c.id == col))

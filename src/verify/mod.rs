@@ -45,7 +45,7 @@ pub enum VerifyError {
     Notation(#[from] NotationError),
     /// The quantity refers to unknown objects.
     #[error(transparent)]
-    Resolve(#[from] crate::derivation::ResolveError),
+    Resolve(#[from] crate::derivation::DeriveError),
     /// The expression does not parse.
     #[error(transparent)]
     Expr(#[from] ExprError),

@@ -2,7 +2,7 @@
 //! an error naming what grew; one that fits gets the same result under any budget.
 
 use std::time::{Duration, Instant};
-use torseur::derivation::{Unresolved, derive, derive_values};
+use torseur::derivation::{NotDerivable, derive, derive_values};
 use torseur::expr::{ExprError, Registry, budget};
 use torseur::spec::wire::CoordinateKind;
 
@@ -32,9 +32,9 @@ fn load(path: &str) -> torseur::mechanism::Mechanism {
 }
 
 /// The budget error's fields, or a failure naming what came instead.
-fn budget_error(e: &torseur::derivation::ResolveError) -> (&str, &str, u128, usize) {
+fn budget_error(e: &torseur::derivation::DeriveError) -> (&str, &str, u128, usize) {
     match &e.reason {
-        Unresolved::Budget(ExprError::Budget {
+        NotDerivable::Budget(ExprError::Budget {
             what,
             detail,
             terms,

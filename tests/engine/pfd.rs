@@ -196,7 +196,7 @@ fn a_system_that_does_not_determine_its_unknowns_is_refused() {
     assert!(
         matches!(
             &err.reason,
-            torseur::derivation::Unresolved::Pfd(pfd::PfdError::NotSquare { .. })
+            torseur::derivation::NotDerivable::Pfd(pfd::PfdError::NotSquare { .. })
         ),
         "{err:?}"
     );
