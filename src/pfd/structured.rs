@@ -151,8 +151,8 @@ impl Structured {
         let mut values = Vec::new();
         for (i, r) in &requests {
             let dynamic = side(m, &nodes[r.node], r);
-            let v = match &qs[i.to_owned()].kind {
-                QuantityKind::Eom(_) => match eom_actions(m, &qs[*i], &nodes[r.node], r) {
+            let v = match &qs[*i].kind {
+                QuantityKind::Eom(_) => match eom_actions(m, &nodes[r.node], r) {
                     Some(actions) => dynamic.sub(&Lin::of(actions)),
                     None => continue,
                 },
@@ -366,17 +366,14 @@ fn side(m: &Mechanism, n: &Node, r: &Request) -> Lin {
 
 /// The actions' side of an equation of motion, when it holds no unknown of the links (the
 /// engine's route solves those; this form then leaves the equation to it).
-fn eom_actions(m: &Mechanism, q: &Quantity, n: &Node, r: &Request) -> Option<Expr> {
-    let QuantityKind::Eom(c) = &q.kind else {
-        return None;
-    };
-    let th = eom_theorem(m, c)?;
+fn eom_actions(m: &Mechanism, n: &Node, r: &Request) -> Option<Expr> {
     let u = Vector::along(r.on.0, r.on.1, m.reg.one());
+    // The request's point is the moment theorem's; none for the resultant theorem.
     let parts: Vec<Expr> = external_actions(m, &n.solids)
         .into_iter()
-        .map(|a: Action| match th.kind {
-            TheoremKind::Moment => a.torsor().at(m, th.point).moment.dot(&m.frames, &u),
-            _ => a.resultant.dot(&m.frames, &u),
+        .map(|a: Action| match r.moment_at {
+            Some(p) => a.torsor().at(m, p).moment.dot(&m.frames, &u),
+            None => a.resultant.dot(&m.frames, &u),
         })
         .collect();
     let actions = Expr::sum(&m.reg, parts);
