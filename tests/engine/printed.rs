@@ -514,9 +514,15 @@ pub(super) fn equations(body: &str) -> Vec<(Vec<Tok>, Vec<Tok>)> {
         rows.last_mut().unwrap().push(t);
     }
     let mut eqs: Vec<(Vec<Tok>, Vec<Tok>)> = Vec::new();
-    // A wide left side on a row of its own (`&lhs`), its `&= …` on the next row.
+    // A wide left side on a row of its own (`&lhs`), continued by rows `&\quad …` (an
+    // equation of motion's dynamic side), its `&= …` on the next row.
     let mut alone: Option<Vec<Tok>> = None;
     for r in rows {
+        let more = [Tok::Sym('&'), Tok::Cmd("quad".into())];
+        if let (Some(lhs), true) = (alone.as_mut(), r.starts_with(&more)) {
+            lhs.extend_from_slice(&r[1..]);
+            continue;
+        }
         if let Some(lhs) = alone.take() {
             assert!(
                 r.starts_with(&[Tok::Sym('&'), Tok::Sym('=')]),
@@ -927,6 +933,61 @@ fn prove_equality(ctx: &Ctx, latex: &str, l: &Value, r: &Value) -> Result<(), St
     Ok(())
 }
 
+/// Each J_eq form of an equation of motion (three displays, each proven on its right side
+/// as any other: J_eq(q), J_eq′(q), and the form J_eq q̈ + ½ J_eq′ q̇² = Q), proven to be that
+/// equation: J_eq′ q̇ is the time derivative of J_eq, and J_eq q̈ + ½ J_eq′ q̇² − Q is the fast
+/// route's eom(q) up to its sign. Returns how many were proven.
+fn prove_jeq_forms(m: &Mechanism, displays: &[torseur::latex::Display]) -> usize {
+    let value = |what: &str| -> Option<Expr> {
+        let d = displays.iter().find(|d| d.what == what)?;
+        match &d.value {
+            Value::Scalar(e) => Some(e.clone()),
+            _ => None,
+        }
+    };
+    let mut n = 0;
+    for d in displays {
+        let Some(id) = d.what.strip_prefix("J_eq form of ") else {
+            continue;
+        };
+        let (Some(j), Some(jp), Some(q_side)) = (
+            value(&format!("J_eq of {id}")),
+            value(&format!("J_eq' of {id}")),
+            value(&d.what),
+        ) else {
+            panic!("{id}: a J_eq form without its J_eq and J_eq'");
+        };
+        let coordinate = id
+            .strip_prefix("eom(")
+            .and_then(|r| r.strip_suffix(')'))
+            .expect("the J_eq form of an equation of motion");
+        let reg = m.reg();
+        let q = reg.coord(coordinate).unwrap();
+        let (dq, ddq) = (reg.dot(q), reg.ddot(q));
+        assert_eq!(
+            &jp * &dq,
+            j.dt(),
+            "{id}: J_eq' is not the derivative of J_eq"
+        );
+        let half = reg.parse("1/2").unwrap();
+        let written = &(&(&j * &ddq) + &(&(&half * &jp) * &(&dq * &dq))) - &q_side;
+        let quantity = torseur::quantity::Quantity::parse(id).unwrap();
+        let fast = torseur::derivation::derive_values(m, std::slice::from_ref(&quantity))
+            .unwrap()
+            .remove(0)
+            .value;
+        let Value::Scalar(eom) = fast else {
+            panic!("{id}: an equation of motion is a scalar")
+        };
+        assert!(
+            written == eom || written == -&eom,
+            "{id}: the J_eq form is not the equation of motion"
+        );
+        n += 1;
+    }
+    n
+}
+
 fn spec_paths() -> Vec<std::path::PathBuf> {
     // The library, one chain, and the reusable specs (Latin and Greek names, the link kinds
     // no library spec uses).
@@ -941,6 +1002,7 @@ fn spec_paths() -> Vec<std::path::PathBuf> {
 #[test]
 fn every_printed_formula_is_the_engines_value() {
     let mut proven = 0;
+    let mut jeq = 0;
     for path in spec_paths() {
         let m = torseur::spec::load(&path).unwrap();
         let key = torseur::latex::answer_key_document(
@@ -1034,6 +1096,7 @@ fn every_printed_formula_is_the_engines_value() {
                 }
             }
         }
+        jeq += prove_jeq_forms(&m, &key.displays);
         let mut fast: HashMap<String, Value> = HashMap::new();
         for d in &key.displays {
             let proof = match &d.rhs {
@@ -1100,6 +1163,7 @@ fn every_printed_formula_is_the_engines_value() {
         }
     }
     eprintln!("{proven} displayed formulas proven");
+    eprintln!("{jeq} J_eq forms proven");
     assert!(proven > 300, "only {proven} formulas read back");
 }
 
@@ -1170,6 +1234,26 @@ fn the_reader_catches_a_wrong_sign() {
         )
         .is_err()
     );
+}
+
+/// An equation of motion written on several rows (the dynamic side on rows of its own, then
+/// `&= actions`) reads back side by side; a sign flipped on either side is caught.
+#[test]
+fn the_reader_reads_a_dynamic_side_on_rows_of_its_own() {
+    let m = super::regulator();
+    let ctx = Ctx::new(&m);
+    let e = |s: &str| Value::Scalar(m.reg().parse(s).unwrap());
+    let l = e("(A2 + m2*L2^2)*ddot(theta2) + f*dot(theta2)");
+    let r = e("-m2*g*L2*cos(theta2)");
+    let rows = |a: &str, b: &str| {
+        format!(
+            "&\\left(A_{{2}} + m_{{2}}\\,L_{{2}}^{{2}}\\right)\\ddot{{\\theta}}_{{2}} \\\\\n\
+             &\\quad {a} f\\,\\dot{{\\theta}}_{{2}} \\\\\n&= {b}m_{{2}}\\,g\\,L_{{2}}\\,\\cos\\theta_{{2}}"
+        )
+    };
+    assert_eq!(prove_equality(&ctx, &rows("+", "-"), &l, &r), Ok(()));
+    assert!(prove_equality(&ctx, &rows("-", "-"), &l, &r).is_err());
+    assert!(prove_equality(&ctx, &rows("+", ""), &l, &r).is_err());
 }
 
 /// The strings of a JSON value (`canonical` or `presentation`), in `Value::exprs` order.
