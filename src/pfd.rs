@@ -40,6 +40,7 @@ pub use energy::{
 pub use hyperstatic::Hyperstatic;
 pub use linear::{first_order_jointly, linearise};
 pub use motion::{CompiledEquations, EquationsOfMotion};
+pub(crate) use motion::{rate_vars, split_row};
 pub use transmitted::transmitted;
 
 impl Action {

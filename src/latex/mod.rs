@@ -20,6 +20,7 @@ mod hyperstatic;
 mod hypotheses;
 mod loop_law;
 mod method;
+mod motion;
 mod omega;
 mod page;
 mod routes;

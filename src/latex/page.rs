@@ -417,6 +417,44 @@ impl<'m> Doc<'m> {
     }
 }
 
+impl Doc<'_> {
+    /// An equation of motion `l = r`, boxed, its left side (the dynamic side) written as the
+    /// `lines` given: on the row of `=` when it fits beside the right side, else on rows of its
+    /// own (`&…`, continued by `&\quad …`), the right side after them from `&=`.
+    pub(super) fn show_motion(
+        &mut self,
+        role: DisplayRole,
+        (what, hyp): (&str, Option<&str>),
+        lines: &[String],
+        l: &crate::expr::Expr,
+        r: &crate::expr::Expr,
+    ) {
+        let rv = Value::Scalar(r.clone());
+        let max = self.line - 6;
+        let one = lines.len() == 1
+            && (super::width(&lines[0]) <= self.line / 2
+                || super::width(&lines[0]) + super::width(&super::expr(r)) + 3 <= max);
+        let body = if one {
+            super::values::value_within(self.m, &self.names, self.style, &lines[0], &rv, None, max)
+        } else {
+            let mut out = format!("&{}", lines[0]);
+            for x in &lines[1..] {
+                let _ = write!(out, " \\\\\n&\\quad {x}");
+            }
+            let rl = super::expr::expr_lines(r, max - 4);
+            let _ = write!(out, " \\\\\n&= {}", rl[0]);
+            for x in &rl[1..] {
+                let _ = write!(out, " \\\\\n&\\phantom{{=}} {x}");
+            }
+            out
+        };
+        self.record(role, what, body, &Value::Scalar(l.clone()), Some(rv), true);
+        if let Some(d) = self.displays.last_mut() {
+            d.hypothesis = hyp.map(str::to_string);
+        }
+    }
+}
+
 /// A quantity as a heading: \\overrightarrow{\\delta(O_2,2/0)}\\cdot\\vec{x}_2 for a projection
 /// (the course's LaTeX, without the key's notation macros).
 ///

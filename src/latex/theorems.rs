@@ -441,9 +441,10 @@ fn pfd_result(doc: &mut Doc, d: &Derivation, last_equality: Option<(Value, Value
     }
 }
 
-/// The equation of motion `e` in `q`, dynamic side = actions, boxed (the theorem's equality
-/// when it is already it), its first integral, and the equation under each hypothesis
-/// stated so far.
+/// The equation of motion `e` in `q`, boxed in the course's form (dynamic side, each
+/// acceleration once, = actions, and its J_eq form: [`super::motion::show`]; the theorem's
+/// equality when `e` is not linear in the accelerations), its first integral, and the
+/// equation under each hypothesis stated so far.
 fn eom_result(
     doc: &mut Doc,
     quantity: &crate::quantity::Quantity,
@@ -464,11 +465,13 @@ fn eom_result(
         let _ = writeln!(doc.o, "{s}");
     }
     let _ = writeln!(doc.o, "D'où l'équation du mouvement en ${}$ :", name(q));
-    let (lhs, rhs) = upright(match last_equality {
-        Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => (a.clone(), b.clone()),
-        _ => split_equation(e),
-    });
-    doc.show_equation(DisplayRole::Result, id, hn.as_deref(), &lhs, &rhs);
+    if !super::motion::show(doc, (id, hn.as_deref()), e, q, true) {
+        let (lhs, rhs) = upright(match last_equality {
+            Some((Value::Scalar(a), Value::Scalar(b))) if &(a - b) == e => (a.clone(), b.clone()),
+            _ => split_equation(e),
+        });
+        doc.show_equation(DisplayRole::Result, id, hn.as_deref(), &lhs, &rhs);
+    }
     if let Some(f) = first_integral(e) {
         let math = super::expr(&f);
         let _ = writeln!(
@@ -492,6 +495,9 @@ fn eom_result(
 /// stated so far: unchanged, identically satisfied (no « 0 = 0 » in a box), or boxed.
 fn eom_under_stated(doc: &mut Doc, q: &crate::quantity::Quantity, e: &crate::expr::Expr) {
     let m = doc.m;
+    let QuantityKind::Eom(own) = &q.kind else {
+        return;
+    };
     let id = &q.to_string();
     let stated: Vec<_> = m
         .hypotheses
@@ -519,14 +525,13 @@ fn eom_under_stated(doc: &mut Doc, q: &crate::quantity::Quantity, e: &crate::exp
             continue;
         }
         let _ = writeln!(doc.o, "Sous l'hypothèse {hname} :");
-        let (lhs, rhs) = upright(split_equation(&eh));
         doc.results.push((
             q.clone(),
             Some(h.name.clone()),
             Value::Scalar(eh.clone()),
             doc.here.clone(),
         ));
-        doc.show_equation(DisplayRole::Result, id, Some(&h.name), &lhs, &rhs);
+        show_eom(doc, (id, Some(&h.name)), &eh, own);
     }
 }
 
@@ -624,12 +629,20 @@ fn linearised_from_above(doc: &mut Doc, d: &Derivation) -> bool {
     let id = d.quantity.to_string();
     doc.results
         .push((d.quantity.clone(), hn.clone(), v.clone(), doc.here.clone()));
-    let (lhs, rhs) = upright(split_equation(e));
-    doc.show_equation(DisplayRole::Result, &id, hn.as_deref(), &lhs, &rhs);
+    show_eom(doc, (&id, hn.as_deref()), e, q);
     if doc.under.is_none() {
         eom_under_stated(doc, &d.quantity, e);
     }
     true
+}
+
+/// The equation of motion `e` = 0 in `q`, boxed in the course's form (see
+/// [`super::motion::show`], without the J_eq form), else as rates = the rest.
+fn show_eom(doc: &mut Doc, (id, hyp): (&str, Option<&str>), e: &crate::expr::Expr, q: &str) {
+    if !super::motion::show(doc, (id, hyp), e, q, false) {
+        let (lhs, rhs) = upright(split_equation(e));
+        doc.show_equation(DisplayRole::Result, id, hyp, &lhs, &rhs);
+    }
 }
 
 /// The bilan's line for an action, typeset: a link's action is named by its kind and

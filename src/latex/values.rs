@@ -63,7 +63,7 @@ fn vector_sum_with(
 
 /// The lines of a vector sum (see [`vector_sum`]) that its nonzero component `e` along the
 /// basis vector `bv` adds (`first`: it opens the sum); more than one when long.
-fn component_lines(e: &Expr, bv: &str, first: bool, max: usize) -> Vec<String> {
+pub(super) fn component_lines(e: &Expr, bv: &str, first: bool, max: usize) -> Vec<String> {
     let mut lines = Vec::new();
     // A sum whose terms are mostly negative is written − [...] (− [(L1 + L2 cos θ2) θ̇1²
     // cos θ2 + L2 θ̇2²] y2, not + (−(L1 + L2 cos θ2) θ̇1² cos θ2 − L2 θ̇2²) y2).

@@ -17,7 +17,7 @@
 //! moment projected on −z⃗₀ gives a negative M).
 
 use super::{PfdError, Solution};
-use crate::expr::{Compiled, CoordId, Expr, ExprError, VarRole, signed_sum};
+use crate::expr::{Compiled, CoordId, Expr, ExprError, VarId, VarRole, signed_sum};
 use crate::mechanism::Mechanism;
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
@@ -79,34 +79,16 @@ impl EquationsOfMotion {
         coords: &[CoordId],
     ) -> Result<EquationsOfMotion, String> {
         let reg = &m.reg;
-        // Every rate and acceleration of every coordinate, to set to zero for Q.
-        let rates: Vec<_> = (0..reg.coordinates().len())
-            .flat_map(|q| (1..=3u8).map(move |k| (q, k)))
-            .filter_map(|(q, k)| reg.index_of(VarRole::Rate(CoordId(q), k)))
-            .collect();
+        let rates = rate_vars(reg);
         let mut mass = Vec::with_capacity(coords.len());
         let mut velocity_terms = Vec::with_capacity(coords.len());
         let mut forces = Vec::with_capacity(coords.len());
         let mut names = Vec::with_capacity(coords.len());
         for &qi in coords {
             let name = reg.coord_info(qi).name.clone();
-            let e = &sol.eom[&name];
-            let mut rest = e.clone();
-            let mut row = Vec::with_capacity(coords.len());
-            for &qj in coords {
-                let mij = e.partial_rate(qj, 2);
-                if !mij.partial_rate(qj, 2).is_zero() {
-                    return Err(name);
-                }
-                rest = &rest - &(&mij * &reg.ddot(qj));
-                row.push(mij);
-            }
-            let mut at_rest = rest.clone();
-            for &v in &rates {
-                at_rest = at_rest.substitute(v, &reg.zero());
-            }
-            velocity_terms.push(&rest - &at_rest);
-            forces.push(-&at_rest);
+            let (row, h, q) = split_row(&sol.eom[&name], coords, &rates).ok_or(name.clone())?;
+            velocity_terms.push(h);
+            forces.push(q);
             mass.push(row);
             names.push(name);
         }
@@ -168,6 +150,42 @@ impl EquationsOfMotion {
             n,
         })
     }
+}
+
+/// Every rate and acceleration variable of every coordinate (q̇, q̈ and the third
+/// derivative): what is set to zero for the terms at rest.
+pub(crate) fn rate_vars(reg: &crate::expr::Registry) -> Vec<VarId> {
+    (0..reg.coordinates().len())
+        .flat_map(|q| (1..=3u8).map(move |k| (q, k)))
+        .filter_map(|(q, k)| reg.index_of(VarRole::Rate(CoordId(q), k)))
+        .collect()
+}
+
+/// One equation e = 0 split as Σⱼ Mⱼ q̈ⱼ + h − Q: Mⱼ the coefficient of q̈ⱼ for each of
+/// `coords`, Q minus what is left when the variables `at_rest` are zero, h the rest; None when
+/// e is not linear in these accelerations. [`EquationsOfMotion::over`] splits each row so,
+/// `at_rest` every rate ([`rate_vars`]); the answer key splits the equation it writes so.
+pub(crate) fn split_row(
+    e: &Expr,
+    coords: &[CoordId],
+    at_rest: &[VarId],
+) -> Option<(Vec<Expr>, Expr, Expr)> {
+    let reg = e.registry();
+    let mut rest = e.clone();
+    let mut row = Vec::with_capacity(coords.len());
+    for &qj in coords {
+        let mij = e.partial_rate(qj, 2);
+        if !mij.partial_rate(qj, 2).is_zero() {
+            return None;
+        }
+        rest = &rest - &(&mij * &reg.ddot(qj));
+        row.push(mij);
+    }
+    let mut still = rest.clone();
+    for &v in at_rest {
+        still = still.substitute(v, &reg.zero());
+    }
+    Some((row, &rest - &still, -&still))
 }
 
 /// M(q) and Q − h compiled ([`EquationsOfMotion::compile`]).

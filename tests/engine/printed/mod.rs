@@ -7,6 +7,7 @@
 
 use std::collections::HashMap;
 use torseur::derivation::Value;
+use torseur::mechanism::Mechanism;
 
 mod macros;
 mod reader;
@@ -15,6 +16,71 @@ use macros::tokenize;
 pub(super) use macros::{Tok, course};
 pub(super) use reader::{Ctx, equations};
 use reader::{align_bodies, prove, prove_equality};
+
+/// Each J_eq form of an equation of motion (three displays: J_eq(q) = …, J_eq′(q) = dJ_eq/dq
+/// = …, and J_eq q̈ + ½ J_eq′ q̇² = Q), read back here: its printed left side is read with
+/// J_eq(q) and J_eq′(q) replaced by their printed values, and left − right must be the fast
+/// route's eom(q) up to its sign; the printed J_eq′ q̇ must be the time derivative of the
+/// printed J_eq. Returns how many were proven.
+fn prove_jeq_forms(ctx: &Ctx, m: &Mechanism, displays: &[torseur::latex::Display]) -> usize {
+    let find = |what: &str| displays.iter().find(|d| d.what == what);
+    // A display's `name &= value`, its value as one line.
+    let sides = |latex: &str| -> (String, String) {
+        let (l, r) = latex.split_once("&=").expect("a display with `&=`");
+        let flat = r.replace("\\\n", " ").replace('&', " ");
+        (l.trim().to_string(), flat.trim().to_string())
+    };
+    let read = |tex: &str| ctx.scalar(&tokenize(tex)).unwrap_or_else(|e| panic!("{tex}: {e}"));
+    let mut n = 0;
+    for d in displays {
+        let Some(id) = d.what.strip_prefix("J_eq form of ") else {
+            continue;
+        };
+        let (Some(j), Some(jp)) = (find(&format!("J_eq of {id}")), find(&format!("J_eq' of {id}")))
+        else {
+            panic!("{id}: a J_eq form without its J_eq and J_eq'");
+        };
+        let (j_name, j_value) = sides(&j.latex);
+        let (jp_def, jp_value) = sides(&jp.latex);
+        let jp_name = jp_def.split(" = ").next().unwrap().trim().to_string();
+        let (form, actions) = sides(&d.latex);
+        let within = |v: &str| format!("\\left({v}\\right)");
+        let left = form
+            .replace(&jp_name, &within(&jp_value))
+            .replace(&j_name, &within(&j_value));
+        assert!(
+            !left.contains("eq}"),
+            "{id}: a J_eq name left unread in {left}"
+        );
+        let coordinate = id
+            .strip_prefix("eom(")
+            .and_then(|r| r.strip_suffix(')'))
+            .expect("the J_eq form of an equation of motion");
+        let reg = m.reg();
+        let q = reg.coord(coordinate).unwrap();
+        let (jv, jpv) = (read(&j_value), read(&jp_value));
+        assert_eq!(
+            &jpv * &reg.dot(q),
+            jv.dt(),
+            "{id}: the printed J_eq' is not the derivative of the printed J_eq"
+        );
+        let written = &read(&left) - &read(&actions);
+        let quantity = torseur::quantity::Quantity::parse(id).unwrap();
+        let fast = torseur::derivation::derive_values(m, std::slice::from_ref(&quantity))
+            .unwrap()
+            .remove(0)
+            .value;
+        let Value::Scalar(eom) = fast else {
+            panic!("{id}: an equation of motion is a scalar")
+        };
+        assert!(
+            written == eom || written == -&eom,
+            "{id}: the printed J_eq form is not the equation of motion"
+        );
+        n += 1;
+    }
+    n
+}
 
 fn spec_paths() -> Vec<std::path::PathBuf> {
     // The library, one chain, and the reusable specs (Latin and Greek names, the link kinds
@@ -30,6 +96,7 @@ fn spec_paths() -> Vec<std::path::PathBuf> {
 #[test]
 fn every_printed_formula_is_the_engines_value() {
     let mut proven = 0;
+    let mut jeq = 0;
     for path in spec_paths() {
         let m = torseur::spec::load(&path).unwrap();
         let key = torseur::latex::answer_key_document(
@@ -123,6 +190,7 @@ fn every_printed_formula_is_the_engines_value() {
                 }
             }
         }
+        jeq += prove_jeq_forms(&ctx, &m, &key.displays);
         let mut fast: HashMap<String, Value> = HashMap::new();
         for d in &key.displays {
             let proof = match &d.rhs {
@@ -189,6 +257,9 @@ fn every_printed_formula_is_the_engines_value() {
         }
     }
     eprintln!("{proven} displayed formulas proven");
+    eprintln!("{jeq} J_eq forms proven");
+    // At least tests/specs/coulisse_ecossaise.json's.
+    assert!(jeq >= 1, "no J_eq form read back");
     assert!(proven > 300, "only {proven} formulas read back");
 }
 
@@ -259,6 +330,26 @@ fn the_reader_catches_a_wrong_sign() {
         )
         .is_err()
     );
+}
+
+/// An equation of motion written on several rows (the dynamic side on rows of its own, then
+/// `&= actions`) reads back side by side; a sign flipped on either side is caught.
+#[test]
+fn the_reader_reads_a_dynamic_side_on_rows_of_its_own() {
+    let m = super::regulator();
+    let ctx = Ctx::new(&m);
+    let e = |s: &str| Value::Scalar(m.reg().parse(s).unwrap());
+    let l = e("(A2 + m2*L2^2)*ddot(theta2) + f*dot(theta2)");
+    let r = e("-m2*g*L2*cos(theta2)");
+    let rows = |a: &str, b: &str| {
+        format!(
+            "&\\left(A_{{2}} + m_{{2}}\\,L_{{2}}^{{2}}\\right)\\ddot{{\\theta}}_{{2}} \\\\\n\
+             &\\quad {a} f\\,\\dot{{\\theta}}_{{2}} \\\\\n&= {b}m_{{2}}\\,g\\,L_{{2}}\\,\\cos\\theta_{{2}}"
+        )
+    };
+    assert_eq!(prove_equality(&ctx, &rows("+", "-"), &l, &r), Ok(()));
+    assert!(prove_equality(&ctx, &rows("-", "-"), &l, &r).is_err());
+    assert!(prove_equality(&ctx, &rows("+", ""), &l, &r).is_err());
 }
 
 /// The strings of a JSON value (`canonical` or `presentation`), in `Value::exprs` order.

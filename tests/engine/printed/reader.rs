@@ -312,9 +312,15 @@ pub(crate) fn equations(body: &str) -> Vec<(Vec<Tok>, Vec<Tok>)> {
         rows.last_mut().unwrap().push(t);
     }
     let mut eqs: Vec<(Vec<Tok>, Vec<Tok>)> = Vec::new();
-    // A wide left side on a row of its own (`&lhs`), its `&= …` on the next row.
+    // A wide left side on a row of its own (`&lhs`), continued by rows `&\quad …` (an
+    // equation of motion's dynamic side), its `&= …` on the next row.
     let mut alone: Option<Vec<Tok>> = None;
     for r in rows {
+        let more = [Tok::Sym('&'), Tok::Cmd("quad".into())];
+        if let (Some(lhs), true) = (alone.as_mut(), r.starts_with(&more)) {
+            lhs.extend_from_slice(&r[1..]);
+            continue;
+        }
         if let Some(lhs) = alone.take() {
             assert!(
                 r.starts_with(&[Tok::Sym('&'), Tok::Sym('=')]),
