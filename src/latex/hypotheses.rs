@@ -6,7 +6,7 @@ use super::page::{DisplayRole, Doc};
 use super::{escape_text, name, point, rich_text_or_escaped};
 use crate::derivation::Value;
 use crate::inertia::Symmetry;
-use crate::mechanism::{Hypothesis, Mechanism};
+use crate::mechanism::{Cause, Effect, Hypothesis, Mechanism, Stated};
 use std::fmt::Write;
 
 fn symmetry_text(
@@ -62,7 +62,7 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis) {
         .iter()
         .find(|(_, solids, _)| !solids.is_empty() && *solids == h.symmetric_solids)
         .map(|(n, _, e)| (n.clone(), e.clone()));
-    let old_effects: Vec<String> = if let Some((other, effects)) = same {
+    let old_effects: Vec<Effect> = if let Some((other, effects)) = same {
         let _ = writeln!(
             d.o,
             "Les symétries sont celles de l'hypothèse {} : mêmes matrices d'inertie.\n",
@@ -74,7 +74,7 @@ pub(super) fn hypothesis_block<'m>(d: &mut Doc<'m>, h: &'m Hypothesis) {
         // The symmetries' zeros are what the matrices show.
         h.effects
             .iter()
-            .filter(|e| !h.symmetric_solids.is_empty() && !e.contains("dot("))
+            .filter(|e| e.cause == Cause::Symmetry)
             .cloned()
             .collect()
     };
@@ -175,28 +175,18 @@ fn symmetry_sentence(
 }
 
 /// « Sous cette hypothèse : … », the effects of `h` not already said (`old_effects`).
-fn new_effects(d: &mut Doc, h: &Hypothesis, old_effects: &[String]) {
-    let m = d.m;
-    let new_effects: Vec<&String> = h
-        .effects
-        .iter()
+fn new_effects(d: &mut Doc, h: &Hypothesis, old_effects: &[Effect]) {
+    let side = |s: &Stated| match s {
+        Stated::Expr(e) => super::expr(e),
+        Stated::Name(n) => name(n),
+    };
+    let eff: Vec<String> = (h.effects.iter())
         .filter(|e| !old_effects.contains(e))
+        .map(|e| format!("${} = {}$", side(&e.lhs), side(&e.rhs)))
         .collect();
-    if new_effects.is_empty() {
+    if eff.is_empty() {
         return;
     }
-    let eff: Vec<String> = new_effects
-        .iter()
-        .map(|e| {
-            let (l, r) = e.split_once(" = ").unwrap_or((e, "0"));
-            // An angle held at a value may have no variable of its own: its name.
-            let side = |t: &str| match m.reg.parse(t) {
-                Ok(x) => super::expr(&x),
-                Err(_) => name(t),
-            };
-            format!("${} = {}$", side(l), side(r))
-        })
-        .collect();
     let _ = writeln!(d.o, "Sous cette hypothèse : {}.\n", eff.join(", "));
 }
 

@@ -84,7 +84,11 @@ pub(super) struct Doc<'m> {
     /// Isolated systems whose bilan of external actions is written → where.
     pub(super) bilans: HashMap<String, String>,
     /// Hypotheses stated: name, symmetric solids, effects.
-    pub(super) stated: Vec<(String, Vec<crate::mechanism::BodyId>, Vec<String>)>,
+    pub(super) stated: Vec<(
+        String,
+        Vec<crate::mechanism::BodyId>,
+        Vec<crate::mechanism::Effect>,
+    )>,
     /// Where the text is: « la question 3 ».
     pub(super) here: String,
     /// The hypothesis the current question works under.

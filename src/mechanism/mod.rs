@@ -57,13 +57,90 @@ pub struct Hypothesis {
     pub symmetric_solids: Vec<BodyId>,
     /// The variable and the value it takes.
     pub substitutions: Vec<(VarId, Expr)>,
-    /// Human-readable list of what is set (`D2 = 0`, `ddot(theta1) = 0`).
-    pub effects: Vec<String>,
+    /// What it sets, as the answer key states it (`D2 = 0`, `ddot(theta1) = 0`).
+    pub effects: Vec<Effect>,
     /// Small parameters: the results are kept to first order in them (after the
     /// substitutions).
     pub first_order: Vec<VarId>,
     /// A trial motion (« régime forcé »), whose substitutions are among `substitutions`.
     pub trial: Option<Trial>,
+}
+
+/// One thing a hypothesis sets, `lhs = rhs`: a product of inertia its symmetries make zero
+/// (`D2 = 0`), a rate or an acceleration (`ddot(theta1) = 0`), a coordinate held at a value
+/// (`theta2 = beta0`), a relation between parameters, a trial motion.
+///
+/// ```
+/// let m = torseur::spec::load(std::path::Path::new(concat!(
+///     env!("CARGO_MANIFEST_DIR"),
+///     "/derivations/regulateur_centrifuge.json"
+/// )))
+/// .unwrap();
+/// let h2 = m.hypotheses().iter().find(|h| h.name == "H2").unwrap();
+/// assert!(h2.effects.iter().any(|e| e.to_string() == "ddot(theta1) = 0"));
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Effect {
+    /// Why it holds.
+    pub cause: Cause,
+    /// The side set.
+    pub lhs: Stated,
+    /// Its value.
+    pub rhs: Stated,
+}
+
+/// Why an [`Effect`] holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cause {
+    /// A symmetry of a solid makes a product of inertia zero (or two moments equal).
+    Symmetry,
+    /// The hypothesis poses it: a motion, a rate, a relation, a trial.
+    Posed,
+}
+
+/// A side of an [`Effect`]: an expression of the registry, or a name the registry has no
+/// variable for (an angle held at a value, which then enters only through its cos and sin).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Stated {
+    /// An expression.
+    Expr(Expr),
+    /// A name as the spec writes it.
+    Name(String),
+}
+
+impl Stated {
+    /// `text` read with `reg`, else kept as a name.
+    pub(crate) fn read(reg: &Rc<Registry>, text: &str) -> Stated {
+        let text = text.trim();
+        reg.parse(text)
+            .map_or_else(|_| Stated::Name(text.to_string()), Stated::Expr)
+    }
+}
+
+impl std::fmt::Display for Stated {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Stated::Expr(e) => write!(f, "{e}"),
+            Stated::Name(n) => f.write_str(n),
+        }
+    }
+}
+
+impl Effect {
+    /// A posed effect `lhs = rhs`.
+    pub(crate) fn posed(lhs: Expr, rhs: Expr) -> Effect {
+        Effect {
+            cause: Cause::Posed,
+            lhs: Stated::Expr(lhs),
+            rhs: Stated::Expr(rhs),
+        }
+    }
+}
+
+impl std::fmt::Display for Effect {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} = {}", self.lhs, self.rhs)
+    }
 }
 
 /// A trial motion q(t) = motion of a hypothesis: its unknowns are solved so that eom(q) holds

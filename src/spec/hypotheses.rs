@@ -5,6 +5,7 @@
 use super::SpecError;
 use super::refusal::at;
 use crate::expr::{CoordId, CoordinateKind, Expr, Registry, VarId, VarRole};
+use crate::mechanism::{Cause, Effect, Stated};
 use crate::wire::HypothesisSpec;
 use std::rc::Rc;
 
@@ -57,6 +58,12 @@ fn rates(reg: &Rc<Registry>, q: CoordId, first: &Expr, subs: &mut Vec<(VarId, Ex
     }
 }
 
+/// q̇ = 0 and q̈ = 0, stated.
+fn at_rest(reg: &Rc<Registry>, q: CoordId, effects: &mut Vec<Effect>) {
+    effects.push(Effect::posed(reg.dot(q), reg.zero()));
+    effects.push(Effect::posed(reg.ddot(q), reg.zero()));
+}
+
 /// The substitutions and their statements (`dot(alpha) = 0`, `theta2 = beta0`) of a
 /// hypothesis' fixed coordinates, equilibrium, rates and relations, in that order.
 pub(super) fn motions(
@@ -64,7 +71,7 @@ pub(super) fn motions(
     h: &HypothesisSpec,
     path: &str,
     subs: &mut Vec<(VarId, Expr)>,
-    effects: &mut Vec<String>,
+    effects: &mut Vec<Effect>,
 ) -> Result<(), SpecError> {
     let mut seen: Vec<String> = Vec::new();
     let mut coord = |field: String, c: &str| -> Result<CoordId, SpecError> {
@@ -87,8 +94,7 @@ pub(super) fn motions(
     for (k, c) in h.fixed_coordinates.iter().enumerate() {
         let q = coord(format!("{path}.fixed_coordinates[{k}]"), c)?;
         rates(reg, q, &zero, subs);
-        effects.push(format!("dot({c}) = 0"));
-        effects.push(format!("ddot({c}) = 0"));
+        at_rest(reg, q, effects);
     }
     for (c, text) in &h.equilibrium {
         let field = format!("{path}.equilibrium.{c}");
@@ -104,17 +110,24 @@ pub(super) fn motions(
             }
         }
         rates(reg, q, &zero, subs);
-        effects.push(format!("{c} = {}", text.trim()));
-        effects.push(format!("dot({c}) = 0"));
-        effects.push(format!("ddot({c}) = 0"));
+        effects.push(Effect {
+            cause: Cause::Posed,
+            lhs: Stated::read(reg, c),
+            rhs: Stated::read(reg, text),
+        });
+        at_rest(reg, q, effects);
     }
     for (c, text) in &h.rates {
         let field = format!("{path}.rates.{c}");
         let q = coord(field.clone(), c)?;
         let e = constant(reg, &field, text)?;
         rates(reg, q, &e, subs);
-        effects.push(format!("dot({c}) = {}", text.trim()));
-        effects.push(format!("ddot({c}) = 0"));
+        effects.push(Effect {
+            cause: Cause::Posed,
+            lhs: Stated::Expr(reg.dot(q)),
+            rhs: Stated::read(reg, text),
+        });
+        effects.push(Effect::posed(reg.ddot(q), reg.zero()));
     }
     for (p, text) in &h.relations {
         let field = format!("{path}.relations.{p}");
@@ -128,7 +141,11 @@ pub(super) fn motions(
             *val = val.substitute(v, &e);
         }
         subs.push((v, e));
-        effects.push(format!("{p} = {}", text.trim()));
+        effects.push(Effect {
+            cause: Cause::Posed,
+            lhs: Stated::read(reg, p),
+            rhs: Stated::read(reg, text),
+        });
     }
     Ok(())
 }

@@ -4,7 +4,7 @@
 use super::SpecError;
 use super::refusal::{at, name_ok};
 use crate::expr::{CoordinateKind, Expr, Registry, VarId, VarRole};
-use crate::mechanism::Trial;
+use crate::mechanism::{Cause, Effect, Stated, Trial};
 use crate::wire::{HypothesisSpec, SpecFile};
 use std::rc::Rc;
 
@@ -56,7 +56,7 @@ pub(super) fn trial(
     h: &HypothesisSpec,
     path: &str,
     subs: &mut Vec<(VarId, Expr)>,
-    effects: &mut Vec<String>,
+    effects: &mut Vec<Effect>,
 ) -> Result<Option<Trial>, SpecError> {
     let Some(t) = &h.trial else { return Ok(None) };
     let field = format!("{path}.trial.coordinate");
@@ -103,7 +103,11 @@ pub(super) fn trial(
         }
         value = value.dt();
     }
-    effects.push(format!("{c} = {}", t.motion.trim()));
+    effects.push(Effect {
+        cause: Cause::Posed,
+        lhs: Stated::read(reg, c),
+        rhs: Stated::read(reg, &t.motion),
+    });
     Ok(Some(Trial {
         coord: q,
         motion,

@@ -8,7 +8,7 @@ use super::solved::Solved;
 use super::texts::{expression_texts, free_text_limit, free_texts};
 use crate::expr::{ExprError, Registry};
 use crate::frame::{Angle, Axis, FrameId, Frames, Rotation};
-use crate::mechanism::{Body, BodyId, Hypothesis, Mechanism};
+use crate::mechanism::{Body, BodyId, Cause, Effect, Hypothesis, Mechanism, Stated};
 use crate::point::{PointId, Points};
 use crate::quantity::Quantity;
 use crate::resolve::{Resolved, Unknowns};
@@ -390,7 +390,7 @@ fn hypotheses(
             let dd = reg.ddot(q);
             if let Some(v) = dd.single_variable() {
                 subs.push((v, reg.zero()));
-                effects.push(format!("ddot({c}) = 0"));
+                effects.push(Effect::posed(dd, reg.zero()));
             }
         }
         for (k, &b) in node.symmetric_solids.iter().enumerate() {
@@ -423,7 +423,7 @@ fn symmetric_solid(
     b: &Body,
     sp: &str,
     subs: &mut Vec<(crate::expr::VarId, crate::expr::Expr)>,
-    effects: &mut Vec<String>,
+    effects: &mut Vec<Effect>,
 ) -> Result<(), SpecError> {
     let sname = &b.name;
     let Some(ine) = &b.inertia else {
@@ -449,7 +449,12 @@ fn symmetric_solid(
                 })?;
             if !subs.iter().any(|(x, _)| *x == v) {
                 subs.push((v, reg.zero()));
-                effects.push(format!("{} = 0", e.to_string().trim_start_matches('-')));
+                let zeroed = if e.single_variable().is_some() { e.clone() } else { -e };
+                effects.push(Effect {
+                    cause: Cause::Symmetry,
+                    lhs: Stated::Expr(zeroed),
+                    rhs: Stated::Expr(reg.zero()),
+                });
             }
         }
         if let Some((a, bb)) = sym.equal_moments() {
@@ -476,7 +481,11 @@ fn symmetric_solid(
                     *val = val.substitute(v, ea);
                 }
                 subs.push((v, ea.clone()));
-                effects.push(format!("{eb} = {ea}"));
+                effects.push(Effect {
+                    cause: Cause::Symmetry,
+                    lhs: Stated::Expr(eb.clone()),
+                    rhs: Stated::Expr(ea.clone()),
+                });
             }
         }
     }
