@@ -316,28 +316,33 @@ impl Fourier {
     }
 
     /// d/dt: Ċ f(a) + C ȧ f′(a), with ȧ = Σ kᵢ q̇ᵢ, d cos a = −ȧ sin a, d sin a = ȧ cos a.
-    pub fn dt(&self) -> Fourier {
+    /// Ċ and ȧ hold cos and sin where a coordinate's rate is driven by others' (ẋ = −R θ̇ sin θ
+    /// of a loop): each piece is then put in the form and multiplied out. None when such a
+    /// rate has no form (the 1/cos φ of a loop closure).
+    pub fn dt(&self) -> Option<Fourier> {
         let reg = &self.reg;
-        let mut parts: BTreeMap<Harmonic, Vec<Expr>> = BTreeMap::new();
+        let mut out = Fourier::of_coefficients(reg, std::iter::empty());
         for ((a, f), c) in &self.terms {
-            parts.entry((a.clone(), *f)).or_default().push(c.dt());
-            if a.terms().is_empty() {
-                continue;
+            let mut pieces = vec![(c.dt(), (a.clone(), *f))];
+            if !a.terms().is_empty() {
+                let rate = Expr::sum(
+                    reg,
+                    a.terms()
+                        .iter()
+                        .map(|&(q, k)| &reg.rate(q, 1) * &reg.integer(k as i64)),
+                );
+                let (g, sign) = match f {
+                    Trig::Cos => (Trig::Sin, -1),
+                    Trig::Sin => (Trig::Cos, 1),
+                };
+                pieces.push((&(c * &rate) * &reg.integer(sign), (a.clone(), g)));
             }
-            let rate = Expr::sum(
-                reg,
-                a.terms()
-                    .iter()
-                    .map(|&(q, k)| &reg.rate(q, 1) * &reg.integer(k as i64)),
-            );
-            let (g, sign) = match f {
-                Trig::Cos => (Trig::Sin, -1),
-                Trig::Sin => (Trig::Cos, 1),
-            };
-            let term = &(c * &rate) * &reg.integer(sign);
-            parts.entry((a.clone(), g)).or_default().push(term);
+            for (coef, h) in pieces {
+                let one = Fourier::of_coefficients(reg, std::iter::once((h, reg.one())));
+                out = out.add(&coef.to_fourier()?.mul(&one));
+            }
         }
-        Fourier::from_parts(reg, parts)
+        Some(out)
     }
 }
 
