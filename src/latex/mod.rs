@@ -206,14 +206,22 @@ pub(crate) fn coordinate(reg: &crate::expr::Registry, q: crate::expr::CoordId) -
 /// assert_eq!(torseur::latex::escape_text("\\input{x} 50% & $"),
 ///            "\\textbackslash{}input\\{x\\} 50\\% \\& \\$");
 /// assert_eq!(torseur::latex::escape_text("$\u{307}"), "\\$");
+/// // Dashes as TeX writes them; a time keeps babel-french's space off its colons.
+/// assert_eq!(torseur::latex::escape_text("Treuil — essai à 08:46 : C ≤ 2"),
+///            "Treuil --- essai à 08\\string:46 : C $\\leq$ 2");
 /// ```
 pub fn escape_text(s: &str) -> String {
     let mut o = String::with_capacity(s.len());
     // The last character printed, when a combining dot may go over it: where its LaTeX starts
     // in `o`, and its LaTeX in math mode.
     let mut dottable: Option<(usize, String)> = None;
-    for c in s.chars() {
+    let mut chars = s.chars().peekable();
+    let mut previous = None;
+    while let Some(c) = chars.next() {
         let start = o.len();
+        let between_digits = previous.is_some_and(|p: char| p.is_ascii_digit())
+            && chars.peek().is_some_and(char::is_ascii_digit);
+        previous = Some(c);
         let mut letter = None;
         match c {
             '\\' => o.push_str("\\textbackslash{}"),
@@ -231,6 +239,8 @@ pub fn escape_text(s: &str) -> String {
             '\n' | '\r' | '\t' => o.push(' '),
             // C0, DEL and C1: TeX reads them as invalid or undefined characters.
             c if c.is_control() => {}
+            // A time or a ratio (08:46, 1:2): not French punctuation, no space before it.
+            ':' if between_digits => o.push_str("\\string:"),
             c if c.is_ascii_alphanumeric() => {
                 o.push(c);
                 letter = Some(format!("\\mathrm{{{c}}}"));
@@ -241,6 +251,19 @@ pub fn escape_text(s: &str) -> String {
             '∧' => o.push_str("$\\wedge$"),
             '·' => o.push_str("$\\cdot$"),
             '−' => o.push('-'),
+            '–' => o.push_str("--"),
+            '—' => o.push_str("---"),
+            '…' => o.push_str("\\dots{}"),
+            '‘' => o.push('`'),
+            '“' | '”' => o.push('"'),
+            'œ' => o.push_str("\\oe{}"),
+            'Œ' => o.push_str("\\OE{}"),
+            '\u{202F}' | '\u{2009}' => o.push(' '),
+            '≤' => o.push_str("$\\leq$"),
+            '≥' => o.push_str("$\\geq$"),
+            '≠' => o.push_str("$\\neq$"),
+            '≈' => o.push_str("$\\approx$"),
+            '→' => o.push_str("$\\rightarrow$"),
             c if greek(c).is_some() => {
                 let g = greek(c).unwrap_or_default();
                 let _ = write!(o, "$\\{g}$");

@@ -22,6 +22,9 @@ const TEXT_WORDS: &[&str] = &[
     "textasciitilde",
     "textless",
     "textgreater",
+    "dots",
+    "oe",
+    "OE",
 ];
 
 /// Text-mode control symbols.
@@ -193,6 +196,12 @@ impl Reader<'_> {
                         || (0xA0..=0xFF).contains(&(c as u32));
                     if !ok {
                         return Err(format!("raw `{c}` in text"));
+                    }
+                }
+                // `\string:`: the colon itself, out of babel-french's reach (a time 08:46).
+                Tok::Word(w) if w == "string" => {
+                    if self.next() != Some(Tok::Ch(':')) {
+                        return Err("`\\string` not before a colon".into());
                     }
                 }
                 Tok::Word(w) => {
