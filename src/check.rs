@@ -7,7 +7,7 @@ use crate::mechanism::{Hypothesis, Mechanism};
 use crate::numeric::{NumericError, NumericModel, Sample};
 use crate::output::{Values, ValuesError, numeric_point};
 use crate::quantity::{Quantity, QuantityKind};
-use crate::units::{DimensionError, Dimensions, check_value};
+use crate::units::{DimensionError, Dimensions, homogeneous_value};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::collections::BTreeMap;
@@ -356,7 +356,7 @@ pub fn compare_trial_values(
 
 /// Checks every requested quantity of the spec, in general and under each hypothesis: against
 /// the float backend, and for its dimension (every term of every component of the quantity's
-/// dimension, [`crate::units::check_value`]; terms holding a parameter without a unit are not
+/// dimension, [`crate::units::homogeneous_value`]; terms holding a parameter without a unit are not
 /// checked).
 ///
 /// ```
@@ -416,7 +416,7 @@ pub fn check(m: &Mechanism, samples: usize, seed: u64) -> Result<CheckReport, Ch
             dimensions.push(DimensionRow {
                 quantity: q.to_string(),
                 hypothesis: h.map(|h| h.name.clone()),
-                error: check_value(m, &dims, q, value).err(),
+                error: homogeneous_value(m, &dims, q, value).err(),
             });
         }
         // A linearisation, or a result kept to first order in small parameters, is exact

@@ -536,7 +536,7 @@ fn equations(
     let mut eoms: Equations = Vec::new();
     for (i, th) in m.dynamics.theorems.iter().enumerate() {
         let r = residual(m, th, cache);
-        check_linear(m, &r).map_err(|(first, second)| PfdError::NotLinear {
+        validate_linear(m, &r).map_err(|(first, second)| PfdError::NotLinear {
             theorem: i,
             first,
             second,
@@ -746,7 +746,7 @@ fn inverse_dynamics(
 
 /// Unknowns must enter linearly (no term with two unknown factors); else the two that multiply,
 /// the first pair in the unknowns' order (an unknown with itself for a square).
-fn check_linear(m: &Mechanism, r: &Expr) -> Result<(), (String, String)> {
+fn validate_linear(m: &Mechanism, r: &Expr) -> Result<(), (String, String)> {
     let vars = unknown_vars(m);
     // The pairs (i, j) of unknowns, by their rank in `vars`, that some term multiplies.
     let mut products = std::collections::BTreeSet::new();

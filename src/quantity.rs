@@ -197,7 +197,7 @@ impl Quantity {
         let body = body.replace(' ', "");
         if let Some(rest) = body.strip_prefix("d/dt") {
             let (kind, projection) = derivative(rest).map_err(|r| err(&r))?;
-            check_written(&kind, basis.is_some(), projection.is_some()).map_err(err)?;
+            validate_written(&kind, basis.is_some(), projection.is_some()).map_err(err)?;
             return Ok(Quantity {
                 kind,
                 basis,
@@ -209,14 +209,14 @@ impl Quantity {
             return Err(err(&hint));
         }
         let (core, projection) = split_projection(&body).map_err(|r| err(&r))?;
-        let kind = if !core.contains('(') && crate::expr::check_identifier(core).is_ok() {
+        let kind = if !core.contains('(') && crate::expr::validate_identifier(core).is_ok() {
             QuantityKind::Unknown(core.to_string())
         } else if let Some(rest) = core.strip_prefix('{') {
             torsor_kind(rest).map_err(|r| err(&r))?
         } else {
             call_kind(core).map_err(|r| err(&r))?
         };
-        check_written(&kind, basis.is_some(), projection.is_some()).map_err(err)?;
+        validate_written(&kind, basis.is_some(), projection.is_some()).map_err(err)?;
         Ok(Quantity {
             kind,
             basis,
@@ -383,8 +383,8 @@ fn motion(s: &str) -> Result<Motion, String> {
     let (a, b) = s
         .split_once('/')
         .ok_or_else(|| format!("expected a motion moving/reference, got `{s}`"))?;
-    check_system(a)?;
-    check_name(b)?;
+    validate_system(a)?;
+    validate_name(b)?;
     Ok(Motion {
         moving: a.to_string(),
         reference: b.to_string(),
@@ -395,8 +395,8 @@ fn action(s: &str) -> Result<ActionRef, String> {
     let (a, b) = s
         .split_once("->")
         .ok_or_else(|| format!("expected an action from->on, got `{s}`"))?;
-    check_name(a)?;
-    check_system(b)?;
+    validate_name(a)?;
+    validate_system(b)?;
     Ok(ActionRef {
         from: a.to_string(),
         on: b.to_string(),
@@ -405,12 +405,12 @@ fn action(s: &str) -> Result<ActionRef, String> {
 
 /// A system: a solid or a set, or several joined by `+` (`1+2`, a carrier with the mass it
 /// carries), each a name.
-fn check_system(s: &str) -> Result<(), String> {
-    s.split('+').try_for_each(check_name)
+fn validate_system(s: &str) -> Result<(), String> {
+    s.split('+').try_for_each(validate_name)
 }
 
 /// Names in the notation are ASCII letters, digits and `_`, starting with a letter or digit.
-pub fn check_name(s: &str) -> Result<(), String> {
+pub fn validate_name(s: &str) -> Result<(), String> {
     if s.is_empty() {
         return Err("empty name".to_string());
     }
@@ -434,7 +434,7 @@ fn split_basis(s: &str) -> Result<(&str, Option<String>), String> {
             let name = basis
                 .strip_prefix('B')
                 .ok_or("the basis after `in` is written B<frame>, e.g. B2")?;
-            check_name(name)?;
+            validate_name(name)?;
             Ok((b.trim(), Some(name.to_string())))
         }
         None => Ok((s, None)),
@@ -463,7 +463,7 @@ fn split_projection(body: &str) -> Result<(&str, Option<Projection>), String> {
              it: .{axis}0 for the ground, .{axis}2 for frame 2, not .{axis}"
         ));
     }
-    check_name(&frame)?;
+    validate_name(&frame)?;
     Ok((&body[..pos + 1], Some((frame, axis))))
 }
 
@@ -472,7 +472,7 @@ fn torsor_kind(rest: &str) -> Result<QuantityKind, String> {
     let (inner, point) = rest
         .split_once("}_")
         .ok_or("a torsor is written {C(S/R)}_A")?;
-    check_name(point)?;
+    validate_name(point)?;
     let (letter, args) = call(inner).ok_or("a torsor is written {C(S/R)}_A")?;
     let point = point.to_string();
     if letter == "T" {
@@ -493,7 +493,7 @@ fn point_motion(args: &str) -> Result<(String, Motion), String> {
     let (p, m) = args
         .split_once(',')
         .ok_or_else(|| "expected (point,moving/reference)".to_string())?;
-    check_name(p)?;
+    validate_name(p)?;
     Ok((p.to_string(), motion(m)?))
 }
 
@@ -518,18 +518,18 @@ fn call_kind(core: &str) -> Result<QuantityKind, String> {
             let (a, reference) = args
                 .rsplit_once('/')
                 .ok_or("a power is written P(from->on/reference), e.g. P(ext->E/0)")?;
-            check_name(reference)?;
+            validate_name(reference)?;
             QuantityKind::Power {
                 action: action(a)?,
                 reference: reference.to_string(),
             }
         }
         "Pint" => {
-            check_system(args)?;
+            validate_system(args)?;
             QuantityKind::InternalPower(args.to_string())
         }
         "J_eq" => {
-            crate::expr::check_identifier(args)?;
+            crate::expr::validate_identifier(args)?;
             QuantityKind::EquivalentInertia(args.to_string())
         }
         "R" => QuantityKind::ActionResultant(action(args)?),
@@ -537,18 +537,18 @@ fn call_kind(core: &str) -> Result<QuantityKind, String> {
             let (p, a) = args
                 .split_once(',')
                 .ok_or("a moment of an action is written M(A,from->on)")?;
-            check_name(p)?;
+            validate_name(p)?;
             QuantityKind::ActionMoment {
                 point: p.to_string(),
                 action: action(a)?,
             }
         }
         "eom" => {
-            crate::expr::check_identifier(args)?;
+            crate::expr::validate_identifier(args)?;
             QuantityKind::Eom(args.to_string())
         }
         "dot" | "ddot" => {
-            crate::expr::check_identifier(args)?;
+            crate::expr::validate_identifier(args)?;
             QuantityKind::Rate {
                 coordinate: args.to_string(),
                 order: if name == "dot" { 1 } else { 2 },
@@ -558,8 +558,8 @@ fn call_kind(core: &str) -> Result<QuantityKind, String> {
             let (p, solid) = args
                 .split_once(',')
                 .ok_or("an inertia operator is written I(P,S)")?;
-            check_name(p)?;
-            check_name(solid)?;
+            validate_name(p)?;
+            validate_name(solid)?;
             QuantityKind::Inertia {
                 point: p.to_string(),
                 solid: solid.to_string(),
@@ -584,7 +584,11 @@ fn call_kind(core: &str) -> Result<QuantityKind, String> {
 }
 
 /// Whether a kind takes the basis and projection written after it.
-fn check_written(kind: &QuantityKind, basis: bool, projection: bool) -> Result<(), &'static str> {
+fn validate_written(
+    kind: &QuantityKind,
+    basis: bool,
+    projection: bool,
+) -> Result<(), &'static str> {
     if projection && matches!(kind, QuantityKind::Inertia { .. }) {
         return Err("an inertia operator cannot be projected");
     }
@@ -703,7 +707,7 @@ fn derivative(rest: &str) -> Result<(QuantityKind, Option<Projection>), String> 
         Some((f, p)) => (f, Some(p)),
         None => (framed, None),
     };
-    check_name(frame).map_err(|e| format!("the frame of the derivative: {e}"))?;
+    validate_name(frame).map_err(|e| format!("the frame of the derivative: {e}"))?;
     let projection = match projected {
         None => None,
         Some(p) => {

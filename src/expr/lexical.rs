@@ -15,12 +15,12 @@ pub(super) const MAX_POWER: i64 = 255;
 pub(super) const MAX_NUMBER_DIGITS: usize = 100;
 
 /// Only these characters can appear in an expression of the spec syntax.
-pub(super) fn check_chars(s: &str) -> Result<(), String> {
-    check_chars_with(s, FUNCTIONS)
+pub(super) fn validate_chars(s: &str) -> Result<(), String> {
+    validate_chars_with(s, FUNCTIONS)
 }
 
-/// [`check_chars`] with another list of functions (those of a number in a values file).
-pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String> {
+/// [`validate_chars`] with another list of functions (those of a number in a values file).
+pub(super) fn validate_chars_with(s: &str, functions: &[&str]) -> Result<(), String> {
     if s.len() > MAX_INPUT {
         return Err(format!(
             "{} characters, longer than the {MAX_INPUT} a typed expression may have",
@@ -71,12 +71,12 @@ pub(super) fn check_chars_with(s: &str, functions: &[&str]) -> Result<(), String
     if s.split_whitespace().collect::<String>().contains("()") {
         return Err("empty parentheses".to_string());
     }
-    check_powers(s)
+    validate_powers(s)
 }
 
 /// Each number literal has at most [`MAX_NUMBER_DIGITS`] digits. A number starts with a digit
 /// or a `.` before a digit that does not continue a name (`theta12` is a name).
-pub(super) fn check_numbers(s: &str) -> Result<(), String> {
+pub(super) fn validate_numbers(s: &str) -> Result<(), String> {
     let b = s.as_bytes();
     let mut i = 0;
     while i < b.len() {
@@ -110,7 +110,7 @@ pub(super) fn check_numbers(s: &str) -> Result<(), String> {
 
 /// Exponents are integer literals, nested powers multiply to at most [`MAX_POWER`], and
 /// `a^b^c` is refused: symbolica would otherwise compute `4444^444442` before any check of ours.
-fn check_powers(s: &str) -> Result<(), String> {
+fn validate_powers(s: &str) -> Result<(), String> {
     let b = s.as_bytes();
     let skip = |mut i: usize| {
         while i < b.len() && b[i].is_ascii_whitespace() {
@@ -408,7 +408,7 @@ pub(super) fn names_in(s: &str) -> Vec<(usize, usize, bool)> {
 }
 
 pub(super) fn parse_atom(s: &str) -> Result<Atom, ExprError> {
-    check_chars(s).map_err(|reason| ExprError::Parse {
+    validate_chars(s).map_err(|reason| ExprError::Parse {
         input: s.to_string(),
         reason,
     })?;
@@ -419,7 +419,7 @@ pub(super) fn parse_atom(s: &str) -> Result<Atom, ExprError> {
 pub(super) fn parse_checked(s: &str) -> Result<Atom, ExprError> {
     // Every text symbolica reads passes here (lexical scans included): the bound on number
     // literals is checked first.
-    let exact = check_numbers(s)
+    let exact = validate_numbers(s)
         .and_then(|()| exact_decimals(s))
         .map_err(|reason| ExprError::Parse {
             input: s.to_string(),

@@ -46,7 +46,7 @@ pub use registry::{
     MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, Registry,
 };
 pub use time::pulsations_in;
-pub use words::{PI, RESERVED, char_hint, check_identifier, reserved_word};
+pub use words::{PI, RESERVED, char_hint, reserved_word, validate_identifier};
 
 use crate::excerpt::{bounded, excerpt};
 use std::collections::HashMap;

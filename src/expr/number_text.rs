@@ -3,7 +3,7 @@
 //! of the parameters. symbolica parses the text; the tree is evaluated in f64.
 
 use super::ExprError;
-use super::lexical::{check_chars_with, names_in, parse_checked};
+use super::lexical::{names_in, parse_checked, validate_chars_with};
 use symbolica::atom::{AtomCore, AtomView, Symbol};
 use symbolica::domains::rational::Q;
 
@@ -20,7 +20,7 @@ use symbolica::domains::rational::Q;
 /// assert!(evaluate_number("k/2", &v).unwrap_err().to_string().contains("`k`"));
 /// ```
 pub fn evaluate_number(text: &str, names: &dyn Fn(&str) -> Option<f64>) -> Result<f64, ExprError> {
-    check_chars_with(text, FUNCTIONS).map_err(|reason| ExprError::Parse {
+    validate_chars_with(text, FUNCTIONS).map_err(|reason| ExprError::Parse {
         input: text.to_string(),
         reason,
     })?;

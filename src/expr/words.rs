@@ -7,13 +7,13 @@ use super::*;
 /// digits or `_`, at most 32 characters. (`21` would read as a number.)
 ///
 /// ```
-/// assert!(torseur::expr::check_identifier("theta1").is_ok());
-/// assert!(torseur::expr::check_identifier("21").is_err());
-/// assert!(torseur::expr::check_identifier("m-1").is_err());
-/// let e = torseur::expr::check_identifier("𝜋").unwrap_err();
+/// assert!(torseur::expr::validate_identifier("theta1").is_ok());
+/// assert!(torseur::expr::validate_identifier("21").is_err());
+/// assert!(torseur::expr::validate_identifier("m-1").is_err());
+/// let e = torseur::expr::validate_identifier("𝜋").unwrap_err();
 /// assert!(e.ends_with("; the constant π is written pi: 2*pi*R"), "{e}");
 /// ```
-pub fn check_identifier(n: &str) -> Result<(), String> {
+pub fn validate_identifier(n: &str) -> Result<(), String> {
     let mut chars = n.chars();
     let first_ok = chars.next().is_some_and(|c| c.is_ascii_alphabetic());
     if !first_ok || n.len() > 32 || !n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {

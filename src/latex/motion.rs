@@ -301,7 +301,8 @@ fn equivalent_inertia(doc: &mut Doc, id: &str, f: &CourseForm, q: CoordId) {
         "et les termes en ${dq_tex}^{{2}}$ sont exactement $\\frac{{1}}{{2}}\\,{jeqp}\\,\
          {dq_tex}^{{2}}$, avec"
     );
-    let d = format!("{jeqp} = \\frac{{\\mathrm{{d}}{sym}_{{\\mathrm{{eq}}}}}}{{\\mathrm{{d}}{qn}}}");
+    let d =
+        format!("{jeqp} = \\frac{{\\mathrm{{d}}{sym}_{{\\mathrm{{eq}}}}}}{{\\mathrm{{d}}{qn}}}");
     doc.show_keyed(
         DisplayRole::Step,
         &format!("J_eq' of {id}"),

@@ -361,7 +361,7 @@ pub(super) fn settle(m: &NumericModel, v: &mut Values) -> Result<(), String> {
 /// The closures' shape, checked at three configurations (parameters fixed, coordinates
 /// varied): each closure's nonzero ground components as many as its dependent coordinates,
 /// none without a coordinate, and their derivative invertible in the dependent rates.
-pub(super) fn check_shape(m: &NumericModel) -> Result<(), NumericError> {
+pub(super) fn validate_shape(m: &NumericModel) -> Result<(), NumericError> {
     screw_motions_hold(m)?;
     if m.closures.is_empty() && m.rolling.is_empty() && determining(m).next().is_none() {
         return Ok(());

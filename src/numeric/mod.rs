@@ -337,17 +337,17 @@ impl NumericModel {
         model.closures = closure::build(spec, &model, &trees)?;
         model.rolling = trees.rolling.clone();
         model.helices = closure::helices(spec, &model, &trees)?;
-        closure::check_shape(&model)?;
+        closure::validate_shape(&model)?;
         model.dynamics = dynamics::build(spec, &model, &trees, unknowns)?;
         model::mark_positive(&mut model);
         model.uses_time = model.writes_time();
-        model.check_laws()?;
+        model.validate_laws()?;
         Ok(model)
     }
 
     /// Coulomb's laws: each contact slides along its tangent and never across it, at three
     /// samples of its own (not checked when the mechanism cannot be sampled: `check` says so).
-    fn check_laws(&self) -> Result<(), NumericError> {
+    fn validate_laws(&self) -> Result<(), NumericError> {
         use rand::SeedableRng;
         if self.dynamics.links.iter().all(|l| l.law.is_none()) {
             return Ok(());
@@ -360,7 +360,7 @@ impl NumericModel {
             };
             vals.push(kin::values(self, &s)?);
         }
-        dynamics::check_sliding(self, &vals)
+        dynamics::validate_sliding(self, &vals)
     }
 
     /// Whether the spec writes the time t (a forcing F0 cos(Ω t), a frame turned by Ω t):

@@ -139,7 +139,7 @@ impl Names<'_> {
         )?;
         let k = expr::kind(&node)?;
         divisors(&node)?;
-        expr::check_time(&node, ctx == Context::Angle)?;
+        expr::validate_time(&node, ctx == Context::Angle)?;
         match (ctx, k) {
             (Context::Position, Kind::Scalar) => Err(
                 "a position is a vector: every term holds one basis vector (x0, y1, z2, …)".into(),

@@ -286,7 +286,7 @@ fn point_where(
     why: &str,
 ) -> Result<Vec<f64>, ValuesError> {
     let reg = &m.reg;
-    check_names(reg, values)?;
+    validate_names(reg, values)?;
     let mut missing = Missing::default();
     let mut point = Vec::with_capacity(reg.nvars());
     for i in reg.var_ids() {
@@ -314,7 +314,7 @@ fn point_where(
 }
 
 /// Every name of the values file is a parameter, a coordinate or an unknown of the PFD.
-fn check_names(reg: &Registry, values: &Values) -> Result<(), ValuesError> {
+fn validate_names(reg: &Registry, values: &Values) -> Result<(), ValuesError> {
     for p in values.parameters.keys() {
         if p == crate::expr::PI {
             return Err(ValuesError(

@@ -21,8 +21,8 @@
 //! assert!(trees.frames[f2].parent < f2);
 //! ```
 
-use crate::expr::{RESERVED, check_identifier};
-use crate::quantity::check_name;
+use crate::expr::{RESERVED, validate_identifier};
+use crate::quantity::validate_name;
 use crate::wire::SpecFile;
 use carried::{carriers, isolations, solid_frame};
 pub use constraints::{ClosureNode, HelixNode, RollingNode};
@@ -190,7 +190,7 @@ fn distinct<'a>(
 ) -> Result<(), Refusal> {
     for (i, n) in names.enumerate() {
         let path = format!("{list}[{i}].name");
-        check_name(n).map_err(|m| at(&path, m))?;
+        validate_name(n).map_err(|m| at(&path, m))?;
         if !taken.insert(n) {
             return Err(at(path, format!("duplicate {what} `{n}`")));
         }
@@ -271,7 +271,7 @@ fn basis_vector_clash(spec: &SpecFile, what: &str, n: &str) -> Option<String> {
 
 /// A word expressions may use as a name, at `path`: an identifier, not a word of the syntax.
 fn word(path: &str, n: &str) -> Result<(), Refusal> {
-    check_identifier(n).map_err(|m| at(path, m))?;
+    validate_identifier(n).map_err(|m| at(path, m))?;
     if RESERVED.contains(&n) {
         return Err(at(path, crate::expr::reserved_word(n)));
     }
@@ -376,7 +376,7 @@ fn sets<'a>(
     let mut sets = BTreeMap::new();
     for (name, members) in &spec.sets {
         let path = format!("sets.{name}");
-        check_name(name).map_err(|m| at(&path, m))?;
+        validate_name(name).map_err(|m| at(&path, m))?;
         if solids.iter().any(|s| s.name == name) {
             return Err(at(path, format!("`{name}` is already a solid")));
         }
@@ -412,7 +412,7 @@ fn hypotheses<'a>(
     let mut out: Vec<HypothesisNode> = Vec::with_capacity(spec.hypotheses.len());
     for (i, h) in spec.hypotheses.iter().enumerate() {
         let path = format!("hypotheses[{i}]");
-        check_name(&h.name).map_err(|m| at(format!("{path}.name"), m))?;
+        validate_name(&h.name).map_err(|m| at(format!("{path}.name"), m))?;
         if out.iter().any(|o| o.name == h.name) {
             return Err(at(
                 format!("{path}.name"),
@@ -521,7 +521,7 @@ type Tree<'a> = (Vec<(usize, usize)>, BTreeMap<&'a str, usize>);
 
 /// The frames' tree: the ground and the frames named once, each after its parent.
 fn frame_tree(spec: &SpecFile) -> Result<Tree<'_>, Refusal> {
-    check_name(&spec.ground).map_err(|m| at("ground", m))?;
+    validate_name(&spec.ground).map_err(|m| at("ground", m))?;
     let mut taken = HashSet::from([spec.ground.as_str()]);
     let names: Vec<&str> = spec.frames.iter().map(|f| f.name.as_str()).collect();
     distinct("frame", "frames", names.iter().copied(), &mut taken)?;
@@ -538,7 +538,7 @@ fn frame_tree(spec: &SpecFile) -> Result<Tree<'_>, Refusal> {
 /// from, and their positions by name.
 fn point_tree(spec: &SpecFile) -> Result<(Vec<PointNode<'_>>, BTreeMap<&str, usize>), Refusal> {
     let origin = ground_origin(spec);
-    check_name(origin).map_err(|m| at("ground_origin", m))?;
+    validate_name(origin).map_err(|m| at("ground_origin", m))?;
     let mut taken = HashSet::from([origin]);
     let names: Vec<&str> = spec.points.iter().map(|p| p.name.as_str()).collect();
     distinct("point", "points", names.iter().copied(), &mut taken)?;

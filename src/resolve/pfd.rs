@@ -4,7 +4,7 @@
 //! coordinates, and the parameters standing for dry friction's signs.
 
 use super::{Refusal, Resolved, SolidNode, at, course_vector, distinct, find, readable};
-use crate::expr::check_identifier;
+use crate::expr::validate_identifier;
 use crate::wire::{LinkKind, LinkSpec, ParameterSpec, SpecFile, TheoremKind};
 use std::borrow::Cow;
 use std::collections::{BTreeMap, HashSet};
@@ -587,7 +587,7 @@ pub fn with_signs(spec: &SpecFile) -> Result<Cow<'_, SpecFile>, Refusal> {
             };
             return Err(at(format!("links[{i}].{field}"), why));
         }
-        check_identifier(&name).map_err(|m| {
+        validate_identifier(&name).map_err(|m| {
             let why = format!("the sign of its relative rate under dry friction is named {m}");
             at(format!("links[{i}].name"), why)
         })?;
@@ -611,7 +611,7 @@ pub(super) fn actions<'a>(known: &Known<'_, 'a>) -> Result<Vec<ActionNode<'a>>, 
     let mut out = Vec::with_capacity(spec.actions.len());
     for (i, a) in spec.actions.iter().enumerate() {
         let path = format!("actions[{i}]");
-        check_identifier(&a.name).map_err(|m| at(format!("{path}.name"), m))?;
+        validate_identifier(&a.name).map_err(|m| at(format!("{path}.name"), m))?;
         let from = known.side(format!("{path}.from"), &a.from)?;
         let Side::Solid(on) = known.side(format!("{path}.on"), &a.on)? else {
             return Err(at(format!("{path}.on"), "an action is received by a solid"));

@@ -88,7 +88,7 @@ impl TimeLaw {
     /// Each piece that starts before `end` evaluated where it starts (0 for the first, the
     /// previous piece's end for the others): a law that divides by zero there (`1/t` at
     /// t = 0), or whose value is not finite, is refused before any integration.
-    pub fn check_starts(&self, end: f64) -> Result<(), LawError> {
+    pub fn validate_starts(&self, end: f64) -> Result<(), LawError> {
         let mut start = 0.0_f64;
         for (k, (until, _)) in self.pieces.iter().enumerate() {
             if start < end && until.is_none_or(|u| u > start) {

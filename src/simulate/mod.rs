@@ -240,7 +240,7 @@ pub fn simulate_with(
         ..Options::default()
     };
     let y0 = plan.initial_state();
-    check_loop_start(m, sc, &mut plan, &y0)?;
+    validate_loop_start(m, sc, &mut plan, &y0)?;
     let traj = integrate(|t, y, dy| plan.rhs(m, t, y, dy), &y0, sc.duration, &opts)?;
     let (mut columns, shown) = empty_columns(m, sc, &plan, integrals, traj.len());
     let drift = fill_columns(m, sc, &mut plan, &traj, &shown, &mut columns)?;
@@ -255,7 +255,7 @@ pub fn simulate_with(
 }
 
 /// The dependent coordinates start on the loop: their initial values are given.
-fn check_loop_start(
+fn validate_loop_start(
     m: &Mechanism,
     sc: &ScenarioSpec,
     plan: &mut Plan,

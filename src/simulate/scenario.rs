@@ -98,7 +98,7 @@ impl Plan {
     ) -> Result<Plan, SimulateError> {
         let err = |s: String| SimulateError::Scenario(format!("scenario `{}`: {s}", sc.name));
         let sol = pfd::solve(m).map_err(|e| err(e.to_string()))?;
-        check_values(m, sc, &sol.inputs).map_err(err)?;
+        validate_values(m, sc, &sol.inputs).map_err(err)?;
         let base = base_values(m, sc).map_err(err)?;
         let (mut imposed, mut breakpoints) = imposed_laws(m, sc).map_err(err)?;
         let (free, driven) = split_coordinates(m, sc, &base, &mut imposed);
@@ -367,7 +367,7 @@ fn set(m: &Mechanism, q: CoordId, v: [f64; 3], point: &mut [f64]) {
 
 /// Every parameter given a finite value, and only parameters or `inputs` of the equations of
 /// motion (a motor torque; a dry friction's sign is set by the simulation).
-fn check_values(m: &Mechanism, sc: &ScenarioSpec, inputs: &[String]) -> Result<(), String> {
+fn validate_values(m: &Mechanism, sc: &ScenarioSpec, inputs: &[String]) -> Result<(), String> {
     let reg = &m.reg;
     let sign = |p: &str| m.dynamics.dry.iter().any(|d| d.sign == p);
     for p in reg.parameters() {
@@ -461,7 +461,7 @@ fn imposed_laws(m: &Mechanism, sc: &ScenarioSpec) -> Result<(Vec<Imposed>, Vec<f
             )
         })?;
         let law = TimeLaw::new(&im.rate, reg.parameters(), &params)
-            .and_then(|law| law.check_starts(sc.duration).map(|()| law))
+            .and_then(|law| law.validate_starts(sc.duration).map(|()| law))
             .map_err(|e| {
                 let at = e.path_under(&format!("imposed[{k}].rate"));
                 format!("{at}: {}", e.message)

@@ -3,7 +3,7 @@
 
 use super::SpecError;
 use crate::expr::ExprError;
-use crate::quantity::check_name;
+use crate::quantity::validate_name;
 
 /// A refusal at the JSON path `path`.
 pub(super) fn at(path: impl Into<String>, message: impl Into<String>) -> SpecError {
@@ -40,5 +40,5 @@ pub(super) fn bounded(path: &str, e: crate::expr::Expr) -> Result<crate::expr::E
 
 /// A name of the spec's syntax, refused at `path`.
 pub(super) fn name_ok(path: &str, n: &str) -> Result<(), SpecError> {
-    check_name(n).map_err(|m| at(path, m))
+    validate_name(n).map_err(|m| at(path, m))
 }

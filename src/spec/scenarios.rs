@@ -74,7 +74,7 @@ pub(super) fn validate(m: &Mechanism) -> Result<(), SpecError> {
             }
             TimeLaw::new(&im.rate, reg.parameters(), &params)
                 .and_then(|law| match complete {
-                    true => law.check_starts(sc.duration),
+                    true => law.validate_starts(sc.duration),
                     false => Ok(()),
                 })
                 .map_err(|e| at(e.path_under(&format!("{here}.rate")), e.message))?;

@@ -127,7 +127,7 @@ fn link(l: &LinkSpec, path: &str, reg: &Rc<Registry>) -> Result<Link, SpecError>
         axis: l.axis.clone(),
         direction: l.direction.clone(),
         pitch: pitch.and_then(|t| reg.parse(t).ok()),
-        pitch_name: (pitch.filter(|n| crate::expr::check_identifier(n).is_ok()))
+        pitch_name: (pitch.filter(|n| crate::expr::validate_identifier(n).is_ok()))
             .map(str::to_string),
         dependent: l.dependent.as_deref().and_then(|n| reg.coord(n)),
         viscous: read("friction", l.friction.as_deref())?,

@@ -449,7 +449,11 @@ fn symmetric_solid(
                 })?;
             if !subs.iter().any(|(x, _)| *x == v) {
                 subs.push((v, reg.zero()));
-                let zeroed = if e.single_variable().is_some() { e.clone() } else { -e };
+                let zeroed = if e.single_variable().is_some() {
+                    e.clone()
+                } else {
+                    -e
+                };
                 effects.push(Effect {
                     cause: Cause::Symmetry,
                     lhs: Stated::Expr(zeroed),

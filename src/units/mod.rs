@@ -496,7 +496,7 @@ fn component_names(m: &Mechanism, v: &Value) -> Vec<String> {
 
 /// Checks that every component of a value is homogeneous and, where the dimension expected
 /// is known, of that dimension. `what` names the value in the error (a quantity, a step).
-pub fn check_expected(
+pub fn homogeneous_as(
     m: &Mechanism,
     dims: &Dimensions,
     what: &str,
@@ -559,25 +559,25 @@ pub fn check_expected(
 /// ```
 /// use torseur::derivation::derive;
 /// use torseur::quantity::Quantity;
-/// use torseur::units::{check_value, Dimensions};
+/// use torseur::units::{homogeneous_value, Dimensions};
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json")?;
 /// let dims = Dimensions::of(&m);
 /// let q = Quantity::parse("delta(O2,2/0).x2")?;
 /// let d = derive(&m, &q)?;
-/// check_value(&m, &dims, &q, &d.value)?;
+/// homogeneous_value(&m, &dims, &q, &d.value)?;
 /// // The same value taken for a velocity is refused.
 /// let v = Quantity::parse("V(G2,2/0).x2")?;
-/// let err = check_value(&m, &dims, &v, &d.value).unwrap_err();
+/// let err = homogeneous_value(&m, &dims, &v, &d.value).unwrap_err();
 /// assert!(err.to_string().contains("where the quantity is L·T⁻¹ (m/s)"), "{err}");
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn check_value(
+pub fn homogeneous_value(
     m: &Mechanism,
     dims: &Dimensions,
     q: &Quantity,
     v: &Value,
 ) -> Result<(), DimensionError> {
-    check_expected(m, dims, &q.to_string(), expected_dimension(m, dims, q), v)
+    homogeneous_as(m, dims, &q.to_string(), expected_dimension(m, dims, q), v)
 }
 
 /// Checks every step of a derivation (what the answer key displays) and its result: each step
@@ -588,13 +588,13 @@ pub fn check_value(
 /// ```
 /// use torseur::derivation::derive;
 /// use torseur::quantity::Quantity;
-/// use torseur::units::{check_derivation, Dimensions};
+/// use torseur::units::{homogeneous_derivation, Dimensions};
 /// let m = torseur::spec::load("derivations/regulateur_centrifuge.json")?;
 /// let d = derive(&m, &Quantity::parse("C_m")?)?;
-/// check_derivation(&m, &Dimensions::of(&m), &d)?;
+/// homogeneous_derivation(&m, &Dimensions::of(&m), &d)?;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn check_derivation(
+pub fn homogeneous_derivation(
     m: &Mechanism,
     dims: &Dimensions,
     d: &Derivation,
@@ -633,7 +633,7 @@ pub fn check_derivation(
                 }))
             }
         };
-        check_expected(
+        homogeneous_as(
             m,
             dims,
             &format!("{} (step {})", d.quantity, s.label),
@@ -641,5 +641,5 @@ pub fn check_derivation(
             &s.value,
         )?;
     }
-    check_value(m, dims, &d.quantity, &d.value)
+    homogeneous_value(m, dims, &d.quantity, &d.value)
 }

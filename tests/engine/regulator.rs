@@ -128,7 +128,11 @@ fn hypotheses_zero_the_products_of_inertia_named_by_the_symmetries() {
     effects.sort();
     assert_eq!(effects, ["D1 = 0", "E1 = 0", "E2 = 0", "F1 = 0", "F2 = 0"]);
     let q2 = m.hypotheses().iter().find(|h| h.name == "H2").unwrap();
-    assert!(q2.effects.iter().any(|e| e.to_string() == "ddot(theta1) = 0"));
+    assert!(
+        q2.effects
+            .iter()
+            .any(|e| e.to_string() == "ddot(theta1) = 0")
+    );
     // Under H2 (constant rates, symmetries), δ(O1,1/0) vanishes: C1 θ̈1 = 0.
     let d = value(&m, "{D(1/0)}_O1 in B1").under(q2);
     assert!(d.exprs().iter().all(|e| e.is_zero()));

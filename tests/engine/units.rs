@@ -11,7 +11,8 @@ use torseur::derivation::{Value, derive, derive_values};
 use torseur::quantity::Quantity;
 use torseur::spec::SpecError;
 use torseur::units::{
-    Dimension, DimensionProblem, Dimensions, UnitStyle, check_derivation, check_value, dimension,
+    Dimension, DimensionProblem, Dimensions, UnitStyle, dimension, homogeneous_derivation,
+    homogeneous_value,
 };
 
 /// M^a L^b T^c, written by hand.
@@ -494,7 +495,7 @@ fn every_quantity_of_every_spec_has_its_dimension_under_every_hypothesis() {
                     let n = dimension(&f.num, &dims).unwrap().unwrap();
                     let d = dimension(&f.den, &dims).unwrap().unwrap();
                     assert_eq!(Some(n / d), Some(main), "{name}: {q} {label}, quotient");
-                    check_value(&m, &dims, q, v)
+                    homogeneous_value(&m, &dims, q, v)
                         .unwrap_or_else(|err| panic!("{name}: {q} {label}: {err}"));
                     continue;
                 }
@@ -511,12 +512,12 @@ fn every_quantity_of_every_spec_has_its_dimension_under_every_hypothesis() {
                         assert_eq!(got, Some(want), "{name}: {q} {label}, component {k}: {e}");
                     }
                 }
-                check_value(&m, &dims, q, v)
+                homogeneous_value(&m, &dims, q, v)
                     .unwrap_or_else(|err| panic!("{name}: {q} {label}: {err}"));
             }
             // Every step the answer key shows, with its own dimension.
             let full = derive(&m, q).unwrap();
-            check_derivation(&m, &dims, &full).unwrap_or_else(|err| panic!("{name}: {err}"));
+            homogeneous_derivation(&m, &dims, &full).unwrap_or_else(|err| panic!("{name}: {err}"));
         }
         let r = torseur::check::check(&m, 2, 1).unwrap();
         assert!(r.dimension_failures().is_empty(), "{name}: {r}");
@@ -577,7 +578,7 @@ fn check_fails_on_a_position_that_mixes_a_mass_and_a_length() {
     // The steps of the answer key are refused too.
     let dims = Dimensions::of(&m);
     let d2 = derive(&m, &Quantity::parse("delta(O2,2/0).x2").unwrap()).unwrap();
-    assert!(check_derivation(&m, &dims, &d2).is_err());
+    assert!(homogeneous_derivation(&m, &dims, &d2).is_err());
 }
 
 #[test]
@@ -644,7 +645,7 @@ fn a_value_checked_against_another_quantity_is_refused() {
     let dims = Dimensions::of(&m);
     let sigma = derive(&m, &Quantity::parse("sigma(O2,2/0) in B2").unwrap()).unwrap();
     // σ is M L² T⁻¹; taken for δ it is short of a T⁻¹.
-    let e = check_value(
+    let e = homogeneous_value(
         &m,
         &dims,
         &Quantity::parse("delta(O2,2/0) in B2").unwrap(),

@@ -40,7 +40,7 @@ pub(super) struct Names(HashMap<String, ()>);
 impl Names {
     /// Refuses `n` if it is not an identifier, is reserved, or was declared before.
     pub(super) fn claim(&mut self, n: &str) -> Result<(), ExprError> {
-        check_identifier(n).map_err(ExprError::Declaration)?;
+        validate_identifier(n).map_err(ExprError::Declaration)?;
         if RESERVED.contains(&n) {
             return Err(ExprError::Declaration(reserved_word(n)));
         }

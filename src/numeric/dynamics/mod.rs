@@ -482,7 +482,7 @@ fn given(
 /// Each contact under Coulomb's law slides along its tangent at one of the states `vals` at
 /// least, and never across it (along the normal's and the tangent's third axis): its sliding
 /// velocity V(P,2/1), from this backend's kinematics, refused at the link's place otherwise.
-pub(in crate::numeric) fn check_sliding(
+pub(in crate::numeric) fn validate_sliding(
     m: &NumericModel,
     vals: &[Values],
 ) -> Result<(), NumericError> {

@@ -59,7 +59,7 @@ pub(crate) enum Node {
     Basis(usize, usize),
     /// An unknown of the PFD (a link component, a motor torque), by index.
     Unknown(usize),
-    /// The time t (only inside a phase Ω t of sin or cos, see [`check_time`]).
+    /// The time t (only inside a phase Ω t of sin or cos, see [`validate_time`]).
     Time,
     Neg(Box<Node>),
     Add(Box<Node>, Box<Node>),
@@ -498,26 +498,26 @@ pub(crate) fn holds_time(node: &Node) -> bool {
 /// Where the time may stand: only in a phase k Ω t (k an integer, Ω a parameter), a term of
 /// the argument of sin or cos; `angle` says that `node` is itself an angle (a frame's
 /// rotation), whose terms may then be phases too.
-pub(crate) fn check_time(node: &Node, angle: bool) -> Result<(), String> {
+pub(crate) fn validate_time(node: &Node, angle: bool) -> Result<(), String> {
     if !holds_time(node) {
         return Ok(());
     }
     if angle {
         return match node {
             Node::Add(a, b) | Node::Sub(a, b) => {
-                check_time(a, true)?;
-                check_time(b, true)
+                validate_time(a, true)?;
+                validate_time(b, true)
             }
-            Node::Neg(a) => check_time(a, true),
+            Node::Neg(a) => validate_time(a, true),
             _ => phase_term(node),
         };
     }
     match node {
-        Node::Sin(a) | Node::Cos(a) => check_time(a, true),
-        Node::Neg(a) | Node::Pow(a, _) => check_time(a, false),
+        Node::Sin(a) | Node::Cos(a) => validate_time(a, true),
+        Node::Neg(a) | Node::Pow(a, _) => validate_time(a, false),
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
-            check_time(a, false)?;
-            check_time(b, false)
+            validate_time(a, false)?;
+            validate_time(b, false)
         }
         _ => Err(TIME_ONLY_IN_PHASES.into()),
     }

@@ -30,14 +30,19 @@ fn prove_jeq_forms(ctx: &Ctx, m: &Mechanism, displays: &[torseur::latex::Display
         let flat = r.replace("\\\n", " ").replace('&', " ");
         (l.trim().to_string(), flat.trim().to_string())
     };
-    let read = |tex: &str| ctx.scalar(&tokenize(tex)).unwrap_or_else(|e| panic!("{tex}: {e}"));
+    let read = |tex: &str| {
+        ctx.scalar(&tokenize(tex))
+            .unwrap_or_else(|e| panic!("{tex}: {e}"))
+    };
     let mut n = 0;
     for d in displays {
         let Some(id) = d.what.strip_prefix("J_eq form of ") else {
             continue;
         };
-        let (Some(j), Some(jp)) = (find(&format!("J_eq of {id}")), find(&format!("J_eq' of {id}")))
-        else {
+        let (Some(j), Some(jp)) = (
+            find(&format!("J_eq of {id}")),
+            find(&format!("J_eq' of {id}")),
+        ) else {
             panic!("{id}: a J_eq form without its J_eq and J_eq'");
         };
         let (j_name, j_value) = sides(&j.latex);
