@@ -50,7 +50,10 @@
 //! One word per concept, through the crate:
 //! - **validate**: refuse what a spec may not say, naming where it says it: the exact side's
 //!   build of a [`mechanism::Mechanism`] ([`spec::build`], `spec/validate.rs`, its scenarios
-//!   included) and the float backend's own reading (`numeric/validate.rs`);
+//!   included) and the float backend's own reading (`numeric/validate.rs`); a guard that
+//!   refuses an input is a `validate_*` function;
+//! - **homogeneous**: the dimension analysis of a value or a derivation's steps
+//!   ([`units::homogeneous_value`], [`units::homogeneous_derivation`]);
 //! - **verify**: compare a formula someone wrote (a student's, a teacher's) with the engine's
 //!   value, exactly ([`verify`], `torseur verify`);
 //! - **check**: compare the exact engine with the independent float backend on sampled
