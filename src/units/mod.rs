@@ -149,6 +149,8 @@ impl Dimensions {
                     Some(Dimension::NONE)
                 }
                 VarRole::Value(q) => Some(coordinate(q)),
+                // The half of its radicand's, which the parameters' units give later.
+                VarRole::Root(_) => None,
                 VarRole::Rate(q, order) => {
                     Some(coordinate(q) / Dimension::TIME.pow(i32::from(order)))
                 }

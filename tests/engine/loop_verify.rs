@@ -83,3 +83,42 @@ fn a_false_relation_fails_at_a_closed_configuration() {
         "{text}"
     );
 }
+
+/// The explicit loop law, solved by hand from (x − R cos θ)² + R² sin²θ = L²:
+/// x = R cos θ ± √(L² − R² sin²θ). At the scenario `demarrage`'s initial configuration
+/// (θ = 0, x = 0.25 = R + L with R = 0.05, L = 0.2), x − R cos θ = L > 0: the + branch holds
+/// there, the − branch is off by 2√(L² − R² sin²θ) = 2 L = 0.4.
+#[test]
+fn the_explicit_loop_law_holds_on_the_assembly_branch_only() {
+    let m = slider_crank();
+    let plus = "x = R*cos(theta) + sqrt(L^2 - R^2*sin(theta)^2)";
+    let (relation, _) = by_closure(&m, plus);
+    assert!(
+        relation.contains("direction of its term in B2 eliminated"),
+        "{relation}"
+    );
+    assert!(relation.contains("scenario `demarrage`"), "{relation}");
+    // Written the other way round, and with the root's radicand times a square.
+    by_closure(
+        &m,
+        "x - R*cos(theta) = 1/2*sqrt(4*L^2 - 4*R^2*sin(theta)^2)",
+    );
+    let minus =
+        verify_equation(&m, "x = R*cos(theta) - sqrt(L^2 - R^2*sin(theta)^2)", None).unwrap();
+    assert!(!minus.is_equivalent());
+    let at = minus.counterexample.clone().expect("a counterexample");
+    let value: f64 = at.split("lhs − rhs = ").nth(1).unwrap()[..6]
+        .parse()
+        .unwrap();
+    assert!((value - 0.4).abs() < 1e-9, "{at}");
+    // The key's law is the + branch, read at that configuration.
+    let law = &m.loop_law().unwrap().explicit[0];
+    let branch = torseur::derivation::explicit_law(&m, law).unwrap();
+    assert_eq!(branch.sign, 1);
+    assert_eq!(
+        branch.value,
+        m.reg()
+            .parse("R*cos(theta) + sqrt(L^2 - R^2*sin(theta)^2)")
+            .unwrap()
+    );
+}

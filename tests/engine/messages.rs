@@ -422,7 +422,7 @@ fn habits_of_other_tools_are_refused_with_the_fix() {
     assert_eq!(
         said("diff(psi, t)*L"),
         "cannot parse `diff(psi, t)*L`: `diff(...)`: a time derivative is written dot(q) or \
-         ddot(q) for a coordinate q; the functions are sin, cos, dot and ddot"
+         ddot(q) for a coordinate q; the functions are sin, cos, dot, ddot and sqrt"
     );
     assert!(said("sqrt(L)").contains("`sqrt(...)`: a result of the spec syntax is a polynomial"));
     // π typed as a Greek letter, or pasted from a document in a mathematical form, is `pi`.
