@@ -3,9 +3,9 @@
 //! starts the closure solver from), else the first closed configuration the float backend
 //! draws (its own Newton solve of the loop, seeded as `verify` seeds it).
 
-use crate::expr::Expr;
+use crate::expr::{CoordId, Expr, ParamId, VarRole};
 use crate::mechanism::{ExplicitLaw, Mechanism};
-use crate::output::Values;
+use std::collections::BTreeMap;
 
 /// An explicit loop law with its branch.
 #[derive(Debug, Clone)]
@@ -45,35 +45,67 @@ impl std::fmt::Display for Assembly {
 /// 1e-12 by Newton, or given to a few digits by a scenario).
 const ZERO: f64 = 1e-6;
 
+/// An assembly configuration: the parameters' values and each coordinate's value.
+pub(crate) struct Configuration {
+    /// Each parameter's value, by name.
+    pub parameters: BTreeMap<String, f64>,
+    /// Each coordinate's value and first two rates, by name.
+    pub coordinates: BTreeMap<String, [f64; 3]>,
+}
+
 /// The assembly configurations of the spec, in the order tried: each scenario's initial
-/// configuration (its values, q and q̇ as given, q̈ = 0), then the first closed configuration
-/// the float backend draws; each with its description.
-pub(crate) fn assembly_configurations(m: &Mechanism) -> Vec<(Values, Assembly)> {
+/// configuration (q̈ = 0), then the first closed configuration the float backend draws; each with its
+/// description.
+pub(crate) fn assembly_configurations(m: &Mechanism) -> Vec<(Configuration, Assembly)> {
     let mut out = Vec::new();
     for sc in &m.spec.scenarios {
-        let values = Values {
+        let c = Configuration {
             parameters: sc.values.clone(),
             coordinates: (sc.initial.iter())
                 .map(|(q, [x, v])| (q.clone(), [*x, *v, 0.0]))
                 .collect(),
-            unknowns: Default::default(),
-            time: Some(0.0),
         };
-        out.push((values, Assembly::Scenario(sc.name.clone())));
+        out.push((c, Assembly::Scenario(sc.name.clone())));
     }
     if let Ok(model) = crate::numeric::NumericModel::new(&m.spec) {
         let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(1);
         if let Ok(s) = model.sample(&mut rng) {
-            let values = Values {
+            let c = Configuration {
                 parameters: s.parameters,
                 coordinates: s.coordinates,
-                unknowns: Default::default(),
-                time: Some(s.time),
             };
-            out.push((values, Assembly::Drawn));
+            out.push((c, Assembly::Drawn));
         }
     }
     out
+}
+
+/// The point of `c`: every parameter, coordinate, cos and sin it gives, each root from its
+/// radicand, q̇ and q̈; NaN for anything else (an unknown, a jerk: a loop law holds none).
+fn point_of(m: &Mechanism, c: &Configuration) -> Vec<f64> {
+    let reg = &m.reg;
+    let param = |k: ParamId| match reg.is_pi(k) {
+        true => Some(std::f64::consts::PI),
+        false => c.parameters.get(reg.scalar_name(k)).copied(),
+    };
+    let rates = |q: CoordId| c.coordinates.get(&reg.coord_info(q).name).copied();
+    let coord = |q: CoordId| rates(q).map(|r| r[0]);
+    let mut point: Vec<f64> = (reg.var_ids())
+        .map(|i| {
+            match reg.role(i) {
+                VarRole::Parameter(k) => param(k),
+                VarRole::Inverse(k) => param(k).map(|x| 1.0 / x),
+                VarRole::Value(q) => coord(q),
+                VarRole::Cos(q) => coord(q).map(f64::cos),
+                VarRole::Sin(q) => coord(q).map(f64::sin),
+                VarRole::Rate(q, k @ 1..=2) => rates(q).map(|r| r[usize::from(k)]),
+                _ => None,
+            }
+            .unwrap_or(f64::NAN)
+        })
+        .collect();
+    reg.fill_roots(&mut point);
+    point
 }
 
 /// The point (every variable `exprs` hold) at the first assembly configuration where
@@ -83,10 +115,8 @@ pub(crate) fn at_assembly(
     exprs: &[&Expr],
     closed: &dyn Fn(&[f64]) -> bool,
 ) -> Option<(Vec<f64>, Assembly)> {
-    for (values, at) in assembly_configurations(m) {
-        let Ok(point) = crate::output::numeric_point_for(m, &values, exprs) else {
-            continue;
-        };
+    for (c, at) in assembly_configurations(m) {
+        let point = point_of(m, &c);
         if exprs.iter().all(|e| e.eval(&point).is_finite()) && closed(&point) {
             return Some((point, at));
         }

@@ -551,7 +551,10 @@ impl Expr {
     ///
     /// A square root of a constant radicand is constant. One whose radicand moves has the
     /// derivative Ṗ/(2√P), which is no polynomial: such a root is compared and printed, never
-    /// differentiated, and asking for it is a bug of the caller (a panic that says so).
+    /// differentiated. No input reaches one here: a spec's own texts may not write a root
+    /// (`Registry::refuse_roots_in_texts`, exit 2), the roots are the explicit loop laws',
+    /// which are printed and verified only, and a relation typed to `verify` is compared, not
+    /// differentiated (its `d/dt(Q)` are the engine's quantities). The assertion guards that.
     pub fn dt(&self) -> Expr {
         let reg = &self.reg;
         for r in self.roots_held() {

@@ -266,6 +266,12 @@ impl<'a> Walker<'a> {
                      conjugate",
                 ));
             }
+            if reg.roots_refused.get() {
+                return Err(self.unsupported(
+                    "a spec's text writes no square root: its time derivative is not a \
+                     polynomial (the answer key gives a closure's explicit law)",
+                ));
+            }
             let root = reg
                 .sqrt_of(&self.scalar(base)?)
                 .map_err(|why| self.unsupported(&why))?;

@@ -53,6 +53,9 @@ pub struct Registry {
     pub(super) reciprocals: Vec<(CoordId, Trig, usize, usize)>,
     /// (variable of s, radicand P) for each square root (see [`RegistryBuilder::roots`]).
     pub(super) roots: Vec<(usize, Poly)>,
+    /// Whether a text may not write a root (`sqrt(...)`): set while a spec's own texts are
+    /// read (see [`Registry::refuse_roots_in_texts`]).
+    pub(super) roots_refused: std::cell::Cell<bool>,
 }
 
 /// The symbol of the variable 1/p, `inv(p)` in symbolica's atoms (never in a text: a text
@@ -191,10 +194,12 @@ impl Registry {
             inverses: inverse_pairs,
             reciprocals,
             roots: Vec::new(),
+            roots_refused: std::cell::Cell::new(false),
         };
         reg.read_aliases(&aliases)?;
-        reg.read_roots(&root_vars)?;
+        // The imposed rates before the roots: a rate is differentiated, a moving root is not.
         reg.impose_rates(&coords, &holonomic)?;
+        reg.read_roots(&root_vars)?;
         Ok(Rc::new(reg))
     }
 
@@ -218,6 +223,7 @@ impl Registry {
             inverses: self.inverses.clone(),
             reciprocals: self.reciprocals.clone(),
             roots: self.roots.clone(),
+            roots_refused: self.roots_refused.clone(),
         }))
     }
 
@@ -544,6 +550,15 @@ impl Registry {
             }
             _ => self.zero(),
         }
+    }
+
+    /// While `refused`, a text that writes a square root is refused (exit 2): a spec's own
+    /// texts are differentiated (velocities, powers, Lagrange's equations), and the time
+    /// derivative of a root whose radicand moves, Ṗ/(2√P), is not a polynomial. The roots of
+    /// a mechanism are its explicit loop laws', read in the texts typed after loading (a
+    /// relation to verify), never differentiated.
+    pub(crate) fn refuse_roots_in_texts(&self, refused: bool) {
+        self.roots_refused.set(refused);
     }
 
     /// Parses an expression of the spec syntax (see DESIGN.md) into canonical form.

@@ -82,6 +82,8 @@ fn build_with(
     texts(spec)?;
     units(spec)?;
     let reg = registry(spec, &unknowns.names, solved)?;
+    // The spec's own texts hold no root (see `Registry::refuse_roots_in_texts`).
+    reg.refuse_roots_in_texts(true);
 
     let frames = frames(spec, &reg, resolved)?;
     let points = points(spec, &reg, &frames, resolved)?;
@@ -147,6 +149,7 @@ fn build_with(
     m.dynamics = super::dynamics::build(&m, spec, (resolved, unknowns))?;
     requests(&m)?;
     super::scenarios::validate(&m)?;
+    m.reg.refuse_roots_in_texts(false);
     Ok(m)
 }
 

@@ -122,3 +122,65 @@ fn the_explicit_loop_law_holds_on_the_assembly_branch_only() {
             .unwrap()
     );
 }
+
+/// The slider–crank's spec with one text replaced (`from` → `to`, which must occur).
+fn slider_crank_with(from: &str, to: &str) -> Result<Mechanism, String> {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/bielle_manivelle.json"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.contains(from), "{from}");
+    torseur::spec::from_str(&text.replacen(from, to, 1)).map_err(|e| e.to_string())
+}
+
+/// A spec's own text may not write a root, even the one its explicit loop law declares: the
+/// spec's texts are differentiated (the gas force's power, the velocities), and the time
+/// derivative of √(L² − R² sin²θ) is no polynomial. Refused at loading, never a panic
+/// (`sqrt(0)`, which symbolica reads as 0, is zero).
+#[test]
+fn a_spec_text_with_a_square_root_is_refused_at_loading() {
+    for root in [
+        "sqrt(L^2 - R^2*sin(theta)^2)",
+        "sqrt(-1)",
+        "sqrt(x^2)",
+        "sqrt(F)",
+    ] {
+        let e = slider_crank_with(
+            "\"resultant\": \"-F*x0\"",
+            &format!("\"resultant\": \"-F*{root}*x0\""),
+        )
+        .err()
+        .unwrap_or_else(|| panic!("{root}: loaded"));
+        assert!(e.contains("actions[1].resultant"), "{root}: {e}");
+    }
+    let e = slider_crank_with(
+        "\"resultant\": \"-F*x0\"",
+        "\"resultant\": \"-F*sqrt(L^2 - R^2*sin(theta)^2)*x0\"",
+    )
+    .unwrap_err();
+    assert!(e.contains("a spec's text writes no square root"), "{e}");
+}
+
+/// Hostile roots typed to `verify` are answered (not equivalent, or a refusal), never a
+/// panic: a negative number, zero, a square, a radicand that is not the loop's.
+#[test]
+fn hostile_square_roots_in_a_relation_are_answered() {
+    let m = slider_crank();
+    for text in [
+        "x = R*cos(theta) + sqrt(-1)",
+        "x = R*cos(theta) + sqrt(-L^2)",
+        "x = sqrt(x^2)",
+        "x = R*cos(theta) + sqrt(L^2 + R^2)",
+        "x = R*cos(theta) + sqrt(L^2 - R^2*sin(theta)^2)^3",
+        "x = R*cos(theta) + 1/sqrt(L^2 - R^2*sin(theta)^2)",
+    ] {
+        if let Ok(v) = verify_equation(&m, text, None) {
+            assert!(!v.is_equivalent(), "{text}: {v}");
+        }
+    }
+    // √0 = 0 and √(x²) is refused as no root: x = R cos θ is false at the assembly (x = R + L).
+    let v = verify_equation(&m, "x = R*cos(theta) + sqrt(0)", None).unwrap();
+    assert!(!v.is_equivalent(), "{v}");
+    assert!(verify_equation(&m, "x = sqrt(x^2)", None).is_err());
+}
