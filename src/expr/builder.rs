@@ -36,6 +36,7 @@ pub struct RegistryBuilder {
     pub(super) cosecants: Vec<String>,
     pub(super) holonomic: Vec<String>,
     pub(super) display_ranks: Vec<u32>,
+    pub(super) roots: Vec<super::RootText>,
 }
 
 impl RegistryBuilder {
@@ -194,6 +195,44 @@ impl RegistryBuilder {
                 self.cosecants.push(n.clone());
             }
         }
+        self
+    }
+
+    /// Square roots of radicands, texts of the spec syntax (read after the aliases): each
+    /// gets a variable s, and s² is reduced to its radicand after every product (see the
+    /// conditions of exactness in `roots.rs`). A text then reads `sqrt(P)` as s, and
+    /// `sqrt(c^2*P)` as c s.
+    ///
+    /// ```
+    /// use torseur::expr::Registry;
+    /// use torseur::spec::wire::CoordinateKind;
+    /// let reg = Registry::builder()
+    ///     .parameters(&["R".into(), "L".into()])
+    ///     .coordinate("theta", CoordinateKind::Angle)
+    ///     .roots(&["L^2 - R^2*sin(theta)^2".into()])
+    ///     .build()
+    ///     .unwrap();
+    /// let s = reg.parse("sqrt(L^2 - R^2*sin(theta)^2)").unwrap();
+    /// // Squared by hand: L² − R² sin²θ.
+    /// assert_eq!(&s * &s, reg.parse("L^2 - R^2 + R^2*cos(theta)^2").unwrap());
+    /// // (x − s)(x + s) with x = R cos θ: R² cos²θ − L² + R² sin²θ = R² − L².
+    /// let x = reg.parse("R*cos(theta)").unwrap();
+    /// assert_eq!(&(&x - &s) * &(&x + &s), reg.parse("R^2 - L^2").unwrap());
+    /// assert_eq!(reg.parse("sqrt(4*L^2 - 4*R^2*sin(theta)^2)").unwrap(), &reg.integer(2) * &s);
+    /// assert!(reg.parse("sqrt(L^2 + R^2)").is_err());
+    /// ```
+    pub fn roots(mut self, radicands: &[String]) -> Self {
+        for r in radicands {
+            self.roots.push(super::RootText::Text(r.clone()));
+        }
+        self
+    }
+
+    /// Square roots of radicands of another registry (the loop law's, solved over the
+    /// geometry's), carried by name when the registry is built.
+    pub(crate) fn roots_of(mut self, radicands: Vec<Expr>) -> Self {
+        self.roots
+            .extend(radicands.into_iter().map(super::RootText::Expr));
         self
     }
 

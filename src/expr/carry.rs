@@ -59,6 +59,10 @@ fn carried_var(from: &Rc<Registry>, v: VarId, to: &Rc<Registry>) -> Result<Expr,
             (to.coord_by_name.get(&from.coord_info(q).name)).and_then(|&t| to.value(t))
         }
         VarRole::Rate(q, order) => coord(q).map(|t| to.rate(t, order)),
+        VarRole::Root(r) => {
+            let radicand = from.radicand(r).carried(to)?;
+            to.sqrt_of(&radicand).ok()
+        }
         VarRole::Reciprocal(q, f) => (angle(q))
             .and_then(|t| to.index_of(VarRole::Reciprocal(t, f)))
             .map(|i| to.variable(i)),

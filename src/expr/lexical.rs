@@ -197,7 +197,7 @@ fn validate_powers(s: &str) -> Result<(), String> {
     Ok(())
 }
 
-pub(super) const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
+pub(super) const FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot", "sqrt"];
 
 /// « sin, cos, dot and ddot ».
 fn listed(names: &[&str]) -> String {
@@ -380,7 +380,7 @@ pub(crate) fn function_hint(word: &str) -> &'static str {
         "diff" | "d" | "D" | "derivative" | "Derivative" | "deriv" => {
             "a time derivative is written dot(q) or ddot(q) for a coordinate q; "
         }
-        "sqrt" | "Sqrt" | "exp" | "log" | "ln" | "tan" | "atan" | "asin" | "acos" => {
+        "Sqrt" | "exp" | "log" | "ln" | "tan" | "atan" | "asin" | "acos" => {
             "a result of the spec syntax is a polynomial in parameters, coordinates, their rates, \
              and sin and cos of angles; "
         }

@@ -27,6 +27,7 @@ pub(crate) mod print;
 mod rates;
 mod reduce;
 mod registry;
+mod roots;
 mod time;
 mod vector_text;
 mod words;
@@ -45,6 +46,8 @@ pub use present::{
 pub use registry::{
     MAX_EXPANDED_TERMS, MAX_INPUT_DEGREE, MAX_INPUT_LEN, MAX_SPEC_DEGREE, Registry,
 };
+pub use roots::RootId;
+pub(crate) use roots::RootText;
 pub use time::pulsations_in;
 pub use words::{PI, RESERVED, char_hint, reserved_word, validate_identifier};
 
@@ -298,6 +301,9 @@ pub enum VarRole {
     /// [`RegistryBuilder::secants`], [`RegistryBuilder::cosecants`]): cos q·(1/cos q), or
     /// sin q·(1/sin q), is reduced to 1 after every product.
     Reciprocal(CoordId, Trig),
+    /// A square root of a declared radicand (see [`RegistryBuilder::roots`]): s² is reduced
+    /// to its radicand after every product, as sin² is.
+    Root(RootId),
 }
 
 /// Which trigonometric function of an angle: the cos or the sin.
@@ -542,8 +548,22 @@ impl Expr {
 
     /// Total time derivative d/dt = Σ ∂/∂qᵢ q̇ᵢ + ∂/∂q̇ᵢ q̈ᵢ + ∂/∂q̈ᵢ q⃛ᵢ, with
     /// d(cos q)/dt = −sin q q̇ and d(sin q)/dt = cos q q̇.
+    ///
+    /// A square root of a constant radicand is constant. One whose radicand moves has the
+    /// derivative Ṗ/(2√P), which is no polynomial: such a root is compared and printed, never
+    /// differentiated. No input reaches one here: a spec's own texts may not write a root
+    /// (`Registry::refuse_roots_in_texts`, exit 2), the roots are the explicit loop laws',
+    /// which are printed and verified only, and a relation typed to `verify` is compared, not
+    /// differentiated (its `d/dt(Q)` are the engine's quantities). The assertion guards that.
     pub fn dt(&self) -> Expr {
         let reg = &self.reg;
+        for r in self.roots_held() {
+            assert!(
+                reg.radicand(r).is_time_independent(),
+                "the time derivative of sqrt({}) is not a polynomial",
+                reg.radicand(r)
+            );
+        }
         let mut acc = self.p.zero();
         for (i, c) in reg.coords.iter().enumerate() {
             if c.constant {
@@ -772,5 +792,7 @@ impl fmt::Display for Expr {
     }
 }
 
+#[cfg(test)]
+mod root_tests;
 #[cfg(test)]
 mod tests;

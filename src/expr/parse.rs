@@ -257,6 +257,26 @@ impl<'a> Walker<'a> {
     fn power(&self, base: AtomView, exp: AtomView) -> Result<Expr, ExprError> {
         let reg = self.reg;
         let e = self.number(exp)?;
+        // `sqrt(P)`, which symbolica reads as P^(1/2), and P^(n/2): a root of the registry.
+        if !e.is_integer() && (&e * &Rational::from(2)).is_integer() {
+            let n = (&e * &Rational::from(2)).to_f64() as i64;
+            if n < 0 {
+                return Err(self.unsupported(
+                    "a text does not divide by a square root: multiply above and below by its \
+                     conjugate",
+                ));
+            }
+            if reg.roots_refused.get() {
+                return Err(self.unsupported(
+                    "a spec's text writes no square root: its time derivative is not a \
+                     polynomial (the answer key gives a closure's explicit law)",
+                ));
+            }
+            let root = reg
+                .sqrt_of(&self.scalar(base)?)
+                .map_err(|why| self.unsupported(&why))?;
+            return Ok(root.pow(n as u32));
+        }
         if !e.is_integer() {
             return Err(self.unsupported("only integer powers are allowed"));
         }
@@ -314,7 +334,7 @@ impl<'a> Walker<'a> {
             "ddot" => 2,
             _ => {
                 return Err(self.unsupported(&format!(
-                    "unknown function `{name}` (known: sin, cos, dot, ddot)"
+                    "unknown function `{name}` (known: sin, cos, sqrt, dot, ddot)"
                 )));
             }
         };

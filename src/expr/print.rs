@@ -24,6 +24,8 @@ pub struct TermParts {
     pub values: Vec<(CoordId, u8)>,
     /// (coordinate, derivative order, exponent): the kinematic monomial.
     pub rates: Vec<(CoordId, u8, u8)>,
+    /// (square root, exponent), exponent 1 in a canonical form.
+    pub roots: Vec<(super::RootId, u8)>,
 }
 
 /// Splits exponents into the parts of a term.
@@ -36,6 +38,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
         trig: vec![],
         values: vec![],
         rates: vec![],
+        roots: vec![],
     };
     for (i, &k) in e.iter().enumerate() {
         if k == 0 {
@@ -49,6 +52,7 @@ pub fn split(reg: &Registry, coef: &Rational, e: &[u8]) -> TermParts {
             VarRole::Sin(q) => t.trig.push((q, false, k)),
             VarRole::Value(q) => t.values.push((q, k)),
             VarRole::Rate(q, o) => t.rates.push((q, o, k)),
+            VarRole::Root(r) => t.roots.push((r, k)),
         }
     }
     t.params.sort();
@@ -84,7 +88,8 @@ fn other_key(t: &TermParts) -> OtherKey {
         t.params.is_empty()
             && t.trig.is_empty()
             && t.inverses.is_empty()
-            && t.reciprocals.is_empty(),
+            && t.reciprocals.is_empty()
+            && t.roots.is_empty(),
         t.params.iter().map(|&(_, k)| k as u32).sum(),
         t.params.iter().map(|&(p, k)| (p, Reverse(k))).collect(),
         t.trig
@@ -121,6 +126,9 @@ fn factors_text(reg: &Registry, t: &TermParts) -> Vec<String> {
     }
     for &(q, k) in &t.values {
         f.push(pw(reg.coord_info(q).name.clone(), k));
+    }
+    for &(r, k) in &t.roots {
+        f.push(pw(format!("sqrt({})", reg.radicand_text(r)), k));
     }
     for &(q, o, k) in &t.rates {
         let n = &reg.coord_info(q).name;
@@ -258,6 +266,9 @@ impl Expr {
                         for &(q, k) in &t.values {
                             strip(&mut e, VarRole::Value(q), k);
                         }
+                        for &(r, k) in &t.roots {
+                            strip(&mut e, VarRole::Root(r), k);
+                        }
                         for &(p, k) in &t.inverses {
                             strip(&mut e, VarRole::Inverse(p), k);
                         }
@@ -320,6 +331,7 @@ fn common_factor(ts: &[TermParts]) -> TermParts {
         trig,
         values: vec![],
         rates: vec![],
+        roots: vec![],
     }
 }
 
@@ -349,6 +361,7 @@ impl std::fmt::Display for Grouped {
                 trig: vec![],
                 values: vec![],
                 rates: g.kinematic.clone(),
+                roots: vec![],
             };
             factors.extend(factors_text(reg, &kin));
             if factors.is_empty() {

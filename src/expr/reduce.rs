@@ -6,11 +6,13 @@ use super::*;
 use std::collections::BTreeMap;
 
 impl Expr {
-    /// Brings a product back to canonical form: sin²q → 1 − cos²q for every angle, and
+    /// Brings a product back to canonical form: s² → P for every square root s of radicand P
+    /// (first: P may bring sin² back), sin²q → 1 − cos²q for every angle, and
     /// p·(1/p) → 1 for every parameter the mechanism divides by. The two rules' leading
     /// monomials (sin²q, p·p⁻¹) are pairwise coprime, so they form a Gröbner basis and the
     /// reduced form is unique: equality stays structural.
     pub(super) fn reduce(p: Poly, reg: &Registry) -> Poly {
+        let p = Expr::reduce_roots(p, reg);
         let p = Expr::reduce_trig(p, reg);
         Expr::reduce_inverses(p, reg)
     }

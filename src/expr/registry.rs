@@ -51,6 +51,11 @@ pub struct Registry {
     /// (q, cos or sin, variable of cos q or sin q, variable of its reciprocal) for each
     /// angle coordinate a loop closure divides by (see [`RegistryBuilder::secants`]).
     pub(super) reciprocals: Vec<(CoordId, Trig, usize, usize)>,
+    /// (variable of s, radicand P) for each square root (see [`RegistryBuilder::roots`]).
+    pub(super) roots: Vec<(usize, Poly)>,
+    /// Whether a text may not write a root (`sqrt(...)`): set while a spec's own texts are
+    /// read (see [`Registry::refuse_roots_in_texts`]).
+    pub(super) roots_refused: std::cell::Cell<bool>,
 }
 
 /// The symbol of the variable 1/p, `inv(p)` in symbolica's atoms (never in a text: a text
@@ -135,6 +140,7 @@ impl Registry {
             cosecants,
             holonomic,
             display_ranks,
+            roots,
         } = b;
         let n_declared = coords.len();
         let coords = with_phases(coords, &phases, &parameters, &angle_parameters)?;
@@ -153,6 +159,13 @@ impl Registry {
         let inverse_pairs =
             vars.inverses(&inverses, &parameters, n_params, &param_var, (pi, pi_var))?;
         let reciprocals = vars.reciprocals(&secants, &cosecants, &mut infos, n_declared)?;
+        let root_vars: Vec<(usize, RootText)> = (roots.into_iter().enumerate())
+            .map(|(k, r)| {
+                let atom = symbolica::function!(super::roots::root_symbol(), Atom::num(k as i64));
+                let v = PolyVariable::Function(super::roots::root_symbol(), atom);
+                (vars.push(v, VarRole::Root(RootId(k))), r)
+            })
+            .collect();
         for (n, _) in &aliases {
             names.claim(n)?;
         }
@@ -180,15 +193,19 @@ impl Registry {
             aliases: Vec::new(),
             inverses: inverse_pairs,
             reciprocals,
+            roots: Vec::new(),
+            roots_refused: std::cell::Cell::new(false),
         };
         reg.read_aliases(&aliases)?;
+        // The imposed rates before the roots: a rate is differentiated, a moving root is not.
         reg.impose_rates(&coords, &holonomic)?;
+        reg.read_roots(&root_vars)?;
         Ok(Rc::new(reg))
     }
 
     /// A registry that shares this one's variable list and the aliases read so far: aliases,
     /// then imposed rates, are expressions in the parameters, parsed with it.
-    fn snapshot(&self) -> Result<Rc<Registry>, ExprError> {
+    pub(super) fn snapshot(&self) -> Result<Rc<Registry>, ExprError> {
         Ok(Rc::new(Registry {
             _guard: ThreadGuard::acquire()?,
             vars: self.vars.clone(),
@@ -205,6 +222,8 @@ impl Registry {
             aliases: self.aliases.clone(),
             inverses: self.inverses.clone(),
             reciprocals: self.reciprocals.clone(),
+            roots: self.roots.clone(),
+            roots_refused: self.roots_refused.clone(),
         }))
     }
 
@@ -296,7 +315,7 @@ impl Registry {
             VarRole::Parameter(k) => !self.is_unknown(k),
             VarRole::Inverse(_) => true,
             VarRole::Cos(q) | VarRole::Sin(q) => self.coords[q.0].constant,
-            VarRole::Reciprocal(..) => false,
+            VarRole::Reciprocal(..) | VarRole::Root(_) => false,
             VarRole::Value(_) | VarRole::Rate(..) => false,
         }
     }
@@ -531,6 +550,15 @@ impl Registry {
             }
             _ => self.zero(),
         }
+    }
+
+    /// While `refused`, a text that writes a square root is refused (exit 2): a spec's own
+    /// texts are differentiated (velocities, powers, Lagrange's equations), and the time
+    /// derivative of a root whose radicand moves, Ṗ/(2√P), is not a polynomial. The roots of
+    /// a mechanism are its explicit loop laws', read in the texts typed after loading (a
+    /// relation to verify), never differentiated.
+    pub(crate) fn refuse_roots_in_texts(&self, refused: bool) {
+        self.roots_refused.set(refused);
     }
 
     /// Parses an expression of the spec syntax (see DESIGN.md) into canonical form.

@@ -166,13 +166,7 @@ fn regression_fuzz_exponent_overflow_is_an_error_not_a_panic() {
 fn regression_fuzz_unknown_function_never_reaches_symbolica() {
     // Found by the expression fuzzer: `cot()` made symbolica's parser panic (NaN).
     let r = reg();
-    for bad in [
-        "m*L^1*cot()sh1ate*dot(a)^2",
-        "exp(m)",
-        "sqrt(L)",
-        "m*()",
-        "sin()",
-    ] {
+    for bad in ["m*L^1*cot()sh1ate*dot(a)^2", "exp(m)", "m*()", "sin()"] {
         assert!(
             matches!(r.parse(bad), Err(ExprError::Parse { .. })),
             "{bad}"

@@ -71,6 +71,7 @@ fn leaf(reg: &Registry, l: &Leaf, k: u8) -> String {
         Leaf::Inverse(p) => format!("\\frac{{1}}{{{}}}", pw(name(reg.scalar_name(*p)))),
         Leaf::Reciprocal(q, f) => format!("\\frac{{1}}{{{}}}", leaf(reg, &trig_leaf(*q, *f), k)),
         Leaf::Value(q) => pw(name(&reg.coord_info(*q).name)),
+        Leaf::Root(r) => pw(format!("\\sqrt{{{}}}", expr(&reg.radicand_of(*r)))),
         Leaf::Rate(q, o) => pw(rate(reg, *q, *o)),
         Leaf::Cos(a) | Leaf::Sin(a) => {
             let fun = if matches!(l, Leaf::Cos(_)) {

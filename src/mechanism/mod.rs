@@ -241,6 +241,25 @@ pub struct LoopLaw {
     pub rolling: Vec<RollingLaw>,
     /// Each helical link that determines a coordinate, in the order of the links.
     pub helical: Vec<HelicalLaw>,
+    /// The dependent lengths a closure gives in explicit form (see [`ExplicitLaw`]).
+    pub explicit: Vec<ExplicitLaw>,
+}
+
+/// A dependent length of a loop closure in explicit form, x = m ± √P (« loi entrée–sortie
+/// explicite »): the closure with one term's direction eliminated is quadratic in x. The sign
+/// is the branch of the closure solver's configurations ([`crate::derivation::explicit_law`]).
+#[derive(Debug, Clone)]
+pub struct ExplicitLaw {
+    /// x.
+    pub coordinate: crate::expr::CoordId,
+    /// The closure's index in the spec.
+    pub closure: usize,
+    /// The name of the frame whose term's direction is eliminated (`2` for L x⃗2).
+    pub eliminated: String,
+    /// m, free of x.
+    pub center: Expr,
+    /// √P, a root of the registry.
+    pub root: Expr,
 }
 
 /// A helical link's relation V(P ∈ b/a)·u = p/(2π) Ω(b/a)·u as the answer key writes it:

@@ -77,7 +77,9 @@ fn holds_parameter(node: &Node) -> bool {
             false
         }
         Node::Time => false,
-        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => holds_parameter(a),
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) | Node::Sqrt(a) => {
+            holds_parameter(a)
+        }
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
             holds_parameter(a) || holds_parameter(b)
         }

@@ -333,9 +333,9 @@ pub(super) fn rate_degree(node: &Node, free: &dyn Fn(usize) -> bool) -> Result<u
             (d, n) if n > 0 => Ok(d * n as u32),
             _ => no("a rate to a negative power"),
         },
-        Node::Sin(a) | Node::Cos(a) => match rate_degree(a, free)? {
+        Node::Sin(a) | Node::Cos(a) | Node::Sqrt(a) => match rate_degree(a, free)? {
             0 => Ok(0),
-            _ => no("a rate inside sin or cos"),
+            _ => no("a rate inside sin, cos or sqrt"),
         },
     }
 }
@@ -366,7 +366,7 @@ pub(super) fn divisors(node: &Node) -> Result<(), String> {
             divisors(a)?;
             divisors(b)
         }
-        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => divisors(a),
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) | Node::Sqrt(a) => divisors(a),
         _ => Ok(()),
     }
 }

@@ -258,10 +258,17 @@ pub fn numeric_point_for(
     values: &Values,
     exprs: &[&Expr],
 ) -> Result<Vec<f64>, ValuesError> {
+    // A root is computed from its radicand's variables: they are needed with it.
+    let radicands: Vec<Expr> = (exprs.iter())
+        .flat_map(|e| e.roots_held())
+        .map(|r| m.reg.radicand(r))
+        .collect();
     let needed: Vec<bool> = m
         .reg
         .var_ids()
-        .map(|i| exprs.iter().any(|e| e.contains_var(i)))
+        .map(|i| {
+            exprs.iter().any(|e| e.contains_var(i)) || radicands.iter().any(|e| e.contains_var(i))
+        })
         .collect();
     point_where(
         m,
@@ -297,7 +304,7 @@ fn point_where(
         };
         let exempt = !needed(i.index())
             || match reg.role(i) {
-                VarRole::Rate(_, 3) => true,
+                VarRole::Rate(_, 3) | VarRole::Root(_) => true,
                 VarRole::Parameter(k) => reg.is_unknown(k),
                 _ => false,
             };
@@ -310,6 +317,7 @@ fn point_where(
         point.push(v);
     }
     missing.refuse(why)?;
+    reg.fill_roots(&mut point);
     Ok(point)
 }
 
@@ -478,6 +486,8 @@ fn variable_value(
                 }
             }
         }
+        // A square root: from its radicand's variables, once they are all set.
+        VarRole::Root(_) => f64::NAN,
         VarRole::Cos(q)
         | VarRole::Sin(q)
         | VarRole::Value(q)

@@ -10,7 +10,7 @@
 
 use super::SpecError;
 use super::refusal::{at, expr_err};
-use super::solved::Solved;
+use super::solved::{Solved, SolvedExplicit};
 use super::validate::geometry as geometry_of;
 use crate::expr::{CoordId, Expr, Registry, VarRole};
 use crate::frame::{Axis, FrameId};
@@ -121,6 +121,7 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         .map(|(d, _)| reg.coord(d).expect("a declared coordinate"))
         .collect();
     let rows = closure_rows(spec, &m)?;
+    let explicit = explicit_laws(spec, &m)?;
     // d/dt fᵢ = Σ_d J_id q̇_d − bᵢ, bᵢ the free rates' part with its sign changed.
     let mut derivatives = Vec::new();
     let mut linear = Vec::new();
@@ -190,7 +191,61 @@ pub(super) fn solve(spec: &SpecFile, resolved: &Resolved) -> Result<Option<Solve
         rolling,
         helical,
         determinant: d,
+        explicit,
     }))
+}
+
+/// The loop laws in explicit form (« loi entrée–sortie explicite »): for each dependent
+/// length x of a closure V = 0 and each term T of V whose direction, once eliminated
+/// (|V − T|² = |T|², that is V·(V − 2T) = 0), leaves a relation free of the closure's other
+/// dependent coordinates and quadratic in x, x = m ± √P (the slider–crank's
+/// x = R cos θ ± √(L² − R² sin²θ)); the first such term, per length. Over the geometry's
+/// registry, the branch left to the mechanism (numeric, at the closure solver's
+/// configurations).
+fn explicit_laws(spec: &SpecFile, m: &Mechanism) -> Result<Vec<SolvedExplicit>, SpecError> {
+    let reg = &m.reg;
+    let bv = |s: &str| m.frames.basis_vector(s).map(|(f, a)| (f, a.index()));
+    let mut out = Vec::new();
+    for (i, c) in spec.closures.iter().enumerate() {
+        let parts = reg
+            .parse_vector(&c.vector, &bv)
+            .map_err(|e| expr_err(&format!("closures[{i}].vector"), e))?;
+        let mut v = Vector::zero();
+        for (f, comps) in parts {
+            v.add_part(f, comps);
+        }
+        let dependent: Vec<CoordId> = (c.dependent.iter()).filter_map(|n| reg.coord(n)).collect();
+        let whole = v.dot(&m.frames, &v);
+        for &x in &dependent {
+            let Some(xv) = reg.index_of(VarRole::Value(x)) else {
+                continue;
+            };
+            for (f, comps) in v.parts() {
+                let t = Vector::new(f, comps.clone());
+                let g = &whole - &(&reg.integer(2) * &v.dot(&m.frames, &t));
+                let others = dependent.iter().filter(|&&q| q != x).any(|&q| {
+                    reg.var_ids().any(|w| {
+                        g.contains_var(w)
+                            && matches!(reg.role(w), VarRole::Cos(p) | VarRole::Sin(p) | VarRole::Value(p) if p == q)
+                    })
+                });
+                if others {
+                    continue;
+                }
+                if let Some((center, radicand)) = g.quadratic_roots(xv) {
+                    out.push(SolvedExplicit {
+                        coordinate: reg.coord_info(x).name.clone(),
+                        closure: i,
+                        eliminated: m.frame_name(f).to_string(),
+                        center,
+                        radicand,
+                    });
+                    break;
+                }
+            }
+        }
+    }
+    Ok(out)
 }
 
 /// An error of the geometry at one of the aliases it adds for the helical links' pitches

@@ -30,4 +30,20 @@ pub(super) struct Solved {
     pub helical: Vec<HelicalLaw>,
     /// The determinant the rates divide by, over the geometry's registry.
     pub determinant: crate::expr::Expr,
+    /// The loop laws in explicit form, over the geometry's registry.
+    pub explicit: Vec<SolvedExplicit>,
+}
+
+/// A dependent length in explicit form, x = m ± √P, over the geometry's registry.
+pub(super) struct SolvedExplicit {
+    /// x's name.
+    pub coordinate: String,
+    /// The closure's index in the spec.
+    pub closure: usize,
+    /// The frame whose term's direction was eliminated.
+    pub eliminated: String,
+    /// m.
+    pub center: crate::expr::Expr,
+    /// P.
+    pub radicand: crate::expr::Expr,
 }

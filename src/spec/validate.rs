@@ -82,6 +82,8 @@ fn build_with(
     texts(spec)?;
     units(spec)?;
     let reg = registry(spec, &unknowns.names, solved)?;
+    // The spec's own texts hold no root (see `Registry::refuse_roots_in_texts`).
+    reg.refuse_roots_in_texts(true);
 
     let frames = frames(spec, &reg, resolved)?;
     let points = points(spec, &reg, &frames, resolved)?;
@@ -116,6 +118,7 @@ fn build_with(
     // The determinant the solved rates divide by, over this registry's variables (none when
     // it divides by what this registry does not invert: π, through a helical link's lead).
     let determinant = solved.and_then(|s| s.determinant.carried(&reg).ok());
+    let explicit = solved.map_or(Vec::new(), |s| explicit_laws(&reg, s));
 
     let mut m = Mechanism {
         title: spec.title.clone(),
@@ -140,11 +143,13 @@ fn build_with(
             determinant,
             rolling: s.rolling.clone(),
             helical: s.helical.clone(),
+            explicit: explicit.clone(),
         }),
     };
     m.dynamics = super::dynamics::build(&m, spec, (resolved, unknowns))?;
     requests(&m)?;
     super::scenarios::validate(&m)?;
+    m.reg.refuse_roots_in_texts(false);
     Ok(m)
 }
 
@@ -280,6 +285,9 @@ fn registry(
         .secants(solved.map_or(&[][..], |s| &s.secants))
         .cosecants(solved.map_or(&[][..], |s| &s.cosecants))
         .holonomic(solved.map_or(&[][..], |s| &s.dependent))
+        .roots_of(solved.map_or(Vec::new(), |s| {
+            s.explicit.iter().map(|e| e.radicand.clone()).collect()
+        }))
         .display_ranks(spec.parameters.iter().map(display_rank).collect());
     let aliases: Vec<(String, String)> = spec
         .aliases
@@ -577,4 +585,21 @@ fn display_rank(p: &crate::wire::ParameterSpec) -> u32 {
         Some(Dimension::INERTIA) => 3,
         _ => 4,
     }
+}
+
+/// The explicit loop laws over the mechanism's registry (each radicand is one of its roots);
+/// a law whose parts do not carry over is left out.
+fn explicit_laws(reg: &Rc<Registry>, solved: &Solved) -> Vec<crate::mechanism::ExplicitLaw> {
+    (solved.explicit.iter())
+        .filter_map(|e| {
+            let radicand = e.radicand.carried(reg).ok()?;
+            Some(crate::mechanism::ExplicitLaw {
+                coordinate: reg.coord(&e.coordinate)?,
+                closure: e.closure,
+                eliminated: e.eliminated.clone(),
+                center: e.center.carried(reg).ok()?,
+                root: reg.sqrt_of(&radicand).ok()?,
+            })
+        })
+        .collect()
 }

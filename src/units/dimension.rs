@@ -70,6 +70,23 @@ impl Dimension {
         Dimension::new(self.mass * n, self.length * n, self.time * n)
     }
 
+    /// The dimension whose square is self, when every exponent is even (√(L²) = L); none
+    /// otherwise (√L is no dimension of the SI).
+    ///
+    /// ```
+    /// use torseur::units::Dimension;
+    /// assert_eq!(Dimension::LENGTH.pow(2).sqrt(), Some(Dimension::LENGTH));
+    /// assert_eq!(Dimension::LENGTH.sqrt(), None);
+    /// ```
+    pub fn sqrt(self) -> Option<Dimension> {
+        let half = |k: i32| (k % 2 == 0).then_some(k / 2);
+        Some(Dimension::new(
+            half(self.mass)?,
+            half(self.length)?,
+            half(self.time)?,
+        ))
+    }
+
     /// Reads a unit as a spec writes it: SI symbols `kg`, `m`, `s`, `rad`, `N`, `J`, `W`,
     /// `Hz`, `Pa` (and `1` for a pure number), multiplied with spaces, `*` or `·`, each with an
     /// optional integer power `^n` (negative too: `s^-1`; `m²` is accepted), and at most one

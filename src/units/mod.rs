@@ -149,6 +149,8 @@ impl Dimensions {
                     Some(Dimension::NONE)
                 }
                 VarRole::Value(q) => Some(coordinate(q)),
+                // The half of its radicand's, which the parameters' units give (see `set`).
+                VarRole::Root(_) => None,
                 VarRole::Rate(q, order) => {
                     Some(coordinate(q) / Dimension::TIME.pow(i32::from(order)))
                 }
@@ -235,9 +237,26 @@ impl Dimensions {
                 {
                     self.vars[j.index()] = dimension.map(|d| Dimension::NONE / d);
                 }
+                self.fill_roots();
                 true
             }
             None => false,
+        }
+    }
+
+    /// Each square root's dimension: the half of its radicand's, when that is known and is a
+    /// square (a radicand holds no root: one pass is enough).
+    fn fill_roots(&mut self) {
+        let reg = self.reg.clone();
+        for r in reg.root_ids() {
+            let Some(i) = reg.index_of(VarRole::Root(r)) else {
+                continue;
+            };
+            let half = match dimension(&reg.radicand(r), self) {
+                Ok(Some(d)) => d.sqrt(),
+                _ => None,
+            };
+            self.vars[i.index()] = half;
         }
     }
 

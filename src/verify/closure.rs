@@ -12,6 +12,13 @@
 //! away from zero at one of them is a counterexample, and the relation is not equivalent;
 //! zero at every one without an exact proof, the question is out of reach (exit 2), never
 //! answered « not equivalent ».
+//!
+//! With a square root s = √P in it (an explicit loop law, x = R cos θ + √(L² − R² sin²θ)),
+//! e = a + b s is multiplied by its conjugate a − b s: e (a − b s) = a² − b² P holds no root,
+//! and is proven a multiple of a relation as above. Then at every closed configuration e = 0
+//! or a − b s = 0, one branch or the other: e is zero on the branch of the configurations the
+//! float backend draws iff it vanishes at each of them (else one is a counterexample, the
+//! other branch's law).
 
 use super::reader::Reader;
 use super::{Factor, VerifyError};
@@ -88,42 +95,105 @@ pub(super) fn modulo_closure(reader: &Reader, e: &Expr) -> Result<Option<Closed>
         return Ok(None);
     }
     let all = relations(reader);
-    for (relation, g) in &all {
+    if let [r] = e.roots_held().as_slice() {
+        return Ok(Some(with_root(reader, e, *r, &all)));
+    }
+    if let Some((relation, factor)) = proven(e, &all) {
+        return Ok(Some(Closed::Proven { relation, factor }));
+    }
+    Ok(Some(match sampled(reader, e) {
+        Sampled::Counterexample(at) => Closed::Counterexample(at),
+        Sampled::Vanishes | Sampled::Unavailable => Closed::Undecided,
+    }))
+}
+
+/// e = a + b s, s the root `r`: proven through its conjugate, e (a − b s) = k g, and zero
+/// at every closed configuration drawn (the branch).
+fn with_root(reader: &Reader, e: &Expr, r: crate::expr::RootId, all: &[(String, Expr)]) -> Closed {
+    let reg = e.registry();
+    let (a, b) = e.split_root(r);
+    let conjugate = &a - &(&b * &reg.root(r));
+    let product = &(&a * &a) - &(&(&b * &b) * &reg.radicand(r));
+    let Some((relation, k)) = proven(&product, all) else {
+        return match sampled(reader, e) {
+            Sampled::Counterexample(at) => Closed::Counterexample(at),
+            Sampled::Vanishes | Sampled::Unavailable => Closed::Undecided,
+        };
+    };
+    // The branch: at the spec's assembly configuration, where the loop closes (e times its
+    // conjugate is zero) away from a dead point (where both are), e must vanish.
+    let small = |x: &Expr, p: &[f64]| x.eval(p).abs() <= WITNESS * x.eval_magnitude(p);
+    let closed = |p: &[f64]| small(&product, p) && !(small(e, p) && small(&conjugate, p));
+    let m = reader.m;
+    let Some((point, at)) = crate::derivation::at_assembly(m, &[e, &product, &conjugate], &closed)
+    else {
+        return Closed::Undecided;
+    };
+    if !small(e, &point) {
+        return Closed::Counterexample(format!(
+            "at {at}, where the loop closes, lhs − rhs = {:.4}: the law of the other branch",
+            e.eval(&point)
+        ));
+    }
+    // e = k g / (a − b s), where a − b s ≠ 0: the branch through the assembly configuration.
+    Closed::Proven {
+        relation: format!(
+            "{relation} (lhs − rhs times its conjugate is a multiple of it), on the branch of \
+             {at}"
+        ),
+        factor: Factor {
+            numerator: k.numerator,
+            denominator: &k.denominator * &conjugate,
+        },
+    }
+}
+
+/// e = k g for one of the loop's relations g, with k made of parameters, or else any
+/// polynomial that divides exactly: the relation in words and k.
+fn proven(e: &Expr, all: &[(String, Expr)]) -> Option<(String, Factor)> {
+    for (relation, g) in all {
         if let Some((numerator, denominator)) = g.parameter_ratio(e) {
             // e · numerator = g · denominator: e = (denominator / numerator) g.
-            return Ok(Some(Closed::Proven {
-                relation: relation.clone(),
-                factor: Factor {
-                    numerator: denominator,
-                    denominator: numerator,
-                },
-            }));
+            let factor = Factor {
+                numerator: denominator,
+                denominator: numerator,
+            };
+            return Some((relation.clone(), factor));
         }
     }
     // A multiple by any polynomial (a rate, cos θ): e = q g exactly.
-    for (relation, g) in &all {
+    for (relation, g) in all {
         if let Some(q) = e.exact_div(g) {
-            return Ok(Some(Closed::Proven {
-                relation: relation.clone(),
-                factor: Factor {
-                    numerator: q,
-                    denominator: m.reg.one(),
-                },
-            }));
+            let one = e.registry().one();
+            let factor = Factor {
+                numerator: q,
+                denominator: one,
+            };
+            return Some((relation.clone(), factor));
         }
     }
-    Ok(Some(counterexample(reader, e)))
+    None
+}
+
+/// What the closed configurations drawn by the float backend say of e.
+enum Sampled {
+    /// e is away from zero at this one (coordinates, then the value of e).
+    Counterexample(String),
+    /// e vanished at every one.
+    Vanishes,
+    /// None could be drawn or evaluated.
+    Unavailable,
 }
 
 /// A closed configuration, drawn by the float backend, where e is away from zero; else
-/// undecided.
-fn counterexample(reader: &Reader, e: &Expr) -> Closed {
+/// whether it vanished at every one drawn.
+fn sampled(reader: &Reader, e: &Expr) -> Sampled {
     let m = reader.m;
     if reader.hypothesis.is_some_and(|h| !h.first_order.is_empty()) {
-        return Closed::Undecided;
+        return Sampled::Unavailable;
     }
     let Ok(model) = crate::numeric::NumericModel::new(&m.spec) else {
-        return Closed::Undecided;
+        return Sampled::Unavailable;
     };
     let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(1);
     for _ in 0..SAMPLES {
@@ -132,7 +202,7 @@ fn counterexample(reader: &Reader, e: &Expr) -> Closed {
             None => model.sample(&mut rng),
         };
         let Ok(s) = s else {
-            return Closed::Undecided;
+            return Sampled::Unavailable;
         };
         let values = crate::output::Values {
             parameters: s.parameters.clone(),
@@ -141,7 +211,7 @@ fn counterexample(reader: &Reader, e: &Expr) -> Closed {
             time: Some(s.time),
         };
         let Ok(point) = crate::output::numeric_point_for(m, &values, &[e]) else {
-            return Closed::Undecided;
+            return Sampled::Unavailable;
         };
         let (value, size) = (e.eval(&point), e.eval_magnitude(&point));
         if value.is_finite() && size > 0.0 && value.abs() > WITNESS * size {
@@ -157,12 +227,12 @@ fn counterexample(reader: &Reader, e: &Expr) -> Closed {
                 })
                 .map(|(p, x)| format!("{p} = {x:.4}"))
                 .collect();
-            return Closed::Counterexample(format!(
+            return Sampled::Counterexample(format!(
                 "at the closed configuration {} ({}), lhs − rhs = {value:.4}",
                 at.join(", "),
                 params.join(", ")
             ));
         }
     }
-    Closed::Undecided
+    Sampled::Vanishes
 }

@@ -23,7 +23,7 @@ pub(super) struct Reader<'a> {
 }
 
 /// The functions of the expression syntax; any other `name(` starts a quantity.
-const SYNTAX_FUNCTIONS: &[&str] = &["sin", "cos", "dot", "ddot"];
+const SYNTAX_FUNCTIONS: &[&str] = &["sin", "cos", "sqrt", "dot", "ddot"];
 
 impl<'a> Reader<'a> {
     pub(super) fn new(m: &'a Mechanism, hypothesis: Option<&'a Hypothesis>) -> Reader<'a> {

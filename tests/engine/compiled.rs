@@ -44,7 +44,8 @@ fn state(reg: &Registry, rng: &mut ChaCha8Rng) -> Vec<f64> {
             [q, r(), r(), r()]
         })
     };
-    reg.var_ids()
+    let mut point: Vec<f64> = reg
+        .var_ids()
         .map(|v| match reg.role(v) {
             // π is the registry's constant, no drawn parameter.
             VarRole::Parameter(k) => reg
@@ -61,8 +62,12 @@ fn state(reg: &Registry, rng: &mut ChaCha8Rng) -> Vec<f64> {
             VarRole::Rate(c, order) => coord(c)[usize::from(order)],
             VarRole::Reciprocal(c, Trig::Cos) => 1.0 / coord(c)[0].cos(),
             VarRole::Reciprocal(c, Trig::Sin) => 1.0 / coord(c)[0].sin(),
+            // From the radicand, once every other variable is set.
+            VarRole::Root(_) => f64::NAN,
         })
-        .collect()
+        .collect();
+    reg.fill_roots(&mut point);
+    point
 }
 
 /// Every output of `compiled` at `point` agrees with its expression evaluated exactly.

@@ -83,3 +83,104 @@ fn a_false_relation_fails_at_a_closed_configuration() {
         "{text}"
     );
 }
+
+/// The explicit loop law, solved by hand from (x − R cos θ)² + R² sin²θ = L²:
+/// x = R cos θ ± √(L² − R² sin²θ). At the scenario `demarrage`'s initial configuration
+/// (θ = 0, x = 0.25 = R + L with R = 0.05, L = 0.2), x − R cos θ = L > 0: the + branch holds
+/// there, the − branch is off by 2√(L² − R² sin²θ) = 2 L = 0.4.
+#[test]
+fn the_explicit_loop_law_holds_on_the_assembly_branch_only() {
+    let m = slider_crank();
+    let plus = "x = R*cos(theta) + sqrt(L^2 - R^2*sin(theta)^2)";
+    let (relation, _) = by_closure(&m, plus);
+    assert!(
+        relation.contains("direction of its term in B2 eliminated"),
+        "{relation}"
+    );
+    assert!(relation.contains("scenario `demarrage`"), "{relation}");
+    // Written the other way round, and with the root's radicand times a square.
+    by_closure(
+        &m,
+        "x - R*cos(theta) = 1/2*sqrt(4*L^2 - 4*R^2*sin(theta)^2)",
+    );
+    let minus =
+        verify_equation(&m, "x = R*cos(theta) - sqrt(L^2 - R^2*sin(theta)^2)", None).unwrap();
+    assert!(!minus.is_equivalent());
+    let at = minus.counterexample.clone().expect("a counterexample");
+    let value: f64 = at.split("lhs − rhs = ").nth(1).unwrap()[..6]
+        .parse()
+        .unwrap();
+    assert!((value - 0.4).abs() < 1e-9, "{at}");
+    // The key's law is the + branch, read at that configuration.
+    let law = &m.loop_law().unwrap().explicit[0];
+    let branch = torseur::derivation::explicit_law(&m, law).unwrap();
+    assert_eq!(branch.sign, 1);
+    assert_eq!(
+        branch.value,
+        m.reg()
+            .parse("R*cos(theta) + sqrt(L^2 - R^2*sin(theta)^2)")
+            .unwrap()
+    );
+}
+
+/// The slider–crank's spec with one text replaced (`from` → `to`, which must occur).
+fn slider_crank_with(from: &str, to: &str) -> Result<Mechanism, String> {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/derivations/bielle_manivelle.json"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.contains(from), "{from}");
+    torseur::spec::from_str(&text.replacen(from, to, 1)).map_err(|e| e.to_string())
+}
+
+/// A spec's own text may not write a root, even the one its explicit loop law declares: the
+/// spec's texts are differentiated (the gas force's power, the velocities), and the time
+/// derivative of √(L² − R² sin²θ) is no polynomial. Refused at loading, never a panic
+/// (`sqrt(0)`, which symbolica reads as 0, is zero).
+#[test]
+fn a_spec_text_with_a_square_root_is_refused_at_loading() {
+    for root in [
+        "sqrt(L^2 - R^2*sin(theta)^2)",
+        "sqrt(-1)",
+        "sqrt(x^2)",
+        "sqrt(F)",
+    ] {
+        let e = slider_crank_with(
+            "\"resultant\": \"-F*x0\"",
+            &format!("\"resultant\": \"-F*{root}*x0\""),
+        )
+        .err()
+        .unwrap_or_else(|| panic!("{root}: loaded"));
+        assert!(e.contains("actions[1].resultant"), "{root}: {e}");
+    }
+    let e = slider_crank_with(
+        "\"resultant\": \"-F*x0\"",
+        "\"resultant\": \"-F*sqrt(L^2 - R^2*sin(theta)^2)*x0\"",
+    )
+    .unwrap_err();
+    assert!(e.contains("a spec's text writes no square root"), "{e}");
+}
+
+/// Hostile roots typed to `verify` are answered (not equivalent, or a refusal), never a
+/// panic: a negative number, zero, a square, a radicand that is not the loop's.
+#[test]
+fn hostile_square_roots_in_a_relation_are_answered() {
+    let m = slider_crank();
+    for text in [
+        "x = R*cos(theta) + sqrt(-1)",
+        "x = R*cos(theta) + sqrt(-L^2)",
+        "x = sqrt(x^2)",
+        "x = R*cos(theta) + sqrt(L^2 + R^2)",
+        "x = R*cos(theta) + sqrt(L^2 - R^2*sin(theta)^2)^3",
+        "x = R*cos(theta) + 1/sqrt(L^2 - R^2*sin(theta)^2)",
+    ] {
+        if let Ok(v) = verify_equation(&m, text, None) {
+            assert!(!v.is_equivalent(), "{text}: {v}");
+        }
+    }
+    // √0 = 0 and √(x²) is refused as no root: x = R cos θ is false at the assembly (x = R + L).
+    let v = verify_equation(&m, "x = R*cos(theta) + sqrt(0)", None).unwrap();
+    assert!(!v.is_equivalent(), "{v}");
+    assert!(verify_equation(&m, "x = sqrt(x^2)", None).is_err());
+}

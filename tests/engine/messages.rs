@@ -422,9 +422,13 @@ fn habits_of_other_tools_are_refused_with_the_fix() {
     assert_eq!(
         said("diff(psi, t)*L"),
         "cannot parse `diff(psi, t)*L`: `diff(...)`: a time derivative is written dot(q) or \
-         ddot(q) for a coordinate q; the functions are sin, cos, dot and ddot"
+         ddot(q) for a coordinate q; the functions are sin, cos, dot, ddot and sqrt"
     );
-    assert!(said("sqrt(L)").contains("`sqrt(...)`: a result of the spec syntax is a polynomial"));
+    // A root is read only as one of the mechanism's (an explicit loop law's); this one has none.
+    assert!(
+        said("sqrt(L)")
+            .contains("sqrt(L) is not one of the mechanism's square roots (it has none)")
+    );
     // π typed as a Greek letter, or pasted from a document in a mathematical form, is `pi`.
     for (typed, c) in [("2*π*L", 'π'), ("2*𝜋*L", '𝜋'), ("2*ϖ*L", 'ϖ')] {
         assert_eq!(

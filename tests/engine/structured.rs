@@ -43,7 +43,8 @@ fn consistent_point(m: &torseur::Mechanism, rng: &mut ChaCha8Rng) -> Vec<f64> {
         .map(|_| rng.random_range(-1.5..1.5))
         .collect();
     let vars: Vec<_> = reg.var_ids().collect();
-    vars.into_iter()
+    let mut point: Vec<f64> = vars
+        .into_iter()
         .map(|v| match reg.role(v) {
             VarRole::Parameter(p) => param(p.index(), rng),
             VarRole::Inverse(p) => 1.0 / param(p.index(), rng),
@@ -53,8 +54,12 @@ fn consistent_point(m: &torseur::Mechanism, rng: &mut ChaCha8Rng) -> Vec<f64> {
             VarRole::Reciprocal(q, Trig::Sin) => 1.0 / angles[q.index()].sin(),
             VarRole::Value(q) => angles[q.index()],
             VarRole::Rate(..) => rng.random_range(-1.0..1.0),
+            // Filled from its radicand below.
+            VarRole::Root(_) => f64::NAN,
         })
-        .collect()
+        .collect();
+    reg.fill_roots(&mut point);
+    point
 }
 
 /// Every library spec and small chain, loaded, with the structured form of its quantities.

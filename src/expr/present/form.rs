@@ -84,6 +84,8 @@ pub enum Leaf {
     Reciprocal(CoordId, Trig),
     /// A length coordinate, or an angle written as itself.
     Value(CoordId),
+    /// A square root of the registry (see [`crate::expr::RegistryBuilder::roots`]).
+    Root(super::super::RootId),
     /// q̇ (order 1), q̈ (order 2)…
     Rate(CoordId, u8),
     /// cos of an angle.
@@ -414,6 +416,7 @@ fn plain_var(reg: &Registry, f: &Factor) -> Option<(usize, bool)> {
         Leaf::Inverse(p) => (VarRole::Inverse(*p), false),
         Leaf::Reciprocal(q, f) => (VarRole::Reciprocal(*q, *f), false),
         Leaf::Value(q) => (VarRole::Value(*q), false),
+        Leaf::Root(r) => (VarRole::Root(*r), false),
         Leaf::Rate(q, o) => (VarRole::Rate(*q, *o), false),
         Leaf::Cos(a) if a.is_simple() => (VarRole::Cos(a.0[0].0), false),
         Leaf::Sin(a) if a.is_simple() => (VarRole::Sin(a.0[0].0), true),
@@ -477,6 +480,8 @@ pub(crate) fn factor_key(reg: &Registry, f: &Factor) -> (u8, u32, usize, u8, Vec
         // The cosines a loop closure divides by, after the parameters below the line.
         Factor::Leaf(Leaf::Reciprocal(q, f)) => (6, u32::MAX, q.0, 1 + *f as u8, vec![]),
         Factor::Leaf(Leaf::Value(q)) => (2, 0, q.0, 0, vec![]),
+        // A root after the sums it may multiply, before the rates.
+        Factor::Leaf(Leaf::Root(r)) => (3, 2, r.0, 0, vec![]),
         Factor::Sum(s) => (3, u32::from(s.terms.iter().any(has_rates)), 0, 0, vec![]),
         Factor::Leaf(Leaf::Rate(q, o)) => (4, 0, usize::MAX - *o as usize, q.0 as u8, vec![]),
         // sin θ cos θ, as the course writes it.
@@ -502,6 +507,7 @@ fn leaf_text(reg: &Registry, a: &Leaf) -> String {
     match a {
         Leaf::Param(p) | Leaf::Inverse(p) => reg.scalar_name(*p).to_string(),
         Leaf::Value(q) => reg.coord_info(*q).name.clone(),
+        Leaf::Root(r) => format!("sqrt({})", reg.radicand_text(*r)),
         // Below the line: `/cos(phi)`.
         Leaf::Reciprocal(q, f) => format!("{}({})", f.name(), reg.coord_info(*q).name),
         Leaf::Rate(q, o) => {
@@ -525,6 +531,7 @@ pub(crate) fn leaf_expr(reg: &Rc<Registry>, a: &Leaf) -> Expr {
         Leaf::Inverse(p) => var(VarRole::Inverse(*p)),
         Leaf::Reciprocal(q, f) => var(VarRole::Reciprocal(*q, *f)),
         Leaf::Value(q) => var(VarRole::Value(*q)),
+        Leaf::Root(r) => var(VarRole::Root(*r)),
         Leaf::Rate(q, o) => var(VarRole::Rate(*q, *o)),
         Leaf::Cos(x) | Leaf::Sin(x) => {
             let terms: Vec<(CoordId, i64)> = x.0.iter().map(|&(q, k)| (q, k as i64)).collect();

@@ -82,6 +82,7 @@ pub(super) fn exponents(reg: &Registry, m: &Mono) -> Vec<u8> {
             Leaf::Inverse(p) => VarRole::Inverse(*p),
             Leaf::Reciprocal(q, f) => VarRole::Reciprocal(*q, *f),
             Leaf::Value(q) => VarRole::Value(*q),
+            Leaf::Root(r) => VarRole::Root(*r),
             Leaf::Rate(q, o) => VarRole::Rate(*q, *o),
             // Only single angles here: a compound angle is no variable of the registry.
             Leaf::Cos(x) if x.is_simple() => VarRole::Cos(x.terms()[0].0),

@@ -181,6 +181,7 @@ impl Expr {
                             VarRole::Inverse(p) => Leaf::Inverse(p),
                             VarRole::Reciprocal(q, f) => Leaf::Reciprocal(q, f),
                             VarRole::Value(q) => Leaf::Value(q),
+                            VarRole::Root(r) => Leaf::Root(r),
                             VarRole::Rate(q, o) => Leaf::Rate(q, o),
                             VarRole::Cos(q) => Leaf::Cos(Angle::of(q)),
                             VarRole::Sin(q) => Leaf::Sin(Angle::of(q)),

@@ -69,6 +69,8 @@ pub(crate) enum Node {
     Pow(Box<Node>, i32),
     Sin(Box<Node>),
     Cos(Box<Node>),
+    /// The nonnegative square root.
+    Sqrt(Box<Node>),
 }
 
 /// The terms ±t₁ ± t₂ … (or the factors t₁ ×/÷ t₂ …, `true` for − or ÷) as a balanced tree,
@@ -388,17 +390,17 @@ impl Parser<'_> {
     fn call(&mut self, name: &str) -> Result<Node, String> {
         self.expect(b'(')?;
         let node = match name {
-            "sin" | "cos" => {
+            "sin" | "cos" | "sqrt" => {
                 self.depth += 1;
                 if self.depth > MAX_DEPTH {
                     return Err(format!("nested deeper than {MAX_DEPTH}"));
                 }
                 let arg = Box::new(self.expr()?);
                 self.depth -= 1;
-                if name == "sin" {
-                    Node::Sin(arg)
-                } else {
-                    Node::Cos(arg)
+                match name {
+                    "sin" => Node::Sin(arg),
+                    "cos" => Node::Cos(arg),
+                    _ => Node::Sqrt(arg),
                 }
             }
             "dot" | "ddot" => {
@@ -416,7 +418,7 @@ impl Parser<'_> {
             }
             other => {
                 return Err(format!(
-                    "unknown function `{other}` (known: sin, cos, dot, ddot)"
+                    "unknown function `{other}` (known: sin, cos, sqrt, dot, ddot)"
                 ));
             }
         };
@@ -467,8 +469,9 @@ pub(crate) fn kind(node: &Node) -> Result<Kind, String> {
             Zero if *n <= 0 => return Err("zero raised to a non-positive power".into()),
             k => k,
         },
-        Node::Sin(a) | Node::Cos(a) => match kind(a)? {
-            Vector => return Err("sin and cos take a scalar".into()),
+        Node::Sin(a) | Node::Cos(a) | Node::Sqrt(a) => match kind(a)? {
+            Vector => return Err("sin, cos and sqrt take a scalar".into()),
+            Zero if matches!(node, Node::Sqrt(_)) => Zero,
             _ => Scalar,
         },
     })
@@ -488,7 +491,9 @@ pub(crate) fn holds_time(node: &Node) -> bool {
         | Node::Rate(..)
         | Node::Basis(..)
         | Node::Unknown(_) => false,
-        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => holds_time(a),
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) | Node::Sqrt(a) => {
+            holds_time(a)
+        }
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
             holds_time(a) || holds_time(b)
         }
@@ -514,7 +519,7 @@ pub(crate) fn validate_time(node: &Node, angle: bool) -> Result<(), String> {
     }
     match node {
         Node::Sin(a) | Node::Cos(a) => validate_time(a, true),
-        Node::Neg(a) | Node::Pow(a, _) => validate_time(a, false),
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sqrt(a) => validate_time(a, false),
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
             validate_time(a, false)?;
             validate_time(b, false)
@@ -662,6 +667,13 @@ pub(crate) fn eval<T: Num>(node: &Node, env: &Env<T>) -> Result<Val<T>, String> 
                 x.cos()
             }),
             Val::V(_) => return Err("sin and cos take a scalar".into()),
+        },
+        Node::Sqrt(a) => match eval(a, env)? {
+            Val::S(x) if x.re() < 0.0 => {
+                return Err(format!("square root of {} < 0 at these values", x.re()));
+            }
+            Val::S(x) => Val::S(x.sqrt()),
+            Val::V(_) => return Err("sqrt takes a scalar".into()),
         },
     })
 }

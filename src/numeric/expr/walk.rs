@@ -6,7 +6,9 @@ use super::Node;
 /// Calls `f` on every leaf of `node` (numbers, names, basis vectors, the time).
 fn leaves(node: &Node, f: &mut impl FnMut(&Node)) {
     match node {
-        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => leaves(a, f),
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) | Node::Sqrt(a) => {
+            leaves(a, f)
+        }
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
             leaves(a, f);
             leaves(b, f)
@@ -47,7 +49,9 @@ pub(crate) fn depends_on_time(node: &Node) -> bool {
     match node {
         Node::Coord(_) | Node::Rate(..) | Node::Time => true,
         Node::Num(_) | Node::Param(_) | Node::Basis(..) | Node::Unknown(_) => false,
-        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) => depends_on_time(a),
+        Node::Neg(a) | Node::Pow(a, _) | Node::Sin(a) | Node::Cos(a) | Node::Sqrt(a) => {
+            depends_on_time(a)
+        }
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
             depends_on_time(a) || depends_on_time(b)
         }
@@ -73,6 +77,7 @@ pub(crate) fn without_unknowns(node: &Node) -> Node {
         Node::Pow(a, n) => Node::Pow(b(a), *n),
         Node::Sin(a) => Node::Sin(b(a)),
         Node::Cos(a) => Node::Cos(b(a)),
+        Node::Sqrt(a) => Node::Sqrt(b(a)),
     }
 }
 
@@ -105,7 +110,7 @@ pub(crate) fn unknown_coefficient(node: &Node, k: usize) -> Node {
             _ => Node::Num(0.0),
         },
         // Their argument holds no unknown.
-        Node::Sin(_) | Node::Cos(_) => Node::Num(0.0),
+        Node::Sin(_) | Node::Cos(_) | Node::Sqrt(_) => Node::Num(0.0),
     }
 }
 
@@ -136,6 +141,12 @@ pub(crate) fn unknown_degree(node: &Node) -> Result<u32, String> {
                 return Err("an unknown is raised to a negative power".into());
             }
             d.saturating_mul(n.unsigned_abs())
+        }
+        Node::Sqrt(a) => {
+            if unknown_degree(a)? > 0 {
+                return Err("an unknown is inside sqrt".into());
+            }
+            0
         }
         Node::Sin(a) | Node::Cos(a) => {
             if unknown_degree(a)? > 0 {

@@ -228,6 +228,12 @@ impl Reader<'_> {
                         let d = self.closed(&[Tok::Sym('}')])?;
                         Ok(format!("({n}/{d})"))
                     }
+                    // \sqrt{P}: the engine's sqrt(P), one of the mechanism's roots.
+                    "sqrt" => {
+                        self.expect(Tok::Sym('{'))?;
+                        let radicand = self.closed(&[Tok::Sym('}')])?;
+                        Ok(format!("sqrt({radicand})"))
+                    }
                     "sin" | "cos" => {
                         let k = self.exponent()?;
                         self.skip_space();
