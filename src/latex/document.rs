@@ -64,6 +64,13 @@ fn question_block(doc: &mut Doc, qs: &Question) -> Result<(), crate::derivation:
     for e in &qs.equations {
         question_equation(doc, e)?;
     }
+    // The spec's own text discusses the results: the method (the isolation, the actions,
+    // the theorem) is the writer's, above; a question without results is the text alone.
+    if let Some(a) = &qs.answer
+        && !(qs.quantities.is_empty() && qs.equations.is_empty())
+    {
+        let _ = writeln!(doc.o, "\n{}\n", rich_text_or_escaped(a));
+    }
     doc.under = None;
     Ok(())
 }
@@ -81,7 +88,10 @@ fn question_heading(doc: &mut Doc, qs: &Question) {
     if let Some(st) = &qs.statement {
         let _ = writeln!(doc.o, "\\emph{{{}}}\n", rich_text_or_escaped(st));
     }
-    if let Some(a) = &qs.answer {
+    if let Some(a) = &qs.answer
+        && qs.quantities.is_empty()
+        && qs.equations.is_empty()
+    {
         let _ = writeln!(doc.o, "{}\n", rich_text_or_escaped(a));
     }
     for &k in &qs.hypotheses {

@@ -60,6 +60,7 @@ pub(super) fn loop_law(doc: &mut Doc) {
             false,
         );
     }
+    super::explicit::explicit_laws(doc);
 }
 
 /// Each closure projected on the ground's basis, then the relations' time derivatives.

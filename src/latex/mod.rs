@@ -11,6 +11,7 @@ mod bilan;
 mod coulomb;
 mod document;
 mod energy;
+mod explicit;
 mod expr;
 mod fault;
 mod figures;

@@ -36,17 +36,7 @@ fn vector_sum_with(
     c: &[Expr; 3],
     max: usize,
 ) -> String {
-    let axes = ['x', 'y', 'z'];
-    let mut lines: Vec<String> = Vec::new();
-    let mut first = true;
-    for k in 0..3 {
-        if c[k].is_zero() {
-            continue;
-        }
-        let bv = names.basis_vector(axes[k], basis_frame);
-        lines.extend(component_lines(&c[k], &bv, first, max));
-        first = false;
-    }
+    let lines = sum_lines(names, basis_frame, c, max);
     if lines.is_empty() {
         return format!("{lhs} &= \\TVec{{0}}");
     }
@@ -59,6 +49,36 @@ fn vector_sum_with(
         out.push_str(&format!(" \\\\\n&\\phantom{{=}} {l}"));
     }
     out
+}
+
+/// The lines of a vector's sum over its basis vectors, none for the zero vector.
+fn sum_lines(names: &VectorNames, basis_frame: &str, c: &[Expr; 3], max: usize) -> Vec<String> {
+    let axes = ['x', 'y', 'z'];
+    let mut lines: Vec<String> = Vec::new();
+    for k in 0..3 {
+        if c[k].is_zero() {
+            continue;
+        }
+        let bv = names.basis_vector(axes[k], basis_frame);
+        lines.extend(component_lines(&c[k], &bv, lines.is_empty(), max));
+    }
+    lines
+}
+
+/// A vector's sum over its basis vectors on one line (`\dot{\theta}\,\vec{z}_{0}`, `\vec{0}`
+/// for zero), when it holds in `max` characters.
+pub(super) fn vector_line(
+    names: &VectorNames,
+    basis_frame: &str,
+    c: &[Expr; 3],
+    max: usize,
+) -> Option<String> {
+    let lines = sum_lines(names, basis_frame, c, max);
+    if lines.is_empty() {
+        return Some("\\TVec{0}".to_string());
+    }
+    let one = lines.join(" ");
+    (width(&one) <= max && !one.contains("\\Big")).then_some(one)
 }
 
 /// The lines of a vector sum (see [`vector_sum`]) that its nonzero component `e` along the

@@ -380,7 +380,9 @@ pub struct QuestionSpec {
     /// The question as the subject asks it.
     #[serde(default)]
     pub statement: Option<String>,
-    /// The teacher's text: a method, a discussion.
+    /// The teacher's discussion of the results, printed after them (the method, what is
+    /// isolated and which theorem, is written by the tool); alone for a question without
+    /// quantities.
     #[serde(default)]
     pub answer: Option<String>,
     /// Hypotheses whose consequences the answer shows (particular inertia matrices, what is

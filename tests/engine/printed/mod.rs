@@ -160,6 +160,16 @@ fn every_printed_formula_is_the_engines_value() {
                         (Err(x), _) | (_, Err(x)) => Err(x),
                     }
                 }
+                // A sign `value > 0` or `value < 0` (an explicit loop law's branch): its left
+                // side is the value, its right side 0.
+                Value::Scalar(e) if t.contains(&Tok::Sym('>')) || t.contains(&Tok::Sym('<')) => {
+                    let at = t
+                        .iter()
+                        .position(|x| *x == Tok::Sym('>') || *x == Tok::Sym('<'))
+                        .unwrap();
+                    let zero = ctx.scalar(&t[at + 1..]).map(|z| z.is_zero());
+                    ctx.scalar(&t[..at]).map(|g| &g == e && zero == Ok(true))
+                }
                 Value::Scalar(e) => {
                     let rhs = match t.iter().position(|x| *x == Tok::Sym('=')) {
                         Some(eq) => &t[eq + 1..],
@@ -167,9 +177,13 @@ fn every_printed_formula_is_the_engines_value() {
                     };
                     ctx.scalar(rhs).map(|g| &g == e)
                 }
+                // `lhs = sum`, or a sum alone (a row of the bilan).
                 Value::Vector { components, .. } => {
-                    let eq = t.iter().position(|x| *x == Tok::Sym('=')).unwrap();
-                    ctx.any_basis(&t[eq + 1..]).map(|g| &g == components)
+                    let rhs = match t.iter().position(|x| *x == Tok::Sym('=')) {
+                        Some(eq) => &t[eq + 1..],
+                        None => &t[..],
+                    };
+                    ctx.any_basis(rhs).map(|g| &g == components)
                 }
                 _ => unreachable!("inline formulas are scalars and positions"),
             };
