@@ -76,6 +76,14 @@ impl Action {
             basis: self.basis,
             description: self.description.clone(),
             label: self.label.clone(),
+            // A link's reaction is exerted by its second solid; a given action keeps its
+            // source (the motor's reaction {T(moteur→0)}).
+            source: if link {
+                self.on_label.clone()
+            } else {
+                self.source.clone()
+            },
+            mark: self.mark.clone(),
             spring: self.spring.as_ref().map(|s| SpringPart {
                 potential: s.potential.clone(),
                 resultant: s.resultant.neg(),
@@ -271,6 +279,8 @@ pub fn external_actions(m: &Mechanism, s: &[BodyId]) -> Vec<Action> {
                 basis: m.frames.ground(),
                 description: "pesanteur, au centre d'inertie".to_string(),
                 label: crate::wire::GRAVITY_LABEL.to_string(),
+                source: "pes".to_string(),
+                mark: None,
                 spring: None,
             });
         }

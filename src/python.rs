@@ -132,7 +132,7 @@ fn derivation_json(
         j["value"] = output::value_json(m, &value);
         j["hypothesis"] = json!(h.name);
     }
-    let title = crate::latex::quantity_title(&d.quantity);
+    let title = crate::latex::quantity_title_in(m, &d.quantity);
     j["latex"] = json!({"quantity": title, "value": crate::latex::value(m, &title, &value)});
     j
 }

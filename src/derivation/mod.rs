@@ -322,6 +322,10 @@ pub enum StepKind {
         on: String,
         /// Point of reduction.
         point: String,
+        /// What exerts it, as printed ([`crate::pfd::Action::source`]).
+        source: String,
+        /// A link's index among the links joining the same two solids.
+        mark: Option<crate::mechanism::Mark>,
     },
     /// A quantity projected on a basis vector (frame name, axis letter).
     Projected(QuantityKind, (String, char)),

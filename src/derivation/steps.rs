@@ -36,6 +36,8 @@ pub(super) fn action_step(m: &Mechanism, act: &crate::pfd::Action) -> Step {
             from: act.from_label.clone(),
             on: act.on_label.clone(),
             point: m.point_name(act.point).to_string(),
+            source: act.source.clone(),
+            mark: act.mark.clone(),
         },
         theorem: bilan_line(act),
         value: torsor_value(m, &act.torsor(), act.basis),

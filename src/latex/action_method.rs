@@ -83,7 +83,8 @@ fn power_sentence(m: &crate::mechanism::Mechanism, d: &Derivation) -> Option<Str
                  produit du torseur de chaque action par le torseur cinématique du solide $S$ qui la \
                  reçoit, réduits au même point{} :",
                 if many { "des actions" } else { "de l'action" },
-                quantity_tex(&d.quantity.kind),
+                // A given action by its source, as its torsor prints it.
+                super::VectorNames::of(m).quantity(&d.quantity.kind),
                 if many { ", puis on somme" } else { "" }
             ))
         }

@@ -42,7 +42,9 @@ pub(super) fn state_laws(doc: &mut Doc, actions: &[Step]) {
     for law in &m.dynamics.laws {
         let l = &m.links[law.link];
         let present = actions.iter().any(|s| match &s.kind {
-            StepKind::Action { from, on, point } => {
+            StepKind::Action {
+                from, on, point, ..
+            } => {
                 *point == l.point
                     && ((*from == l.between[0] && *on == l.between[1])
                         || (*from == l.between[1] && *on == l.between[0]))

@@ -253,24 +253,24 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
             .flat_map(|l| {
                 let viscous = l.viscous.as_ref().map(|f| {
                     format!(
-                        "la liaison {} (frottement visqueux de coefficient ${}$)",
-                        escape_text(&l.name),
+                        "{} (frottement visqueux de coefficient ${}$)",
+                        rich_text_or_escaped(&l.label),
                         tex(format!("friction of {}", l.name), Some(f))
                     )
                 });
                 let dry = l.dry.as_ref().map(|c| {
                     format!(
-                        "la liaison {} (frottement sec d'intensité ${}$, opposé au glissement : \
+                        "{} (frottement sec d'intensité ${}$, opposé au glissement : \
                          ${}$ est le signe de la vitesse relative)",
-                        escape_text(&l.name),
+                        rich_text_or_escaped(&l.label),
                         tex(format!("dry friction of {}", l.name), Some(c)),
                         tex(format!("sign of {}", l.name), l.sign.as_ref())
                     )
                 });
                 let contact = l.coefficient.as_ref().map(|c| {
                     format!(
-                        "la liaison {} (frottement sec de coefficient ${}$, loi de Coulomb)",
-                        escape_text(&l.name),
+                        "{} (frottement sec de coefficient ${}$, loi de Coulomb)",
+                        rich_text_or_escaped(&l.label),
                         tex(format!("coefficient of {}", l.name), Some(c))
                     )
                 });
@@ -286,9 +286,9 @@ pub(super) fn model_hypotheses(doc: &mut Doc) {
             if let Some(sp) = &l.spring {
                 let torsion = if sp.torsion { " de torsion" } else { "" };
                 parts.push(format!(
-                    "un ressort{torsion} de raideur ${}$ agit dans la liaison {}",
+                    "un ressort{torsion} de raideur ${}$ agit dans {}",
                     tex(format!("stiffness of {}", l.name), Some(&sp.stiffness)),
-                    escape_text(&l.name)
+                    rich_text_or_escaped(&l.label)
                 ));
             }
         }

@@ -28,6 +28,7 @@ mod routes;
 mod sentences;
 mod setup;
 mod simulation;
+mod source;
 mod text;
 mod theorems;
 mod trial;
@@ -38,7 +39,8 @@ pub use document::{AnswerKey, FRAGMENT_LINE, MACROS};
 pub use expr::{expr, expr_lines, fraction};
 pub use fault::text_at_fault;
 pub use figures::{link_graph, link_text, rotation_figures};
-pub use page::{Display, DisplayRole, Inline, quantity_title};
+pub use page::{Display, DisplayRole, Inline, quantity_title, quantity_title_in};
+pub use source::action_source;
 pub use text::{MAX_ARROW_DEPTH, MAX_FORMULA_DEPTH, MAX_LABEL_CHARS, MAX_PROSE_CHARS};
 pub use text::{RichTextError, rich_text, rich_text_or_escaped};
 pub use values::{matrix, value, value_named, value_styled, vector_column, vector_sum};
@@ -292,12 +294,15 @@ pub fn point(n: &str) -> String {
 }
 
 /// The basis vectors named as the statement does (\vec{u} rather than \vec{x}_{2}), per frame
-/// name: what the key's writers hold (the page [`page::Doc`], the figures of the rotations)
-/// and hand to every function that writes a basis vector. [`VectorNames::default`] names
-/// none, as the public functions that take no mechanism write.
+/// name, and the given actions by their sources ({T(poussée → 1)}): what the key's writers
+/// hold (the page [`page::Doc`], the figures of the rotations) and hand to every function that
+/// writes a basis vector or an action. [`VectorNames::default`] names none, as the public
+/// functions that take no mechanism write.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct VectorNames {
     by_frame: std::collections::HashMap<String, [String; 3]>,
+    /// Each given action's name → what its torsor prints as exerting it (« poussée »).
+    sources: std::collections::HashMap<String, String>,
 }
 
 impl VectorNames {
@@ -317,7 +322,27 @@ impl VectorNames {
                 now.insert(fr.name.clone(), n);
             }
         }
-        VectorNames { by_frame: now }
+        // A given action's name, its source (a link's `from` is its solid's name already).
+        let sources = (m.dynamics.actions.iter())
+            .filter(|a| a.from_label != a.exerted_by)
+            .map(|a| (a.from_label.clone(), a.source.clone()))
+            .collect();
+        VectorNames {
+            by_frame: now,
+            sources,
+        }
+    }
+
+    /// An action `from \rightarrow on`, the exterior of `on` written \bar{on}, a given
+    /// action by its source (`\textnormal{poussée} \rightarrow 1`).
+    pub(crate) fn action(&self, a: &ActionRef) -> String {
+        let on = action_side(&a.on);
+        let from = match self.sources.get(&a.from) {
+            _ if a.from == "ext" => exterior(&on),
+            Some(text) => action_source(text),
+            None => action_side(&a.from),
+        };
+        format!("{from} \\rightarrow {on}")
     }
 
     /// A basis vector the statement names (`u`), in LaTeX.
@@ -397,17 +422,6 @@ pub(crate) fn exterior(s: &str) -> String {
     } else {
         format!("\\bar{{{s}}}")
     }
-}
-
-/// An action `from \rightarrow on`, the exterior of `on` written \bar{on}.
-fn action(a: &ActionRef) -> String {
-    let on = action_side(&a.on);
-    let from = if a.from == "ext" {
-        exterior(&on)
-    } else {
-        action_side(&a.from)
-    };
-    format!("{from} \\rightarrow {on}")
 }
 
 fn motion(m: &Motion) -> String {
@@ -509,15 +523,15 @@ impl VectorNames {
         };
         match k {
             Omega(mo) => arrow(format!("\\Omega({})", motion(mo))),
-            ActionResultant(a) => arrow(format!("R({})", action(a))),
+            ActionResultant(a) => arrow(format!("R({})", self.action(a))),
             ActionMoment {
                 point: p,
                 action: a,
-            } => arrow(format!("M({},{})", point(p), action(a))),
+            } => arrow(format!("M({},{})", point(p), self.action(a))),
             ActionTorsor {
                 action: a,
                 point: p,
-            } => torsor('T', action(a), p),
+            } => torsor('T', self.action(a), p),
             Velocity {
                 point: p,
                 motion: mo,
@@ -553,7 +567,11 @@ impl VectorNames {
             Power {
                 action: a,
                 reference,
-            } => format!("\\mathcal{{P}}({}/{})", action(a), escape_ident(reference)),
+            } => format!(
+                "\\mathcal{{P}}({}/{})",
+                self.action(a),
+                escape_ident(reference)
+            ),
             InternalPower(set) => {
                 format!("\\mathcal{{P}}_{{\\mathrm{{int}}}}({})", escape_ident(set))
             }

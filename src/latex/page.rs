@@ -470,6 +470,21 @@ pub fn quantity_title(q: &Quantity) -> String {
     super::plain(&VectorNames::default().quantity_title(q))
 }
 
+/// [`quantity_title`] in the mechanism's own words: the basis vectors by the statement's
+/// names, a given action by its source (`\textnormal{poussée}`).
+///
+/// ```
+/// let m = torseur::spec::load("derivations/pendule_sur_chariot.json").unwrap();
+/// let q = torseur::Quantity::parse("R(poussee->1)").unwrap();
+/// assert_eq!(
+///     torseur::latex::quantity_title_in(&m, &q),
+///     "\\overrightarrow{R(\\textnormal{poussée} \\rightarrow 1)}"
+/// );
+/// ```
+pub fn quantity_title_in(m: &crate::mechanism::Mechanism, q: &Quantity) -> String {
+    super::plain(&VectorNames::of(m).quantity_title(q))
+}
+
 impl VectorNames {
     /// [`quantity_title`], the basis vectors by the statement's names.
     pub(super) fn quantity_title(&self, q: &Quantity) -> String {

@@ -654,7 +654,10 @@ fn bilan_text(
     names: &super::VectorNames,
     s: &crate::derivation::Step,
 ) -> String {
-    if let StepKind::Action { from, on, point } = &s.kind {
+    if let StepKind::Action {
+        from, on, point, ..
+    } = &s.kind
+    {
         let between = |l: &&crate::mechanism::Link| {
             (l.between[0] == *from && l.between[1] == *on)
                 || (l.between[0] == *on && l.between[1] == *from)

@@ -56,9 +56,16 @@ pub(super) fn step_lhs(names: &super::VectorNames, k: &StepKind) -> String {
             frame(r)
         ),
         StepKind::Massless(q) => names.quantity(q),
-        StepKind::Action { from, on, point: p } => format!(
-            "\\TTorseur{{\\mathcal{{T}}({} \\rightarrow {})}}{{{}}}",
-            action_side(from),
+        StepKind::Action {
+            on,
+            point: p,
+            source,
+            mark,
+            ..
+        } => format!(
+            "\\TTorseur{{{}({} \\rightarrow {})}}{{{}}}",
+            super::source::torsor_letter(mark.as_ref()),
+            super::action_source(source),
             action_side(on),
             point(p)
         ),

@@ -57,8 +57,24 @@ pub struct Action {
     /// How a sentence names it (« le moteur », « la pesanteur », « la liaison pivot entre 0
     /// et 1 »): free text that may hold `$…$` formulas, for [`crate::latex::rich_text`].
     pub label: String,
+    /// What exerts it, as {T(source→on)} prints it: a solid or frame name for a link, `pes`
+    /// for gravity, the action's source (« poussée », « moteur 1 ») for a given action, free
+    /// text that may hold `$…$` formulas ([`crate::wire::ActionSpec::source`]).
+    pub source: String,
+    /// What tells a link's torsor from another link's between the same two solids (two
+    /// bearings: {T_A(0→1)} and {T_B(0→1)}); None when no other link joins them.
+    pub mark: Option<Mark>,
     /// The spring's part, when the link has one.
     pub spring: Option<SpringPart>,
+}
+
+/// The index of a link's torsor among the links joining the same two solids.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Mark {
+    /// The link's point, when the others have other points (the bearing in A, the one in B).
+    Point(String),
+    /// The link's name, when another of them has the same point.
+    Link(String),
 }
 
 /// Dry (Coulomb) friction in a link: its action holds −C ε along the axis (or, with Coulomb's

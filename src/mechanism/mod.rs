@@ -11,7 +11,9 @@ use std::rc::Rc;
 
 mod dynamics;
 mod statement;
-pub use dynamics::{Action, CoulombLaw, DryFriction, Dynamics, Small, Source, SpringPart, Theorem};
+pub use dynamics::{
+    Action, CoulombLaw, DryFriction, Dynamics, Mark, Small, Source, SpringPart, Theorem,
+};
 pub use statement::{
     Closure, Coordinate, Dependent, DeterminedBy, Equation, Link, LinkSpring, Question, Statement,
 };

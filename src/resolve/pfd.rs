@@ -629,7 +629,34 @@ pub(super) fn actions<'a>(known: &Known<'_, 'a>) -> Result<Vec<ActionNode<'a>>, 
             point: known.point(format!("{path}.point"), &a.point)?,
         });
     }
+    sources(spec)?;
     Ok(out)
+}
+
+/// A source the spec gives an action ({T(poussée → 1)}) is no other torsor's: not another
+/// action's, nor a solid's, the ground's or gravity's `pes`.
+fn sources(spec: &SpecFile) -> Result<(), Refusal> {
+    let printed = crate::wire::action_sources(spec);
+    for (i, a) in spec.actions.iter().enumerate() {
+        let Some(s) = a.source.as_deref().map(str::trim) else {
+            continue;
+        };
+        let same = (printed.iter().enumerate()).find(|&(j, o)| j != i && o.trim() == s);
+        let why = match same {
+            Some((j, _)) => format!(
+                "`{s}` is also the source of actions[{j}] (`{}`): their torsors would print \
+                 the same {{T({s}→…)}}; give each its own `source`",
+                spec.actions[j].name
+            ),
+            None if crate::wire::source::taken(spec, s) => format!(
+                "`{s}` already prints as the source of another torsor (a solid's, the ground's \
+                 or gravity's `pes`): give the action its own `source`"
+            ),
+            None => continue,
+        };
+        return Err(at(format!("actions[{i}].source"), why));
+    }
+    Ok(())
 }
 
 /// The theorems of the `pfd` section: each isolates a solid or a set (never the ground), is

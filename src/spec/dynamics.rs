@@ -8,7 +8,7 @@ use super::sides::{constant, frame_of_side, source};
 use crate::expr::{Expr, Registry};
 use crate::frame::{Axis, FrameId};
 use crate::kinematics::{omega, velocity};
-use crate::mechanism::{BodyId, DryFriction, Mechanism};
+use crate::mechanism::{BodyId, DryFriction, Mark, Mechanism};
 use crate::pfd::{Action, Dynamics, Small, SpringPart, Theorem};
 use crate::point::PointId;
 use crate::resolve::{LinkNode, Resolved, Unknowns};
@@ -59,6 +59,7 @@ pub(super) fn build(
         }
         d.actions.push(action);
     }
+    marks(&mut d.actions, &spec.links);
     for (i, node) in resolved.actions.iter().enumerate() {
         d.actions.push(action(m, spec, i, node)?);
     }
@@ -186,8 +187,31 @@ fn link<'u>(
         basis,
         description,
         label: l.label(),
+        source: l.between[0].clone(),
+        mark: None,
         spring,
     })
+}
+
+/// Each link's mark among the links joining the same two solids (`actions[i]` is
+/// `links[i]`'s action): its point when theirs differ, else its name.
+fn marks(actions: &mut [Action], links: &[LinkSpec]) {
+    let pair = |l: &LinkSpec| {
+        let mut p = l.between.clone();
+        p.sort();
+        p
+    };
+    for (i, l) in links.iter().enumerate() {
+        let same: Vec<&LinkSpec> = links.iter().filter(|o| pair(o) == pair(l)).collect();
+        if same.len() < 2 {
+            continue;
+        }
+        let shared = same.iter().filter(|o| o.point == l.point).count() > 1;
+        actions[i].mark = Some(match shared {
+            true => Mark::Link(l.name.clone()),
+            false => Mark::Point(l.point.clone()),
+        });
+    }
 }
 
 /// How the course describes a link: « liaison pivot d'axe (O1, z0) », « de normale », « de
@@ -363,6 +387,8 @@ fn action(
         basis: if a.resultant.is_some() { b1 } else { b2 },
         description: format!("action {} de {} sur {}", a.name, a.from, a.on),
         label: a.label(),
+        source: crate::wire::action_sources(spec).swap_remove(i),
+        mark: None,
         spring: None,
     })
 }

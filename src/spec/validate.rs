@@ -80,6 +80,7 @@ fn build_with(
     solved: Option<&Solved>,
 ) -> Result<Mechanism, SpecError> {
     texts(spec)?;
+    sources(spec)?;
     units(spec)?;
     let reg = registry(spec, &unknowns.names, solved)?;
     // The spec's own texts hold no root (see `Registry::refuse_roots_in_texts`).
@@ -166,6 +167,41 @@ fn texts(spec: &SpecFile) -> Result<(), SpecError> {
             ));
         }
         crate::latex::rich_text(text).map_err(|e| at(path, e.to_string()))?;
+    }
+    Ok(())
+}
+
+/// The sources the actions' torsors print ({T(poussée → 1)}), as texts: one the spec gives is
+/// short, not blank, and holds no arrow. (That it is no other torsor's is resolved for both
+/// sides, in [`crate::resolve`].)
+fn sources(spec: &SpecFile) -> Result<(), SpecError> {
+    for (i, a) in spec.actions.iter().enumerate() {
+        let Some(s) = &a.source else {
+            continue;
+        };
+        let path = format!("actions[{i}].source");
+        let max = crate::wire::source::MAX_SOURCE_CHARS;
+        let n = s.chars().count();
+        if s.trim().is_empty() {
+            return Err(at(
+                path,
+                "what exerts the action prints in {T(source→on)}: it may not be blank",
+            ));
+        }
+        if n > max {
+            return Err(at(
+                path,
+                format!(
+                    "{n} characters: a source prints inside {{T(source→on)}} and may hold at most {max}"
+                ),
+            ));
+        }
+        if s.contains("\\overrightarrow") {
+            return Err(at(
+                path,
+                "a source prints under the arrow of R(source→on): it may not hold \\overrightarrow",
+            ));
+        }
     }
     Ok(())
 }

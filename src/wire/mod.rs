@@ -6,9 +6,11 @@ use std::collections::BTreeMap;
 
 mod coulomb;
 mod scenario;
+pub mod source;
 mod texts;
 pub use coulomb::{ContactFrictionSpec, ContactUnknowns};
 pub use scenario::{ImposedSpec, RatePiece, ScenarioSpec};
+pub use source::action_sources;
 pub(crate) use texts::free_texts;
 
 /// A whole problem as written in `derivations/*.json`.
@@ -312,6 +314,11 @@ pub struct ActionSpec {
     /// [`ActionSpec::label`] for the default.
     #[serde(default)]
     pub label: Option<String>,
+    /// What exerts it, as its torsor {T(source→on)} prints it (« poussée », « moteur 1 »,
+    /// `$C_r$`): free text, which may hold `$…$` formulas; see [`ActionSpec::source`] for the
+    /// default, read from the label.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub source: Option<String>,
 }
 
 impl ActionSpec {
@@ -329,6 +336,29 @@ impl ActionSpec {
         self.label
             .clone()
             .unwrap_or_else(|| format!("l'action {}", self.name.replace('_', " ")))
+    }
+
+    /// What exerts it, as {T(source→on)} prints it: the spec's `source`, else read from the
+    /// label (see [`source::from_label`]), else the name. [`action_sources`] settles two
+    /// actions that would print the same.
+    ///
+    /// ```
+    /// let m = torseur::spec::load("derivations/train_engrenages.json").unwrap();
+    /// let a = &m.spec().actions;
+    /// // « le moteur » → moteur; « le couple résistant » → résistant, the name's word with
+    /// // the label's accents; « l'engrènement en $I$ » → the name, `denture`.
+    /// assert_eq!(a[0].source(), "moteur");
+    /// assert_eq!(a[1].source(), "résistant");
+    /// assert_eq!(a[2].source(), "denture");
+    /// ```
+    pub fn source(&self) -> String {
+        if let Some(s) = &self.source {
+            return s.clone();
+        }
+        self.label
+            .as_deref()
+            .and_then(|l| source::from_label(&self.name, l))
+            .unwrap_or_else(|| self.name.clone())
     }
 }
 

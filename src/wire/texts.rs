@@ -39,6 +39,9 @@ pub(crate) fn free_texts(spec: &SpecFile) -> Vec<(String, &str)> {
         if let Some(t) = &a.label {
             out.push((format!("actions[{i}].label"), t));
         }
+        if let Some(t) = &a.source {
+            out.push((format!("actions[{i}].source"), t));
+        }
     }
     for (i, sc) in spec.scenarios.iter().enumerate() {
         if let Some(t) = &sc.label {

@@ -21,6 +21,18 @@ fn all_safe(s: &str) {
     assert_eq!(check(&r), Ok(()), "rich_text_or_escaped({s:?}) = {r:?}");
 }
 
+/// What exerts an action prints safely for any `s`, in a torsor and under the arrow of a
+/// resultant (as the key writes {T(s → 1)} and R(s → 1)).
+fn source_safe(s: &str) {
+    let src = torseur::latex::action_source(s);
+    for f in [
+        format!("$\\mathcal{{T}}_{{A}}({src} \\rightarrow 1)$"),
+        format!("$\\overrightarrow{{R({src} \\rightarrow 1)}}$"),
+    ] {
+        assert_eq!(check(&f), Ok(()), "action_source({s:?}) in {f:?}");
+    }
+}
+
 /// The input: an escaped dollar, then a combining dot.
 #[test]
 fn a_combining_dot_after_an_escape_does_not_panic() {
@@ -261,6 +273,16 @@ proptest! {
     }
 
     #[test]
+    fn sources_print_safely(v in prop::collection::vec(fragment(), 0..12)) {
+        source_safe(&v.concat());
+    }
+
+    #[test]
+    fn any_source_prints_safely(s in any::<String>()) {
+        source_safe(&s);
+    }
+
+    #[test]
     fn built_formulas_are_safe(a in "[a-zé %#&]{0,8}", f in formula(), b in "[a-z ]{0,8}") {
         all_safe(&format!("{a}${f}${b}"));
     }
@@ -476,7 +498,8 @@ fn an_answer_key_of_hostile_accepted_texts_compiles() {
     v["links"][0]["label"] = label(dots).into();
     v["actions"] = serde_json::json!([{
         "name": "pousse", "from": "0", "on": "2", "point": "G", "resultant": "K*x1",
-        "label": label(&format!("[{unicode}"))
+        "label": label(&format!("[{unicode}")),
+        "source": "é % # & ~ ^ _ {} \\ $x'^2_1$ θ\u{307} 😀 «»"
     }]);
     v["scenarios"][0]["label"] = label(&format!("*{specials}")).into();
     v["scenarios"][0]["description"] = mix.clone().into();
@@ -524,6 +547,7 @@ fn an_answer_key_of_hostile_accepted_texts_compiles() {
         "\\textbackslash{}write18",
         "$\\dot{\\theta}$",
         "\\overrightarrow{\\overrightarrow",
+        "\\mathcal{T}(\\textnormal{é \\% \\# \\& \\textasciitilde{}",
     ] {
         assert!(key.tex.contains(needle), "{needle}");
     }

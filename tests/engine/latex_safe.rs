@@ -7,7 +7,8 @@
 //! the escapes a text needs (`\{`, `\textbackslash{}`…); every `$` opens a formula that a `$`
 //! closes; in a formula, only ASCII, balanced braces, `\left`/`\right` paired in their group
 //! with a delimiter, a known macro with its arguments, scripts with an argument TeX takes
-//! and never twice on one atom (a prime is a superscript), and bounded nesting.
+//! and never twice on one atom (a prime is a superscript), `\textnormal{…}` holding running
+//! text (safe as above), and bounded nesting.
 
 /// Groups (braces, `\left`) a formula may nest.
 const MAX_DEPTH: usize = 40;
@@ -99,6 +100,9 @@ pub const MATH_MACROS: &[(&str, usize)] = &[
     ("frac", 2),
 ];
 
+/// The math word whose argument is running text.
+pub const MATH_TEXT: &str = "textnormal";
+
 /// Characters a formula holds as they are.
 pub const MATH_CHARS: &str = "+-=()[],.;:/|<>!*";
 
@@ -186,8 +190,15 @@ impl Reader<'_> {
 
     /// Running text, to the end.
     fn text(&mut self) -> Result<(), String> {
+        self.text_until(None)
+    }
+
+    /// Running text, to the end or through `close` (the `}` of a `\textnormal{…}` in a
+    /// formula: a raw brace is never text, so the first one closes it).
+    fn text_until(&mut self, close: Option<char>) -> Result<(), String> {
         while let Some(t) = self.next() {
             match t {
+                Tok::Ch(c) if Some(c) == close => return Ok(()),
                 Tok::Ch('$') => self.formula()?,
                 Tok::Ch(c) => {
                     let ok = c == ' '
@@ -219,7 +230,10 @@ impl Reader<'_> {
                 }
             }
         }
-        Ok(())
+        match close {
+            Some(c) => Err(format!("`{c}` missing at the end of a text in a formula")),
+            None => Ok(()),
+        }
     }
 
     /// A formula after its opening `$`, through its closing `$`.
@@ -322,6 +336,20 @@ impl Reader<'_> {
         if MATH_SYMBOLS.contains(&w) || MATH_OTHERS.contains(&w) {
             return Ok(());
         }
+        // Text in a formula (what exerts an action, {T(poussée → 1)}): running text in its
+        // group, which may hold formulas of its own.
+        if w == MATH_TEXT {
+            if self.next() != Some(Tok::Ch('{')) {
+                return Err(format!("`\\{w}` without its `{{…}}`"));
+            }
+            self.depth += 1;
+            if self.depth > MAX_DEPTH {
+                return Err("nested too deep".into());
+            }
+            self.text_until(Some('}'))?;
+            self.depth -= 1;
+            return Ok(());
+        }
         let Some(&(_, n)) = MATH_MACROS.iter().find(|(m, _)| *m == w) else {
             return Err(format!("`\\{w}` in a formula"));
         };
@@ -405,6 +433,11 @@ fn the_reader_refuses_what_stops_tex() {
         "a\u{202e}b",
         "$$x$$",
         "$\\overrightarrow{\\overrightarrow{\\overrightarrow{\\overrightarrow{x}}}}$",
+        "$\\textnormal x$",
+        "$\\textnormal{50%}$",
+        "$\\textnormal{a$",
+        "$\\textnormal{a}",
+        "\\textnormal{a}",
     ] {
         assert!(check(bad).is_err(), "{bad}");
     }
@@ -414,6 +447,8 @@ fn the_reader_refuses_what_stops_tex() {
         "$x'^2_1 + f''(x) + \\frac{1}{2} m v^2$",
         "$\\left( \\vec{x}_{1} \\right)^{2} \\sin\\theta \\quad \\left\\{ a \\right.$",
         "$\\overrightarrow{\\overrightarrow{\\overrightarrow{x}}}$",
+        "$\\mathcal{T}(\\textnormal{poussée} \\rightarrow 1)$",
+        "$\\mathcal{T}_{A}(\\textnormal{moteur $M_1$ \\% \\{\\}} \\rightarrow 1)$",
     ] {
         assert_eq!(check(good), Ok(()), "{good}");
     }

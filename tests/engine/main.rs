@@ -4,6 +4,7 @@
 //! Expected values come from routes that do not share the code under test: hand derivations
 //! from the course, a second theorem, or the definitions.
 
+mod action_sources;
 mod actions;
 mod bilan;
 mod budget;

@@ -98,11 +98,13 @@ fn mutations(base: &Value) -> Vec<(String, Value)> {
     names.sort();
     names.dedup();
     for p in &leaves {
-        // Free texts, and the units: the exact side reads the units for its dimension checks;
-        // the float backend computes with numbers and has no use for them.
+        // Free texts (an action's printed `source` among them), and the units: the exact side
+        // reads the units for its dimension checks; the float backend computes with numbers
+        // and has no use for them.
         if p == "/title"
             || p == "/$schema"
             || p.contains("label")
+            || p.ends_with("/source")
             || p.contains("description")
             || p.ends_with("/text")
             || p.ends_with("/unit")
