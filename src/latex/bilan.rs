@@ -22,13 +22,13 @@ pub(super) fn bilan(doc: &mut Doc) {
     doc.inline.extend(inline);
     let with_questions = short.iter().chain(&long).all(|e| e.question.is_some());
     let rows: Vec<Row> = short.into_iter().map(|e| e.row(with_questions)).collect();
-    // The sentence on the long results closes the table's group, in its small type.
+    // The sentence on the long results follows in the table's small type, not centred.
     let others = elsewhere(&long)
-        .map(|s| format!("\\par\\smallskip\\noindent {s}"))
+        .map(|s| format!("\n{{\\small\\smallskip\\noindent {s}\\par}}"))
         .unwrap_or_default();
     let _ = writeln!(
         doc.o,
-        "\\section*{{Bilan}}\n{{\\small\\renewcommand{{\\arraystretch}}{{1.15}}\\noindent\n{}{others}\\par}}",
+        "\\section*{{Bilan}}\n{{\\small\\renewcommand{{\\arraystretch}}{{1.15}}\\noindent\n{}\\par}}{others}",
         tables(&rows, with_questions)
     );
 }
@@ -107,15 +107,20 @@ fn bilan_entries(doc: &Doc) -> (Vec<Entry>, Vec<Inline>) {
     (merged, inline)
 }
 
-/// A result's value as a row shows it, with the value the page records for it: a scalar, or
-/// a vector as its sum over the basis vectors, when it holds in `longest` characters. An
-/// equation of motion, a torsor or an operator is found where it is boxed.
+/// A result's value as a row shows it, with the value the page records for it: a scalar, a
+/// quotient (an unknown divided by a length), or a vector as its sum over the basis vectors,
+/// when it holds in `longest` characters. An equation of motion, a torsor or an operator is
+/// found where it is boxed.
 fn short_value(doc: &Doc, q: &Quantity, v: &Value, longest: usize) -> Option<(String, Value)> {
     let m = doc.m;
     match (v, &q.kind) {
         (_, QuantityKind::Eom(_)) => None,
         (Value::Scalar(e), _) => {
             let t = super::expr(e);
+            (super::width(&t) <= longest).then(|| (t, v.clone()))
+        }
+        (Value::Quotient(f), _) => {
+            let t = super::fraction(f);
             (super::width(&t) <= longest).then(|| (t, v.clone()))
         }
         (Value::Vector { basis, components }, _) => {

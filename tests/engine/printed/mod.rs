@@ -177,6 +177,8 @@ fn every_printed_formula_is_the_engines_value() {
                     };
                     ctx.scalar(rhs).map(|g| &g == e)
                 }
+                // A quotient alone (a row of the bilan): n / d = N / D, cross-multiplied.
+                Value::Quotient(q) => ctx.quotient(&t).map(|(n, d)| &n * &q.den == &q.num * &d),
                 // `lhs = sum`, or a sum alone (a row of the bilan).
                 Value::Vector { components, .. } => {
                     let rhs = match t.iter().position(|x| *x == Tok::Sym('=')) {

@@ -433,7 +433,7 @@ impl Ctx<'_> {
 
     /// A scalar that may be a quotient, as (numerator, denominator) read by the engine's
     /// fraction parser.
-    fn quotient(&self, t: &[Tok]) -> Result<(Expr, Expr), String> {
+    pub(super) fn quotient(&self, t: &[Tok]) -> Result<(Expr, Expr), String> {
         let mut r = Reader {
             t,
             i: 0,
