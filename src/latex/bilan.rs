@@ -34,7 +34,7 @@ pub(super) fn bilan(doc: &mut Doc) {
 }
 
 /// A result of the bilan: the same result shown in general and under hypotheses, both
-/// boxed in one question, is one entry.
+/// boxed in one question, is one entry (a long one boxed in two questions is two).
 struct Entry {
     /// The grandeur, in math.
     title: String,
@@ -87,10 +87,9 @@ fn bilan_entries(doc: &Doc) -> (Vec<Entry>, Vec<Inline>) {
         let value = shown.map(|(t, _)| format!("${t}$"));
         let question = place.strip_prefix("la question ").map(str::to_string);
         let under = hyp.as_deref().map(escape_text);
-        match merged
-            .iter_mut()
-            .find(|r| r.what == *what && r.value == value && r.unit == unit)
-        {
+        match merged.iter_mut().find(|r| {
+            r.what == *what && r.value == value && r.unit == unit && r.question == question
+        }) {
             Some(r) => r.unders.push(under),
             None => merged.push(Entry {
                 title: bilan_title(&doc.names, q),

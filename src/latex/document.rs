@@ -67,12 +67,18 @@ fn question_block(doc: &mut Doc, qs: &Question) -> Result<(), crate::derivation:
     // The spec's own text discusses the results: the method (the isolation, the actions,
     // the theorem) is the writer's, above; a question without results is the text alone.
     if let Some(a) = &qs.answer
-        && !(qs.quantities.is_empty() && qs.equations.is_empty())
+        && derives(qs)
     {
         let _ = writeln!(doc.o, "\n{}\n", rich_text_or_escaped(a));
     }
     doc.under = None;
     Ok(())
+}
+
+/// Whether a question derives something (quantities or equations): its answer text then
+/// discusses the results, after them; else it is the whole answer.
+fn derives(qs: &Question) -> bool {
+    !(qs.quantities.is_empty() && qs.equations.is_empty())
 }
 
 /// A question's title, statement and answer text, the hypotheses it states and the one it
@@ -89,8 +95,7 @@ fn question_heading(doc: &mut Doc, qs: &Question) {
         let _ = writeln!(doc.o, "\\emph{{{}}}\n", rich_text_or_escaped(st));
     }
     if let Some(a) = &qs.answer
-        && qs.quantities.is_empty()
-        && qs.equations.is_empty()
+        && !derives(qs)
     {
         let _ = writeln!(doc.o, "{}\n", rich_text_or_escaped(a));
     }
@@ -99,7 +104,7 @@ fn question_heading(doc: &mut Doc, qs: &Question) {
     }
     doc.under = qs.under.map(|k| &m.hypotheses[k]);
     if let Some(h) = doc.under
-        && !(qs.quantities.is_empty() && qs.equations.is_empty())
+        && derives(qs)
     {
         let _ = writeln!(
             doc.o,
